@@ -1,0 +1,115 @@
+#include "analysis/context.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fresnel/exact.h"
+#include "spectral/errors.h"
+
+namespace fl::analysis {
+
+Context::Context(const Settings& s)
+    : settings_(s),
+      grid_(spectral::SpectralGrid::visible(s.step_nm)),
+      spaces_(s.ocio_config.empty() ? color::SpaceLibrary::builtin()
+                                    : color::SpaceLibrary::from_config(s.ocio_config, s.ocio_xyz)) {
+  if (s.angles < 2 || s.angles > 100000) throw InputError("--angles must be between 2 and 100000");
+  if (!(s.eta_outside > 0.0) || !std::isfinite(s.eta_outside)) throw InputError("the outside medium's index must be positive");
+  if (s.step_nm != 5.0 && s.step_nm != 1.0) throw InputError("--step-nm must be 5 or 1");
+  space_ = spaces_.space(s.space);
+  const std::string colord = s.colord_dir.empty() ? spectral::default_colord_dir() : s.colord_dir;
+  const auto observer = spectral::cie1931_2deg(grid_, colord);
+  const auto illuminant = spectral::illuminant_spd(s.illuminant, grid_, colord);
+  const auto xyz_w = color::xyz_weights(observer, illuminant);
+  illuminant_white_ = {};
+  for (const auto& w : xyz_w) {
+    illuminant_white_.X += w.X;
+    illuminant_white_.Y += w.Y;
+    illuminant_white_.Z += w.Z;
+  }
+  const color::Mat3 m = space_.xyz_to_rgb *
+                        color::adaptation_matrix(color::adaptation_from_name(s.adaptation), illuminant_white_, space_.white);
+  rgb_weights_.resize(xyz_w.size());
+  for (size_t i = 0; i < xyz_w.size(); ++i) rgb_weights_[i] = m * xyz_w[i];
+
+  const int n = s.angles;
+  double wsum = 0;
+  for (int i = 0; i < n; ++i) {
+    const double deg = 90.0 * i / (n - 1);
+    const double c = i == n - 1 ? 0.0 : std::cos(deg * M_PI / 180.0);
+    angles_deg_.push_back(deg);
+    cos_thetas_.push_back(c);
+    const double w = std::sin(deg * M_PI / 180.0) * c;
+    render_weights_.push_back(w);
+    wsum += w;
+  }
+  for (auto& w : render_weights_) w /= wsum;
+}
+
+color::Rgb Context::spectrum_to_rgb(const std::vector<double>& v) const {
+  color::Rgb out;
+  for (size_t i = 0; i < rgb_weights_.size(); ++i) out = out + v[i] * rgb_weights_[i];
+  return out;
+}
+
+LoadedMaterial load_material(const Context& ctx, spectral::Material m) {
+  auto sampled = spectral::sample_ior(m.constants, ctx.grid(), m.name);
+  return {std::move(m), std::move(sampled.ior), std::move(sampled.warnings)};
+}
+
+std::vector<LoadedMaterial> load_catalog(const Context& ctx) {
+  std::vector<LoadedMaterial> out;
+  for (auto& m : spectral::read_catalog(ctx.settings().paths)) out.push_back(load_material(ctx, std::move(m)));
+  return out;
+}
+
+color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectrum& ior, double cos_theta,
+                            double eta_outside) {
+  const auto& w = ctx.rgb_weights();
+  color::Rgb out;
+  for (size_t i = 0; i < w.size(); ++i) {
+    const double r = fresnel::fresnel_conductor(cos_theta, ior.ior[i] / eta_outside);
+    out = out + r * w[i];
+  }
+  return out;
+}
+
+std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+                                           double eta_outside) {
+  std::vector<color::Rgb> out;
+  out.reserve(ctx.cos_thetas().size());
+  for (double c : ctx.cos_thetas()) out.push_back(ground_truth_rgb(ctx, ior, c, eta_outside));
+  return out;
+}
+
+color::Rgb process_as_reflectance(const Context& ctx, const spectral::ComplexIorSpectrum& ior, bool kappa) {
+  std::vector<double> v(ior.ior.size());
+  for (size_t i = 0; i < v.size(); ++i) v[i] = kappa ? ior.ior[i].imag() : ior.ior[i].real();
+  return ctx.spectrum_to_rgb(v);
+}
+
+std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,
+                                     const std::vector<color::Rgb>& b) {
+  std::vector<double> out(a.size());
+  for (size_t i = 0; i < a.size(); ++i) out[i] = color::ciede2000(ctx.rgb_to_lab(a[i]), ctx.rgb_to_lab(b[i]));
+  return out;
+}
+
+CurveError curve_error(const Context& ctx, const std::vector<color::Rgb>& truth,
+                       const std::vector<color::Rgb>& approx) {
+  const auto de = de2000_per_angle(ctx, truth, approx);
+  CurveError e;
+  double ss = 0, wss = 0;
+  for (size_t i = 0; i < de.size(); ++i) {
+    ss += de[i] * de[i];
+    e.mean += de[i];
+    e.max = std::max(e.max, de[i]);
+    wss += ctx.render_weights()[i] * de[i] * de[i];
+  }
+  e.rms = std::sqrt(ss / de.size());
+  e.mean /= de.size();
+  e.rms_weighted = std::sqrt(wss);
+  return e;
+}
+
+}  // namespace fl::analysis

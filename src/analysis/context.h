@@ -1,0 +1,88 @@
+#pragma once
+// The colorimetric setting of a run (SPEC §1) and the ground-truth machinery built on it.
+#include <string>
+#include <vector>
+
+#include "color/colorimetry.h"
+#include "color/lab.h"
+#include "color/ocio.h"
+#include "spectral/material.h"
+
+namespace fl::analysis {
+
+struct Settings {
+  std::string space = "acescg";
+  std::string illuminant = "D60";
+  std::string adaptation = "bradford";
+  int angles = 91;
+  double step_nm = 5.0;
+  double eta_outside = 1.0;  // real index of the medium the surface is seen from
+  std::string colord_dir;    // empty: spectral::default_colord_dir()
+  std::string ocio_config;   // empty: built-in spaces
+  std::string ocio_xyz;      // the config's CIE XYZ D65 space (empty: role / default name)
+  spectral::DataPaths paths;
+};
+
+// Precomputed colour pipeline: reflectance spectrum → working-space RGB is linear, RGB =
+// Σ R(λ)·w(λ) with w = M_xyz→rgb · CAT(illuminant white → space white) · (S x̄, S ȳ, S z̄)/Σ S ȳ.
+class Context {
+ public:
+  explicit Context(const Settings& settings);
+
+  const Settings& settings() const { return settings_; }
+  const spectral::SpectralGrid& grid() const { return grid_; }
+  const color::RgbSpace& space() const { return space_; }
+  const color::SpaceLibrary& spaces() const { return spaces_; }
+  const std::vector<color::Rgb>& rgb_weights() const { return rgb_weights_; }
+  const color::Xyz& illuminant_white() const { return illuminant_white_; }
+
+  // Incidence angles θ_i = 90°·i/(N − 1); cos is exactly 0 at 90°.
+  const std::vector<double>& angles_deg() const { return angles_deg_; }
+  const std::vector<double>& cos_thetas() const { return cos_thetas_; }
+  // Render weights ∝ sinθ·cosθ (the share of a sphere's image that sees θ), summing to 1.
+  const std::vector<double>& render_weights() const { return render_weights_; }
+
+  color::Rgb spectrum_to_rgb(const std::vector<double>& values) const;
+
+  template <class T>
+  color::LabT<T> rgb_to_lab(const color::RgbT<T>& rgb) const {
+    return color::xyz_to_lab(space_.rgb_to_xyz * rgb, space_.white);
+  }
+
+ private:
+  Settings settings_;
+  spectral::SpectralGrid grid_;
+  color::SpaceLibrary spaces_;
+  color::RgbSpace space_;
+  color::Xyz illuminant_white_;
+  std::vector<color::Rgb> rgb_weights_;
+  std::vector<double> angles_deg_, cos_thetas_, render_weights_;
+};
+
+struct LoadedMaterial {
+  spectral::Material material;
+  spectral::ComplexIorSpectrum ior;
+  std::vector<std::string> warnings;
+};
+LoadedMaterial load_material(const Context& ctx, spectral::Material m);
+std::vector<LoadedMaterial> load_catalog(const Context& ctx);
+
+// Spectral ground truth: per angle, the reflectance spectrum at cosθ for the index relative to
+// the outside medium eta_outside, pushed through the colour pipeline.
+color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectrum& ior, double cos_theta,
+                            double eta_outside);
+std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+                                           double eta_outside);
+// A spectrum of values (η or κ) processed as if it were a reflectance.
+color::Rgb process_as_reflectance(const Context& ctx, const spectral::ComplexIorSpectrum& ior, bool kappa);
+
+struct CurveError {
+  double rms = 0, mean = 0, max = 0, rms_weighted = 0;
+};
+// ΔE2000 per angle between two RGB curves in the working space.
+std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,
+                                     const std::vector<color::Rgb>& b);
+CurveError curve_error(const Context& ctx, const std::vector<color::Rgb>& truth,
+                       const std::vector<color::Rgb>& approx);
+
+}  // namespace fl::analysis

@@ -1,0 +1,25 @@
+#pragma once
+// A table of results, independent of how it is written (CSV, Markdown, JSON live in report/).
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace fl::analysis {
+
+struct Column {
+  std::string name;
+  int precision = 4;  // decimals for numeric cells
+};
+
+using Cell = std::variant<std::string, double, long long>;
+
+struct Table {
+  std::string name;   // file stem: schlick, methods, ...
+  std::string title;  // Markdown heading
+  std::vector<Column> columns;
+  std::vector<std::vector<Cell>> rows;
+  std::string reading;  // a short reading of what the table shows (Markdown)
+  std::vector<std::string> notes;  // conventions, flags (Markdown bullet list)
+};
+
+}  // namespace fl::analysis

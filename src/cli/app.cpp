@@ -1,0 +1,69 @@
+#include "cli/app.h"
+
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "spectral/errors.h"
+
+namespace fl::cli {
+
+void progress(const GlobalOptions& g, const std::string& message) {
+  if (!g.quiet) fmt::print(stderr, "{}\n", message);
+}
+
+void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms) {
+  for (const auto& m : ms)
+    for (const auto& w : m.warnings) progress(g, "warning: " + w);
+}
+
+analysis::Context make_context(const GlobalOptions& g) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(g.settings.paths.database + "/data", ec))
+    throw InputError(g.settings.paths.database, 0,
+                     "not a refractiveindex.info database (no data/ folder); set --db or FRESNEL_LAB_DB");
+  return analysis::Context(g.settings);
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"Fresnel Lab: spectral ground truth, Fresnel approximations and their parameters, in CIEDE2000."};
+  app.name("fresnel-lab");
+  app.require_subcommand(1);
+  GlobalOptions g;
+  auto& s = g.settings;
+  const char* env_db = std::getenv("FRESNEL_LAB_DB");
+  s.paths.database = env_db && *env_db ? env_db : FRESNEL_LAB_DEFAULT_DB;
+  s.paths.materials = FRESNEL_LAB_DEFAULT_MATERIALS;
+  if (const char* env_ocio = std::getenv("OCIO"); env_ocio && *env_ocio) s.ocio_config = env_ocio;
+
+  app.add_option("--db", s.paths.database, "refractiveindex.info database root (the folder holding data/); default $FRESNEL_LAB_DB")
+      ->capture_default_str();
+  app.add_option("--materials", s.paths.materials, "material catalog folder")->capture_default_str();
+  app.add_option("--space", s.space, "working space: acescg, lin_rec709, aces2065-1, lin_rec2020, lin_p3d65 (or a space of --ocio-config)")
+      ->capture_default_str();
+  app.add_option("--illuminant", s.illuminant, "D50, D55, D60, D65, D75, A, E, or Dnnnn (daylight at nnnn K)")->capture_default_str();
+  app.add_option("--angles", s.angles, "incidence-angle samples over [0°, 90°]")->capture_default_str();
+  app.add_option("--adaptation", s.adaptation, "chromatic adaptation: bradford, cat02, none")->capture_default_str();
+  app.add_option("--step-nm", s.step_nm, "spectral step, 5 or 1 nm (360-830 nm)")->capture_default_str();
+  app.add_option("--ocio-config", s.ocio_config, "an OpenColorIO config whose colour-space names --space takes (default $OCIO; empty: built-in spaces)");
+  app.add_option("--ocio-xyz", s.ocio_xyz, "the config's CIE XYZ D65 space (default: role cie_xyz_d65_interchange)");
+  app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
+
+  Runner selected;
+  for (const auto& c : commands()) c.add(app, g, selected);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+  if (!selected) throw InputError("no command given (see --help)");
+  return selected();
+}
+
+}  // namespace fl::cli

@@ -1,0 +1,39 @@
+#pragma once
+// The command line: a table of subcommands, each returning an exit code.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+#include "analysis/context.h"
+
+namespace fl::cli {
+
+struct GlobalOptions {
+  analysis::Settings settings;
+  bool quiet = false;  // no progress or warnings on stderr
+};
+
+using Runner = std::function<int()>;
+
+// A command adds its subcommand (options and help) to `app`; when the user picks it, `selected`
+// is set to what runs it. `g` is complete (parsed) by the time the runner is called.
+struct Command {
+  const char* name;
+  void (*add)(CLI::App& app, GlobalOptions& g, Runner& selected);
+};
+
+// Fresnel Lab's command table (cli/commands.cpp).
+const std::vector<Command>& commands();
+
+// Parses the command line and runs the chosen command. Throws InputError for bad input; the
+// caller (main) maps exceptions to exit codes.
+int run(int argc, char** argv);
+
+// Progress / warnings on stderr unless --quiet.
+void progress(const GlobalOptions& g, const std::string& message);
+// The context for the run, with material warnings printed once.
+analysis::Context make_context(const GlobalOptions& g);
+void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms);
+
+}  // namespace fl::cli

@@ -1,0 +1,98 @@
+#pragma once
+// CIELAB and CIEDE2000, templated on the scalar so Ceres can differentiate a ΔE2000 objective.
+#include <cmath>
+
+#include "color/types.h"
+
+namespace fl::color {
+
+namespace detail {
+// sqrt whose derivative stays finite at 0 (Ceres Jets would give 0·∞ = NaN there).
+template <class T>
+T safe_sqrt(const T& x) {
+  using std::sqrt;
+  if (x <= T(1e-200)) return T(0.0) * x;
+  return sqrt(x);
+}
+template <class T>
+T lab_f(const T& t) {
+  using std::cbrt;
+  // CIE 15:2004: (6/29)³ is the junction of the cube root and its linear toe.
+  constexpr double kDelta = 6.0 / 29.0;
+  if (t > T(kDelta * kDelta * kDelta)) return cbrt(t);
+  return t / (3.0 * kDelta * kDelta) + 4.0 / 29.0;
+}
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegPerRad = 180.0 / kPi;
+}  // namespace detail
+
+// CIE 1976 L*a*b* relative to `white` (its Y is the reference luminance).
+template <class T>
+LabT<T> xyz_to_lab(const XyzT<T>& v, const Xyz& white) {
+  const T fx = detail::lab_f(v.X / white.X), fy = detail::lab_f(v.Y / white.Y),
+          fz = detail::lab_f(v.Z / white.Z);
+  return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
+}
+
+// Sharma, Wu & Dalal 2005, "The CIEDE2000 color-difference formula: implementation notes";
+// kL = kC = kH = 1. Hue angles in degrees; 25^7 is the formula's chroma constant.
+template <class T>
+T ciede2000(const LabT<T>& lab1, const LabT<T>& lab2) {
+  using std::atan2;
+  using std::cos;
+  using std::exp;
+  using std::sin;
+  using detail::kDegPerRad;
+  using detail::safe_sqrt;
+  constexpr double k25pow7 = 6103515625.0;  // 25^7
+  const T c1 = safe_sqrt(lab1.a * lab1.a + lab1.b * lab1.b);
+  const T c2 = safe_sqrt(lab2.a * lab2.a + lab2.b * lab2.b);
+  const T c_bar = 0.5 * (c1 + c2);
+  const T c_bar7 = c_bar * c_bar * c_bar * c_bar * c_bar * c_bar * c_bar;
+  const T g = 0.5 * (1.0 - safe_sqrt(c_bar7 / (c_bar7 + k25pow7)));
+  const T a1p = (1.0 + g) * lab1.a, a2p = (1.0 + g) * lab2.a;
+  const T c1p = safe_sqrt(a1p * a1p + lab1.b * lab1.b);
+  const T c2p = safe_sqrt(a2p * a2p + lab2.b * lab2.b);
+  auto hue = [&](const T& b, const T& ap, const T& cp) {
+    if (cp <= T(0.0)) return T(0.0);
+    T h = atan2(b, ap) * kDegPerRad;
+    if (h < T(0.0)) h += 360.0;
+    return h;
+  };
+  const T h1p = hue(lab1.b, a1p, c1p), h2p = hue(lab2.b, a2p, c2p);
+  const T dl = lab2.L - lab1.L;
+  const T dc = c2p - c1p;
+  const T cc = c1p * c2p;
+  T dh(0.0);
+  if (cc > T(0.0)) {
+    dh = h2p - h1p;
+    if (dh > T(180.0)) dh -= 360.0;
+    else if (dh < T(-180.0)) dh += 360.0;
+  }
+  const T d_big_h = 2.0 * safe_sqrt(cc) * sin(dh / (2.0 * kDegPerRad));
+  const T l_bar = 0.5 * (lab1.L + lab2.L);
+  const T cp_bar = 0.5 * (c1p + c2p);
+  T hp_bar = h1p + h2p;
+  if (cc > T(0.0)) {
+    const T diff = h1p - h2p;
+    if (diff <= T(180.0) && diff >= T(-180.0)) hp_bar = 0.5 * (h1p + h2p);
+    else if (h1p + h2p < T(360.0)) hp_bar = 0.5 * (h1p + h2p + 360.0);
+    else hp_bar = 0.5 * (h1p + h2p - 360.0);
+  }
+  const double r = 1.0 / kDegPerRad;
+  const T t = 1.0 - 0.17 * cos((hp_bar - 30.0) * r) + 0.24 * cos(2.0 * hp_bar * r) +
+              0.32 * cos((3.0 * hp_bar + 6.0) * r) - 0.20 * cos((4.0 * hp_bar - 63.0) * r);
+  const T q = (hp_bar - 275.0) / 25.0;
+  const T d_theta = 30.0 * exp(-(q * q));
+  const T cp_bar7 = cp_bar * cp_bar * cp_bar * cp_bar * cp_bar * cp_bar * cp_bar;
+  const T rc = 2.0 * safe_sqrt(cp_bar7 / (cp_bar7 + k25pow7));
+  const T l50 = (l_bar - 50.0) * (l_bar - 50.0);
+  const T sl = 1.0 + 0.015 * l50 / safe_sqrt(20.0 + l50);
+  const T sc = 1.0 + 0.045 * cp_bar;
+  const T sh = 1.0 + 0.015 * cp_bar * t;
+  const T rt = -sin(2.0 * d_theta * r) * rc;
+  const T tl = dl / sl, tc = dc / sc, th = d_big_h / sh;
+  return safe_sqrt(tl * tl + tc * tc + th * th + rt * tc * th);
+}
+
+}  // namespace fl::color

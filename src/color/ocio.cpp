@@ -1,0 +1,164 @@
+#include "color/ocio.h"
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "spectral/errors.h"
+
+namespace OCIO = OCIO_NAMESPACE;
+
+namespace fl::color {
+
+struct SpaceLibrary::Impl {
+  OCIO::ConstConfigRcPtr config;
+  std::string xyz_space;  // user config only
+};
+
+namespace {
+
+OCIO::TransformRcPtr ocio_builtin(const char* style, OCIO::TransformDirection dir = OCIO::TRANSFORM_DIR_FORWARD) {
+  auto t = OCIO::BuiltinTransform::Create();
+  t->setStyle(style);
+  t->setDirection(dir);
+  return t;
+}
+
+OCIO::TransformRcPtr matrix_transform(const Mat3& m, OCIO::TransformDirection dir) {
+  auto t = OCIO::MatrixTransform::Create();
+  const double m44[16] = {m(0, 0), m(0, 1), m(0, 2), 0, m(1, 0), m(1, 1), m(1, 2), 0,
+                          m(2, 0), m(2, 1), m(2, 2), 0, 0,       0,       0,       1};
+  t->setMatrix(m44);
+  t->setDirection(dir);
+  return t;
+}
+
+// Our built-in space → CIE XYZ with a D65 white (OCIO's interchange convention).
+OCIO::TransformRcPtr builtin_to_xyz_d65(const std::string& name, OCIO::TransformDirection dir) {
+  if (name == "acescg") return ocio_builtin("UTILITY - ACES-AP1_to_CIE-XYZ-D65_BFD", dir);
+  if (name == "aces2065-1") return ocio_builtin("UTILITY - ACES-AP0_to_CIE-XYZ-D65_BFD", dir);
+  if (name == "lin_rec709") {
+    // Rec.709 → AP1 → XYZ-D65: the two Bradford adaptations (D65 → ACES → D65) cancel exactly.
+    auto g = OCIO::GroupTransform::Create();
+    g->appendTransform(ocio_builtin("UTILITY - ACES-AP1_to_LINEAR-REC709_BFD", OCIO::TRANSFORM_DIR_INVERSE));
+    g->appendTransform(ocio_builtin("UTILITY - ACES-AP1_to_CIE-XYZ-D65_BFD"));
+    g->setDirection(dir);
+    return g;
+  }
+  if (name == "lin_rec2020" || name == "lin_p3d65") return matrix_transform(builtin_space(name).rgb_to_xyz, dir);
+  builtin_space(name);  // throws the helpful error
+  return nullptr;
+}
+
+// Multiplies out a processor made only of matrix ops, in double.
+Mat3 processor_matrix(const OCIO::ConstProcessorRcPtr& proc, const std::string& what) {
+  const auto group = proc->createGroupTransform();
+  Mat3 total;
+  for (int i = 0; i < group->getNumTransforms(); ++i) {
+    const auto t = group->getTransform(i);
+    const auto mt = OCIO::DynamicPtrCast<const OCIO::MatrixTransform>(t);
+    if (!mt) throw InputError(fmt::format("{} is not a linear (matrix-only) conversion in OpenColorIO", what));
+    double m44[16], off[4];
+    mt->getMatrix(m44);
+    mt->getOffset(off);
+    if (off[0] != 0 || off[1] != 0 || off[2] != 0)
+      throw InputError(fmt::format("{} has an offset: not a linear colour space", what));
+    Mat3 m{{m44[0], m44[1], m44[2], m44[4], m44[5], m44[6], m44[8], m44[9], m44[10]}};
+    if (mt->getDirection() == OCIO::TRANSFORM_DIR_INVERSE) m = m.inverse();
+    total = m * total;
+  }
+  return total;
+}
+
+}  // namespace
+
+SpaceLibrary SpaceLibrary::builtin() {
+  SpaceLibrary lib;
+  auto impl = std::make_shared<Impl>();
+  impl->config = OCIO::Config::CreateRaw();
+  lib.impl_ = impl;
+  return lib;
+}
+
+SpaceLibrary SpaceLibrary::from_config(const std::string& path, const std::string& xyz_space) {
+  SpaceLibrary lib;
+  auto impl = std::make_shared<Impl>();
+  try {
+    impl->config = OCIO::Config::CreateFromFile(path.c_str());
+  } catch (const OCIO::Exception& e) {
+    throw InputError(path, 0, std::string("cannot load OCIO config: ") + e.what());
+  }
+  std::string xyz = xyz_space;
+  if (xyz.empty()) {
+    if (impl->config->hasRole("cie_xyz_d65_interchange"))
+      xyz = impl->config->getColorSpace("cie_xyz_d65_interchange")->getName();
+    else if (impl->config->getColorSpace("CIE-XYZ-D65"))
+      xyz = "CIE-XYZ-D65";
+    else
+      throw InputError(path, 0, "the config has no CIE XYZ D65 space (role cie_xyz_d65_interchange or a space CIE-XYZ-D65); name one with --ocio-xyz");
+  } else if (!impl->config->getColorSpace(xyz.c_str())) {
+    throw InputError(path, 0, fmt::format("no colour space '{}' in the config", xyz));
+  }
+  impl->xyz_space = xyz;
+  lib.impl_ = impl;
+  lib.config_path_ = path;
+  return lib;
+}
+
+std::vector<std::string> SpaceLibrary::names() const {
+  if (is_builtin()) return builtin_space_names();
+  std::vector<std::string> out;
+  for (int i = 0; i < impl_->config->getNumColorSpaces(); ++i)
+    out.emplace_back(impl_->config->getColorSpaceNameByIndex(i));
+  return out;
+}
+
+Mat3 SpaceLibrary::conversion(const std::string& from, const std::string& to) const {
+  const std::string what = fmt::format("conversion {} -> {}", from, to);
+  try {
+    if (is_builtin()) {
+      auto g = OCIO::GroupTransform::Create();
+      g->appendTransform(builtin_to_xyz_d65(from, OCIO::TRANSFORM_DIR_FORWARD));
+      g->appendTransform(builtin_to_xyz_d65(to, OCIO::TRANSFORM_DIR_INVERSE));
+      return processor_matrix(impl_->config->getProcessor(g), what);
+    }
+    for (const auto& n : {from, to})
+      if (!impl_->config->getColorSpace(n.c_str()))
+        throw InputError(config_path_, 0, fmt::format("no colour space '{}' in the config", n));
+    return processor_matrix(impl_->config->getProcessor(from.c_str(), to.c_str()), what);
+  } catch (const OCIO::Exception& e) {
+    throw InputError(fmt::format("OpenColorIO cannot build the {}: {}", what, e.what()));
+  }
+}
+
+RgbSpace SpaceLibrary::space(const std::string& name) const {
+  if (is_builtin()) return builtin_space(name);
+  RgbSpace s;
+  s.name = name;
+  s.description = fmt::format("'{}' from OCIO config {}", name, config_path_);
+  s.rgb_to_xyz = conversion(name, impl_->xyz_space);
+  try {
+    s.xyz_to_rgb = s.rgb_to_xyz.inverse();
+  } catch (const std::domain_error&) {
+    throw InputError(config_path_, 0, fmt::format("colour space '{}' has a singular matrix", name));
+  }
+  s.white = s.rgb_to_xyz * Rgb{1, 1, 1};
+  return s;
+}
+
+void SpaceLibrary::encode_srgb_display(std::vector<float>& rgb) {
+  // Linear Rec.709 → XYZ-D65 → sRGB (piecewise EOTF inverse), both OCIO built-ins.
+  auto config = OCIO::Config::CreateRaw();
+  auto g = OCIO::GroupTransform::Create();
+  g->appendTransform(builtin_to_xyz_d65("lin_rec709", OCIO::TRANSFORM_DIR_FORWARD));
+  g->appendTransform(ocio_builtin("DISPLAY - CIE-XYZ-D65_to_sRGB"));
+  const auto cpu = config->getProcessor(g)->getDefaultCPUProcessor();
+  for (auto& v : rgb) v = std::clamp(v, 0.0f, 1.0f);
+  OCIO::PackedImageDesc img(rgb.data(), static_cast<long>(rgb.size() / 3), 1, 3);
+  cpu->apply(img);
+  for (auto& v : rgb) v = std::clamp(v, 0.0f, 1.0f);
+}
+
+}  // namespace fl::color

@@ -1,0 +1,3 @@
+#include "fit/fit.h"
+
+#include <ceres/ceres.h>

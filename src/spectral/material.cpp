@@ -1,0 +1,168 @@
+#include "spectral/material.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "spectral/errors.h"
+#include "spectral/text_file.h"
+
+namespace fl::spectral {
+namespace fs = std::filesystem;
+
+const char* to_string(MaterialClass c) { return c == MaterialClass::Metal ? "metal" : "dielectric"; }
+
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+std::string database_file(const DataPaths& paths, const std::string& page) {
+  return paths.database + "/data/" + page + ".yml";
+}
+
+// Metals absorb strongly in the visible: k at 550 nm above 1.
+MaterialClass guess_class(const OpticalConstants& oc) {
+  SpectralGrid g{550.0, 1.0, 1};
+  const auto s = sample_ior(oc, g, oc.file);
+  return s.ior.ior[0].imag() > 1.0 ? MaterialClass::Metal : MaterialClass::Dielectric;
+}
+
+std::string scalar(const YAML::Node& root, const char* key, const std::string& path, bool required) {
+  const YAML::Node n = root[key];
+  if (!n) {
+    if (required) throw InputError(path, 0, fmt::format("missing field '{}'", key));
+    return {};
+  }
+  if (!n.IsScalar()) throw InputError(path, n.Mark().line + 1, fmt::format("field '{}' must be a string", key));
+  return n.as<std::string>();
+}
+
+}  // namespace
+
+Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
+  const std::string text = read_text_file(path);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(path, e.mark.line + 1, "invalid YAML: " + e.msg);
+  }
+  if (!root.IsMap()) throw InputError(path, 1, "a catalog entry must be a YAML map");
+  Material m;
+  m.key = fs::path(path).stem().string();
+  m.name = scalar(root, "name", path, true);
+  const std::string cls = scalar(root, "class", path, true);
+  if (cls == "metal") m.material_class = MaterialClass::Metal;
+  else if (cls == "dielectric") m.material_class = MaterialClass::Dielectric;
+  else throw InputError(path, root["class"].Mark().line + 1, fmt::format("class '{}' must be metal or dielectric", cls));
+  m.reference = scalar(root, "reference", path, false);
+  for (const char* key : {"order", "talk_schlick_rms_de00"}) {
+    const std::string v = scalar(root, key, path, false);
+    double x = 0;
+    if (v.empty()) continue;
+    if (!parse_finite(v, x)) throw InputError(path, root[key].Mark().line + 1, fmt::format("field '{}' must be a number", key));
+    if (std::string(key) == "order") m.order = static_cast<int>(x);
+    else m.talk_schlick_rms_de00 = x;
+  }
+  const std::string page = scalar(root, "source", path, false);
+  if (!page.empty()) {
+    m.source = page;
+    m.constants = read_refractiveindex_file(database_file(paths, page));
+  } else if (const YAML::Node c = root["constant"]) {
+    double n = 0, k = 0;
+    try {
+      if (!c.IsMap() || !c["n"]) throw InputError(path, c.Mark().line + 1, "'constant' needs n (and optional k)");
+      if (!parse_finite(c["n"].as<std::string>(), n) || (c["k"] && !parse_finite(c["k"].as<std::string>(), k)))
+        throw InputError(path, c.Mark().line + 1, "'constant' n and k must be finite numbers");
+    } catch (const YAML::Exception& e) {
+      throw InputError(path, e.mark.line + 1, "malformed 'constant': " + e.msg);
+    }
+    m.source = k == 0 ? fmt::format("constant n={}", n) : fmt::format("constant n={} k={}", n, k);
+    m.constants = constant_ior(n, k, path);
+  } else {
+    throw InputError(path, 0, "needs either 'source' (a database page) or 'constant'");
+  }
+  return m;
+}
+
+std::vector<Material> read_catalog(const DataPaths& paths) {
+  std::error_code ec;
+  if (!fs::is_directory(paths.materials, ec))
+    throw InputError(paths.materials, 0, "material catalog folder not found");
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(paths.materials))
+    if (e.path().extension() == ".yml" || e.path().extension() == ".yaml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  std::vector<Material> out;
+  for (const auto& f : files) out.push_back(read_catalog_entry(f, paths));
+  std::stable_sort(out.begin(), out.end(), [](const Material& a, const Material& b) { return a.order < b.order; });
+  return out;
+}
+
+Material resolve_material(const std::string& spec, const DataPaths& paths) {
+  if (spec.empty()) throw InputError("empty material name");
+  // A catalog key or display name.
+  std::error_code ec;
+  if (fs::is_directory(paths.materials, ec)) {
+    const std::string want = lower(spec);
+    for (const auto& e : fs::directory_iterator(paths.materials)) {
+      const auto ext = e.path().extension();
+      if (ext != ".yml" && ext != ".yaml") continue;
+      if (lower(e.path().stem().string()) == want) return read_catalog_entry(e.path().string(), paths);
+    }
+    for (const auto& e : fs::directory_iterator(paths.materials)) {
+      const auto ext = e.path().extension();
+      if (ext != ".yml" && ext != ".yaml") continue;
+      try {
+        const YAML::Node root = YAML::LoadFile(e.path().string());
+        if (root.IsMap() && root["name"] && lower(root["name"].as<std::string>()) == want)
+          return read_catalog_entry(e.path().string(), paths);
+      } catch (const YAML::Exception&) {
+      }
+    }
+  }
+  // A file path.
+  if (fs::exists(spec, ec)) {
+    Material m;
+    m.key = spec;
+    m.name = fs::path(spec).stem().string();
+    m.source = spec;
+    const auto ext = lower(fs::path(spec).extension().string());
+    if (ext == ".csv") {
+      m.constants = read_nk_csv(spec);
+    } else {
+      // A catalog entry has 'class'; a database file has 'DATA'.
+      std::string text = read_text_file(spec);
+      YAML::Node root;
+      try {
+        root = YAML::Load(text);
+      } catch (const YAML::ParserException& e) {
+        throw InputError(spec, e.mark.line + 1, "invalid YAML: " + e.msg);
+      }
+      if (root.IsMap() && root["class"] && !root["DATA"]) return read_catalog_entry(spec, paths);
+      m.constants = read_refractiveindex_file(spec);
+    }
+    m.material_class = guess_class(m.constants);
+    return m;
+  }
+  // A database page.
+  const std::string page = spec.size() > 4 && spec.substr(spec.size() - 4) == ".yml" ? spec.substr(0, spec.size() - 4) : spec;
+  if (page.find('/') != std::string::npos && fs::exists(database_file(paths, page), ec)) {
+    Material m;
+    m.key = page;
+    m.name = page;
+    m.source = page;
+    m.constants = read_refractiveindex_file(database_file(paths, page));
+    m.material_class = guess_class(m.constants);
+    return m;
+  }
+  throw InputError(fmt::format("unknown material '{}': not a catalog name in {}, a file, or a database page under {}/data",
+                               spec, paths.materials, paths.database));
+}
+
+}  // namespace fl::spectral
