@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Fresnel Lab setup for a fresh Debian 12 machine: installs every package the build, tests and
+# benchmarks need, builds (Release, build/), and regenerates reports/ with `reproduce`.
+#   scripts/setup.sh              install + build + reproduce
+#   scripts/setup.sh --deps-only  install the packages only (what CI calls)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  g++ cmake make pkg-config
+  libceres-dev libeigen3-dev
+  libopencolorio-dev
+  libopenexr-dev libimath-dev
+  libyaml-cpp-dev libcli11-dev libfmt-dev
+  colord-data
+  googletest libgtest-dev libgmock-dev libbenchmark-dev
+  liblcms2-dev libpng-dev fonts-dejavu-core
+  clang libclang-rt-14-dev
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+[ "${1:-}" = "--deps-only" ] && exit 0
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)"
+./build/src/fresnel-lab reproduce --out reports
+echo "setup: built build/src/fresnel-lab and regenerated reports/" >&2
