@@ -14,6 +14,7 @@ struct TableSpec {
   // Builds the table; the materials are the loaded catalog.
   analysis::Table (*build)(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& materials,
                            const GlobalOptions& g);
+  bool in_reproduce = true;  // `reproduce` writes it (keep reproduce fast: slow tables opt out)
 };
 
 const std::vector<TableSpec>& table_specs();
