@@ -1,1 +1,92 @@
+// The command-line contract (SPEC §6): exit statuses, messages, atomic output, determinism.
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "test_util.h"
+
+namespace fl {
+namespace {
+
+using test::cli;
+using test::run_command;
+
+TEST(Cli, HelpForEveryCommand) {
+  for (const char* cmd : {"", "materials", "curve", "table", "reproduce"}) {
+    const auto r = run_command(cli() + " " + cmd + " --help");
+    EXPECT_EQ(r.status, 0) << cmd;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << cmd;
+  }
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(run_command(cli()).status, 2);
+  EXPECT_EQ(run_command(cli() + " frobnicate").status, 2);
+  EXPECT_EQ(run_command(cli() + " table nosuchtable").status, 2);
+  EXPECT_EQ(run_command(cli() + " --space srgb_gamma table schlick").status, 2);
+  EXPECT_EQ(run_command(cli() + " --illuminant F99 table schlick").status, 2);
+  EXPECT_EQ(run_command(cli() + " curve unobtainium").status, 2);
+}
+
+TEST(Cli, MalformedInputNamesFileAndLineAndLeavesNoOutput) {
+  test::TempDir tmp;
+  const auto bad = tmp.file("bad.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 1.0 2.0\n        0.5 oops 2.0\n");
+  const auto r = run_command(cli() + " curve '" + bad + "'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(bad + ":5:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'oops' is not a finite number"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_TRUE(r.out.empty());
+
+  // A catalog with a broken entry: reproduce fails and writes nothing.
+  const auto cat = tmp.path() + "/catalog";
+  tmp.file("catalog/good.yml", "name: Good\nclass: dielectric\nconstant: {n: 1.5}\n");
+  tmp.file("catalog/broken.yml", "name: Broken\nclass: metal\nsource: \"main/Au/nk/NoSuchPage\"\n");
+  const auto out = tmp.path() + "/out";
+  const auto r2 = run_command("'" + std::string(FL_CLI) + "' --db '" + FL_DEFAULT_DB + "' --materials '" + cat +
+                              "' reproduce --out '" + out + "'");
+  EXPECT_EQ(r2.status, 2);
+  EXPECT_NE(r2.err.find("NoSuchPage.yml: no such file"), std::string::npos) << r2.err;
+  EXPECT_FALSE(std::filesystem::exists(out) && !std::filesystem::is_empty(out));
+}
+
+TEST(Cli, SchlickTableHasSpecColumns) {
+  const auto r = run_command(cli() + " -q table schlick");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n')), "material,class,source,rms_de00,mean_de00,max_de00");
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 29);
+}
+
+TEST(Cli, CurveAcceptsCatalogNamesDatabasePagesAndFiles) {
+  test::TempDir tmp;
+  const auto csv = tmp.file("m.csv", "\xEF\xBB\xBFlambda_nm,n,k\r\n300,0.2,3.0\r\n900,0.3,6.0\r\n");
+  for (const std::string& m : std::vector<std::string>{"gold", "main/Au/nk/Johnson", csv}) {
+    const auto r = run_command(cli() + " -q curve '" + m + "'");
+    ASSERT_EQ(r.status, 0) << m << ": " << r.err;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 92) << m;  // header + 91 angles
+  }
+}
+
+TEST(Cli, ReproduceIsDeterministic) {
+  test::TempDir tmp;
+  const auto a = tmp.path() + "/a", b = tmp.path() + "/b";
+  ASSERT_EQ(run_command(cli() + " -q reproduce --out '" + a + "'").status, 0);
+  ASSERT_EQ(run_command(cli() + " -q reproduce --out '" + b + "'").status, 0);
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(a)) {
+    auto slurp = [](const std::filesystem::path& p) {
+      std::ifstream in(p, std::ios::binary);
+      return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(slurp(e.path()), slurp(std::filesystem::path(b) / e.path().filename())) << e.path();
+    EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << "temporary file left behind";
+    ++files;
+  }
+  EXPECT_GE(files, 3);
+  EXPECT_TRUE(std::filesystem::exists(a + "/schlick.csv"));
+  EXPECT_TRUE(std::filesystem::exists(a + "/README.md"));
+}
+
+}  // namespace
+}  // namespace fl

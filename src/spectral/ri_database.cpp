@@ -326,12 +326,12 @@ SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, cons
     if (b.defines_k()) k_src.blocks.push_back(&b);
   }
   if (n_src.blocks.empty()) throw InputError(oc.file, 0, "no n data");
+  // Samples one quantity; returns the uncovered wavelength runs ("360-385").
   auto sample = [&](const QuantitySource& src, const char* what, std::vector<double>& values) {
     values.assign(grid.count, 0.0);
-    if (src.blocks.empty()) return;
-    int clamped_count = 0;
-    std::vector<std::string> runs;  // uncovered wavelength runs, e.g. "360-385"
-    int run_start = -1;
+    std::vector<std::string> runs;
+    if (src.blocks.empty()) return runs;
+    int clamped_count = 0, run_start = -1;
     for (int i = 0; i <= grid.count; ++i) {
       bool clamped = false;
       if (i < grid.count) {
@@ -346,13 +346,22 @@ SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, cons
     }
     if (clamped_count == grid.count)
       throw InputError(oc.file, 0, fmt::format("{} data does not cover any of {:g}-{:g} nm", what, grid.start_nm, grid.end_nm()));
-    if (!runs.empty())
-      out.warnings.push_back(fmt::format("{}: {} data does not cover {} nm; using the nearest value there",
-                                         label, what, fmt::join(runs, " and ")));
+    return runs;
   };
   std::vector<double> n, k;
-  sample(n_src, "n", n);
-  sample(k_src, "k", k);
+  const auto n_runs = sample(n_src, "n", n);
+  const auto k_runs = sample(k_src, "k", k);
+  auto warn = [&](const char* what, const std::vector<std::string>& runs) {
+    if (!runs.empty())
+      out.warnings.push_back(fmt::format("{}: {} data does not cover {} nm; using the nearest value there", label,
+                                         what, fmt::join(runs, " and ")));
+  };
+  if (n_runs == k_runs) {
+    warn("n and k", n_runs);
+  } else {
+    warn("n", n_runs);
+    warn("k", k_runs);
+  }
   for (int i = 0; i < grid.count; ++i) {
     if (!(n[i] > 0.0) || !std::isfinite(n[i]))
       throw InputError(oc.file, 0, fmt::format("n = {} at {:g} nm is not physical", n[i], grid.lambda_nm(i)));

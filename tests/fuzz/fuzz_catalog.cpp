@@ -1,0 +1,35 @@
+// libFuzzer target: material catalog entry reader (read_catalog_entry + sample_ior). A small
+// synthetic database page main/X/nk/Y holds a valid file so that `source:` can resolve.
+#include <cmath>
+#include <filesystem>
+
+#include "fuzz_common.h"
+#include "spectral/errors.h"
+#include "spectral/material.h"
+
+namespace {
+
+fl::spectral::DataPaths make_paths() {
+  namespace fs = std::filesystem;
+  const std::string root = fl::fuzz::temp_path("_db");
+  fs::create_directories(root + "/data/main/X/nk");
+  const char yml[] = "DATA:\n  - type: tabulated nk\n    data: |\n        0.3 1.5 0.1\n        0.9 1.6 0.2\n";
+  fl::fuzz::write_input(root + "/data/main/X/nk/Y.yml", reinterpret_cast<const uint8_t*>(yml), sizeof(yml) - 1);
+  return {root, root};
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static const fl::spectral::DataPaths paths = make_paths();
+  static const std::string path = fl::fuzz::temp_path("_entry.yml");
+  fl::fuzz::write_input(path, data, size);
+  try {
+    const auto m = fl::spectral::read_catalog_entry(path, paths);
+    const auto s = fl::spectral::sample_ior(m.constants, fl::spectral::SpectralGrid::visible(5.0), m.name);
+    for (const auto& v : s.ior.ior)
+      fl::fuzz::require(std::isfinite(v.real()) && v.real() > 0.0 && std::isfinite(v.imag()) && v.imag() >= 0.0);
+  } catch (const fl::InputError&) {
+  }
+  return 0;
+}
