@@ -56,8 +56,12 @@ CgatsSpectra read_cgats_spectra(const std::string& path) {
   if (!have_start || !have_end || !have_bands)
     throw InputError(path, 0, "not a spectral CGATS file (SPECTRAL_START_NM, SPECTRAL_END_NM, SPECTRAL_BANDS)");
   if (in_data || in_format) throw InputError(path, static_cast<int>(lines.size()), "truncated: missing END_DATA");
-  if (bands < 2 || !(end > start) || bands != std::floor(bands))
+  if (bands < 2 || bands > 100000 || !(end > start) || bands != std::floor(bands))
     throw InputError(path, 0, "SPECTRAL_BANDS / range are inconsistent");
+  if (!(start > 0.0)) throw InputError(path, 0, fmt::format("SPECTRAL_START_NM {:g} must be positive", start));
+  // Every spectrum read here is resampled onto 360-830 nm: a file that misses it is not usable.
+  if (end < 360.0 || start > 830.0)
+    throw InputError(path, 0, fmt::format("range {:g}-{:g} nm misses the visible range 360-830 nm entirely", start, end));
   if (out.sets.empty()) throw InputError(path, 0, "no data");
   const int n = static_cast<int>(bands);
   for (const auto& s : out.sets)

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -27,9 +28,11 @@ std::string database_file(const DataPaths& paths, const std::string& page) {
 
 // Metals absorb strongly in the visible: k at 550 nm above 1.
 MaterialClass guess_class(const OpticalConstants& oc) {
-  SpectralGrid g{550.0, 1.0, 1};
+  // Sampled on the whole visible grid so that a range error names 360-830 nm, not 550-550.
+  const SpectralGrid g = SpectralGrid::visible(5.0);
   const auto s = sample_ior(oc, g, oc.file);
-  return s.ior.ior[0].imag() > 1.0 ? MaterialClass::Metal : MaterialClass::Dielectric;
+  return s.ior.ior[static_cast<size_t>((550.0 - g.start_nm) / g.step_nm)].imag() > 1.0 ? MaterialClass::Metal
+                                                                                       : MaterialClass::Dielectric;
 }
 
 std::string scalar(const YAML::Node& root, const char* key, const std::string& path, bool required) {
@@ -66,7 +69,11 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
     double x = 0;
     if (v.empty()) continue;
     if (!parse_finite(v, x)) throw InputError(path, root[key].Mark().line + 1, fmt::format("field '{}' must be a number", key));
-    if (std::string(key) == "order") m.order = static_cast<int>(x);
+    if (std::string(key) == "order") {
+      if (x != std::floor(x) || std::abs(x) > 1e6)
+        throw InputError(path, root[key].Mark().line + 1, "field 'order' must be an integer between -1000000 and 1000000");
+      m.order = static_cast<int>(x);
+    }
     else m.talk_schlick_rms_de00 = x;
   }
   const std::string page = scalar(root, "source", path, false);

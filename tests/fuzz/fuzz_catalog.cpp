@@ -1,5 +1,5 @@
 // libFuzzer target: material catalog entry reader (read_catalog_entry + sample_ior). A small
-// synthetic database page main/X/nk/Y holds a valid file so that `source:` can resolve.
+// synthetic database page main/Good/nk/Synthetic holds a valid file so that `source:` can resolve.
 #include <cmath>
 #include <filesystem>
 
@@ -12,9 +12,9 @@ namespace {
 fl::spectral::DataPaths make_paths() {
   namespace fs = std::filesystem;
   const std::string root = fl::fuzz::temp_path("_db");
-  fs::create_directories(root + "/data/main/X/nk");
+  fs::create_directories(root + "/data/main/Good/nk");
   const char yml[] = "DATA:\n  - type: tabulated nk\n    data: |\n        0.3 1.5 0.1\n        0.9 1.6 0.2\n";
-  fl::fuzz::write_input(root + "/data/main/X/nk/Y.yml", reinterpret_cast<const uint8_t*>(yml), sizeof(yml) - 1);
+  fl::fuzz::write_input(root + "/data/main/Good/nk/Synthetic.yml", reinterpret_cast<const uint8_t*>(yml), sizeof(yml) - 1);
   return {root, root};
 }
 
