@@ -10,6 +10,9 @@
 #include "spectral/errors.h"
 
 namespace fl::cli {
+
+void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_lut.cpp
+
 namespace {
 
 void add_materials(CLI::App& app, GlobalOptions& g, Runner& selected) {
@@ -115,6 +118,7 @@ const std::vector<Command>& commands() {
       {"curve", add_curve},
       {"table", add_table},
       {"reproduce", add_reproduce},
+      {"lut", add_lut},
   };
   return table;
 }

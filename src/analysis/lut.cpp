@@ -1,0 +1,392 @@
+#include "analysis/lut.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <thread>
+
+#include "color/lab.h"
+#include "fresnel/models.h"
+#include "spectral/errors.h"
+
+namespace fl::analysis {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Heitz's fitLTC.cpp caps θ_v below π/2 so the view vector never lies in the surface.
+constexpr double kLtcMaxThetaRad = 1.57;
+
+void check_size(int size) {
+  if (size < 2 || size > 4096) throw InputError(fmt::format("table size {} out of range (2 to 4096)", size));
+}
+void check_samples(int samples) {
+  if (samples < 1) throw InputError(fmt::format("sample count {} must be positive", samples));
+}
+
+// Runs body(k) for k in [0, count) on `threads` workers. Each k writes only its own results, so the
+// outcome does not depend on the number of threads or the schedule.
+template <class Body>
+void parallel_for(int count, int threads, const LutProgress& progress, int progress_total, Body body) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::max(1, std::min(threads, count));
+  std::atomic<int> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex mutex;
+  int done = 0;
+  auto worker = [&] {
+    for (;;) {
+      const int k = next.fetch_add(1);
+      if (k >= count || failed) return;
+      try {
+        const int units = body(k);
+        if (progress) {
+          std::lock_guard lock(mutex);
+          done += units;
+          progress(done, progress_total);
+        }
+      } catch (...) {
+        std::lock_guard lock(mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+// One quasi-Monte Carlo sample of the lobe: l drawn from the visible normals of v, weight G₂/G₁
+// (brdf::ggx_vndf_weight) so that the mean of weight·g(l) estimates ∫ g ρ cos dl.
+struct LobeSample {
+  brdf::Vec3 l;
+  double voh = 0, weight = 0;
+};
+template <class Fn>
+void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
+  const brdf::Vec3 v = brdf::view_from_nov(nov);
+  for (int k = 0; k < samples; ++k) {
+    const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
+    const brdf::Vec3 h = brdf::sample_ggx_vndf(v, alpha, u.u1, u.u2);
+    const brdf::Vec3 l = brdf::reflect(v, h);
+    const double w = brdf::ggx_vndf_weight(v.z, l.z, alpha);
+    if (w <= 0.0) continue;
+    fn(LobeSample{l, std::clamp(brdf::dot(v, h), 0.0, 1.0), w});
+  }
+}
+
+double pow5(double x) {
+  const double x2 = x * x;
+  return x2 * x2 * x;
+}
+
+}  // namespace
+
+LutGrid dfg_grid(int size) {
+  check_size(size);
+  LutGrid g;
+  g.size = size;
+  for (int i = 0; i < size; ++i) {
+    const double c = (i + 0.5) / size;
+    g.nov.push_back(c);
+    g.perceptual_roughness.push_back(c);
+    g.alpha.push_back(c * c);
+  }
+  g.convention = fmt::format(
+      "texel centres: nov = (i + 0.5)/{0}, perceptual_roughness = (j + 0.5)/{0}, alpha = perceptual_roughness^2", size);
+  return g;
+}
+
+LutGrid ltc_grid(int size) {
+  check_size(size);
+  LutGrid g;
+  g.size = size;
+  for (int i = 0; i < size; ++i) {
+    const double x = static_cast<double>(i) / (size - 1);
+    const double theta = std::min(kLtcMaxThetaRad, std::acos(1.0 - x * x));
+    g.nov.push_back(i == 0 ? 1.0 : std::cos(theta));
+    const double r = static_cast<double>(i) / (size - 1);
+    g.perceptual_roughness.push_back(r);
+    g.alpha.push_back(std::max(r * r, kLtcMinAlpha));
+  }
+  g.convention = fmt::format(
+      "endpoints (Heitz's fitLTC): nov = cos(min(acos(1 - (i/{0})^2), 1.57)), perceptual_roughness = j/{0}, "
+      "alpha = max(perceptual_roughness^2, {1:g})",
+      size - 1, kLtcMinAlpha);
+  return g;
+}
+
+DfgTexel integrate_dfg(double nov, double alpha, int samples) {
+  check_samples(samples);
+  DfgTexel t;
+  for_each_lobe_sample(nov, alpha, samples, [&](const LobeSample& s) {
+    const double fc = pow5(1.0 - s.voh);
+    t.dfg1 += (1.0 - fc) * s.weight;
+    t.dfg2 += fc * s.weight;
+  });
+  t.dfg1 /= samples;
+  t.dfg2 /= samples;
+  return t;
+}
+
+GgxMoments integrate_moments(double nov, double alpha, int samples) {
+  check_samples(samples);
+  GgxMoments m;
+  brdf::Vec3 dir{0, 0, 0};
+  for_each_lobe_sample(nov, alpha, samples, [&](const LobeSample& s) {
+    const double m1 = 1.0 - s.voh;
+    const double m5 = pow5(m1);
+    m.n_d += s.weight;
+    m.f_d += m5 * s.weight;
+    m.l_d += s.voh * m5 * m1 * s.weight;
+    dir.x += s.l.x * s.weight;
+    dir.z += s.l.z * s.weight;
+  });
+  m.n_d /= samples;
+  m.f_d /= samples;
+  m.l_d /= samples;
+  // The lobe of an isotropic BRDF is symmetric about the xz-plane: the mean direction has y = 0.
+  m.average_dir = (dir.x * dir.x + dir.z * dir.z > 0.0) ? brdf::normalize(dir) : brdf::Vec3{0, 0, 1};
+  return m;
+}
+
+DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
+  check_samples(options.samples);
+  DfgTable t{grid, std::vector<DfgTexel>(static_cast<size_t>(grid.size) * grid.size)};
+  const int total = grid.size * grid.size;
+  parallel_for(grid.size, options.threads, options.progress, total, [&](int j) {
+    for (int i = 0; i < grid.size; ++i)
+      t.cells[grid.index(i, j)] = integrate_dfg(grid.nov[i], grid.alpha[j], options.samples);
+    return grid.size;
+  });
+  return t;
+}
+
+MomentsTable moments_table(const LutGrid& grid, const LutOptions& options) {
+  check_samples(options.samples);
+  MomentsTable t{grid, std::vector<GgxMoments>(static_cast<size_t>(grid.size) * grid.size)};
+  const int total = grid.size * grid.size;
+  parallel_for(grid.size, options.threads, options.progress, total, [&](int j) {
+    for (int i = 0; i < grid.size; ++i)
+      t.cells[grid.index(i, j)] = integrate_moments(grid.nov[i], grid.alpha[j], options.samples);
+    return grid.size;
+  });
+  return t;
+}
+
+double horizon_clipped_sphere_form_factor(double z, double len) {
+  z = std::clamp(z, -1.0, 1.0);
+  len = std::clamp(len, 0.0, 1.0);
+  if (len <= 0.0) return std::max(z, 0.0);
+  const double sigma = std::asin(std::sqrt(len));  // angular radius of the sphere
+  const double omega = std::acos(z);               // angle of its centre from the normal
+  const double sin_s = std::sin(sigma), cos_s = std::cos(sigma), sin2_s = sin_s * sin_s;
+  const double cos_w = std::cos(omega), sin_w = std::sin(omega);
+  // Snyder 1996, eq. for the partially visible cap: γ = asin(cos σ / sin ω) and the terms G, H.
+  auto terms = [&](double& g_term, double& h_term) {
+    const double gamma = std::asin(std::clamp(cos_s / sin_w, -1.0, 1.0));
+    const double cos_g = std::cos(gamma), sin_g = std::sin(gamma);
+    g_term = -2.0 * sin_w * cos_s * cos_g + kPi / 2.0 - gamma + sin_g * cos_g;
+    h_term = cos_w * (cos_g * std::sqrt(std::max(0.0, sin2_s - cos_g * cos_g)) +
+                      sin2_s * std::asin(std::clamp(cos_g / sin_s, -1.0, 1.0)));
+  };
+  double projected = 0.0;  // cosine-weighted solid angle of the visible part of the cap
+  if (omega <= kPi / 2.0 - sigma) {
+    projected = kPi * cos_w * sin2_s;
+  } else if (omega < kPi / 2.0) {
+    double g_term = 0, h_term = 0;
+    terms(g_term, h_term);
+    projected = kPi * cos_w * sin2_s + g_term - h_term;
+  } else if (omega < kPi / 2.0 + sigma) {
+    double g_term = 0, h_term = 0;
+    terms(g_term, h_term);
+    projected = g_term + h_term;
+  }
+  return projected / (kPi * len);
+}
+
+std::vector<double> sphere_form_factor_table(int size) {
+  check_size(size);
+  std::vector<double> out(static_cast<size_t>(size) * size);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i)
+      out[static_cast<size_t>(j) * size + i] = horizon_clipped_sphere_form_factor(
+          2.0 * i / (size - 1) - 1.0, static_cast<double>(j) / (size - 1));
+  return out;
+}
+
+LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter& fitter, int fit_sample_sqrt) {
+  check_samples(options.samples);
+  LtcTable t;
+  t.grid = ltc_grid(size);
+  const auto& g = t.grid;
+  const int total = size * size;
+  t.moments.resize(static_cast<size_t>(total));
+  t.cells.resize(static_cast<size_t>(total));
+  int done_before_rows = 0;
+
+  // Stage 1: moments and mean directions (the LTC magnitudes and frames), every cell independent.
+  // Stage 2: the normal-incidence column, rough to smooth (sequential warm starts).
+  // Stage 3: each roughness row from normal to grazing (warm starts along the row); rows in parallel.
+  const int progress_total = 2 * total;
+  LutProgress moments_progress;
+  if (options.progress) moments_progress = [&](int done, int) { options.progress(done, progress_total); };
+  parallel_for(size, options.threads, moments_progress, total, [&](int j) {
+    for (int i = 0; i < size; ++i) t.moments[g.index(i, j)] = integrate_moments(g.nov[i], g.alpha[j], options.samples);
+    return size;
+  });
+  done_before_rows = total;
+
+  auto fit_cell = [&](int i, int j, const fit::LtcParams& start) {
+    const auto& mo = t.moments[g.index(i, j)];
+    const bool isotropic = i == 0;
+    const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
+    const auto problem = fit::make_ltc_problem(g.nov[i], g.alpha[j], mo.n_d, dir, fit_sample_sqrt);
+    LtcCell c;
+    c.fit = fitter(problem, start, isotropic);
+    if (c.fit.parameters.size() != 3) throw std::runtime_error("LTC fitter returned no parameters");
+    c.params = {c.fit.parameters[0], c.fit.parameters[1], c.fit.parameters[2]};
+    c.fit_error = fit::ltc_fit_error(problem, c.params);
+    c.m = fit::ltc_matrix(problem.frame, c.params);
+    c.m_inv = fit::inverse(c.m);
+    const double s = 1.0 / c.m_inv(1, 1);
+    c.inv_packed = {c.m_inv(0, 0) * s, c.m_inv(2, 0) * s, c.m_inv(0, 2) * s, c.m_inv(2, 2) * s};
+    t.cells[g.index(i, j)] = c;
+  };
+
+  for (int j = size - 1; j >= 0; --j) {
+    fit::LtcParams start;
+    if (j < size - 1) {
+      const auto& rougher = t.cells[g.index(0, j + 1)].params;
+      start = {rougher.m11, rougher.m22, 0.0};
+    }
+    fit_cell(0, j, start);
+  }
+  if (options.progress) options.progress(done_before_rows + size, progress_total);
+
+  LutProgress rows_progress;
+  if (options.progress)
+    rows_progress = [&](int done, int) { options.progress(done_before_rows + size + done, progress_total); };
+  parallel_for(size, options.threads, rows_progress, total - size, [&](int j) {
+    for (int i = 1; i < size; ++i) fit_cell(i, j, t.cells[g.index(i - 1, j)].params);
+    return size - 1;
+  });
+  t.sphere_form_factor = sphere_form_factor_table(size);
+  return t;
+}
+
+// ---------------------------------------------------------------------------------------------
+// table lut-accuracy
+
+namespace {
+
+constexpr std::array<double, 5> kAccuracyRoughness{0.2, 0.4, 0.6, 0.8, 1.0};
+constexpr std::array<double, 6> kAccuracyViewDeg{0.0, 30.0, 50.0, 65.0, 75.0, 85.0};
+constexpr int kAccuracySamples = 4096;
+// Ground truth RGB tabulated at cos θ = k/(K − 1) and interpolated linearly in cos θ per sample.
+constexpr int kFresnelTableSize = 513;
+
+struct RgbCurve {
+  std::vector<color::Rgb> values;
+  color::Rgb at(double cos_theta) const {
+    const double x = std::clamp(cos_theta, 0.0, 1.0) * (values.size() - 1);
+    const size_t k = std::min(static_cast<size_t>(x), values.size() - 2);
+    const double f = x - static_cast<double>(k);
+    return (1.0 - f) * values[k] + f * values[k + 1];
+  }
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& materials) {
+  const double eta_e = ctx.settings().eta_outside;
+  // The lobe samples of every grid point, shared by all metals.
+  struct Point {
+    double roughness, view_deg;
+    std::vector<LobeSample> samples;
+    GgxMoments moments;
+  };
+  std::vector<Point> points;
+  for (double r : kAccuracyRoughness)
+    for (double deg : kAccuracyViewDeg) {
+      Point p{r, deg, {}, {}};
+      const double nov = std::cos(deg * kPi / 180.0);
+      for_each_lobe_sample(nov, r * r, kAccuracySamples, [&](const LobeSample& s) { p.samples.push_back(s); });
+      p.moments = integrate_moments(nov, r * r, kAccuracySamples);
+      points.push_back(std::move(p));
+    }
+
+  Table t;
+  t.name = "lut-accuracy";
+  t.title = "Pre-integrated Fresnel (LTC moments) against brute-force spectral integration (ΔE2000)";
+  t.columns = {{"material"}, {"schlick_median_de00", 3}, {"schlick_max_de00", 3}, {"f82_median_de00", 3},
+               {"f82_max_de00", 3}};
+  std::vector<double> all_schlick, all_f82, metal_schlick, metal_f82;
+  for (const auto& m : materials) {
+    if (m.material.material_class != spectral::MaterialClass::Metal) continue;
+    RgbCurve truth_curve;
+    for (int k = 0; k < kFresnelTableSize; ++k)
+      truth_curve.values.push_back(ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kFresnelTableSize - 1), eta_e));
+    const color::Rgb f0 = truth_curve.values.back();
+    const color::Rgb f82 = ground_truth_rgb(ctx, m.ior, 1.0 / 7.0, eta_e);
+    std::vector<double> de_schlick, de_f82;
+    for (const auto& p : points) {
+      color::Rgb truth{};
+      for (const auto& s : p.samples) truth = truth + s.weight * truth_curve.at(s.voh);
+      truth = (1.0 / kAccuracySamples) * truth;
+      color::Rgb schlick{}, hoffman{};
+      for (int c = 0; c < 3; ++c) {
+        const double base = f0[c] * p.moments.n_d + (1.0 - f0[c]) * p.moments.f_d;
+        schlick[c] = base;
+        hoffman[c] = base - fresnel::f82_coefficient(f0[c], f82[c]) * p.moments.l_d;
+      }
+      const auto lab_truth = ctx.rgb_to_lab(truth);
+      de_schlick.push_back(color::ciede2000(lab_truth, ctx.rgb_to_lab(schlick)));
+      de_f82.push_back(color::ciede2000(lab_truth, ctx.rgb_to_lab(hoffman)));
+    }
+    all_schlick.insert(all_schlick.end(), de_schlick.begin(), de_schlick.end());
+    all_f82.insert(all_f82.end(), de_f82.begin(), de_f82.end());
+    metal_schlick.push_back(median(de_schlick));
+    metal_f82.push_back(median(de_f82));
+    t.rows.push_back({m.material.name, metal_schlick.back(), *std::max_element(de_schlick.begin(), de_schlick.end()),
+                      metal_f82.back(), *std::max_element(de_f82.begin(), de_f82.end())});
+  }
+  std::string roughness_list, view_list;
+  for (double r : kAccuracyRoughness) roughness_list += (roughness_list.empty() ? "" : ", ") + fmt::format("{:g}", r);
+  for (double d : kAccuracyViewDeg) view_list += (view_list.empty() ? "" : ", ") + fmt::format("{:g}°", d);
+  t.reading = fmt::format(
+      "Median ΔE2000 over all metals and grid points: Schlick {:.3f}, F82 {:.3f} (median of the per-metal medians: "
+      "Schlick {:.3f}, F82 {:.3f}). The F82 moment l_D lets Hoffman's F82 model be applied to pre-integrated "
+      "lighting at the cost of one more table channel.",
+      median(all_schlick), median(all_f82), median(metal_schlick), median(metal_f82));
+  const auto& s = ctx.settings();
+  t.notes = {
+      fmt::format("Working space {}, illuminant {}, {} adaptation, outside medium η = {:g}.", s.space, s.illuminant,
+                  s.adaptation, eta_e),
+      fmt::format("Grid: perceptual roughness {} (α = roughness²) × view angle {}; per point the GGX lobe "
+                  "(height-correlated Smith) is integrated with {} visible-normal samples (Hammersley).",
+                  roughness_list, view_list, kAccuracySamples),
+      "Truth: the lobe integrated with the spectral Fresnel ground truth per v·h (RGB tabulated at 513 "
+      "values of cos θ, linear interpolation). Schlick: R0·n_D + (1 − R0)·f_D; F82: R0·n_D + (1 − R0)·f_D − a·l_D "
+      "with a from Hoffman 2019 (no clamping is possible after pre-integration). R0 = F0 and F82 from the ground "
+      "truth at cos θ = 1 and 1/7; moments from the same samples as the truth, so only the Fresnel model differs.",
+      "Only metals are listed."};
+  return t;
+}
+
+}  // namespace fl::analysis

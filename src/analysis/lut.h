@@ -1,0 +1,118 @@
+#pragma once
+// Pre-integrated GGX lookup tables: Filament's DFG table, Hill's LTC moments n_D and f_D with an F82
+// moment l_D, and LTC fits (Heitz et al. 2016). Pure computations; writing them is report/'s job.
+//
+// Every integral is over the hemisphere of light directions l of the GGX lobe without Fresnel,
+// ρ(v, l)·(n·l) = D(h) V(v, l) (n·l) (brdf/ggx.h), estimated with GGX visible-normal sampling
+// (Heitz 2018) at the points of a Hammersley set (deterministic quasi-Monte Carlo).
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analysis/context.h"
+#include "analysis/table.h"
+#include "brdf/ggx.h"
+#include "fit/ltc_fit.h"
+
+namespace fl::analysis {
+
+// Quasi-Monte Carlo points per table cell (see tests/test_lut.cpp for the accuracy this gives).
+constexpr int kLutSamples = 8192;
+// Heitz's fitLTC.cpp clamps α from below so the lobe stays finite at roughness 0.
+constexpr double kLtcMinAlpha = 1e-4;
+
+// The axes of a table. Cells are stored roughness-major: cell(i_nov, j_roughness) = cells[j·size + i].
+struct LutGrid {
+  int size = 0;
+  std::vector<double> nov;                   // per i
+  std::vector<double> perceptual_roughness;  // per j
+  std::vector<double> alpha;                 // per j: the GGX α used for the cell
+  std::string convention;                    // one line for file headers
+  int index(int i_nov, int j_roughness) const { return j_roughness * size + i_nov; }
+};
+
+// Filament's DFG texture convention: texel centres, nov = (i + ½)/N and perceptual roughness
+// (j + ½)/N, α = roughness². Bilinear lookup at uv = (n·v, roughness) then needs no remapping.
+LutGrid dfg_grid(int size);
+// Heitz's LTC convention (fitLTC.cpp): endpoints, x_i = i/(N − 1) with n·v = 1 − x² (θ capped at
+// 1.57 rad), perceptual roughness j/(N − 1), α = max(roughness², kLtcMinAlpha). Shaders look up
+// uv = (roughness, √(1 − n·v))·(N − 1)/N + ½/N.
+LutGrid ltc_grid(int size);
+
+// Channels 1 and 2 of Filament's DFG table ("Physically Based Rendering in Filament", "Pre-integration
+// for multiscattering"),
+// with Fc = (1 − v·h)⁵: dfg1 = ∫ (1 − Fc) ρ cos dl, dfg2 = ∫ Fc ρ cos dl.
+struct DfgTexel {
+  double dfg1 = 0, dfg2 = 0;
+};
+// Hill's LTC moments and the F82 moment: n_D = ∫ ρ cos, f_D = ∫ (1 − v·h)⁵ ρ cos,
+// l_D = ∫ (v·h)(1 − v·h)⁶ ρ cos, so that Hoffman's F82 model integrates to R0 n_D + (1 − R0) f_D − a l_D.
+// average_dir is the lobe's mean direction ∫ l ρ cos / ‖∫ l ρ cos‖ (the LTC frame's Z).
+struct GgxMoments {
+  double n_d = 0, f_d = 0, l_d = 0;
+  brdf::Vec3 average_dir{0, 0, 1};
+};
+
+DfgTexel integrate_dfg(double nov, double alpha, int samples = kLutSamples);
+GgxMoments integrate_moments(double nov, double alpha, int samples = kLutSamples);
+
+// Progress of a long computation: cells done of total (called from worker threads, one at a time).
+using LutProgress = std::function<void(int done, int total)>;
+struct LutOptions {
+  int samples = kLutSamples;
+  int threads = 0;  // 0: every hardware thread
+  LutProgress progress;
+};
+
+struct DfgTable {
+  LutGrid grid;
+  std::vector<DfgTexel> cells;
+};
+struct MomentsTable {
+  LutGrid grid;
+  std::vector<GgxMoments> cells;
+};
+DfgTable dfg_table(const LutGrid& grid, const LutOptions& options = {});
+MomentsTable moments_table(const LutGrid& grid, const LutOptions& options = {});
+
+// Snyder 1996, "Area Light Sources for Real-Time Graphics" (as tabulated by Heitz & Hill's
+// ltc_code, genSphereTab): the cosine-weighted solid angle of a sphere clipped to the horizon,
+// divided by π·len, for a sphere whose vector form factor has z-component `z` of its unit direction
+// and length `len` = sin²σ (σ the sphere's angular radius).
+double horizon_clipped_sphere_form_factor(double z, double len);
+// Texel (i, j) at z = 2i/(N − 1) − 1, len = j/(N − 1); stored j-major.
+std::vector<double> sphere_form_factor_table(int size);
+
+struct LtcCell {
+  fit::LtcParams params;
+  fit::LtcMatrix m, m_inv;
+  // The texture's four entries of M⁻¹ normalized by M⁻¹₁₁ (row-major indices):
+  // (M⁻¹₀₀, M⁻¹₂₀, M⁻¹₀₂, M⁻¹₂₂) / M⁻¹₁₁, i.e. ltc_code's (invM[0][0], invM[0][2], invM[2][0], invM[2][2])
+  // in glm's column-major indexing.
+  std::array<double, 4> inv_packed{};
+  fit::FitResult fit;
+  double fit_error = 0;  // relative L2 error of the fitted lobe (fit::ltc_fit_error)
+};
+struct LtcTable {
+  LutGrid grid;
+  std::vector<GgxMoments> moments;
+  std::vector<LtcCell> cells;
+  std::vector<double> sphere_form_factor;  // sphere_form_factor_table(grid.size)
+};
+
+// Fits one cell from a start; the isotropic flag holds m13 (normal incidence).
+using LtcCellFitter = std::function<fit::FitResult(const fit::LtcProblem&, const fit::LtcParams&, bool isotropic)>;
+
+// Fits every cell of ltc_grid(size) like Heitz's fitLTC.cpp: the normal-incidence column from rough to
+// smooth, each cell starting from the rougher one; then every roughness row from normal to grazing,
+// each cell starting from the previous one. Rows run in parallel; results do not depend on threads.
+LtcTable fit_ltc_table(int size, const LutOptions& options = {}, const LtcCellFitter& fitter = fit::fit_ltc_ceres,
+                       int fit_sample_sqrt = fit::kLtcDefaultSampleSqrt);
+
+// `table lut-accuracy`: per metal, pre-integrated Schlick (R0 n_D + (1 − R0) f_D) and F82
+// (… − a l_D) shading against brute-force integration of the lobe with the spectral Fresnel
+// ground truth, in ΔE2000, over a grid of roughness × view angle.
+Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& materials);
+
+}  // namespace fl::analysis

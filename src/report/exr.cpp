@@ -1,0 +1,102 @@
+#include "report/exr.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "spectral/errors.h"
+
+namespace fl::report {
+
+void write_exr_atomic(const std::string& path, const ExrImage& image) {
+  namespace fs = std::filesystem;
+  const size_t nc = image.channels.size();
+  if (image.width <= 0 || image.height <= 0 || nc == 0 ||
+      image.pixels.size() != static_cast<size_t>(image.width) * image.height * nc)
+    throw std::runtime_error(fmt::format("{}: inconsistent image ({}x{}, {} channels, {} values)", path, image.width,
+                                         image.height, nc, image.pixels.size()));
+  const fs::path p(path);
+  std::error_code ec;
+  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
+  if (fs::is_directory(p, ec)) throw InputError(path, 0, "is a directory, cannot write a file there");
+  {
+    std::ofstream probe(path + ".probe", std::ios::binary);
+    if (!probe) throw InputError(path, 0, "cannot write (folder missing or not writable)");
+  }
+  std::remove((path + ".probe").c_str());
+
+  // The temporary name keeps the .exr extension so that nothing mistakes it for another format.
+  const std::string tmp = fmt::format("{}.tmp.{}.exr", path, static_cast<long>(::getpid()));
+  try {
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    for (const auto& [name, value] : image.string_attributes) header.insert(name, Imf::StringAttribute(value));
+    for (const auto& [name, value] : image.float_attributes) header.insert(name, Imf::FloatAttribute(value));
+    Imf::FrameBuffer fb;
+    const size_t x_stride = sizeof(float) * nc;
+    const size_t y_stride = x_stride * image.width;
+    for (size_t c = 0; c < nc; ++c) {
+      header.channels().insert(image.channels[c], Imf::Channel(Imf::FLOAT));
+      // OpenEXR only reads through the slice base pointer when writing.
+      char* base = reinterpret_cast<char*>(const_cast<float*>(image.pixels.data() + c));
+      fb.insert(image.channels[c], Imf::Slice(Imf::FLOAT, base, x_stride, y_stride));
+    }
+    Imf::OutputFile out(tmp.c_str(), header);
+    out.setFrameBuffer(fb);
+    out.writePixels(image.height);
+  } catch (const std::exception& e) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(fmt::format("{}: EXR write failed: {}", path, e.what()));
+  }
+  fs::rename(tmp, p, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(fmt::format("{}: cannot move the finished file into place: {}", path, ec.message()));
+  }
+}
+
+ExrImage read_exr(const std::string& path) {
+  try {
+    Imf::InputFile in(path.c_str());
+    const auto& header = in.header();
+    const auto dw = header.dataWindow();
+    ExrImage image;
+    image.width = dw.max.x - dw.min.x + 1;
+    image.height = dw.max.y - dw.min.y + 1;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) image.channels.push_back(it.name());
+    for (auto it = header.begin(); it != header.end(); ++it) {
+      if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+        image.string_attributes.emplace_back(it.name(), s->value());
+      else if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&it.attribute()))
+        image.float_attributes.emplace_back(it.name(), f->value());
+    }
+    const size_t nc = image.channels.size();
+    image.pixels.assign(static_cast<size_t>(image.width) * image.height * nc, 0.0f);
+    Imf::FrameBuffer fb;
+    const size_t x_stride = sizeof(float) * nc;
+    const size_t y_stride = x_stride * image.width;
+    for (size_t c = 0; c < nc; ++c) {
+      char* base = reinterpret_cast<char*>(image.pixels.data() + c) -
+                   static_cast<std::ptrdiff_t>(dw.min.x * x_stride + dw.min.y * y_stride);
+      fb.insert(image.channels[c], Imf::Slice(Imf::FLOAT, base, x_stride, y_stride));
+    }
+    in.setFrameBuffer(fb);
+    in.readPixels(dw.min.y, dw.max.y);
+    return image;
+  } catch (const std::exception& e) {
+    throw InputError(path, 0, fmt::format("cannot read EXR: {}", e.what()));
+  }
+}
+
+}  // namespace fl::report

@@ -1,0 +1,28 @@
+#pragma once
+// Float EXR images for lookup tables (OpenEXR stays inside exr.cpp).
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fl::report {
+
+// A scanline image of 32-bit float channels. Pixel (x, y) of channel c is
+// pixels[(y·width + x)·channels.size() + c]; row y = 0 is the first row of the file.
+struct ExrImage {
+  int width = 0, height = 0;
+  std::vector<std::string> channels;  // e.g. R, G, B, A
+  std::vector<float> pixels;
+  std::vector<std::pair<std::string, std::string>> string_attributes;
+  std::vector<std::pair<std::string, float>> float_attributes;
+};
+
+// Writes ZIP-compressed float channels with the attributes in the header, to a temporary file
+// beside `path` that is renamed into place when complete. Throws InputError when the folder
+// cannot be written.
+void write_exr_atomic(const std::string& path, const ExrImage& image);
+
+// Reads every channel of a file written by write_exr_atomic (float pixels and the string and
+// float attributes), for tests and tools.
+ExrImage read_exr(const std::string& path);
+
+}  // namespace fl::report
