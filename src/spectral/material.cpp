@@ -168,6 +168,9 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
     m.material_class = guess_class(m.constants);
     return m;
   }
+  if (const auto ext = lower(fs::path(spec).extension().string()); ext == ".csv" || ext == ".yml" || ext == ".yaml")
+    throw InputError(spec, 0, fmt::format("no such file (nor a catalog name in {} or a database page under {}/data)",
+                                          paths.materials, paths.database));
   throw InputError(fmt::format("unknown material '{}': not a catalog name in {}, a file, or a database page under {}/data",
                                spec, paths.materials, paths.database));
 }
