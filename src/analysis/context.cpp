@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fresnel/exact.h"
+#include "fresnel/ground_truth.h"
 #include "spectral/errors.h"
 
 namespace fl::analysis {
@@ -65,13 +65,7 @@ std::vector<LoadedMaterial> load_catalog(const Context& ctx) {
 
 color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectrum& ior, double cos_theta,
                             double eta_outside) {
-  const auto& w = ctx.rgb_weights();
-  color::Rgb out;
-  for (size_t i = 0; i < w.size(); ++i) {
-    const double r = fresnel::fresnel_conductor(cos_theta, ior.ior[i] / eta_outside);
-    out = out + r * w[i];
-  }
-  return out;
+  return fresnel::spectral_reflectance_rgb(ctx.rgb_weights(), ior, cos_theta, eta_outside);
 }
 
 std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
@@ -80,12 +74,6 @@ std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::C
   out.reserve(ctx.cos_thetas().size());
   for (double c : ctx.cos_thetas()) out.push_back(ground_truth_rgb(ctx, ior, c, eta_outside));
   return out;
-}
-
-color::Rgb process_as_reflectance(const Context& ctx, const spectral::ComplexIorSpectrum& ior, bool kappa) {
-  std::vector<double> v(ior.ior.size());
-  for (size_t i = 0; i < v.size(); ++i) v[i] = kappa ? ior.ior[i].imag() : ior.ior[i].real();
-  return ctx.spectrum_to_rgb(v);
 }
 
 std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,

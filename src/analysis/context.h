@@ -46,7 +46,7 @@ class Context {
 
   template <class T>
   color::LabT<T> rgb_to_lab(const color::RgbT<T>& rgb) const {
-    return color::xyz_to_lab(space_.rgb_to_xyz * rgb, space_.white);
+    return color::LabConverter{space_.rgb_to_xyz, space_.white}(rgb);
   }
 
  private:
@@ -73,8 +73,6 @@ color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectr
                             double eta_outside);
 std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
                                            double eta_outside);
-// A spectrum of values (η or κ) processed as if it were a reflectance.
-color::Rgb process_as_reflectance(const Context& ctx, const spectral::ComplexIorSpectrum& ior, bool kappa);
 
 struct CurveError {
   double rms = 0, mean = 0, max = 0, rms_weighted = 0;

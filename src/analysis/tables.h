@@ -1,6 +1,7 @@
 #pragma once
 // The report tables (SPEC §6).
 #include "analysis/context.h"
+#include "analysis/study.h"
 #include "analysis/table.h"
 
 namespace fl::analysis {
@@ -9,7 +10,22 @@ namespace fl::analysis {
 // ground truth, per catalog material.
 Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& materials);
 
+// The talk's table of derivation methods (SPEC §3), metals only.
+Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
+
+// Every material × every model × {derived, fitted}: RMS, mean, max and render-weighted RMS.
+Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
+
+// F0, F82, g, η, κ per material (SPEC §6 columns; values outside [0, 1] kept and flagged).
+Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
+// The OpenPBR form: base_color = F0, specular_color = F82 / Schlick(F0) at arccos(1/7).
+Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
+// A MaterialX document with one generalized_schlick_bsdf (color0, color82) per material.
+std::string presets_materialx(const Context& ctx, const std::vector<MaterialStudy>& studies);
+
 // One curve's worth of output for `curve`: per angle, ground truth, model and ΔE2000.
-Table curve_table(const Context& ctx, const LoadedMaterial& m, const std::string& model);
+// `parameters` is "derived" or "fitted".
+Table curve_table(const Context& ctx, const LoadedMaterial& m, const std::string& model,
+                  const std::string& parameters = "derived");
 
 }  // namespace fl::analysis

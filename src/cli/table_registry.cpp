@@ -7,12 +7,28 @@
 
 namespace fl::cli {
 
+const std::vector<analysis::MaterialStudy>& TableInputs::studies() {
+  if (!studies_) {
+    analysis::StudyOptions o;
+    studies_ = analysis::study_materials(ctx, materials, o, [this](int done, int total) {
+      if (!g.quiet) fmt::print(stderr, "\rfitting: {}/{} materials{}", done, total, done == total ? "\n" : "");
+    });
+  }
+  return *studies_;
+}
+
 const std::vector<TableSpec>& table_specs() {
   static const std::vector<TableSpec> specs{
       {"schlick", "Schlick (spectral F0) against spectral ground truth, every catalog material",
-       [](const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms, const GlobalOptions&) {
-         return analysis::schlick_table(ctx, ms);
-       }},
+       [](TableInputs& in) { return analysis::schlick_table(in.ctx, in.materials); }},
+      {"methods", "the talk's ways to derive RGB parameters (point sampling, reflectance processing, fitting), metals",
+       [](TableInputs& in) { return analysis::methods_table(in.ctx, in.studies()); }},
+      {"models", "every Fresnel model with derived and fitted parameters, every catalog material",
+       [](TableInputs& in) { return analysis::models_table(in.ctx, in.studies()); }},
+      {"presets", "F0, F82, g, eta, kappa per material in the working space",
+       [](TableInputs& in) { return analysis::presets_table(in.ctx, in.studies()); }},
+      {"presets_openpbr", "OpenPBR F82-tint form: base_color and specular_color per material",
+       [](TableInputs& in) { return analysis::openpbr_table(in.ctx, in.studies()); }},
   };
   return specs;
 }

@@ -34,10 +34,16 @@ LabT<T> xyz_to_lab(const XyzT<T>& v, const Xyz& white) {
   return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
 }
 
+// The weighted terms of CIEDE2000: ΔE00² = l² + c² + h² + rt·c·h.
+template <class T>
+struct De2000Terms {
+  T l, c, h, rt;
+};
+
 // Sharma, Wu & Dalal 2005, "The CIEDE2000 color-difference formula: implementation notes";
 // kL = kC = kH = 1. Hue angles in degrees; 25^7 is the formula's chroma constant.
 template <class T>
-T ciede2000(const LabT<T>& lab1, const LabT<T>& lab2) {
+De2000Terms<T> ciede2000_terms(const LabT<T>& lab1, const LabT<T>& lab2) {
   using std::atan2;
   using std::cos;
   using std::exp;
@@ -91,8 +97,39 @@ T ciede2000(const LabT<T>& lab1, const LabT<T>& lab2) {
   const T sc = 1.0 + 0.045 * cp_bar;
   const T sh = 1.0 + 0.015 * cp_bar * t;
   const T rt = -sin(2.0 * d_theta * r) * rc;
-  const T tl = dl / sl, tc = dc / sc, th = d_big_h / sh;
-  return safe_sqrt(tl * tl + tc * tc + th * th + rt * tc * th);
+  return {dl / sl, dc / sc, d_big_h / sh, rt};
 }
+
+template <class T>
+T ciede2000(const LabT<T>& lab1, const LabT<T>& lab2) {
+  const auto d = ciede2000_terms(lab1, lab2);
+  return detail::safe_sqrt(d.l * d.l + d.c * d.c + d.h * d.h + d.rt * d.c * d.h);
+}
+
+// Three smooth residuals whose squares sum to ΔE00²: l, c + (rt/2)·h, sqrt(1 − rt²/4)·h
+// (|rt| ≤ 2·sin 60° < 2, so the root is real). Least squares on these minimizes Σ ΔE00²
+// without the kink that ΔE00 itself has at zero.
+template <class T>
+void ciede2000_residuals(const LabT<T>& lab1, const LabT<T>& lab2, T* residuals) {
+  using std::sqrt;
+  const auto d = ciede2000_terms(lab1, lab2);
+  residuals[0] = d.l;
+  residuals[1] = d.c + 0.5 * d.rt * d.h;
+  residuals[2] = sqrt(1.0 - 0.25 * d.rt * d.rt) * d.h;
+}
+
+}  // namespace fl::color
+
+namespace fl::color {
+
+// Working-space RGB → CIELAB relative to the space's white, templated for Ceres.
+struct LabConverter {
+  Mat3 rgb_to_xyz;
+  Xyz white;
+  template <class T>
+  LabT<T> operator()(const RgbT<T>& rgb) const {
+    return xyz_to_lab(rgb_to_xyz * rgb, white);
+  }
+};
 
 }  // namespace fl::color

@@ -1,3 +1,179 @@
 #include "fit/fit.h"
 
 #include <ceres/ceres.h>
+#include <ceres/gradient_checker.h>
+
+#include <algorithm>
+#include <limits>
+#include <cmath>
+#include <memory>
+
+namespace fl::fit {
+namespace {
+
+using fresnel::Model;
+
+constexpr int param_count(Model m) {
+  switch (m) {
+    case Model::Schlick: return 3;
+    case Model::GeneralizedSchlick: return 9;
+    case Model::CookTorrance: return 5;
+    case Model::Lazanyi: return 9;
+    case Model::F82: return 6;
+    case Model::Gulbrandsen: return 6;
+    case Model::FresnelRgb: return 6;
+  }
+  return 0;
+}
+
+// Three residuals per angle whose squares sum to ΔE2000² between the ground truth and the model's
+// RGB (color::ciede2000_residuals), both in the working space's CIELAB. The Jacobian is formed by
+// the chain rule from two automatic derivatives: the model's RGB over its parameters (Jets of
+// kParams lanes) and the residuals over RGB (Jets of 3 lanes), so the costly colour-difference
+// arithmetic carries 3 derivative lanes instead of up to 9.
+template <Model M>
+class ModelCurveCost : public ceres::CostFunction {
+ public:
+  static constexpr int kParams = param_count(M);
+
+  explicit ModelCurveCost(const CurveTarget* target)
+      : target_(target), per_channel_(fresnel::model_spec(M).per_channel()) {
+    set_num_residuals(3 * static_cast<int>(target->cos_thetas.size()));
+    mutable_parameter_block_sizes()->push_back(kParams);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    using ParamJet = ceres::Jet<double, kParams>;
+    using RgbJet = ceres::Jet<double, 3>;
+    const double* p = parameters[0];
+    double* jac = jacobians ? jacobians[0] : nullptr;
+    ParamJet pj[kParams];
+    for (int k = 0; k < kParams; ++k) pj[k] = ParamJet(p[k], k);
+    for (size_t i = 0; i < target_->cos_thetas.size(); ++i) {
+      const auto& t = target_->truth_lab[i];
+      double* r = residuals + 3 * i;
+      if (!jac) {
+        const auto rgb = fresnel::evaluate_rgb<double>(M, per_channel_, target_->cos_thetas[i], p);
+        color::ciede2000_residuals(t, target_->to_lab(rgb), r);
+        continue;
+      }
+      const auto rgb = fresnel::evaluate_rgb<ParamJet>(M, per_channel_, ParamJet(target_->cos_thetas[i]), pj);
+      const color::RgbT<RgbJet> rgb3{RgbJet(rgb.r.a, 0), RgbJet(rgb.g.a, 1), RgbJet(rgb.b.a, 2)};
+      RgbJet rj[3];
+      color::ciede2000_residuals(color::LabT<RgbJet>{RgbJet(t.L), RgbJet(t.a), RgbJet(t.b)}, target_->to_lab(rgb3), rj);
+      for (int q = 0; q < 3; ++q) {
+        r[q] = rj[q].a;
+        for (int k = 0; k < kParams; ++k)
+          jac[(3 * i + q) * kParams + k] = rj[q].v[0] * rgb.r.v[k] + rj[q].v[1] * rgb.g.v[k] + rj[q].v[2] * rgb.b.v[k];
+      }
+    }
+    return true;
+  }
+
+  static ceres::CostFunction* Create(const CurveTarget* target) { return new ModelCurveCost(target); }
+
+ private:
+  const CurveTarget* target_;
+  int per_channel_;
+};
+
+ceres::CostFunction* create_cost(Model m, const CurveTarget* target) {
+  switch (m) {
+    case Model::Schlick: return ModelCurveCost<Model::Schlick>::Create(target);
+    case Model::GeneralizedSchlick: return ModelCurveCost<Model::GeneralizedSchlick>::Create(target);
+    case Model::CookTorrance: return ModelCurveCost<Model::CookTorrance>::Create(target);
+    case Model::Lazanyi: return ModelCurveCost<Model::Lazanyi>::Create(target);
+    case Model::F82: return ModelCurveCost<Model::F82>::Create(target);
+    case Model::Gulbrandsen: return ModelCurveCost<Model::Gulbrandsen>::Create(target);
+    case Model::FresnelRgb: return ModelCurveCost<Model::FresnelRgb>::Create(target);
+  }
+  return nullptr;
+}
+
+FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> params, const FitOptions& options) {
+  const auto bounds = fresnel::model_spec(m).bounds();
+  for (size_t i = 0; i < params.size(); ++i) {
+    // Strictly inside the bounds: some kernels have kinks exactly at the ends (g = 0, F0 = 0).
+    const double margin = 1e-9 * (bounds[i].hi - bounds[i].lo);
+    params[i] = std::clamp(params[i], bounds[i].lo + margin, bounds[i].hi - margin);
+  }
+  ceres::Problem problem;
+  problem.AddResidualBlock(create_cost(m, &target), nullptr, params.data());
+  for (size_t i = 0; i < params.size(); ++i) {
+    problem.SetParameterLowerBound(params.data(), static_cast<int>(i), bounds[i].lo);
+    problem.SetParameterUpperBound(params.data(), static_cast<int>(i), bounds[i].hi);
+  }
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = options.max_iterations;
+  so.function_tolerance = 1e-10;
+  so.gradient_tolerance = 1e-12;
+  so.parameter_tolerance = 1e-10;
+  so.logging_type = ceres::SILENT;
+  so.num_threads = 1;
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  FitResult r;
+  r.parameters = params;
+  r.cost = summary.final_cost;
+  r.initial_cost = summary.initial_cost;
+  r.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  r.termination = ceres::TerminationTypeToString(summary.termination_type);
+  r.usable = summary.IsSolutionUsable() && std::isfinite(summary.final_cost);
+  return r;
+}
+
+}  // namespace
+
+static double start_cost(Model m, const CurveTarget& target, const std::vector<double>& params) {
+  const int pc = fresnel::model_spec(m).per_channel();
+  double cost = 0;
+  for (size_t i = 0; i < target.cos_thetas.size(); ++i) {
+    const auto rgb = fresnel::evaluate_rgb<double>(m, pc, target.cos_thetas[i], params.data());
+    const double de = color::ciede2000(target.truth_lab[i], target.to_lab(rgb));
+    cost += 0.5 * de * de;
+  }
+  return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
+}
+
+FitResult fit_model(Model m, const CurveTarget& target, const std::vector<std::vector<double>>& starts,
+                    const FitOptions& options) {
+  // Rank the starts by their cost (cheap), then solve from the best few.
+  std::vector<std::pair<double, size_t>> ranked;
+  for (size_t i = 0; i < starts.size(); ++i) {
+    if (static_cast<int>(starts[i].size()) != param_count(m)) throw std::invalid_argument("fit_model: wrong parameter count");
+    ranked.emplace_back(start_cost(m, target, starts[i]), i);
+  }
+  std::stable_sort(ranked.begin(), ranked.end());
+  if (static_cast<int>(ranked.size()) > options.max_solves) ranked.resize(options.max_solves);
+  FitResult best;
+  bool have = false;
+  for (const auto& [cost0, index] : ranked) {
+    FitResult r = solve_once(m, target, starts[index], options);
+    if (r.usable && (!have || r.cost < best.cost)) {
+      best = std::move(r);
+      have = true;
+    }
+  }
+  best.starts = static_cast<int>(ranked.size());
+  return best;
+}
+
+double rms_from_cost(double cost, size_t angles) { return std::sqrt(2.0 * cost / static_cast<double>(angles)); }
+
+GradientCheck check_model_gradients(Model m, const CurveTarget& target, const std::vector<double>& params) {
+  std::unique_ptr<ceres::CostFunction> cost(create_cost(m, &target));
+  ceres::NumericDiffOptions nd;
+  const std::vector<const ceres::Manifold*>* no_manifolds = nullptr;
+  ceres::GradientChecker checker(cost.get(), no_manifolds, nd);
+  ceres::GradientChecker::ProbeResults results;
+  const double* blocks[] = {params.data()};
+  GradientCheck out;
+  // Relative precision of central-free forward differences on ΔE2000 (cube roots, atan2).
+  out.ok = checker.Probe(blocks, 1e-5, &results);
+  out.max_relative_error = results.maximum_relative_error;
+  out.report = results.error_log;
+  return out;
+}
+
+}  // namespace fl::fit

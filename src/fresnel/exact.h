@@ -33,7 +33,9 @@ Polarized<T> fresnel_conductor_polarized(T cos_theta_i, T eta, T kappa) {
   const T a = safe_sqrt(a2);
   const T t1 = a2pb2 + c2;
   const T t2 = 2.0 * a * cos_theta_i;
-  const T r_s = (t1 - t2) / (t1 + t2);
+  // t1 + t2 = 0 only at grazing incidence on an index-matched interface (η = 1, κ = 0), where the
+  // limit θ → 90° of every other index is full reflection (as fresnel_dielectric returns).
+  const T r_s = t1 + t2 > T(0.0) ? (t1 - t2) / (t1 + t2) : T(1.0);
   const T t3 = a2pb2 * c2 + s2 * s2;
   const T t4 = t2 * s2;
   // At grazing incidence both polarizations reflect fully; t3 + t4 → 0 only when a2pb2 = 0.

@@ -72,10 +72,20 @@ std::string json_escape(const std::string& s) {
 
 std::string to_csv(const analysis::Table& t) {
   std::string out;
-  for (size_t c = 0; c < t.columns.size(); ++c) out += (c ? "," : "") + csv_quote(t.columns[c].name);
+  bool first = true;
+  for (const auto& col : t.columns) {
+    if (!col.in_csv) continue;
+    out += (first ? "" : ",") + csv_quote(col.name);
+    first = false;
+  }
   out += '\n';
   for (const auto& row : t.rows) {
-    for (size_t c = 0; c < row.size(); ++c) out += (c ? "," : "") + csv_quote(cell_text(row[c], t.columns[c].precision, ""));
+    first = true;
+    for (size_t c = 0; c < row.size(); ++c) {
+      if (!t.columns[c].in_csv) continue;
+      out += (first ? "" : ",") + csv_quote(cell_text(row[c], t.columns[c].precision, ""));
+      first = false;
+    }
     out += '\n';
   }
   return out;

@@ -1,0 +1,134 @@
+#include "analysis/study.h"
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
+
+namespace fl::analysis {
+
+using fresnel::Model;
+
+const ModelResult& MaterialStudy::result(Model m) const {
+  for (const auto& r : models)
+    if (r.model == m) return r;
+  throw std::logic_error("model not studied");
+}
+
+fit::CurveTarget curve_target(const Context& ctx, const std::vector<color::Rgb>& truth) {
+  fit::CurveTarget t;
+  t.cos_thetas = ctx.cos_thetas();
+  t.to_lab = {ctx.space().rgb_to_xyz, ctx.space().white};
+  for (const auto& rgb : truth) t.truth_lab.push_back(t.to_lab(rgb));
+  return t;
+}
+
+namespace {
+
+// Fit starts beyond the derived parameters: other derivations of the same model and a few
+// fixed variations, so a fit does not stop in a poor local minimum. Deterministic.
+std::vector<std::vector<double>> extra_starts(Model m, const fresnel::DerivedParameters& d) {
+  std::vector<std::vector<double>> s;
+  switch (m) {
+    case Model::FresnelRgb: {
+      // Gulbrandsen's η, κ for (F0, g) from both η derivations, and the point-sampled η, κ.
+      for (const auto* g : {&d.g_refl_eta, &d.g_ps_eta}) {
+        std::vector<double> p;
+        for (int c = 0; c < 3; ++c) {
+          const double eta = fresnel::gulbrandsen_eta(d.f0[c], std::clamp((*g)[c], 0.0, 1.0));
+          p.insert(p.end(), {eta, fresnel::gulbrandsen_kappa(d.f0[c], eta)});
+        }
+        s.push_back(p);
+      }
+      std::vector<double> ps;
+      for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
+      s.push_back(ps);
+      break;
+    }
+    case Model::Gulbrandsen:
+      s.push_back(fresnel::gulbrandsen_params(d.f0, d.g_ps_eta));
+      s.push_back(fresnel::gulbrandsen_params(d.f0, {0.5, 0.5, 0.5}));
+      break;
+    case Model::Lazanyi:
+      for (double alpha : {3.0, 10.0}) {
+        std::vector<double> p;
+        for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], 0.0, alpha});
+        s.push_back(p);
+      }
+      break;
+    case Model::GeneralizedSchlick: {
+      std::vector<double> p;
+      for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], 1.0, 5.0});
+      s.push_back(p);
+      break;
+    }
+    case Model::CookTorrance:
+      s.push_back({d.f0.r, d.f0.g, d.f0.b, d.eta_refl.g, d.kappa_refl.g});
+      break;
+    default:
+      break;
+  }
+  return s;
+}
+
+MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const StudyOptions& o) {
+  MaterialStudy st;
+  st.material = &m;
+  const double eta_e = ctx.settings().eta_outside;
+  st.truth = ground_truth_curve(ctx, m.ior, eta_e);
+  st.derived = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, m.ior, eta_e, o.point_sample_nm);
+  const auto& d = st.derived;
+  const auto& cos = ctx.cos_thetas();
+  const auto target = curve_target(ctx, st.truth);
+  for (const auto& spec : fresnel::model_specs()) {
+    ModelResult r;
+    r.model = spec.model;
+    r.derived = fresnel::derived_model_params(spec.model, d);
+    r.derived_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.derived, cos));
+    if (spec.model == Model::F82) r.derived_clamps = fresnel::f82_model_clamps(r.derived, cos);
+    if (o.fit) {
+      auto starts = extra_starts(spec.model, d);
+      starts.insert(starts.begin(), r.derived);
+      r.fitted = fit::fit_model(spec.model, target, starts);
+      r.fitted_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
+      if (spec.model == Model::F82) r.fitted_clamps = fresnel::f82_model_clamps(r.fitted.parameters, cos);
+    }
+    st.models.push_back(std::move(r));
+  }
+  std::vector<double> ps;
+  for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
+  st.ps_eta_kappa = curve_error(ctx, st.truth, fresnel::evaluate_curve(Model::FresnelRgb, ps, cos));
+  const auto g_ps = fresnel::gulbrandsen_params(d.f0, d.g_ps_eta, &st.g_clamped_ps);
+  fresnel::gulbrandsen_params(d.f0, d.g_refl_eta, &st.g_clamped_refl);
+  st.refl_f0_ps_eta = curve_error(ctx, st.truth, fresnel::evaluate_curve(Model::Gulbrandsen, g_ps, cos));
+  return st;
+}
+
+}  // namespace
+
+std::vector<MaterialStudy> study_materials(const Context& ctx, const std::vector<LoadedMaterial>& materials,
+                                           const StudyOptions& options, const std::function<void(int, int)>& progress) {
+  std::vector<MaterialStudy> out(materials.size());
+  std::atomic<size_t> next{0};
+  std::atomic<int> done{0};
+  std::mutex progress_mutex;
+  const int threads = std::max(1, options.threads > 0 ? options.threads
+                                                      : static_cast<int>(std::thread::hardware_concurrency()));
+  auto worker = [&] {
+    for (size_t i = next++; i < materials.size(); i = next++) {
+      out[i] = study_one(ctx, materials[i], options);
+      const int n = ++done;
+      if (progress) {
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        progress(n, static_cast<int>(materials.size()));
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  return out;
+}
+
+}  // namespace fl::analysis

@@ -1,0 +1,49 @@
+#pragma once
+// Everything the parameter tables need per material, computed once: ground truth, derived
+// parameters, and every model's derived and fitted parameter sets with their errors.
+#include <functional>
+#include <vector>
+
+#include "analysis/context.h"
+#include "fit/fit.h"
+#include "fresnel/derive.h"
+
+namespace fl::analysis {
+
+struct ModelResult {
+  fresnel::Model model;
+  std::vector<double> derived;
+  CurveError derived_error;
+  fit::FitResult fitted;
+  CurveError fitted_error;
+  bool derived_clamps = false, fitted_clamps = false;  // the F82 model left [0, 1] and was clamped
+};
+
+struct MaterialStudy {
+  const LoadedMaterial* material = nullptr;
+  std::vector<color::Rgb> truth;
+  fresnel::DerivedParameters derived;
+  std::vector<ModelResult> models;  // model_specs() order
+  // The talk's method table (SPEC §3) beyond what `models` holds.
+  CurveError ps_eta_kappa, refl_f0_ps_eta;
+  int g_clamped_ps = 0, g_clamped_refl = 0;  // channels whose g left [0, 1]
+
+  const ModelResult& result(fresnel::Model m) const;
+};
+
+struct StudyOptions {
+  std::array<double, 3> point_sample_nm = fresnel::kDefaultPointSampleNm;
+  bool fit = true;  // run the Ceres fits (fitted parameter sets)
+  int threads = 0;  // 0: hardware concurrency
+};
+
+// Studies every material (in parallel over materials; each study is deterministic).
+// `progress` is called after each material with (done, total).
+std::vector<MaterialStudy> study_materials(const Context& ctx, const std::vector<LoadedMaterial>& materials,
+                                           const StudyOptions& options,
+                                           const std::function<void(int, int)>& progress = {});
+
+// The target of a fit: the ground truth in the working space's CIELAB at the context's angles.
+fit::CurveTarget curve_target(const Context& ctx, const std::vector<color::Rgb>& truth);
+
+}  // namespace fl::analysis

@@ -1,0 +1,34 @@
+#pragma once
+// Spectral ground truth and the spectral procedures that derive RGB parameters (SPEC §2–3).
+#include <array>
+#include <vector>
+
+#include "color/types.h"
+#include "spectral/spectrum.h"
+
+namespace fl::fresnel {
+
+// RGB of the reflectance spectrum at cosθ for the complex index relative to an outside medium of
+// real index eta_outside; `rgb_weights` is the colour pipeline (RGB = Σ R(λ)·w(λ)).
+color::Rgb spectral_reflectance_rgb(const std::vector<color::Rgb>& rgb_weights,
+                                    const spectral::ComplexIorSpectrum& ior, double cos_theta,
+                                    double eta_outside);
+
+// η(λ) or κ(λ) pushed through the colour pipeline as if it were a reflectance ("Refl. η,κ").
+color::Rgb process_as_reflectance(const std::vector<color::Rgb>& rgb_weights,
+                                  const spectral::ComplexIorSpectrum& ior, bool kappa);
+
+// η, κ linearly interpolated at one wavelength per channel ("PS η,κ").
+struct PointSampled {
+  color::Rgb eta, kappa;
+};
+PointSampled point_sample(const spectral::ComplexIorSpectrum& ior, const std::array<double, 3>& lambda_nm);
+
+// Default point-sampling wavelengths: 630, 532 and 467 nm, the monochromatic primaries of
+// Rec.2020 — the nearest thing a wide-gamut RGB space has to one wavelength per channel.
+constexpr std::array<double, 3> kDefaultPointSampleNm{630.0, 532.0, 467.0};
+
+// cos θ82 = 1/7 (θ ≈ 81.79°), where Hoffman's F82 model takes its second sample.
+constexpr double kCosTheta82 = 1.0 / 7.0;
+
+}  // namespace fl::fresnel
