@@ -463,5 +463,28 @@ TEST(LutCli, BadInputExitsTwoAndWritesNothing) {
   }
 }
 
+TEST(LutCli, F82MomentBeatsSchlickOnMetals) {
+  const auto r = test::run_command(test::cli() + " -q table lut-accuracy");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream in(r.out);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "material,schlick_median_de00,schlick_max_de00,f82_median_de00,f82_max_de00");
+  std::vector<double> schlick, f82;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    std::string cell;
+    std::vector<std::string> cells;
+    while (std::getline(row, cell, ',')) cells.push_back(cell);
+    ASSERT_EQ(cells.size(), 5u) << line;
+    schlick.push_back(std::stod(cells[1]));
+    f82.push_back(std::stod(cells[3]));
+  }
+  ASSERT_EQ(schlick.size(), 14u);  // the catalog's metals
+  std::sort(schlick.begin(), schlick.end());
+  std::sort(f82.begin(), f82.end());
+  EXPECT_LT(f82[7] + f82[6], schlick[7] + schlick[6]);  // medians of 14 values
+}
+
 }  // namespace
 }  // namespace fl::analysis

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis/tables.h"
+#include "analysis/lut.h"
 #include "spectral/errors.h"
 
 namespace fl::cli {
@@ -29,6 +30,8 @@ const std::vector<TableSpec>& table_specs() {
        [](TableInputs& in) { return analysis::presets_table(in.ctx, in.studies()); }},
       {"presets_openpbr", "OpenPBR F82-tint form: base_color and specular_color per material",
        [](TableInputs& in) { return analysis::openpbr_table(in.ctx, in.studies()); }},
+      {"lut-accuracy", "pre-integrated Schlick and F82 (LTC moments) against brute-force spectral integration, metals",
+       [](TableInputs& in) { return analysis::lut_accuracy_table(in.ctx, in.materials); }},
   };
   return specs;
 }
