@@ -28,7 +28,9 @@ Polarized<T> fresnel_conductor_polarized(T cos_theta_i, T eta, T kappa) {
   const T s2 = 1.0 - c2;
   const T t0 = eta * eta - kappa * kappa - s2;
   const T a2pb2 = safe_sqrt(t0 * t0 + 4.0 * eta * eta * kappa * kappa);
-  T a2 = 0.5 * (a2pb2 + t0);
+  // a² = (a² + b² + t0)/2 cancels when t0 < 0 (η < 1 or κ > η near and past the critical
+  // angle); there the equal form 2η²κ²/(a² + b² − t0) keeps float precision.
+  T a2 = t0 >= T(0.0) ? 0.5 * (a2pb2 + t0) : 2.0 * eta * eta * kappa * kappa / (a2pb2 - t0);
   if (a2 < T(0.0)) a2 = T(0.0);
   const T a = safe_sqrt(a2);
   const T t1 = a2pb2 + c2;

@@ -307,7 +307,7 @@ struct QuantitySource {
     for (const auto* b : blocks) {
       if (lambda_nm >= b->min_nm && lambda_nm <= b->max_nm) { clamped = false; return value_in(*b, lambda_nm); }
       const double d = lambda_nm < b->min_nm ? b->min_nm - lambda_nm : lambda_nm - b->max_nm;
-      if (d < best) { best = d; nearest = b; }
+      if (!nearest || d < best) { best = d; nearest = b; }  // d can exceed any bound (λ = 1e300)
     }
     clamped = true;
     return value_in(*nearest, lambda_nm);
