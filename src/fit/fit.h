@@ -40,8 +40,9 @@ FitResult fit_model(fresnel::Model model, const CurveTarget& target, const std::
 // The RMS ΔE2000 a fit's cost stands for over N angles: sqrt(2·cost / N).
 double rms_from_cost(double cost, size_t angles);
 
-// ceres::GradientChecker on the model's cost function at `params`: the largest relative error
-// between automatic and finite-difference Jacobians.
+// ceres::GradientChecker on the model's cost function at `params`: the largest difference between
+// the automatic and finite-difference Jacobians, relative for entries above 1 and absolute below.
+// ok is false when the cost function could not be evaluated.
 struct GradientCheck {
   bool ok = false;
   double max_relative_error = 0;
