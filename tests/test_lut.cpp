@@ -172,6 +172,22 @@ TEST(GgxKernels, NdfProjectedAreaIsOne) {
   }
 }
 
+// Heitz 2014, eq. 72 and 99: Λ(θ) = (−1 + √(1 + α² tan²θ))/2, G₁ = 1/(1 + Λ(v)) and the
+// height-correlated G₂ = 1/(1 + Λ(v) + Λ(l)) = 4 (n·v)(n·l) V.
+TEST(GgxKernels, VisibilityMatchesTheSmithLambdaForm) {
+  auto lambda = [](double c, double alpha) {
+    const double tan2 = (1 - c * c) / (c * c);
+    return 0.5 * (-1 + std::sqrt(1 + alpha * alpha * tan2));
+  };
+  for (double alpha : {0.01, 0.2, 0.6, 1.0})
+    for (double nov : {0.05, 0.4, 0.9, 1.0})
+      for (double nol : {0.1, 0.5, 0.99}) {
+        const double g2 = 1 / (1 + lambda(nov, alpha) + lambda(nol, alpha));
+        EXPECT_NEAR(4 * nov * nol * brdf::smith_ggx_correlated_visibility(nov, nol, alpha), g2, 1e-12);
+        EXPECT_NEAR(brdf::smith_ggx_g1(nov, alpha), 1 / (1 + lambda(nov, alpha)), 1e-12);
+      }
+}
+
 TEST(GgxKernels, HammersleyPointsAreStratified) {
   constexpr int n = 16;
   std::vector<double> u1;

@@ -371,8 +371,8 @@ Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& 
   for (double d : kAccuracyViewDeg) view_list += (view_list.empty() ? "" : ", ") + fmt::format("{:g}°", d);
   t.reading = fmt::format(
       "Median ΔE2000 over all metals and grid points: Schlick {:.3f}, F82 {:.3f} (median of the per-metal medians: "
-      "Schlick {:.3f}, F82 {:.3f}). The F82 moment l_D lets Hoffman's F82 model be applied to pre-integrated "
-      "lighting at the cost of one more table channel.",
+      "Schlick {:.3f}, F82 {:.3f}). Schlick's error grows towards grazing views and for metals with a strong edge "
+      "tint (the max columns); the F82 moment l_D removes most of it.",
       median(all_schlick), median(all_f82), median(metal_schlick), median(metal_f82));
   const auto& s = ctx.settings();
   t.notes = {

@@ -127,8 +127,8 @@ struct Point2 {
   double u1 = 0, u2 = 0;
 };
 
-// Hammersley 1964 (as in Filament's IBL prefilter, after Dammertz 2012): point i of n is
-// (radical_inverse(i), (i + ½)/n). The half offset centres each stratum of the second coordinate.
+// Hammersley 1964 (as in Filament's IBL code, after Dammertz 2012): point i of n is
+// (radical_inverse(i), (i + ½)/n). Filament uses i/n; the half offset centres each stratum.
 inline Point2 hammersley(std::uint32_t i, std::uint32_t n) {
   return {radical_inverse_base2(i), (static_cast<double>(i) + 0.5) / static_cast<double>(n)};
 }

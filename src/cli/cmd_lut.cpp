@@ -4,6 +4,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "analysis/lut.h"
 #include "cli/app.h"
@@ -234,9 +235,18 @@ int run_ltc(const GlobalOptions& g, const LutArgs& a) {
              "(its own axes: x → z = 2x - 1, y → length of the vector form factor)");
     const auto stem = (std::filesystem::path(a.out).parent_path() / std::filesystem::path(a.out).stem()).string();
     const std::string p1 = stem + "_1.exr", p2 = stem + "_2.exr", pc = stem + ".csv";
-    report::write_exr_atomic(p1, tex1);
-    report::write_exr_atomic(p2, tex2);
-    report::write_file_atomic(pc, csv);
+    // Each file is written atomically; if a later one fails, the earlier ones are removed too.
+    std::vector<std::string> written;
+    try {
+      report::write_exr_atomic(p1, tex1);
+      written.push_back(p1);
+      report::write_exr_atomic(p2, tex2);
+      written.push_back(p2);
+      report::write_file_atomic(pc, csv);
+    } catch (...) {
+      for (const auto& w : written) std::filesystem::remove(w);
+      throw;
+    }
     progress(g, fmt::format("lut ltc: wrote {}, {} and {}", p1, p2, pc));
   }
   progress(g, fmt::format("lut ltc: fit error (relative L2) mean {:.4f}, max {:.4f} over {} cells", error_sum / (n * n),
