@@ -14,7 +14,7 @@ PACKAGES=(
   libyaml-cpp-dev libcli11-dev libfmt-dev
   colord-data
   googletest libgtest-dev libgmock-dev libbenchmark-dev
-  liblcms2-dev libpng-dev fonts-dejavu-core
+  liblcms2-dev libpng-dev fonts-dejavu-core libfreetype-dev
   clang libclang-rt-14-dev
 )
 

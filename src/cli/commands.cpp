@@ -13,6 +13,12 @@
 namespace fl::cli {
 
 void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_lut.cpp
+void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_plot.cpp
+void add_render(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_plot.cpp
+// The figures reproduce writes (relative path, bytes) and their Markdown gallery (cli/cmd_plot.cpp).
+std::vector<std::pair<std::string, std::string>> reproduce_figures(const GlobalOptions& g, const analysis::Context& ctx,
+                                                                   const std::vector<analysis::MaterialStudy>& studies,
+                                                                   std::string& gallery_md);
 
 namespace {
 
@@ -109,8 +115,10 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand("reproduce", "every table as DIR/NAME.csv and DIR/NAME.md, plus DIR/README.md");
   auto out = std::make_shared<std::string>();
   sub->add_option("--out", *out, "output folder (created if missing)")->required();
-  sub->callback([&g, &selected, out] {
-    selected = [&g, out] {
+  auto no_figures = std::make_shared<bool>(false);
+  sub->add_flag("--no-figures", *no_figures, "skip DIR/figures/ (colour strips and curve plots per material)");
+  sub->callback([&g, &selected, out, no_figures] {
+    selected = [&g, out, no_figures] {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
@@ -134,6 +142,12 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
       files.emplace_back("presets.mtlx", analysis::presets_materialx(ctx, in.studies()));
       index += "| presets (JSON, MaterialX) | the presets as JSON, and a MaterialX document with one "
                "generalized_schlick_bsdf per material | [presets.json](presets.json), [presets.mtlx](presets.mtlx) |\n";
+      if (!*no_figures) {  // issue 7: DIR/figures/ and the gallery DIR/figures.md
+        std::string gallery;
+        for (auto& f : reproduce_figures(g, ctx, in.studies(), gallery)) files.push_back(std::move(f));
+        files.emplace_back("figures.md", gallery);
+        index += "| figures | colour strips and reflectance / ΔE2000 curves per material (PNG) | [figures.md](figures.md) |\n";
+      }
       const auto& st = g.settings;
       index += fmt::format("\nSettings: space {}, illuminant {}, {} adaptation, {} angles, {:g} nm steps.\n", st.space,
                            st.illuminant, st.adaptation, st.angles, st.step_nm);
@@ -155,6 +169,8 @@ const std::vector<Command>& commands() {
       {"table", add_table},
       {"reproduce", add_reproduce},
       {"lut", add_lut},
+      {"plot", add_plot},
+      {"render", add_render},
   };
   return table;
 }
