@@ -87,9 +87,12 @@ TEST(HardCases, ConductorAtNormalAndGrazingIncidenceOverTheWholeGrid) {
   for (double eta : eta_grid())
     for (double kappa : kappa_grid()) {
       EXPECT_NEAR(fresnel_conductor(1.0, eta, kappa), f0_exact(eta, kappa), kExact) << eta << " " << kappa;
-      // Grazing incidence reflects fully, including the index-matched η = 1, κ = 0 (was 0/0 = NaN).
-      EXPECT_EQ(fresnel_conductor(0.0, eta, kappa), 1.0) << eta << " " << kappa;
-      EXPECT_EQ(fresnel_conductor(0.0f, float(eta), float(kappa)), 1.0f) << eta << " " << kappa;
+      // Grazing incidence reflects fully, except on an index-matched interface (η = 1, κ = 0),
+      // which is no interface and reflects nothing at any angle (was 0/0 = NaN).
+      const double grazing = eta == 1.0 && kappa == 0.0 ? 0.0 : 1.0;
+      EXPECT_EQ(fresnel_conductor(0.0, eta, kappa), grazing) << eta << " " << kappa;
+      const float grazing_f = float(eta) == 1.0f && float(kappa) == 0.0f ? 0.0f : 1.0f;
+      EXPECT_EQ(fresnel_conductor(0.0f, float(eta), float(kappa)), grazing_f) << eta << " " << kappa;
     }
 }
 
@@ -304,10 +307,11 @@ TEST(HardCases, GulbrandsenAndCookTorranceSweep) {
   EXPECT_EQ(gb.outside, 0) << gb.min << " " << gb.max;
   EXPECT_EQ(ct.non_finite, 0);
   EXPECT_EQ(ct.outside, 0) << ct.min << " " << ct.max;
-  // Cook-Torrance keeps F0 at 0° and reaches 1 at 90°, even for an index-matched representative.
+  // Cook-Torrance keeps F0 at 0° and reaches 1 at 90°; an index-matched representative has no
+  // Fresnel rise at all, so the curve stays at F0.
   EXPECT_NEAR(cook_torrance(1.0, 0.3, 0.2, 3.0), 0.3, kExact);
   EXPECT_NEAR(cook_torrance(0.0, 0.3, 0.2, 3.0), 1.0, kExact);
-  EXPECT_EQ(cook_torrance(0.0, 0.3, 1.0, 0.0), 1.0);
+  EXPECT_EQ(cook_torrance(0.0, 0.3, 1.0, 0.0), 0.3);
   EXPECT_NEAR(cook_torrance(0.5, 0.3, 1.0, 0.0), 0.3, kExact);
 }
 

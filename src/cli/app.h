@@ -6,12 +6,14 @@
 #include <string>
 
 #include "analysis/context.h"
+#include "analysis/media_tables.h"
 
 namespace fl::cli {
 
 struct GlobalOptions {
   analysis::Settings settings;
   bool quiet = false;  // no progress or warnings on stderr
+  analysis::BlendOptions blend;  // `table blend` options
 };
 
 using Runner = std::function<int()>;

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include "analysis/media_tables.h"
+#include "analysis/speed.h"
 #include "analysis/tables.h"
+#include "cli/costs.h"
 #include "analysis/lut.h"
 #include "spectral/errors.h"
 
@@ -26,12 +29,26 @@ const std::vector<TableSpec>& table_specs() {
        [](TableInputs& in) { return analysis::methods_table(in.ctx, in.studies()); }},
       {"models", "every Fresnel model with derived and fitted parameters, every catalog material",
        [](TableInputs& in) { return analysis::models_table(in.ctx, in.studies()); }},
+      {"blend", "parameter blending of Gulbrandsen (F0, g) against blending its results, every pair of metals",
+       [](TableInputs& in) { return analysis::blend_table(in.ctx, in.studies(), in.g.blend); }},
+      {"blend_models", "parameter blending for every model",
+       [](TableInputs& in) { return analysis::blend_models_table(in.ctx, in.studies(), in.g.blend); }},
+      {"gamut", "gamut conversion of Gulbrandsen parameters against converting results (Rec.709, AP0)",
+       [](TableInputs& in) { return analysis::gamut_table(in.ctx, in.studies()); }},
+      {"gamut_models", "gamut conversion for every model",
+       [](TableInputs& in) { return analysis::gamut_models_table(in.ctx, in.studies()); }},
+      {"media", "external media: exact against Schlick with adjusted F0, every material in 7 media",
+       [](TableInputs& in) { return analysis::media_table(in.ctx, in.studies()); }},
+      {"internal", "internal reflection of dielectrics: exact against Schlick with the transmission angle",
+       [](TableInputs& in) { return analysis::internal_table(in.ctx, in.studies()); }},
       {"presets", "F0, F82, g, eta, kappa per material in the working space",
        [](TableInputs& in) { return analysis::presets_table(in.ctx, in.studies()); }},
       {"presets_openpbr", "OpenPBR F82-tint form: base_color and specular_color per material",
        [](TableInputs& in) { return analysis::openpbr_table(in.ctx, in.studies()); }},
       {"lut-accuracy", "pre-integrated Schlick and F82 (LTC moments) against brute-force spectral integration, metals",
        [](TableInputs& in) { return analysis::lut_accuracy_table(in.ctx, in.materials); }},
+      {"speed", "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, Pareto front",
+       [](TableInputs& in) { return analysis::speed_table(in.ctx, in.studies(), load_model_costs()); }},
   };
   return specs;
 }

@@ -22,6 +22,8 @@ struct Polarized {
 template <class T>
 Polarized<T> fresnel_conductor_polarized(T cos_theta_i, T eta, T kappa) {
   using color::detail::safe_sqrt;
+  // An index-matched interface (η = 1, κ = 0) is no interface: nothing is reflected, at any angle.
+  if (eta == T(1.0) && kappa == T(0.0)) return {T(0.0), T(0.0)};
   if (cos_theta_i > T(1.0)) cos_theta_i = T(1.0);
   if (cos_theta_i < T(0.0)) cos_theta_i = T(0.0);
   const T c2 = cos_theta_i * cos_theta_i;
@@ -35,9 +37,7 @@ Polarized<T> fresnel_conductor_polarized(T cos_theta_i, T eta, T kappa) {
   const T a = safe_sqrt(a2);
   const T t1 = a2pb2 + c2;
   const T t2 = 2.0 * a * cos_theta_i;
-  // t1 + t2 = 0 only at grazing incidence on an index-matched interface (η = 1, κ = 0), where the
-  // limit θ → 90° of every other index is full reflection (as fresnel_dielectric returns).
-  const T r_s = t1 + t2 > T(0.0) ? (t1 - t2) / (t1 + t2) : T(1.0);
+  const T r_s = (t1 - t2) / (t1 + t2);
   const T t3 = a2pb2 * c2 + s2 * s2;
   const T t4 = t2 * s2;
   // At grazing incidence both polarizations reflect fully; t3 + t4 → 0 only when a2pb2 = 0.
@@ -61,6 +61,7 @@ inline double fresnel_conductor(double cos_theta_i, std::complex<double> eta) {
 template <class T>
 Polarized<T> fresnel_dielectric_polarized(T cos_theta_i, T eta) {
   using std::sqrt;
+  if (eta == T(1.0)) return {T(0.0), T(0.0)};  // no interface
   if (cos_theta_i > T(1.0)) cos_theta_i = T(1.0);
   if (cos_theta_i < T(0.0)) cos_theta_i = T(0.0);
   const T sin2_t = (1.0 - cos_theta_i * cos_theta_i) / (eta * eta);

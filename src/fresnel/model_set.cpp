@@ -1,5 +1,6 @@
 #include "fresnel/model_set.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "spectral/errors.h"
@@ -64,6 +65,59 @@ std::vector<color::Rgb> evaluate_curve(Model m, const std::vector<double>& param
   out.reserve(cos_thetas.size());
   for (double c : cos_thetas) out.push_back(evaluate_rgb<double>(m, pc, c, params.data()));
   return out;
+}
+
+std::vector<color::Rgb> evaluate_curve_unclamped(Model m, const std::vector<double>& params,
+                                                 const std::vector<double>& cos_thetas) {
+  if (m != Model::F82) return evaluate_curve(m, params, cos_thetas);
+  std::vector<color::Rgb> out;
+  for (double c : cos_thetas) {
+    color::Rgb v;
+    for (int ch = 0; ch < 3; ++ch) v[ch] = hoffman_f82_unclamped(c, params[2 * ch], params[2 * ch + 1]);
+    out.push_back(v);
+  }
+  return out;
+}
+
+int reflectances_outside_unit(Model m, const std::vector<double>& params) {
+  const auto& spec = model_spec(m);
+  const int pc = spec.per_channel();
+  int n = 0;
+  for (int j = 0; j < pc; ++j) {
+    const auto& name = spec.channel_params[j];
+    if (name != "f0" && name != "f82" && name != "f90") continue;
+    for (int ch = 0; ch < 3; ++ch) n += params[ch * pc + j] < 0.0 || params[ch * pc + j] > 1.0;
+  }
+  return n;
+}
+
+int clamp_to_domain(Model m, std::vector<double>& p) {
+  int moved = 0;
+  auto clamp = [&](double& v, double lo, double hi) {
+    const double c = std::clamp(v, lo, hi);
+    moved += c != v;
+    v = c;
+  };
+  constexpr double kHuge = 1e300;
+  for (int ch = 0; ch < 3; ++ch) {
+    switch (m) {
+      case Model::Gulbrandsen:
+        clamp(p[2 * ch], 0.0, kGulbrandsenMaxR);
+        clamp(p[2 * ch + 1], 0.0, 1.0);
+        break;
+      case Model::FresnelRgb:
+        clamp(p[2 * ch], 0.01, kHuge);
+        clamp(p[2 * ch + 1], 0.0, kHuge);
+        break;
+      case Model::GeneralizedSchlick:
+      case Model::Lazanyi:
+        clamp(p[3 * ch + 2], 0.01, kHuge);
+        break;
+      default:
+        break;
+    }
+  }
+  return moved;
 }
 
 bool f82_model_clamps(const std::vector<double>& params, const std::vector<double>& cos_thetas) {

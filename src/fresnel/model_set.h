@@ -64,6 +64,19 @@ color::RgbT<T> evaluate_rgb(Model m, int per_channel, T cos_theta, const T* para
 std::vector<color::Rgb> evaluate_curve(Model m, const std::vector<double>& params,
                                        const std::vector<double>& cos_thetas);
 
+// As evaluate_curve, but the F82 model without its [0, 1] output clamp: the formula itself, linear
+// in (F0, F82), for comparisons of linearity (blending, gamut conversion).
+std::vector<color::Rgb> evaluate_curve_unclamped(Model m, const std::vector<double>& params,
+                                                 const std::vector<double>& cos_thetas);
+
+// How many reflectance parameters (F0, F82, F90) lie outside [0, 1].
+int reflectances_outside_unit(Model m, const std::vector<double>& params);
+
+// Moves parameters into the model's domain, where a model has one: Gulbrandsen F0 ∈ [0, 0.99999]
+// and g ∈ [0, 1]; RGB Fresnel η ≥ 0.01, κ ≥ 0; exponents (p, α) ≥ 0.01. Schlick, the F82 model and
+// Cook-Torrance's F0 are defined for any value (they stay linear). Returns how many moved.
+int clamp_to_domain(Model m, std::vector<double>& params);
+
 // The F82 model's result before clamping leaves [0, 1] somewhere on the curve.
 bool f82_model_clamps(const std::vector<double>& params, const std::vector<double>& cos_thetas);
 

@@ -10,9 +10,10 @@ namespace fl::fresnel {
 // Schlick 1994.
 template <class T>
 T schlick(T cos_theta, T f0) {
-  const T m = 1.0 - cos_theta;
+  // T(1.0), not 1.0: in float a double constant would promote the arithmetic to double.
+  const T m = T(1.0) - cos_theta;
   const T m2 = m * m;
-  return f0 + (1.0 - f0) * (m2 * m2 * m);
+  return f0 + (T(1.0) - f0) * (m2 * m2 * m);
 }
 
 // Generalized Schlick (as in OpenPBR / MaterialX generalized_schlick_bsdf): F0, F90, exponent p.
@@ -37,11 +38,11 @@ T lazanyi(T cos_theta, T f0, T a, T alpha) {
 // F82 at cosθ = 1/7. 823543/46656 = 7⁷/6⁶ = 1/(c(1 − c)⁶) and 49/6 = (1 − c)⁵/(c(1 − c)⁶) at c = 1/7.
 template <class T>
 T f82_coefficient(T f0, T f82) {
-  return (823543.0 / 46656.0) * (f0 - f82) + (49.0 / 6.0) * (1.0 - f0);
+  return T(823543.0 / 46656.0) * (f0 - f82) + T(49.0 / 6.0) * (T(1.0) - f0);
 }
 template <class T>
 T hoffman_f82_unclamped(T cos_theta, T f0, T f82) {
-  const T m = 1.0 - cos_theta;
+  const T m = T(1.0) - cos_theta;
   const T m2 = m * m;
   return schlick(cos_theta, f0) - f82_coefficient(f0, f82) * cos_theta * (m2 * m2 * m2);
 }
@@ -112,6 +113,29 @@ inline double f0_in_medium_symmetric(double f0, double eta_e) {
   const double s0 = std::sqrt(std::max(0.0, f0));
   const double r = (s0 - s0e) / (1.0 - s0 * s0e);
   return r * r;
+}
+
+}  // namespace fl::fresnel
+
+namespace fl::fresnel {
+
+// A metal variant of the external-media adjustment (not symmetric in F0 and the medium): the
+// metal is taken to have real index 1 and κ² = 4·F0/(1 − F0) (which gives F0 in air), so in a
+// medium of index η_E: F0′ = ((1 − η_E)²(1 − F0) + 4F0) / ((1 + η_E)²(1 − F0) + 4F0).
+inline double f0_in_medium_metal(double f0, double eta_e) {
+  const double a = (1.0 - eta_e) * (1.0 - eta_e), b = (1.0 + eta_e) * (1.0 + eta_e);
+  const double one_minus = std::max(0.0, 1.0 - f0);
+  return (a * one_minus + 4.0 * f0) / (b * one_minus + 4.0 * f0);
+}
+
+// Schlick for internal reflection (SPEC §2): evaluated with the transmission angle's cosine for a
+// dielectric of index n = (1 + √F0)/(1 − √F0) seen from inside; 1 past the critical angle.
+inline double schlick_internal(double cos_theta_i, double f0) {
+  const double s = std::sqrt(std::clamp(f0, 0.0, 0.999999));
+  const double n = (1.0 + s) / (1.0 - s);
+  const double sin2_t = n * n * (1.0 - cos_theta_i * cos_theta_i);
+  if (sin2_t >= 1.0) return 1.0;
+  return schlick(std::sqrt(1.0 - sin2_t), f0);
 }
 
 }  // namespace fl::fresnel
