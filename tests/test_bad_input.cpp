@@ -156,6 +156,10 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
       args += "--illuminant " + target.substr(15, target.size() - 15 - 3) + " ";
     args += "reproduce --out " + quote(out_dir);
     env = "FRESNEL_LAB_COLORD=" + quote(colord);
+  } else if (c.command == "plan") {  // issue 6: scene files
+    file = c.file == "<missing>" ? (s.dir / "does_not_exist.yaml").string() : kBadDir + "/" + c.reader + "/" + c.file;
+    args = "plan " + quote(file);
+    writes_output = false;
   } else {
     FAIL() << "unknown command '" << c.command << "' in manifest.tsv";
   }
@@ -178,7 +182,7 @@ TEST(BadInputCorpus, EveryCorpusEntryIsInTheManifestAndThereAreAtLeast30) {
   for (const auto& c : load_manifest())
     if (c.file != "<missing>") listed.insert(c.reader + "/" + c.file);
   std::set<std::string> present;
-  for (const char* reader : {"ri_yaml", "csv", "cgats", "catalog"})
+  for (const char* reader : {"ri_yaml", "csv", "cgats", "catalog", "scene"})
     for (const auto& e : fs::directory_iterator(kBadDir + "/" + reader))
       present.insert(std::string(reader) + "/" + e.path().filename().string());
   EXPECT_EQ(listed, present);

@@ -19,6 +19,8 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_
 std::vector<std::pair<std::string, std::string>> reproduce_figures(const GlobalOptions& g, const analysis::Context& ctx,
                                                                    const std::vector<analysis::MaterialStudy>& studies,
                                                                    std::string& gallery_md);
+void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_speed.cpp
+void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_plan.cpp
 
 namespace {
 
@@ -171,6 +173,8 @@ const std::vector<Command>& commands() {
       {"lut", add_lut},
       {"plot", add_plot},
       {"render", add_render},
+      {"speed", add_speed_command},
+      {"plan", add_plan_command},
   };
   return table;
 }

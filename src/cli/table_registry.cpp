@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include "analysis/media_tables.h"
+#include "analysis/speed.h"
 #include "analysis/tables.h"
+#include "cli/costs.h"
 #include "analysis/lut.h"
 #include "spectral/errors.h"
 
@@ -45,6 +47,8 @@ const std::vector<TableSpec>& table_specs() {
        [](TableInputs& in) { return analysis::openpbr_table(in.ctx, in.studies()); }},
       {"lut-accuracy", "pre-integrated Schlick and F82 (LTC moments) against brute-force spectral integration, metals",
        [](TableInputs& in) { return analysis::lut_accuracy_table(in.ctx, in.materials); }},
+      {"speed", "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, Pareto front",
+       [](TableInputs& in) { return analysis::speed_table(in.ctx, in.studies(), load_model_costs()); }},
   };
   return specs;
 }

@@ -1,0 +1,53 @@
+#pragma once
+// Issue 6: what each Fresnel model costs against what it gets wrong (`table speed`), and the
+// per-material choice of the cheapest model within a ΔE2000 budget (`plan`).
+//
+// Determinism: costs are not timed inside a report. The benchmark (bench/bench_speed.cpp, run by
+// scripts/bench.sh) writes bench/model_costs.csv, which is committed; `table speed` and `plan`
+// read it, so the same inputs give byte-identical reports. `fresnel-lab speed --measure` times
+// the batched kernels live instead (for a quick look on another machine; not reproducible).
+#include <string>
+#include <vector>
+
+#include "analysis/study.h"
+#include "analysis/table.h"
+#include "fresnel/model_set.h"
+
+namespace fl::analysis {
+
+// Cost of one evaluation (one RGB value at one angle) of a model, batched over an array of
+// angles, in float: what a shader or a bulk evaluation pays.
+struct ModelCost {
+  fresnel::Model model;
+  double ns_per_eval = 0;
+};
+struct ModelCosts {
+  std::string source;    // the file the costs came from, or "measured live"
+  std::string machine;   // '# machine:' line of the file (CPU, cores, compiler)
+  std::vector<ModelCost> costs;  // every model, model_specs() order
+  double ns_per_eval(fresnel::Model m) const;
+};
+
+// bench/model_costs.csv: '#' comment lines (one '# machine: …'), then a header whose first two
+// columns are model,ns_per_eval_float_batched, then one row per model (every model exactly once).
+// InputError (file:line) for anything else.
+ModelCosts read_model_costs(const std::string& path);
+
+// Fixed, gold-like parameters for timing each model (the benchmark and `speed --measure`): costs
+// barely depend on the values, but the F82 clamp and the Gulbrandsen/Fresnel branches do a little.
+std::vector<double> benchmark_params(fresnel::Model m);
+
+// One (model, parameter set) candidate with its error statistics over the studied materials.
+struct SpeedRow {
+  fresnel::Model model;
+  bool fitted = false;
+  double ns_per_eval = 0;
+  double median_rms_de00 = 0, max_rms_de00 = 0;
+  bool pareto = false;  // no other row is at least as cheap and at least as accurate, and better in one
+};
+// Rows in model_specs() order, derived before fitted. Error over every studied material (the
+// catalog's metals and dielectrics); Pareto front on (ns_per_eval, median_rms_de00).
+std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs);
+Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const ModelCosts& costs);
+
+}  // namespace fl::analysis
