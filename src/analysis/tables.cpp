@@ -13,10 +13,7 @@ namespace fl::analysis {
 namespace {
 
 std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) {
-  std::vector<color::Rgb> out;
-  for (double c : ctx.cos_thetas())
-    out.push_back({fresnel::schlick(c, f0.r), fresnel::schlick(c, f0.g), fresnel::schlick(c, f0.b)});
-  return out;
+  return fresnel::evaluate_curve(fresnel::Model::Schlick, {f0.r, f0.g, f0.b}, ctx.cos_thetas());
 }
 
 std::string setting_note(const Context& ctx) {

@@ -75,6 +75,9 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto format = std::make_shared<std::string>("csv");
   sub->add_option("NAME", *name, names)->required();
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
+  sub->add_option("--blend-weight", g.blend.weight, "blend tables: share of the second material")->capture_default_str();
+  sub->add_option("--blend-chain", g.blend.chain, "blend tables: materials per blend (2 = pairs; N blends N consecutive metals)")
+      ->capture_default_str();
   sub->callback([&g, &selected, name, format] {
     selected = [&g, name, format] {
       const auto& spec = find_table(*name);

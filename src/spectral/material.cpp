@@ -9,6 +9,7 @@
 
 #include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "spectral/yaml_file.h"
 
 namespace fl::spectral {
 namespace fs = std::filesystem;
@@ -48,13 +49,7 @@ std::string scalar(const YAML::Node& root, const char* key, const std::string& p
 }  // namespace
 
 Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
-  const std::string text = read_text_file(path);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path, e.mark.line + 1, "invalid YAML: " + e.msg);
-  }
+  const YAML::Node root = read_yaml_file(path);
   if (!root.IsMap()) throw InputError(path, 1, "a catalog entry must be a YAML map");
   Material m;
   m.key = fs::path(path).stem().string();
@@ -144,13 +139,7 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
       m.constants = read_nk_csv(spec);
     } else {
       // A catalog entry has 'class'; a database file has 'DATA'.
-      std::string text = read_text_file(spec);
-      YAML::Node root;
-      try {
-        root = YAML::Load(text);
-      } catch (const YAML::ParserException& e) {
-        throw InputError(spec, e.mark.line + 1, "invalid YAML: " + e.msg);
-      }
+      const YAML::Node root = read_yaml_file(spec);
       if (root.IsMap() && root["class"] && !root["DATA"]) return read_catalog_entry(spec, paths);
       m.constants = read_refractiveindex_file(spec);
     }

@@ -9,6 +9,7 @@
 
 #include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "spectral/yaml_file.h"
 
 namespace fl::spectral {
 namespace {
@@ -180,13 +181,7 @@ double evaluate_formula(int formula, const std::vector<double>& coeffs, double w
 }
 
 OpticalConstants read_refractiveindex_file(const std::string& path) {
-  const std::string text = read_text_file(path);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path, e.mark.line + 1, "invalid YAML: " + e.msg);
-  }
+  const YAML::Node root = read_yaml_file(path);
   if (!root.IsMap()) throw InputError(path, 1, "expected a refractiveindex.info YAML map with DATA");
   const YAML::Node data = root["DATA"];
   if (!data) throw InputError(path, 0, "no DATA section");
