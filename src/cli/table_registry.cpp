@@ -1,6 +1,7 @@
 #include "cli/table_registry.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include "analysis/media_tables.h"
 #include "analysis/speed.h"
@@ -14,8 +15,11 @@ namespace fl::cli {
 const std::vector<analysis::MaterialStudy>& TableInputs::studies() {
   if (!studies_) {
     analysis::StudyOptions o;
-    studies_ = analysis::study_materials(ctx, materials, o, [this](int done, int total) {
-      if (!g.quiet) fmt::print(stderr, "\rfitting: {}/{} materials{}", done, total, done == total ? "\n" : "");
+    // A live counter on a terminal; one line when stderr is a log.
+    const bool tty = ::isatty(STDERR_FILENO);
+    studies_ = analysis::study_materials(ctx, materials, o, [this, tty](int done, int total) {
+      if (g.quiet || (!tty && done != total)) return;
+      fmt::print(stderr, "{}fitting: {}/{} materials{}", tty ? "\r" : "", done, total, done == total ? "\n" : "");
     });
   }
   return *studies_;
