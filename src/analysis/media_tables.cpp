@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "color/ciede2000_fast.h"
 #include "fresnel/exact.h"
 #include "fresnel/model_set.h"
 #include "spectral/errors.h"
@@ -166,7 +167,7 @@ GamutResult gamut_error(const Context& ctx, Model m, const std::vector<double>& 
   r.moved = fresnel::clamp_to_domain(m, p);
   const auto b = fresnel::evaluate_curve_unclamped(m, p, cos);
   std::vector<double> de(a.size());
-  for (size_t i = 0; i < a.size(); ++i) de[i] = color::ciede2000(to_lab(a[i]), to_lab(b[i]));
+  for (size_t i = 0; i < a.size(); ++i) de[i] = color::ciede2000_fast(to_lab(a[i]), to_lab(b[i]));
   r.de = rms(de);
   (void)target;
   return r;
