@@ -49,8 +49,10 @@ std::string encode_png(const Image8& image) {
     throw std::runtime_error("libpng: " + sink.message);
   }
   png_set_write_fn(png, &out, append_bytes, flush_nothing);
+  // Figures are mostly flat colour: unfiltered rows at zlib level 6 came out both smaller and
+  // about twice as fast as libpng's adaptive filter choice (measured on the strip and curve figures).
   png_set_compression_level(png, 6);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_ALL_FILTERS);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
   // The pixels are sRGB-encoded (IEC 61966-2-1); say so with the standard chunk.

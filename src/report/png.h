@@ -1,6 +1,6 @@
 #pragma once
 // PNG files through libpng (libpng stays inside png.cpp). Output is byte-identical for the same
-// pixels: no time chunk, no text chunks, fixed zlib level and filter.
+// pixels: no time chunk, no text chunks, fixed zlib level and row filter.
 #include <string>
 
 #include "report/image.h"
