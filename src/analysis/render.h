@@ -35,7 +35,7 @@ struct Environment {
 // normalize(−0.15, 0.20, 1) (14.0° up-left of the view axis).
 Environment default_environment();
 
-// Radiance arriving from world direction `dir` (unit).
+// Fresnel Lab's own analytic environment (described above): radiance arriving from world direction `dir` (unit).
 color::Rgb environment_radiance(const Environment& env, const brdf::Vec3& dir);
 
 // A Fresnel reflectance tabulated uniformly in cosθ ∈ [0, 1] (entry i at cosθ = i/(n − 1)),
@@ -52,11 +52,12 @@ FresnelTable model_fresnel_table(fresnel::Model model, const std::vector<double>
 // Below this GGX α (roughness 0.01) the lobe is treated as a perfect mirror.
 constexpr double kMirrorAlpha = 1e-4;
 
-// Outgoing radiance toward the view direction v at a surface point with normal n (both unit,
-// world frame), for the GGX lobe of width alpha = roughness² with Fresnel F(v·h). Mirror: F(n·v) ·
-// L(reflect(v, n)). Otherwise multiple importance sampling (Veach 1997, balance heuristic) of
-// `samples` VNDF directions (Heitz 2018) and `samples` directions uniform in the key light's cone,
-// both from the same Hammersley set, so the result is deterministic.
+// Veach 1997 (multiple importance sampling, balance heuristic) with Heitz 2018 (GGX VNDF sampling):
+// outgoing radiance toward the view direction v at a surface point with normal n (both unit, world
+// frame), for the GGX lobe of width alpha = roughness² with Fresnel F(v·h). Mirror: F(n·v) ·
+// L(reflect(v, n)). Otherwise `samples` VNDF directions and `samples` directions uniform in the key
+// light's cone, both from the same Hammersley set, so the result is deterministic (a fixed set per
+// pixel: the quasi-Monte Carlo error is smooth across the image, not noise).
 color::Rgb shade_specular(const Environment& env, const FresnelTable& fresnel, const brdf::Vec3& n,
                           const brdf::Vec3& v, double alpha, int samples);
 

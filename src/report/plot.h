@@ -47,8 +47,10 @@ struct Drawing {
   std::vector<Text> texts;
 };
 
-// Pixel coverage of a line of width w at distance d (pixels) from its centre line, for a pixel
-// of unit area: a one-pixel linear ramp centred on the line's edge, clamp(w/2 + 1/2 − d, 0, 1).
+// Distance-based antialiasing (after Gupta & Sproull 1981, "Filtering edges for gray-scale
+// displays"): the coverage of a unit pixel by a line of width w whose centre line is d pixels from
+// the pixel's centre, approximated by a one-pixel linear ramp across the line's edge,
+// clamp(w/2 + 1/2 − d, 0, 1).
 double line_coverage(double distance_px, double width_px);
 
 // Splits a polyline into its dashes (each a polyline), by arc length.
