@@ -13,7 +13,8 @@ using test::cli;
 using test::run_command;
 
 TEST(Cli, HelpForEveryCommand) {
-  for (const char* cmd : {"", "materials", "curve", "table", "reproduce"}) {
+  for (const char* cmd : {"", "materials", "curve", "presets", "table", "reproduce", "lut", "lut dfg", "plot",
+                          "plot strip", "render", "speed", "plan"}) {
     const auto r = run_command(cli() + " " + cmd + " --help");
     EXPECT_EQ(r.status, 0) << cmd;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << cmd;
@@ -27,6 +28,24 @@ TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(run_command(cli() + " --space srgb_gamma table schlick").status, 2);
   EXPECT_EQ(run_command(cli() + " --illuminant F99 table schlick").status, 2);
   EXPECT_EQ(run_command(cli() + " curve unobtainium").status, 2);
+  EXPECT_EQ(run_command(cli() + " --angles 2 table schlick").status, 2);
+  EXPECT_EQ(run_command(cli() + " --step-nm 0 table schlick").status, 2);
+  EXPECT_EQ(run_command(cli() + " --step-nm nan table schlick").status, 2);
+  EXPECT_EQ(run_command(cli() + " table blend --blend-weight 2").status, 2);
+  const auto unknown = run_command(cli() + " frobnicate");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("unknown command 'frobnicate'"), std::string::npos) << unknown.err;
+  EXPECT_EQ(std::count(unknown.err.begin(), unknown.err.end(), '\n'), 1) << unknown.err;
+}
+
+TEST(Cli, ExtremeOpticalConstantsAreRejectedNotCrashed) {
+  test::TempDir tmp;
+  for (const char* row : {"300,1,1e80\n900,1,2\n", "300,1e80,1\n900,1,2\n"}) {
+    const auto f = tmp.file("huge.csv", std::string("lambda_nm,n,k\n") + row);
+    const auto r = run_command(cli() + " curve '" + f + "' --params fitted");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("not physical"), std::string::npos) << r.err;
+  }
 }
 
 TEST(Cli, MalformedInputNamesFileAndLineAndLeavesNoOutput) {

@@ -103,6 +103,14 @@ TEST(Media, SymmetricAdjustmentIsExactForDielectricsAtNormalIncidence) {
 
 TEST(Media, OwnIndexHasNoReflectionAndAirMatchesSchlickTable) {
   const auto& c = catalog();
+  // Through the general path: Tourmaline (constant 1.64) in a medium of index 1.64.
+  for (const auto& m : c.materials)
+    if (m.material.key == "tourmaline")
+      for (const auto& rgb : ground_truth_curve(c.ctx, m.ior, 1.64)) {
+        EXPECT_EQ(rgb.r, 0.0);
+        EXPECT_EQ(rgb.g, 0.0);
+        EXPECT_EQ(rgb.b, 0.0);
+      }
   const Table t = media_table(c.ctx, c.studies);
   const Table s = schlick_table(c.ctx, c.materials);
   const size_t medium = column(t, "medium"), sym = column(t, "symmetric"), max_r = column(t, "exact_max_reflectance");

@@ -52,6 +52,16 @@ INSTANTIATE_TEST_SUITE_P(
                       FormulaCase{9, "2.0 0.01 0.01 0.001 0.3 0.01", 1.4302680401472538}),
     [](const ::testing::TestParamInfo<FormulaCase>& info) { return "formula" + std::to_string(info.param.formula); });
 
+TEST(Database, MissingTrailingCoefficientsAreZero) {
+  // The database's own main/AgGaSe2/nk/Boyd-o is formula 2 with C1 and one and a half pairs.
+  test::TempDir tmp;
+  const auto short_form = tmp.file("s.yml", "DATA:\n  - type: formula 2\n    wavelength_range: 0.3 1.0\n    coefficients: 0.1 1.0 0.01 0.5\n");
+  const auto padded = tmp.file("p.yml", "DATA:\n  - type: formula 2\n    wavelength_range: 0.3 1.0\n    coefficients: 0.1 1.0 0.01 0.5 0\n");
+  const SpectralGrid g{500.0, 5.0, 1};
+  EXPECT_EQ(sample_ior(read_refractiveindex_file(short_form), g, "s").ior.ior[0],
+            sample_ior(read_refractiveindex_file(padded), g, "p").ior.ior[0]);
+}
+
 constexpr double kSchottNdTolerance = 2e-5;  // the catalog's nd is printed to 5 decimals
 
 TEST(Database, SchottGlassFormulaPlusTabulatedK) {

@@ -9,14 +9,22 @@
 
 namespace fl::analysis {
 
+namespace {
+
+const Settings& validated(const Settings& s) {
+  if (s.angles < 3 || s.angles > 100000) throw InputError("--angles must be between 3 and 100000");
+  if (!(s.eta_outside > 0.0) || !std::isfinite(s.eta_outside)) throw InputError("the outside medium's index must be positive");
+  if (s.step_nm != 5.0 && s.step_nm != 1.0) throw InputError("--step-nm must be 5 or 1");
+  return s;
+}
+
+}  // namespace
+
 Context::Context(const Settings& s)
-    : settings_(s),
+    : settings_(validated(s)),
       grid_(spectral::SpectralGrid::visible(s.step_nm)),
       spaces_(s.ocio_config.empty() ? color::SpaceLibrary::builtin()
                                     : color::SpaceLibrary::from_config(s.ocio_config, s.ocio_xyz)) {
-  if (s.angles < 2 || s.angles > 100000) throw InputError("--angles must be between 2 and 100000");
-  if (!(s.eta_outside > 0.0) || !std::isfinite(s.eta_outside)) throw InputError("the outside medium's index must be positive");
-  if (s.step_nm != 5.0 && s.step_nm != 1.0) throw InputError("--step-nm must be 5 or 1");
   space_ = spaces_.space(s.space);
   const std::string colord = s.colord_dir.empty() ? spectral::default_colord_dir() : s.colord_dir;
   const auto observer = spectral::cie1931_2deg(grid_, colord);

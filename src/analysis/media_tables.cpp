@@ -148,8 +148,8 @@ struct GamutResult {
   int outside_unit = 0;   // converted reflectance channels (F0, F82, F90) outside [0, 1] (kept)
 };
 
-GamutResult gamut_error(const Context& ctx, Model m, const std::vector<double>& params, const std::string& target,
-                        const color::Mat3& conv, const color::LabConverter& to_lab) {
+GamutResult gamut_error(const Context& ctx, Model m, const std::vector<double>& params, const color::Mat3& conv,
+                        const color::LabConverter& to_lab) {
   const auto& spec = fresnel::model_spec(m);
   const int pc = spec.per_channel();
   const auto& cos = ctx.cos_thetas();
@@ -169,7 +169,6 @@ GamutResult gamut_error(const Context& ctx, Model m, const std::vector<double>& 
   std::vector<double> de(a.size());
   for (size_t i = 0; i < a.size(); ++i) de[i] = color::ciede2000_fast(to_lab(a[i]), to_lab(b[i]));
   r.de = rms(de);
-  (void)target;
   return r;
 }
 
@@ -199,8 +198,7 @@ Table gamut_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
     std::vector<Cell> row{s.material->material.name};
     long long moved = 0;
     for (size_t k = 0; k < conv.size(); ++k) {
-      const auto r = gamut_error(ctx, Model::Gulbrandsen, s.result(Model::Gulbrandsen).derived, gamut_targets()[k],
-                                 conv[k], lab[k]);
+      const auto r = gamut_error(ctx, Model::Gulbrandsen, s.result(Model::Gulbrandsen).derived, conv[k], lab[k]);
       row.push_back(r.de);
       moved += r.moved;
       worst = std::max(worst, r.de);
@@ -236,7 +234,7 @@ Table gamut_models_table(const Context& ctx, const std::vector<MaterialStudy>& s
       std::vector<Cell> row{s.material->material.name, target};
       long long moved = 0, out_unit = 0;
       for (const auto& spec : fresnel::model_specs()) {
-        const auto r = gamut_error(ctx, spec.model, s.result(spec.model).derived, target, conv, lab);
+        const auto r = gamut_error(ctx, spec.model, s.result(spec.model).derived, conv, lab);
         row.push_back(r.de);
         moved += r.moved;
         out_unit += r.outside_unit;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <mutex>
 #include <thread>
 
@@ -110,24 +111,31 @@ std::vector<MaterialStudy> study_materials(const Context& ctx, const std::vector
                                            const StudyOptions& options, const std::function<void(int, int)>& progress) {
   std::vector<MaterialStudy> out(materials.size());
   std::atomic<size_t> next{0};
-  std::atomic<int> done{0};
-  std::mutex progress_mutex;
+  int done = 0;
+  std::mutex mutex;  // guards done, progress and error
+  std::exception_ptr error;
   const int threads = std::max(1, options.threads > 0 ? options.threads
                                                       : static_cast<int>(std::thread::hardware_concurrency()));
   auto worker = [&] {
     for (size_t i = next++; i < materials.size(); i = next++) {
-      out[i] = study_one(ctx, materials[i], options);
-      const int n = ++done;
-      if (progress) {
-        std::lock_guard<std::mutex> lock(progress_mutex);
-        progress(n, static_cast<int>(materials.size()));
+      try {
+        out[i] = study_one(ctx, materials[i], options);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        next = materials.size();
+        return;
       }
+      std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      if (progress) progress(done, static_cast<int>(materials.size()));
     }
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "cli/app.h"
 
 #include <filesystem>
+#include <optional>
 #include <fmt/format.h>
 
 #include "spectral/errors.h"
@@ -23,6 +24,28 @@ analysis::Context make_context(const GlobalOptions& g) {
                      "not a refractiveindex.info database (no data/ folder); set --db or FRESNEL_LAB_DB");
   return analysis::Context(g.settings);
 }
+
+namespace {
+
+// The first word that is neither an option nor an option's value, when it names no command.
+std::optional<std::string> unknown_command(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-q" || a == "--quiet" || a == "-h" || a == "--help") continue;
+    if (a.rfind("-", 0) == 0) {
+      if (a.find('=') == std::string::npos) ++i;  // every other global option takes a value
+      continue;
+    }
+    for (const auto& c : commands())
+      if (a == c.name) return std::nullopt;
+    std::string known;
+    for (const auto& c : commands()) known += (known.empty() ? "" : ", ") + std::string(c.name);
+    return fmt::format("unknown command '{}' (expected one of: {})", a, known);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 int run(int argc, char** argv) {
   CLI::App app{"Fresnel Lab: spectral ground truth, Fresnel approximations and their parameters, in CIEDE2000."};
@@ -59,7 +82,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    fmt::print(stderr, "fresnel-lab: error: {} (see fresnel-lab --help)\n", unknown_command(argc, argv).value_or(e.what()));
     return 2;
   }
   if (!selected) throw InputError("no command given (see --help)");

@@ -157,7 +157,8 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
       index += fmt::format("\nSettings: space {}, illuminant {}, {} adaptation, {} angles, {:g} nm steps.\n", st.space,
                            st.illuminant, st.adaptation, st.angles, st.step_nm);
       files.emplace_back("README.md", index);
-      for (const auto& [name, content] : files) report::write_file_atomic(*out + "/" + name, content);
+      for (auto& f : files) f.first = *out + "/" + f.first;
+      report::write_files_atomic(files);
       progress(g, fmt::format("reproduce: wrote {} files to {}", files.size(), *out));
       return 0;
     };

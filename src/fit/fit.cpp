@@ -154,6 +154,15 @@ FitResult fit_model(Model m, const CurveTarget& target, const std::vector<std::v
       have = true;
     }
   }
+  if (!have) {
+    // No start gave a usable solution: report the best start itself, marked unusable, so callers
+    // always get parameters.
+    best.parameters = starts[ranked.front().second];
+    best.cost = best.initial_cost = ranked.front().first;
+    best.iterations = 0;
+    best.termination = "NO_USABLE_SOLUTION";
+    best.usable = false;
+  }
   best.starts = static_cast<int>(ranked.size());
   return best;
 }

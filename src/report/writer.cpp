@@ -146,29 +146,47 @@ std::string render(const analysis::Table& t, Format f) {
   }
 }
 
-void write_file_atomic(const std::string& path, const std::string& content) {
+namespace {
+
+// Writes `content` to a temporary file beside `path`; returns its name.
+std::string write_temporary(const std::string& path, const std::string& content) {
   namespace fs = std::filesystem;
   const fs::path p(path);
   std::error_code ec;
   if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
   if (fs::is_directory(p, ec)) throw InputError(path, 0, "is a directory, cannot write a file there");
   const std::string tmp = fmt::format("{}.tmp.{}", path, static_cast<long>(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path, 0, "cannot write (folder missing or not writable)");
-    out << content;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw std::runtime_error(fmt::format("{}: write failed", path));
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError(path, 0, "cannot write (folder missing or not writable)");
+  out << content;
+  out.close();
+  if (!out) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(fmt::format("{}: write failed", path));
+  }
+  return tmp;
+}
+
+}  // namespace
+
+void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::string> temps;
+  try {
+    for (const auto& [path, content] : files) temps.push_back(write_temporary(path, content));
+  } catch (...) {
+    for (const auto& t : temps) std::remove(t.c_str());
+    throw;
+  }
+  for (size_t i = 0; i < files.size(); ++i) {
+    std::error_code ec;
+    std::filesystem::rename(temps[i], files[i].first, ec);
+    if (ec) {
+      for (size_t j = i; j < temps.size(); ++j) std::remove(temps[j].c_str());
+      throw std::runtime_error(fmt::format("{}: cannot move the finished file into place: {}", files[i].first, ec.message()));
     }
   }
-  fs::rename(tmp, p, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(fmt::format("{}: cannot move the finished file into place: {}", path, ec.message()));
-  }
 }
+
+void write_file_atomic(const std::string& path, const std::string& content) { write_files_atomic({{path, content}}); }
 
 }  // namespace fl::report

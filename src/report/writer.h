@@ -1,6 +1,8 @@
 #pragma once
 // Writing tables as CSV, Markdown and JSON, and files atomically.
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "analysis/table.h"
 
@@ -21,6 +23,10 @@ std::string render(const analysis::Table& t, Format f);
 // Writes to a temporary file beside `path`, then renames it into place: a failure never leaves
 // a partial file. Creates the parent folder if needed.
 void write_file_atomic(const std::string& path, const std::string& content);
+
+// Several files, all or nothing: every file is written to a temporary name first; only when all
+// are complete are they renamed into place. On failure the temporaries are removed.
+void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& path_and_content);
 
 std::string json_escape(const std::string& s);
 std::string format_number(double v, int precision);

@@ -39,11 +39,15 @@ std::vector<double> parse_numbers(const std::string& file, int line, std::string
   return out;
 }
 
+// Beyond any material's optical constants at any wavelength (far-infrared metals reach ~10³),
+// and far below where n² + κ² would overflow in the Fresnel equations.
+constexpr double kMaxOpticalConstant = 1e6;
+
 void check_physical(const std::string& file, int line, double n, double k, bool has_n, bool has_k) {
-  if (has_n && !(n > 0.0))
-    throw InputError(file, line, fmt::format("n = {} is not physical (must be > 0)", n));
-  if (has_k && k < 0.0)
-    throw InputError(file, line, fmt::format("k = {} is not physical (must be >= 0)", k));
+  if (has_n && !(n > 0.0 && n <= kMaxOpticalConstant))
+    throw InputError(file, line, fmt::format("n = {} is not physical (must be in (0, {:g}])", n, kMaxOpticalConstant));
+  if (has_k && !(k >= 0.0 && k <= kMaxOpticalConstant))
+    throw InputError(file, line, fmt::format("k = {} is not physical (must be in [0, {:g}])", k, kMaxOpticalConstant));
 }
 
 DispersionBlock parse_tabulated(const std::string& file, const YAML::Node& block,
@@ -101,12 +105,6 @@ DispersionBlock parse_formula(const std::string& file, const YAML::Node& block, 
   if (b.coefficients.empty() || static_cast<int>(b.coefficients.size()) > max_coefficients(formula))
     throw InputError(file, cline, fmt::format("formula {} takes 1 to {} coefficients, found {}", formula,
                                               max_coefficients(formula), b.coefficients.size()));
-  if (formula <= 2 || formula == 6) {
-    // Coefficients after C1 come in (B, C) pairs.
-    if (b.coefficients.size() % 2 == 0)
-      throw InputError(file, cline, fmt::format("formula {} takes C1 plus (B, C) pairs: an odd count, found {}",
-                                                formula, b.coefficients.size()));
-  }
   const int rline = range.Mark().line + 1;
   auto r = parse_numbers(file, rline, range.as<std::string>(), "wavelength_range");
   if (r.size() != 2) throw InputError(file, rline, "wavelength_range needs two numbers");
@@ -118,7 +116,7 @@ DispersionBlock parse_formula(const std::string& file, const YAML::Node& block, 
   for (int i = 0; i <= 64; ++i) {
     const double lum = r[0] + (r[1] - r[0]) * i / 64.0;
     const double n = evaluate_formula(formula, b.coefficients, lum);
-    if (!std::isfinite(n) || !(n > 0.0))
+    if (!std::isfinite(n) || !(n > 0.0) || n > kMaxOpticalConstant)
       throw InputError(file, cline, fmt::format("formula {} gives n = {} at {} um (not physical)", formula, n, lum));
   }
   return b;
