@@ -15,6 +15,8 @@ double pow7(double x) {
 constexpr double kCos30 = 0.8660254037844387, kSin30 = 0.5;
 constexpr double kCos6 = 0.9945218953682733, kSin6 = 0.10452846326765347;
 constexpr double kCos63 = 0.4539904997395468, kSin63 = 0.8910065241883678;
+// cos 134°: hues below 134° are 141° or more from the Δθ term's centre at 275°.
+constexpr double kCos134 = -0.6946583704589973;
 // Hues opposite to rounding (|u1 × u2| below this, u1 · u2 < 0): the mean hue is the formula's
 // convention, not geometry, and the reference path decides.
 constexpr double kOppositeHueCross = 1e-14;
@@ -53,9 +55,6 @@ double ciede2000_fast(const Lab& lab1, const Lab& lab2) {
   }
   const double inv_b = 1.0 / std::sqrt(b2);
   const double c = bx * inv_b, s = by * inv_b;
-  double hp_bar = std::atan2(by, bx) * detail::kDegPerRad;
-  if (hp_bar < 0.0) hp_bar += 360.0;
-  if (hp_bar >= 360.0) hp_bar -= 360.0;
   // Multiple angles of h̄′: cos/sin 2h̄′, 3h̄′, 4h̄′.
   const double c2h = c * c - s * s, s2h = 2.0 * s * c;
   const double c3h = c * (4.0 * c * c - 3.0), s3h = s * (3.0 - 4.0 * s * s);
@@ -66,15 +65,23 @@ double ciede2000_fast(const Lab& lab1, const Lab& lab2) {
   const double dc = c2p - c1p;
   const double l_bar = 0.5 * (lab1.L + lab2.L);
   const double cp_bar = 0.5 * (c1p + c2p);
-  const double q = (hp_bar - 275.0) / 25.0;
-  const double d_theta = 30.0 * std::exp(-(q * q));
-  const double cp_bar7 = pow7(cp_bar);
-  const double rc = 2.0 * std::sqrt(cp_bar7 / (cp_bar7 + k25pow7));
+  // Δθ = 30°·exp(−((h̄′ − 275°)/25°)²) with h̄′ in [0°, 360°) (not wrapped around 275°). For h̄′ in
+  // [0°, 134°), 141° or more below 275°, it is under 5e-13° (exp(−31.8)) and so is its effect on
+  // ΔE00: the trigonometry is skipped there.
+  double rt = 0.0;
+  if (!(s >= 0.0 && c > kCos134)) {
+    double hp_bar = std::atan2(s, c) * detail::kDegPerRad;
+    if (hp_bar < 0.0) hp_bar += 360.0;
+    const double q = (hp_bar - 275.0) / 25.0;
+    const double d_theta = 30.0 * std::exp(-(q * q));
+    const double cp_bar7 = pow7(cp_bar);
+    const double rc = 2.0 * std::sqrt(cp_bar7 / (cp_bar7 + k25pow7));
+    rt = -std::sin(2.0 * d_theta * kRadPerDeg) * rc;
+  }
   const double l50 = (l_bar - 50.0) * (l_bar - 50.0);
   const double sl = 1.0 + 0.015 * l50 / std::sqrt(20.0 + l50);
   const double sc = 1.0 + 0.045 * cp_bar;
   const double sh = 1.0 + 0.015 * cp_bar * t;
-  const double rt = -std::sin(2.0 * d_theta * kRadPerDeg) * rc;
   const double tl = dl / sl, tc = dc / sc, th = d_big_h / sh;
   const double e2 = tl * tl + tc * tc + th * th + rt * tc * th;
   return e2 > 0.0 ? std::sqrt(e2) : 0.0;
