@@ -56,8 +56,8 @@ inline double fresnel_conductor(double cos_theta_i, std::complex<double> eta) {
   return fresnel_conductor<double>(cos_theta_i, eta.real(), eta.imag());
 }
 
-// Dielectric Fresnel equations for the real relative index eta = η_t/η_i (Snell's law; total
-// internal reflection when eta < 1 past the critical angle).
+// Born & Wolf, Principles of Optics §1.5.2: dielectric Fresnel equations for the real relative
+// index eta = η_t/η_i (Snell's law; total internal reflection when eta < 1 past the critical angle).
 template <class T>
 Polarized<T> fresnel_dielectric_polarized(T cos_theta_i, T eta) {
   using std::sqrt;
@@ -77,7 +77,7 @@ T fresnel_dielectric(T cos_theta_i, T eta) {
   return fresnel_dielectric_polarized(cos_theta_i, eta).unpolarized();
 }
 
-// Cosine of the refracted angle for relative index eta (0 past the critical angle).
+// Snell's law: cosine of the refracted angle for relative index eta (0 past the critical angle).
 inline double cos_transmitted(double cos_theta_i, double eta) {
   const double sin2_t = (1.0 - cos_theta_i * cos_theta_i) / (eta * eta);
   return sin2_t >= 1.0 ? 0.0 : std::sqrt(1.0 - sin2_t);

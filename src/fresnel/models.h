@@ -83,7 +83,8 @@ T gulbrandsen_kappa(T r, T eta) {
   const T num = r * (eta + 1.0) * (eta + 1.0) - (eta - 1.0) * (eta - 1.0);
   return safe_sqrt(num / (1.0 - r));
 }
-// The inverse of gulbrandsen_eta: the edge tint g that gives index eta at reflectance r.
+// Gulbrandsen 2014, inverted: the edge tint g that gives index eta at reflectance r (η is linear
+// in g between n_max at g = 0 and n_min at g = 1).
 template <class T>
 T gulbrandsen_g(T r, T eta) {
   r = gulbrandsen_clamp_r(r);
@@ -107,7 +108,8 @@ T cook_torrance(T cos_theta, T f0, T eta_rep, T kappa_rep) {
   return f0 + (1.0 - f0) * t;
 }
 
-// External media (SPEC §2): F0 of a dielectric re-expressed against a medium of index eta_e.
+// Hoffman 2020 (SPEC §2), external media: F0 of a dielectric re-expressed against a medium of
+// index eta_e; exact for dielectrics at normal incidence.
 inline double f0_in_medium_symmetric(double f0, double eta_e) {
   const double s0e = (eta_e - 1.0) / (eta_e + 1.0);
   const double s0 = std::sqrt(std::max(0.0, f0));
@@ -119,8 +121,8 @@ inline double f0_in_medium_symmetric(double f0, double eta_e) {
 
 namespace fl::fresnel {
 
-// A metal variant of the external-media adjustment (not symmetric in F0 and the medium): the
-// metal is taken to have real index 1 and κ² = 4·F0/(1 − F0) (which gives F0 in air), so in a
+// Derived here (not from a paper): a metal variant of the external-media adjustment, not
+// symmetric in F0 and the medium. The metal is taken to have real index 1 and κ² = 4·F0/(1 − F0) (which gives F0 in air), so in a
 // medium of index η_E: F0′ = ((1 − η_E)²(1 − F0) + 4F0) / ((1 + η_E)²(1 − F0) + 4F0).
 inline double f0_in_medium_metal(double f0, double eta_e) {
   const double a = (1.0 - eta_e) * (1.0 - eta_e), b = (1.0 + eta_e) * (1.0 + eta_e);
@@ -128,7 +130,7 @@ inline double f0_in_medium_metal(double f0, double eta_e) {
   return (a * one_minus + 4.0 * f0) / (b * one_minus + 4.0 * f0);
 }
 
-// Schlick for internal reflection (SPEC §2): evaluated with the transmission angle's cosine for a
+// Schlick 1994 for internal reflection (SPEC §2, Hoffman 2020): evaluated with the transmission angle's cosine for a
 // dielectric of index n = (1 + √F0)/(1 − √F0) seen from inside; 1 past the critical angle.
 inline double schlick_internal(double cos_theta_i, double f0) {
   const double s = std::sqrt(std::clamp(f0, 0.0, 0.999999));

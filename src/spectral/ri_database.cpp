@@ -124,6 +124,8 @@ DispersionBlock parse_formula(const std::string& file, const YAML::Node& block, 
 
 }  // namespace
 
+// refractiveindex.info, "Dispersion formulas" (database doc/), formulas 1-9; λ in µm. Missing
+// trailing coefficients are 0, as in the database's own tools.
 double evaluate_formula(int formula, const std::vector<double>& coeffs, double wl) {
   double C[18] = {0};
   for (size_t i = 0; i < coeffs.size() && i < 17; ++i) C[i + 1] = coeffs[i];
