@@ -158,28 +158,28 @@ GgxMoments integrate_moments(double nov, double alpha, int samples) {
   return m;
 }
 
-DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
+namespace {
+
+// Every cell of the grid, integrand(n·v, α, samples), filled in parallel column by column.
+template <class Cell, class Integrand>
+std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options, Integrand integrand) {
   check_samples(options.samples);
-  DfgTable t{grid, std::vector<DfgTexel>(static_cast<size_t>(grid.size) * grid.size)};
-  const int total = grid.size * grid.size;
-  parallel_for(grid.size, options.threads, options.progress, total, [&](int j) {
-    for (int i = 0; i < grid.size; ++i)
-      t.cells[grid.index(i, j)] = integrate_dfg(grid.nov[i], grid.alpha[j], options.samples);
+  std::vector<Cell> cells(static_cast<size_t>(grid.size) * grid.size);
+  parallel_for(grid.size, options.threads, options.progress, grid.size * grid.size, [&](int j) {
+    for (int i = 0; i < grid.size; ++i) cells[grid.index(i, j)] = integrand(grid.nov[i], grid.alpha[j], options.samples);
     return grid.size;
   });
-  return t;
+  return cells;
+}
+
+}  // namespace
+
+DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
+  return {grid, integrate_grid<DfgTexel>(grid, options, integrate_dfg)};
 }
 
 MomentsTable moments_table(const LutGrid& grid, const LutOptions& options) {
-  check_samples(options.samples);
-  MomentsTable t{grid, std::vector<GgxMoments>(static_cast<size_t>(grid.size) * grid.size)};
-  const int total = grid.size * grid.size;
-  parallel_for(grid.size, options.threads, options.progress, total, [&](int j) {
-    for (int i = 0; i < grid.size; ++i)
-      t.cells[grid.index(i, j)] = integrate_moments(grid.nov[i], grid.alpha[j], options.samples);
-    return grid.size;
-  });
-  return t;
+  return {grid, integrate_grid<GgxMoments>(grid, options, integrate_moments)};
 }
 
 double horizon_clipped_sphere_form_factor(double z, double len) {
