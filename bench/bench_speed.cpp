@@ -43,7 +43,7 @@ std::vector<T> angle_cosines() {
 template <class T>
 std::vector<T> params_of(Model m) {
   std::vector<T> out;
-  for (double p : fl::analysis::benchmark_params(m)) out.push_back(static_cast<T>(p));
+  for (double p : fl::fresnel::example_params(m)) out.push_back(static_cast<T>(p));
   return out;
 }
 
@@ -52,10 +52,9 @@ template <class T>
 void bm_model_scalar(benchmark::State& state, Model m) {
   const auto cos = angle_cosines<T>();
   const auto p = params_of<T>(m);
-  const int pc = fl::fresnel::model_spec(m).per_channel();
   for (auto _ : state) {
     for (std::size_t i = 0; i < kAngles; ++i) {
-      auto rgb = fl::fresnel::evaluate_rgb<T>(m, pc, cos[i], p.data());
+      auto rgb = fl::fresnel::evaluate_rgb(m, cos[i], p.data());
       benchmark::DoNotOptimize(rgb);
     }
   }
@@ -68,10 +67,9 @@ template <class T>
 void bm_model_batched(benchmark::State& state, Model m) {
   const auto cos = angle_cosines<T>();
   const auto p = params_of<T>(m);
-  const int pc = fl::fresnel::model_spec(m).per_channel();
   std::vector<T> out(3 * kAngles);
   for (auto _ : state) {
-    fl::fresnel::evaluate_batch<T>(m, pc, p.data(), cos.data(), kAngles, out.data());
+    fl::fresnel::evaluate_batch(m, p.data(), cos.data(), kAngles, out.data());
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }

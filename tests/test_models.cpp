@@ -107,8 +107,8 @@ TEST(Fit, RecoversKnownParametersFromSyntheticCurves) {
     const auto r = fit::fit_model(spec.model, target, {start});
     EXPECT_TRUE(r.usable) << spec.name;
     EXPECT_LT(fit::rms_from_cost(r.cost, target.cos_thetas.size()), kRecoveredRms) << spec.name;
-    if (spec.model == Model::Schlick || spec.model == Model::F82 || spec.model == Model::Gulbrandsen ||
-        spec.model == Model::FresnelRgb)
+    if (spec.model == fresnel::model_of<fresnel::models::Schlick> || spec.model == fresnel::model_of<fresnel::models::F82> || spec.model == fresnel::model_of<fresnel::models::Gulbrandsen> ||
+        spec.model == fresnel::model_of<fresnel::models::FresnelRgb>)
       for (size_t i = 0; i < start.size(); ++i)
         EXPECT_NEAR(r.parameters[i], truth_params[i], kRecoveredParam) << spec.name << " parameter " << i;
   }
@@ -118,7 +118,7 @@ TEST(Fit, NoUsableStartStillReturnsParameters) {
   GoldTarget g;
   fit::CurveTarget broken = g.target;
   for (auto& lab : broken.truth_lab) lab.L = std::nan("");  // every residual is NaN
-  const auto r = fit::fit_model(Model::F82, broken, {fresnel::derived_model_params(Model::F82, g.derived)});
+  const auto r = fit::fit_model(fresnel::model_of<fresnel::models::F82>, broken, {fresnel::derived_model_params(fresnel::model_of<fresnel::models::F82>, g.derived)});
   EXPECT_FALSE(r.usable);
   EXPECT_EQ(r.parameters.size(), 6u);
   EXPECT_EQ(r.termination, "NO_USABLE_SOLUTION");
@@ -148,8 +148,8 @@ TEST(Acceptance, MethodsTableAndF82Median) {
   }
   for (const auto& st : studies)
     if (st.material->material.material_class == spectral::MaterialClass::Metal) {
-      schlick_rms.push_back(st.result(Model::Schlick).derived_error.rms);
-      f82_rms.push_back(st.result(Model::F82).fitted_error.rms);
+      schlick_rms.push_back(st.result(fresnel::model_of<fresnel::models::Schlick>).derived_error.rms);
+      f82_rms.push_back(st.result(fresnel::model_of<fresnel::models::F82>).fitted_error.rms);
     }
   std::sort(schlick_rms.begin(), schlick_rms.end());
   std::sort(f82_rms.begin(), f82_rms.end());

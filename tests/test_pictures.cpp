@@ -73,7 +73,7 @@ TEST(Render, MirrorCentrePixelWithAModelIsItsF0) {
   rs.roughness = 0.0;
   rs.threads = 2;
   const auto c = centre_pixel(
-      analysis::render_sphere(env, analysis::model_fresnel_table(fresnel::Model::Schlick, schlick_f0), rs));
+      analysis::render_sphere(env, analysis::model_fresnel_table(fresnel::model_of<fresnel::models::Schlick>, schlick_f0), rs));
   EXPECT_NEAR(c.r, 0.95 * env.key_radiance.r, kMirrorCentreTol);
   EXPECT_NEAR(c.g, 0.64 * env.key_radiance.g, kMirrorCentreTol);
   EXPECT_NEAR(c.b, 0.54 * env.key_radiance.b, kMirrorCentreTol);
@@ -118,7 +118,7 @@ TEST(Render, ImportanceSampledShadingMatchesQuadrature) {
 
 TEST(Render, DeterministicAcrossThreadCounts) {
   const auto env = analysis::default_environment();
-  const auto table = analysis::model_fresnel_table(fresnel::Model::Schlick, {0.9, 0.6, 0.3});
+  const auto table = analysis::model_fresnel_table(fresnel::model_of<fresnel::models::Schlick>, {0.9, 0.6, 0.3});
   analysis::RenderSettings rs;
   rs.size_px = 41;
   rs.samples = 8;
@@ -182,7 +182,7 @@ TEST(Figures, WhiteDisplaysAsWhiteAndStripsAreDeterministic) {
     EXPECT_EQ(white[3 + c], 0);
   }
   const auto m = analysis::load_material(ctx, spectral::resolve_material("chromium", ctx.settings().paths));
-  report::FigureInput in{"Chromium", "derived", &m.ior, {{fresnel::Model::Schlick, {0.55, 0.55, 0.56}}}};
+  report::FigureInput in{"Chromium", "derived", &m.ior, {{fresnel::model_of<fresnel::models::Schlick>, {0.55, 0.55, 0.56}}}};
   report::Font font;
   const auto a = report::encode_png(report::strip_figure(ctx, in, font));
   EXPECT_EQ(a, report::encode_png(report::strip_figure(ctx, in, font)));

@@ -49,7 +49,7 @@ TEST(Plan, FourDielectricsAtBudget2GetSchlick) {
   const auto r = plan_for("materials: [diamond, water, glass_bk7, acrylic]\nmax_de00: 2.0\nlighting: [punctual]\n");
   ASSERT_EQ(r.plan.materials.size(), 4u);
   for (const auto& m : r.plan.materials) {
-    EXPECT_EQ(m.model, Model::Schlick) << m.material;
+    EXPECT_EQ(m.model, fl::fresnel::model_of<fl::fresnel::models::Schlick>) << m.material;
     EXPECT_TRUE(m.meets_budget) << m.material;
     EXPECT_LE(m.rms_de00, kBudget) << m.material;
   }
@@ -66,7 +66,7 @@ TEST(Plan, MetalsAtBudgetHalfUnderAreaLightsGetLtcTablesAndMeetTheBudget) {
     EXPECT_TRUE(m.meets_budget) << m.material;
     EXPECT_LE(m.rms_de00, kBudget) << m.material;
     EXPECT_EQ(m.ns_per_eval, costs.ns_per_eval(m.model)) << m.material;
-    f82 = f82 || m.model == Model::F82;
+    f82 = f82 || m.model == fl::fresnel::model_of<fl::fresnel::models::F82>;
   }
   EXPECT_TRUE(has_lut(r.plan, "ltc_matrix"));
   EXPECT_TRUE(has_lut(r.plan, "ltc_moments"));

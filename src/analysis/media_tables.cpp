@@ -6,6 +6,7 @@
 
 #include "color/ciede2000_fast.h"
 #include "fresnel/exact.h"
+#include "fresnel/media.h"
 #include "fresnel/model_set.h"
 #include "spectral/errors.h"
 
@@ -91,8 +92,8 @@ Table blend_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
   std::vector<std::pair<double, std::vector<size_t>>> rows;
   for (const auto& g : blend_groups(studies, o)) {
     std::vector<std::vector<double>> p;
-    for (size_t i : g) p.push_back(studies[i].result(Model::Gulbrandsen).derived);
-    rows.emplace_back(blend_error(ctx, Model::Gulbrandsen, p, o.weight), g);
+    for (size_t i : g) p.push_back(studies[i].result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived);
+    rows.emplace_back(blend_error(ctx, fresnel::model_of<fresnel::models::Gulbrandsen>, p, o.weight), g);
   }
   std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   for (const auto& [de, g] : rows)
@@ -198,7 +199,7 @@ Table gamut_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
     std::vector<Cell> row{s.material->material.name};
     long long moved = 0;
     for (size_t k = 0; k < conv.size(); ++k) {
-      const auto r = gamut_error(ctx, Model::Gulbrandsen, s.result(Model::Gulbrandsen).derived, conv[k], lab[k]);
+      const auto r = gamut_error(ctx, fresnel::model_of<fresnel::models::Gulbrandsen>, s.result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived, conv[k], lab[k]);
       row.push_back(r.de);
       moved += r.moved;
       worst = std::max(worst, r.de);
@@ -272,7 +273,7 @@ const std::vector<Medium>& media() {
 }
 
 std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) {
-  return fresnel::evaluate_curve(Model::Schlick, {f0.r, f0.g, f0.b}, ctx.cos_thetas());
+  return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}, ctx.cos_thetas());
 }
 
 }  // namespace

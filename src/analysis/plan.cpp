@@ -141,7 +141,7 @@ std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<PlanChoic
     out.push_back({"ltc_matrix", "area", {"inv_m00", "inv_m20", "inv_m02", "inv_m22"},
                    "fresnel-lab lut ltc --out ltc.exr (ltc_1.exr)"});
     out.push_back({"ltc_moments", "area", {"n_d", "f_d"}, "fresnel-lab lut ltc --out ltc.exr (ltc_2.exr R, G)"});
-    const bool f82 = std::any_of(choices.begin(), choices.end(), [](const PlanChoice& c) { return c.model == Model::F82; });
+    const bool f82 = std::any_of(choices.begin(), choices.end(), [](const PlanChoice& c) { return c.model == fresnel::model_of<fresnel::models::F82>; });
     if (f82)
       out.push_back({"ltc_f82_moment", "area", {"l_d"}, "fresnel-lab lut ltc --out ltc.exr (ltc_2.exr B)"});
   }

@@ -43,7 +43,7 @@ std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, const Scene
 
 struct PlanChoice {
   std::string material;  // display name
-  fresnel::Model model = fresnel::Model::Schlick;
+  fresnel::Model model{};
   bool fitted = false;
   std::vector<double> params;
   double rms_de00 = 0;

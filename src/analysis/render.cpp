@@ -76,8 +76,7 @@ FresnelTable truth_fresnel_table(const Context& ctx, const spectral::ComplexIorS
 }
 
 FresnelTable model_fresnel_table(fresnel::Model model, const std::vector<double>& params) {
-  const int per_channel = fresnel::model_spec(model).per_channel();
-  return tabulate_fresnel([&](double c) { return fresnel::evaluate_rgb(model, per_channel, c, params.data()); });
+  return tabulate_fresnel([&](double c) { return fresnel::model_spec(model).evaluate(c, params.data(), false); });
 }
 
 color::Rgb shade_specular(const Environment& env, const FresnelTable& fresnel, const Vec3& n, const Vec3& v,

@@ -66,20 +66,6 @@ ModelCosts read_model_costs(const std::string& path) {
   return out;
 }
 
-std::vector<double> benchmark_params(Model m) {
-  // Gold in ACEScg, roughly: F0 (0.93, 0.68, 0.30), F82 (0.90, 0.72, 0.45), Refl. η, κ.
-  switch (m) {
-    case Model::Schlick: return {0.93, 0.68, 0.30};
-    case Model::GeneralizedSchlick: return {0.93, 1.0, 5.2, 0.68, 1.0, 5.6, 0.30, 1.0, 6.1};
-    case Model::CookTorrance: return {0.93, 0.68, 0.30, 0.35, 2.6};
-    case Model::Lazanyi: return {0.93, 0.1, 6.0, 0.68, 0.3, 6.0, 0.30, 0.8, 6.0};
-    case Model::F82: return {0.93, 0.90, 0.68, 0.72, 0.30, 0.45};
-    case Model::Gulbrandsen: return {0.93, 0.35, 0.68, 0.55, 0.30, 0.75};
-    case Model::FresnelRgb: return {0.18, 3.4, 0.42, 2.35, 1.37, 1.77};
-  }
-  return {};
-}
-
 namespace {
 double median_of(std::vector<double> v) {
   if (v.empty()) return 0;

@@ -33,9 +33,6 @@ struct ModelCosts {
 // InputError (file:line) for anything else.
 ModelCosts read_model_costs(const std::string& path);
 
-// Fixed, gold-like parameters for timing each model (the benchmark and `speed --measure`): costs
-// barely depend on the values, but the F82 clamp and the Gulbrandsen/Fresnel branches do a little.
-std::vector<double> benchmark_params(fresnel::Model m);
 
 // One (model, parameter set) candidate with its error statistics over the studied materials.
 struct SpeedRow {

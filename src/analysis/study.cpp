@@ -1,5 +1,7 @@
 #include "analysis/study.h"
 
+#include "fresnel/registry.h"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -26,52 +28,6 @@ fit::CurveTarget curve_target(const Context& ctx, const std::vector<color::Rgb>&
 
 namespace {
 
-// Fit starts beyond the derived parameters: other derivations of the same model and a few
-// fixed variations, so a fit does not stop in a poor local minimum. Deterministic.
-std::vector<std::vector<double>> extra_starts(Model m, const fresnel::DerivedParameters& d) {
-  std::vector<std::vector<double>> s;
-  switch (m) {
-    case Model::FresnelRgb: {
-      // Gulbrandsen's η, κ for (F0, g) from both η derivations, and the point-sampled η, κ.
-      for (const auto* g : {&d.g_refl_eta, &d.g_ps_eta}) {
-        std::vector<double> p;
-        for (int c = 0; c < 3; ++c) {
-          const double eta = fresnel::gulbrandsen_eta(d.f0[c], std::clamp((*g)[c], 0.0, 1.0));
-          p.insert(p.end(), {eta, fresnel::gulbrandsen_kappa(d.f0[c], eta)});
-        }
-        s.push_back(p);
-      }
-      std::vector<double> ps;
-      for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
-      s.push_back(ps);
-      break;
-    }
-    case Model::Gulbrandsen:
-      s.push_back(fresnel::gulbrandsen_params(d.f0, d.g_ps_eta));
-      s.push_back(fresnel::gulbrandsen_params(d.f0, {0.5, 0.5, 0.5}));
-      break;
-    case Model::Lazanyi:
-      for (double alpha : {3.0, 10.0}) {
-        std::vector<double> p;
-        for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], 0.0, alpha});
-        s.push_back(p);
-      }
-      break;
-    case Model::GeneralizedSchlick: {
-      std::vector<double> p;
-      for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], 1.0, 5.0});
-      s.push_back(p);
-      break;
-    }
-    case Model::CookTorrance:
-      s.push_back({d.f0.r, d.f0.g, d.f0.b, d.eta_refl.g, d.kappa_refl.g});
-      break;
-    default:
-      break;
-  }
-  return s;
-}
-
 MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const StudyOptions& o) {
   MaterialStudy st;
   st.material = &m;
@@ -86,22 +42,20 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
     r.model = spec.model;
     r.derived = fresnel::derived_model_params(spec.model, d);
     r.derived_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.derived, cos));
-    if (spec.model == Model::F82) r.derived_clamps = fresnel::f82_model_clamps(r.derived, cos);
+    r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
     if (o.fit) {
-      auto starts = extra_starts(spec.model, d);
-      starts.insert(starts.begin(), r.derived);
-      r.fitted = fit::fit_model(spec.model, target, starts);
+      r.fitted = fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d));
       r.fitted_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
-      if (spec.model == Model::F82) r.fitted_clamps = fresnel::f82_model_clamps(r.fitted.parameters, cos);
+      r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);
     }
     st.models.push_back(std::move(r));
   }
   std::vector<double> ps;
   for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
-  st.ps_eta_kappa = curve_error(ctx, st.truth, fresnel::evaluate_curve(Model::FresnelRgb, ps, cos));
+  st.ps_eta_kappa = curve_error(ctx, st.truth, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::FresnelRgb>, ps, cos));
   const auto g_ps = fresnel::gulbrandsen_params(d.f0, d.g_ps_eta, &st.g_clamped_ps);
   fresnel::gulbrandsen_params(d.f0, d.g_refl_eta, &st.g_clamped_refl);
-  st.refl_f0_ps_eta = curve_error(ctx, st.truth, fresnel::evaluate_curve(Model::Gulbrandsen, g_ps, cos));
+  st.refl_f0_ps_eta = curve_error(ctx, st.truth, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Gulbrandsen>, g_ps, cos));
   return st;
 }
 

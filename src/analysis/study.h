@@ -16,14 +16,14 @@ struct ModelResult {
   CurveError derived_error;
   fit::FitResult fitted;
   CurveError fitted_error;
-  bool derived_clamps = false, fitted_clamps = false;  // the F82 model left [0, 1] and was clamped
+  bool derived_clamps = false, fitted_clamps = false;  // the kernel's output clamp changed the curve
 };
 
 struct MaterialStudy {
   const LoadedMaterial* material = nullptr;
   std::vector<color::Rgb> truth;
   fresnel::DerivedParameters derived;
-  std::vector<ModelResult> models;  // model_specs() order
+  std::vector<ModelResult> models;  // registry order
   // The talk's method table (SPEC §3) beyond what `models` holds.
   CurveError ps_eta_kappa, refl_f0_ps_eta;
   int g_clamped_ps = 0, g_clamped_refl = 0;  // channels whose g left [0, 1]

@@ -13,7 +13,7 @@ namespace fl::analysis {
 namespace {
 
 std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) {
-  return fresnel::evaluate_curve(fresnel::Model::Schlick, {f0.r, f0.g, f0.b}, ctx.cos_thetas());
+  return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}, ctx.cos_thetas());
 }
 
 std::string setting_note(const Context& ctx) {
@@ -104,9 +104,9 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   int g_clamped_ps = 0, g_clamped_refl = 0;
   for (const auto& s : studies) {
     if (!is_metal(s)) continue;
-    t.rows.push_back({s.material->material.name, s.result(Model::Schlick).derived_error.rms, s.ps_eta_kappa.rms,
-                      s.result(Model::FresnelRgb).derived_error.rms, s.refl_f0_ps_eta.rms,
-                      s.result(Model::Gulbrandsen).derived_error.rms, s.result(Model::FresnelRgb).fitted_error.rms});
+    t.rows.push_back({s.material->material.name, s.result(fresnel::model_of<fresnel::models::Schlick>).derived_error.rms, s.ps_eta_kappa.rms,
+                      s.result(fresnel::model_of<fresnel::models::FresnelRgb>).derived_error.rms, s.refl_f0_ps_eta.rms,
+                      s.result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived_error.rms, s.result(fresnel::model_of<fresnel::models::FresnelRgb>).fitted_error.rms});
     g_clamped_ps += s.g_clamped_ps;
     g_clamped_refl += s.g_clamped_refl;
   }
@@ -150,8 +150,8 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
                           std::string(fitted ? r.fitted.termination : "-"),
                           params_text(r.model, fitted ? r.fitted.parameters : r.derived)});
         // The talk's comparison: Schlick as derived (spectral F0) against the fitted F82 model.
-        const bool schlick_derived = r.model == fresnel::Model::Schlick && !fitted;
-        const bool f82_fitted = r.model == fresnel::Model::F82 && fitted;
+        const bool schlick_derived = r.model == fresnel::model_of<fresnel::models::Schlick> && !fitted;
+        const bool f82_fitted = r.model == fresnel::model_of<fresnel::models::F82> && fitted;
         if (is_metal(s) && (schlick_derived || f82_fitted)) med[f82_fitted][1].push_back(e.rms);
       }
     }
@@ -196,7 +196,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   int flagged = 0;
   for (const auto& s : studies) {
     const auto& d = s.derived;
-    const auto& eta_kappa = s.result(fresnel::Model::FresnelRgb);
+    const auto& eta_kappa = s.result(fresnel::model_of<fresnel::models::FresnelRgb>);
     const auto& ek = eta_kappa.fitted.parameters.empty() ? eta_kappa.derived : eta_kappa.fitted.parameters;
     std::vector<Cell> row{s.material->material.name, std::string(spectral::to_string(s.material->material.material_class)),
                           ctx.settings().space};

@@ -33,14 +33,14 @@ analysis::ModelCosts measure_model_costs(int repeats, double min_ms) {
   volatile float sink = 0;
   for (const auto& spec : fresnel::model_specs()) {
     std::vector<float> params;
-    for (double p : analysis::benchmark_params(spec.model)) params.push_back(static_cast<float>(p));
+    for (double p : fresnel::example_params(spec.model)) params.push_back(static_cast<float>(p));
     double best_ns = 1e300;
     for (int r = 0; r < repeats; ++r) {
       long long evals = 0;
       const auto t0 = std::chrono::steady_clock::now();
       double ms = 0;
       do {
-        fresnel::evaluate_batch<float>(spec.model, spec.per_channel(), params.data(), cos_theta.data(), kAngles,
+        fresnel::evaluate_batch(spec.model, params.data(), cos_theta.data(), kAngles,
                                        out.data());
         sink = sink + out[kAngles / 2];
         evals += kAngles;

@@ -2,18 +2,12 @@
 // CIELAB and CIEDE2000, templated on the scalar so Ceres can differentiate a ΔE2000 objective.
 #include <cmath>
 
+#include "color/autodiff.h"
 #include "color/types.h"
 
 namespace fl::color {
 
 namespace detail {
-// sqrt whose derivative stays finite at 0 (Ceres Jets would give 0·∞ = NaN there).
-template <class T>
-T safe_sqrt(const T& x) {
-  using std::sqrt;
-  if (x <= T(1e-200)) return T(0.0) * x;
-  return sqrt(x);
-}
 template <class T>
 T lab_f(const T& t) {
   using std::cbrt;
@@ -49,7 +43,6 @@ De2000Terms<T> ciede2000_terms(const LabT<T>& lab1, const LabT<T>& lab2) {
   using std::exp;
   using std::sin;
   using detail::kDegPerRad;
-  using detail::safe_sqrt;
   constexpr double k25pow7 = 6103515625.0;  // 25^7
   const T c1 = safe_sqrt(lab1.a * lab1.a + lab1.b * lab1.b);
   const T c2 = safe_sqrt(lab2.a * lab2.a + lab2.b * lab2.b);
@@ -103,7 +96,7 @@ De2000Terms<T> ciede2000_terms(const LabT<T>& lab1, const LabT<T>& lab2) {
 template <class T>
 T ciede2000(const LabT<T>& lab1, const LabT<T>& lab2) {
   const auto d = ciede2000_terms(lab1, lab2);
-  return detail::safe_sqrt(d.l * d.l + d.c * d.c + d.h * d.h + d.rt * d.c * d.h);
+  return safe_sqrt(d.l * d.l + d.c * d.c + d.h * d.h + d.rt * d.c * d.h);
 }
 
 // Three smooth residuals whose squares sum to ΔE00²: l, c + (rt/2)·h, sqrt(1 − rt²/4)·h

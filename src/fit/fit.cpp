@@ -3,6 +3,8 @@
 #include <ceres/ceres.h>
 #include <ceres/gradient_checker.h>
 
+#include "fresnel/registry.h"
+
 #include <algorithm>
 #include <limits>
 #include <cmath>
@@ -13,31 +15,17 @@ namespace {
 
 using fresnel::Model;
 
-constexpr int param_count(Model m) {
-  switch (m) {
-    case Model::Schlick: return 3;
-    case Model::GeneralizedSchlick: return 9;
-    case Model::CookTorrance: return 5;
-    case Model::Lazanyi: return 9;
-    case Model::F82: return 6;
-    case Model::Gulbrandsen: return 6;
-    case Model::FresnelRgb: return 6;
-  }
-  return 0;
-}
-
 // Three residuals per angle whose squares sum to ΔE2000² between the ground truth and the model's
 // RGB (color::ciede2000_residuals), both in the working space's CIELAB. The Jacobian is formed by
 // the chain rule from two automatic derivatives: the model's RGB over its parameters (Jets of
 // kParams lanes) and the residuals over RGB (Jets of 3 lanes), so the costly colour-difference
 // arithmetic carries 3 derivative lanes instead of up to 9.
-template <Model M>
+template <class Unit>
 class ModelCurveCost : public ceres::CostFunction {
  public:
-  static constexpr int kParams = param_count(M);
+  static constexpr int kParams = fresnel::unit_param_count<Unit>();
 
-  explicit ModelCurveCost(const CurveTarget* target)
-      : target_(target), per_channel_(fresnel::model_spec(M).per_channel()) {
+  explicit ModelCurveCost(const CurveTarget* target) : target_(target) {
     set_num_residuals(3 * static_cast<int>(target->cos_thetas.size()));
     mutable_parameter_block_sizes()->push_back(kParams);
   }
@@ -54,10 +42,10 @@ class ModelCurveCost : public ceres::CostFunction {
       double* r = residuals + 3 * i;
       // Residual values always come from the double path, so they do not depend on whether
       // Jacobians were asked for (Jet arithmetic rounds differently near zero).
-      const auto rgb_d = fresnel::evaluate_rgb<double>(M, per_channel_, target_->cos_thetas[i], p);
+      const auto rgb_d = fresnel::evaluate_unit<Unit, double>(target_->cos_thetas[i], p);
       color::ciede2000_residuals(t, target_->to_lab(rgb_d), r);
       if (!jac) continue;
-      const auto rgb = fresnel::evaluate_rgb<ParamJet>(M, per_channel_, ParamJet(target_->cos_thetas[i]), pj);
+      const auto rgb = fresnel::evaluate_unit<Unit, ParamJet>(ParamJet(target_->cos_thetas[i]), pj);
       const color::RgbT<RgbJet> rgb3{RgbJet(rgb.r.a, 0), RgbJet(rgb.g.a, 1), RgbJet(rgb.b.a, 2)};
       RgbJet rj[3];
       color::ciede2000_residuals(color::LabT<RgbJet>{RgbJet(t.L), RgbJet(t.a), RgbJet(t.b)}, target_->to_lab(rgb3), rj);
@@ -73,20 +61,12 @@ class ModelCurveCost : public ceres::CostFunction {
 
  private:
   const CurveTarget* target_;
-  int per_channel_;
 };
 
 ceres::CostFunction* create_cost(Model m, const CurveTarget* target) {
-  switch (m) {
-    case Model::Schlick: return ModelCurveCost<Model::Schlick>::Create(target);
-    case Model::GeneralizedSchlick: return ModelCurveCost<Model::GeneralizedSchlick>::Create(target);
-    case Model::CookTorrance: return ModelCurveCost<Model::CookTorrance>::Create(target);
-    case Model::Lazanyi: return ModelCurveCost<Model::Lazanyi>::Create(target);
-    case Model::F82: return ModelCurveCost<Model::F82>::Create(target);
-    case Model::Gulbrandsen: return ModelCurveCost<Model::Gulbrandsen>::Create(target);
-    case Model::FresnelRgb: return ModelCurveCost<Model::FresnelRgb>::Create(target);
-  }
-  return nullptr;
+  ceres::CostFunction* cost = nullptr;
+  fresnel::visit_model(m, [&](auto unit) { cost = ModelCurveCost<decltype(unit)>::Create(target); });
+  return cost;
 }
 
 FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> params, const FitOptions& options) {
@@ -125,10 +105,10 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
 }  // namespace
 
 static double start_cost(Model m, const CurveTarget& target, const std::vector<double>& params) {
-  const int pc = fresnel::model_spec(m).per_channel();
+  const auto& spec = fresnel::model_spec(m);
   double cost = 0;
   for (size_t i = 0; i < target.cos_thetas.size(); ++i) {
-    const auto rgb = fresnel::evaluate_rgb<double>(m, pc, target.cos_thetas[i], params.data());
+    const auto rgb = spec.evaluate(target.cos_thetas[i], params.data(), false);
     const double de = color::ciede2000(target.truth_lab[i], target.to_lab(rgb));
     cost += 0.5 * de * de;
   }
@@ -140,7 +120,7 @@ FitResult fit_model(Model m, const CurveTarget& target, const std::vector<std::v
   // Rank the starts by their cost (cheap), then solve from the best few.
   std::vector<std::pair<double, size_t>> ranked;
   for (size_t i = 0; i < starts.size(); ++i) {
-    if (static_cast<int>(starts[i].size()) != param_count(m)) throw std::invalid_argument("fit_model: wrong parameter count");
+    if (static_cast<int>(starts[i].size()) != fresnel::model_spec(m).param_count()) throw std::invalid_argument("fit_model: wrong parameter count");
     ranked.emplace_back(start_cost(m, target, starts[i]), i);
   }
   std::stable_sort(ranked.begin(), ranked.end());

@@ -1,10 +1,11 @@
 #pragma once
-// RGB parameters derived from spectral data (SPEC §3), and each model's "derived" parameter set.
+// RGB parameters derived from spectral data: the spectral F0 and F82, point-sampled η, κ (one
+// wavelength per channel), η, κ processed as if they were reflectances, and Gulbrandsen's edge
+// tint from each. Each model's unit (models/) maps these to its "derived" parameter set.
 #include <array>
 #include <vector>
 
 #include "fresnel/ground_truth.h"
-#include "fresnel/model_set.h"
 
 namespace fl::fresnel {
 
@@ -22,13 +23,5 @@ struct DerivedParameters {
 DerivedParameters derive_parameters(const std::vector<color::Rgb>& rgb_weights, const color::Mat3& rgb_to_xyz,
                                     const spectral::ComplexIorSpectrum& ior, double eta_outside,
                                     const std::array<double, 3>& point_sample_nm);
-
-// The model's "derived" parameters: Schlick (F0); generalized Schlick (F0, F90 = 1, p through
-// the measured F82); Cook-Torrance (F0, representative index); Lazányi (F0, a from F82, α = 6);
-// F82 (F0, F82); Gulbrandsen (F0, g from Refl. η, clamped to [0, 1]); RGB Fresnel (Refl. η, κ).
-std::vector<double> derived_model_params(Model m, const DerivedParameters& d);
-
-// Gulbrandsen parameters (F0, g) with g clamped to [0, 1]; `clamped` counts channels moved.
-std::vector<double> gulbrandsen_params(const color::Rgb& f0, const color::Rgb& g, int* clamped = nullptr);
 
 }  // namespace fl::fresnel

@@ -21,7 +21,7 @@ std::string settings_line(const analysis::Context& ctx) {
 }
 
 color::Rgb model_rgb(const ModelCurve& m, double cos_theta) {
-  return fresnel::evaluate_rgb(m.model, fresnel::model_spec(m.model).per_channel(), cos_theta, m.params.data());
+  return fresnel::model_spec(m.model).evaluate(cos_theta, m.params.data(), false);
 }
 
 std::vector<color::Rgb> model_curve(const analysis::Context& ctx, const ModelCurve& m) {

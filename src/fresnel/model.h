@@ -1,0 +1,144 @@
+#pragma once
+// What every Fresnel model declares about itself. A model is one unit (one file in models/): its
+// kernel, its parameters, its derivation from spectral data, its fit starts and what can
+// pre-integrate it. The registry (registry.h) lists the units; everything else is generic.
+//
+// Parameter layout, shared by evaluation, derivation, fitting and reports: the per-channel
+// parameters first (R block, G block, B block), then the parameters shared by the channels.
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "color/types.h"
+
+namespace fl::fresnel {
+
+struct ParamRange {
+  double lo, hi;
+};
+
+inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
+// What a parameter stands for; reflectances are the ones reported when outside [0, 1].
+enum class ParamKind { Reflectance, Index, Exponent, Coefficient };
+
+struct ParamSpec {
+  const char* name;  // column name without the channel suffix: "f0", "eta_rep"
+  const char* unit;  // for people: "reflectance", "relative index", ...
+  ParamKind kind;
+  ParamRange fit;     // the box a fit searches
+  ParamRange domain;  // where the kernel is defined; converted or blended values are clamped into it
+};
+
+// What an engine needs to shade a model under one kind of lighting: the lookup-table channels it
+// reads (named as the `lut` command writes them) and whether the Fresnel term itself is
+// pre-integrated into them. When it is not, the engine evaluates the model once per pixel at
+// `evaluated_at` (e.g. n·v) and scales the lobe's Fresnel-free integral: a stated approximation
+// whose rendered error is measured, not hidden.
+struct LightingSupport {
+  std::span<const char* const> channels;
+  bool fresnel_pre_integrated = false;
+  const char* evaluated_at = "";
+};
+
+// Under image-based lighting (split-sum DFG table) and under LTC area lights (LTC matrix and the
+// GGX lobe's Fresnel moments). Punctual lights evaluate every model exactly, with no table.
+struct PreIntegration {
+  LightingSupport ibl, area;
+};
+
+// The channels the lookup tables provide. dfg1, dfg2: the split-sum scale and bias, ∫(1 − Fc)ρ cos
+// and ∫Fc ρ cos with Fc = (1 − v·h)⁵; dfg_f82: ∫ μ(1 − μ)⁶ ρ cos (μ = v·h), the F82 term's analogue.
+// ltc_matrix: the four entries of M⁻¹; n_d, f_d, l_d: the lobe's norm, Schlick moment and F82
+// moment (Hill's n_D, f_D and their F82 analogue).
+namespace lut_channel {
+inline constexpr const char* kDfgScale = "dfg1";
+inline constexpr const char* kDfgBias = "dfg2";
+inline constexpr const char* kDfgF82 = "dfg_f82";
+inline constexpr const char* kLtcMatrix = "ltc_matrix";
+inline constexpr const char* kLtcNorm = "n_d";
+inline constexpr const char* kLtcSchlick = "f_d";
+inline constexpr const char* kLtcF82 = "l_d";
+// The lobe's Fresnel-free integral: dfg1 + dfg2 under IBL, n_d (with the matrix) under LTC.
+inline constexpr const char* kLobeIbl[] = {kDfgScale, kDfgBias};
+inline constexpr const char* kLobeArea[] = {kLtcMatrix, kLtcNorm};
+}  // namespace lut_channel
+
+// For a model no shared table can pre-integrate: F(n·v) times the lobe's Fresnel-free integral.
+inline constexpr PreIntegration kEvaluatedAtNdotV{{lut_channel::kLobeIbl, false, "n·v"},
+                                                  {lut_channel::kLobeArea, false, "n·v"}};
+
+// A model's handle: its position in the registry. Compare, copy, and look up its spec.
+class Model {
+ public:
+  constexpr Model() = default;
+  constexpr explicit Model(int index) : index_(index) {}
+  constexpr int index() const { return index_; }
+  friend constexpr bool operator==(Model a, Model b) { return a.index_ == b.index_; }
+
+ private:
+  int index_ = 0;
+};
+
+// One model, as the rest of the program sees it (built from the unit by the registry).
+struct ModelSpec {
+  Model model;
+  const char* name;   // command-line / CSV name
+  const char* label;  // for people
+  std::vector<ParamSpec> channel_params;
+  std::vector<ParamSpec> shared_params;
+  PreIntegration pre_integration;
+  bool can_leave_unit_range;  // the curve can leave [0, 1] for some parameters (reported, not clamped)
+  bool has_output_clamp;      // the kernel clamps its output; evaluate(..., unclamped) skips that
+
+  // Evaluations over the flat parameter layout.
+  color::Rgb (*evaluate)(double cos_theta, const double* params, bool unclamped);
+  color::RgbT<float> (*evaluate_float)(float cos_theta, const float* params);
+  void (*batch_float)(const float* params, const float* cos_theta, std::size_t n, float* out);
+  void (*batch_double)(const double* params, const double* cos_theta, std::size_t n, double* out);
+
+  int per_channel() const { return static_cast<int>(channel_params.size()); }
+  int param_count() const { return 3 * per_channel() + static_cast<int>(shared_params.size()); }
+  std::vector<std::string> param_names() const;  // "f0_r", ..., "eta_rep"
+  std::vector<ParamRange> bounds() const;        // fit boxes, flat layout
+  std::vector<ParamRange> domain() const;        // kernel domains, flat layout
+};
+
+namespace detail {
+// out[c·n + i] = M::channel(cos_theta[i], channel c's parameters, shared parameters). The
+// parameters are copied to locals first, so the compiler knows the output cannot alias them and
+// can vectorize the plain scalar kernel.
+template <class M, class T>
+void batch_channels(const T* params, const T* cos_theta, std::size_t n, T* out) {
+  constexpr int kPer = static_cast<int>(M::kChannelParams.size());
+  constexpr int kShared = static_cast<int>(M::kSharedParams.size());
+  T shared[kShared + 1] = {};
+  for (int k = 0; k < kShared; ++k) shared[k] = params[3 * kPer + k];
+  for (int c = 0; c < 3; ++c) {
+    T p[kPer] = {};
+    for (int k = 0; k < kPer; ++k) p[k] = params[c * kPer + k];
+    T* __restrict o = out + static_cast<std::size_t>(c) * n;
+    for (std::size_t i = 0; i < n; ++i) o[i] = M::channel(cos_theta[i], p, shared);
+  }
+}
+}  // namespace detail
+
+// All three channels of unit M from the flat parameter vector, for any scalar (double, float,
+// Ceres Jets).
+template <class M, class T>
+color::RgbT<T> evaluate_unit(T cos_theta, const T* params) {
+  constexpr int kPer = static_cast<int>(M::kChannelParams.size());
+  const T* shared = params + 3 * kPer;
+  return {M::channel(cos_theta, params, shared), M::channel(cos_theta, params + kPer, shared),
+          M::channel(cos_theta, params + 2 * kPer, shared)};
+}
+
+// Sizes of unit M's flat parameter vector.
+template <class M>
+constexpr int unit_param_count() {
+  return 3 * static_cast<int>(M::kChannelParams.size()) + static_cast<int>(M::kSharedParams.size());
+}
+
+}  // namespace fl::fresnel

@@ -1,0 +1,72 @@
+#pragma once
+// Hoffman's F82 model: F0 and F82 per channel.
+#include <array>
+#include <vector>
+
+#include "fresnel/derive.h"
+#include "fresnel/model.h"
+#include "fresnel/models/schlick.h"
+
+namespace fl::fresnel {
+
+// Hoffman 2019: Lazányi's form with α = 6 and a chosen so that the curve passes through F82 at
+// cosθ = 1/7. 823543/46656 = 7⁷/6⁶ = 1/(c(1 − c)⁶) and 49/6 = (1 − c)⁵/(c(1 − c)⁶) at c = 1/7.
+template <class T>
+T f82_coefficient(T f0, T f82) {
+  return T(823543.0 / 46656.0) * (f0 - f82) + T(49.0 / 6.0) * (T(1.0) - f0);
+}
+template <class T>
+T hoffman_f82_unclamped(T cos_theta, T f0, T f82) {
+  const T m = T(1.0) - cos_theta;
+  const T m2 = m * m;
+  return schlick(cos_theta, f0) - f82_coefficient(f0, f82) * cos_theta * (m2 * m2 * m2);
+}
+// Hoffman 2019, with the output clamped to [0, 1].
+template <class T>
+T hoffman_f82(T cos_theta, T f0, T f82) {
+  const T f = hoffman_f82_unclamped(cos_theta, f0, f82);
+  if (f < T(0.0)) return T(0.0);
+  if (f > T(1.0)) return T(1.0);
+  return f;
+}
+
+namespace models {
+
+struct F82 {
+  static constexpr const char* kName = "f82";
+  static constexpr const char* kLabel = "Hoffman 2019 F82 (F0, F82)";
+  static constexpr std::array<ParamSpec, 2> kChannelParams{{
+      {"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}},
+      {"f82", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}},
+  }};
+  static constexpr std::array<ParamSpec, 0> kSharedParams{};
+  static constexpr bool kCanLeaveUnitRange = false;
+
+  // Schlick's channels plus the F82 term's: F = F0·dfg1 + dfg2 − a·dfg_f82 under IBL,
+  // and n_d, f_d, l_d under LTC.
+  static constexpr const char* kIbl[] = {lut_channel::kDfgScale, lut_channel::kDfgBias, lut_channel::kDfgF82};
+  static constexpr const char* kArea[] = {lut_channel::kLtcMatrix, lut_channel::kLtcNorm, lut_channel::kLtcSchlick,
+                                          lut_channel::kLtcF82};
+  static constexpr PreIntegration kPreIntegration{{kIbl, true, ""}, {kArea, true, ""}};
+
+  template <class T>
+  static T channel(T cos_theta, const T* p, const T*) {
+    return hoffman_f82(cos_theta, p[0], p[1]);
+  }
+  // The formula itself, linear in (F0, F82), for comparisons of linearity.
+  template <class T>
+  static T channel_unclamped(T cos_theta, const T* p, const T*) {
+    return hoffman_f82_unclamped(cos_theta, p[0], p[1]);
+  }
+  // The spectral F0 and F82.
+  static std::vector<double> derive(const DerivedParameters& d) {
+    std::vector<double> p;
+    for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], d.f82[c]});
+    return p;
+  }
+  static std::vector<std::vector<double>> extra_starts(const DerivedParameters&) { return {}; }
+  static std::vector<double> example() { return {0.93, 0.90, 0.68, 0.72, 0.30, 0.45}; }
+};
+
+}  // namespace models
+}  // namespace fl::fresnel

@@ -1,0 +1,55 @@
+#pragma once
+// The exact Fresnel equations per channel: RGB η and κ.
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "fresnel/derive.h"
+#include "fresnel/exact.h"
+#include "fresnel/model.h"
+#include "fresnel/models/gulbrandsen.h"
+
+namespace fl::fresnel::models {
+
+struct FresnelRgb {
+  static constexpr const char* kName = "fresnel_rgb";
+  static constexpr const char* kLabel = "RGB Fresnel equations (eta, kappa)";
+  // Indices covering every catalog material with margin.
+  static constexpr std::array<ParamSpec, 2> kChannelParams{{
+      {"eta", "relative index", ParamKind::Index, {0.01, 10.0}, {0.01, kUnbounded}},
+      {"kappa", "extinction", ParamKind::Index, {0.0, 20.0}, {0.0, kUnbounded}},
+  }};
+  static constexpr std::array<ParamSpec, 0> kSharedParams{};
+  static constexpr bool kCanLeaveUnitRange = false;
+  static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+
+  template <class T>
+  static T channel(T cos_theta, const T* p, const T*) {
+    return fresnel_conductor(cos_theta, p[0], p[1]);
+  }
+  // η, κ processed as reflectances.
+  static std::vector<double> derive(const DerivedParameters& d) {
+    std::vector<double> p;
+    for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.eta_refl[c], d.kappa_refl[c]});
+    return p;
+  }
+  // Gulbrandsen's η, κ for (F0, g) from both η derivations, and the point-sampled η, κ.
+  static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
+    std::vector<std::vector<double>> s;
+    for (const auto* g : {&d.g_refl_eta, &d.g_ps_eta}) {
+      std::vector<double> p;
+      for (int c = 0; c < 3; ++c) {
+        const double eta = gulbrandsen_eta(d.f0[c], std::clamp((*g)[c], 0.0, 1.0));
+        p.insert(p.end(), {eta, gulbrandsen_kappa(d.f0[c], eta)});
+      }
+      s.push_back(p);
+    }
+    std::vector<double> ps;
+    for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
+    s.push_back(ps);
+    return s;
+  }
+  static std::vector<double> example() { return {0.18, 3.4, 0.42, 2.35, 1.37, 1.77}; }
+};
+
+}  // namespace fl::fresnel::models

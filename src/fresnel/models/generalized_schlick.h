@@ -1,0 +1,63 @@
+#pragma once
+// Generalized Schlick: F0, F90 and exponent p per channel.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "fresnel/derive.h"
+#include "fresnel/model.h"
+
+namespace fl::fresnel {
+
+// Generalized Schlick (OpenPBR, MaterialX generalized_schlick_bsdf): F0 + (F90 − F0)(1 − cosθ)^p.
+template <class T>
+T generalized_schlick(T cos_theta, T f0, T f90, T p) {
+  using std::pow;
+  const T m = T(1.0) - cos_theta;
+  if (m <= T(0.0)) return f0;
+  return f0 + (f90 - f0) * pow(m, p);
+}
+
+namespace models {
+
+struct GeneralizedSchlick {
+  static constexpr const char* kName = "generalized_schlick";
+  static constexpr const char* kLabel = "Generalized Schlick (F0, F90, p)";
+  // p is searched where the curves stay monotone enough to be meaningful.
+  static constexpr std::array<ParamSpec, 3> kChannelParams{{
+      {"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}},
+      {"f90", "reflectance", ParamKind::Reflectance, {0.0, 1.5}, {-kUnbounded, kUnbounded}},
+      {"p", "exponent", ParamKind::Exponent, {0.5, 30.0}, {0.01, kUnbounded}},
+  }};
+  static constexpr std::array<ParamSpec, 0> kSharedParams{};
+  static constexpr bool kCanLeaveUnitRange = true;
+  // A per-material exponent: no shared table holds it.
+  static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+
+  template <class T>
+  static T channel(T cos_theta, const T* p, const T*) {
+    return generalized_schlick(cos_theta, p[0], p[1], p[2]);
+  }
+  // F0, F90 = 1, and p through the measured F82: F82 = F0 + (1 − F0)(6/7)^p ⇒
+  // p = ln((F82 − F0)/(1 − F0)) / ln(6/7); Schlick's 5 when the curve dips below F0 there.
+  static std::vector<double> derive(const DerivedParameters& d) {
+    std::vector<double> p;
+    for (int c = 0; c < 3; ++c) {
+      const double t = (d.f82[c] - d.f0[c]) / (1.0 - d.f0[c]);
+      const double pc = t > 0.0 && t < 1.0 ? std::log(t) / std::log(1.0 - kCosTheta82) : 5.0;
+      p.insert(p.end(), {d.f0[c], 1.0, std::clamp(pc, 0.5, 30.0)});
+    }
+    return p;
+  }
+  // Schlick's exponent.
+  static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
+    std::vector<double> p;
+    for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], 1.0, 5.0});
+    return {p};
+  }
+  static std::vector<double> example() { return {0.93, 1.0, 5.2, 0.68, 1.0, 5.6, 0.30, 1.0, 6.1}; }
+};
+
+}  // namespace models
+}  // namespace fl::fresnel

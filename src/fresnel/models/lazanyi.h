@@ -1,0 +1,62 @@
+#pragma once
+// Lazányi's model: F0, a and α per channel.
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "fresnel/derive.h"
+#include "fresnel/model.h"
+#include "fresnel/models/f82.h"
+#include "fresnel/models/schlick.h"
+
+namespace fl::fresnel {
+
+// Lazányi & Szirmay-Kalos 2005: Schlick minus a·cosθ·(1 − cosθ)^α.
+template <class T>
+T lazanyi(T cos_theta, T f0, T a, T alpha) {
+  using std::pow;
+  const T m = T(1.0) - cos_theta;
+  if (m <= T(0.0)) return f0;
+  return schlick(cos_theta, f0) - a * cos_theta * pow(m, alpha);
+}
+
+namespace models {
+
+struct Lazanyi {
+  static constexpr const char* kName = "lazanyi";
+  static constexpr const char* kLabel = "Lazanyi 2005 (F0, a, alpha)";
+  static constexpr std::array<ParamSpec, 3> kChannelParams{{
+      {"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}},
+      {"a", "coefficient", ParamKind::Coefficient, {-10.0, 30.0}, {-kUnbounded, kUnbounded}},
+      {"alpha", "exponent", ParamKind::Exponent, {1.0, 20.0}, {0.01, kUnbounded}},
+  }};
+  static constexpr std::array<ParamSpec, 0> kSharedParams{};
+  static constexpr bool kCanLeaveUnitRange = true;
+  // A per-channel exponent α: only α = 6 (the F82 model) has a shared table.
+  static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+
+  template <class T>
+  static T channel(T cos_theta, const T* p, const T*) {
+    return lazanyi(cos_theta, p[0], p[1], p[2]);
+  }
+  // α = 6 and a through the measured F82 (the F82 model's coefficient).
+  static std::vector<double> derive(const DerivedParameters& d) {
+    std::vector<double> p;
+    for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], f82_coefficient(d.f0[c], d.f82[c]), 6.0});
+    return p;
+  }
+  // Plain Schlick with a shallower and a steeper exponent.
+  static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
+    std::vector<std::vector<double>> s;
+    for (double alpha : {3.0, 10.0}) {
+      std::vector<double> p;
+      for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], 0.0, alpha});
+      s.push_back(p);
+    }
+    return s;
+  }
+  static std::vector<double> example() { return {0.93, 0.1, 6.0, 0.68, 0.3, 6.0, 0.30, 0.8, 6.0}; }
+};
+
+}  // namespace models
+}  // namespace fl::fresnel

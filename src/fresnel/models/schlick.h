@@ -1,0 +1,46 @@
+#pragma once
+// The Schlick model: F0 per channel.
+#include <array>
+#include <vector>
+
+#include "fresnel/derive.h"
+#include "fresnel/model.h"
+
+namespace fl::fresnel {
+
+// Schlick 1994: F = F0 + (1 − F0)(1 − cosθ)⁵.
+template <class T>
+T schlick(T cos_theta, T f0) {
+  const T m = T(1.0) - cos_theta;
+  const T m2 = m * m;
+  return f0 + (T(1.0) - f0) * (m2 * m2 * m);
+}
+
+namespace models {
+
+struct Schlick {
+  static constexpr const char* kName = "schlick";
+  static constexpr const char* kLabel = "Schlick";
+  static constexpr std::array<ParamSpec, 1> kChannelParams{
+      {{"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}}}};
+  static constexpr std::array<ParamSpec, 0> kSharedParams{};
+  static constexpr bool kCanLeaveUnitRange = false;
+
+  // The split-sum DFG scale and bias and the LTC Schlick moment integrate it exactly.
+  static constexpr const char* kIbl[] = {lut_channel::kDfgScale, lut_channel::kDfgBias};
+  static constexpr const char* kArea[] = {lut_channel::kLtcMatrix, lut_channel::kLtcNorm, lut_channel::kLtcSchlick};
+  static constexpr PreIntegration kPreIntegration{{kIbl, true, ""}, {kArea, true, ""}};
+
+  template <class T>
+  static T channel(T cos_theta, const T* p, const T*) {
+    return schlick(cos_theta, p[0]);
+  }
+  // The spectral F0.
+  static std::vector<double> derive(const DerivedParameters& d) { return {d.f0.r, d.f0.g, d.f0.b}; }
+  static std::vector<std::vector<double>> extra_starts(const DerivedParameters&) { return {}; }
+  // Gold in ACEScg, roughly (for benchmarks and examples).
+  static std::vector<double> example() { return {0.93, 0.68, 0.30}; }
+};
+
+}  // namespace models
+}  // namespace fl::fresnel

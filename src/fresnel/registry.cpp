@@ -1,0 +1,173 @@
+#include "fresnel/registry.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "fresnel/model_set.h"
+#include "spectral/errors.h"
+
+namespace fl::fresnel {
+namespace {
+
+template <class Unit>
+constexpr bool kHasOutputClamp = requires(const double* p) { Unit::channel_unclamped(0.0, p, p); };
+
+// Unit with its output clamp removed (where it has one).
+template <class Unit>
+struct Unclamped : Unit {
+  template <class T>
+  static T channel(T cos_theta, const T* p, const T* shared) {
+    if constexpr (kHasOutputClamp<Unit>) return Unit::channel_unclamped(cos_theta, p, shared);
+    else return Unit::channel(cos_theta, p, shared);
+  }
+};
+
+template <class Unit>
+color::Rgb evaluate_flat(double cos_theta, const double* params, bool unclamped) {
+  if (unclamped) return evaluate_unit<Unclamped<Unit>>(cos_theta, params);
+  return evaluate_unit<Unit>(cos_theta, params);
+}
+
+template <class Unit>
+ModelSpec make_spec() {
+  return {model_of<Unit>,
+          Unit::kName,
+          Unit::kLabel,
+          {Unit::kChannelParams.begin(), Unit::kChannelParams.end()},
+          {Unit::kSharedParams.begin(), Unit::kSharedParams.end()},
+          Unit::kPreIntegration,
+          Unit::kCanLeaveUnitRange,
+          kHasOutputClamp<Unit>,
+          &evaluate_flat<Unit>,
+          &evaluate_unit<Unit, float>,
+          &detail::batch_channels<Unit, float>,
+          &detail::batch_channels<Unit, double>};
+}
+
+template <class... Units>
+std::vector<ModelSpec> make_specs(ModelList<Units...>) {
+  return {make_spec<Units>()...};
+}
+
+std::vector<color::Rgb> curve(Model m, const std::vector<double>& params, const std::vector<double>& cos_thetas,
+                              bool unclamped) {
+  const auto& spec = model_spec(m);
+  if (static_cast<int>(params.size()) != spec.param_count())
+    throw std::invalid_argument(fmt::format("{}: {} parameters, expected {}", spec.name, params.size(), spec.param_count()));
+  std::vector<color::Rgb> out;
+  out.reserve(cos_thetas.size());
+  for (double c : cos_thetas) out.push_back(spec.evaluate(c, params.data(), unclamped));
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> ModelSpec::param_names() const {
+  std::vector<std::string> out;
+  for (const char* c : {"r", "g", "b"})
+    for (const auto& p : channel_params) out.push_back(std::string(p.name) + "_" + c);
+  for (const auto& p : shared_params) out.push_back(p.name);
+  return out;
+}
+
+std::vector<ParamRange> ModelSpec::bounds() const {
+  std::vector<ParamRange> out;
+  for (int c = 0; c < 3; ++c)
+    for (const auto& p : channel_params) out.push_back(p.fit);
+  for (const auto& p : shared_params) out.push_back(p.fit);
+  return out;
+}
+
+std::vector<ParamRange> ModelSpec::domain() const {
+  std::vector<ParamRange> out;
+  for (int c = 0; c < 3; ++c)
+    for (const auto& p : channel_params) out.push_back(p.domain);
+  for (const auto& p : shared_params) out.push_back(p.domain);
+  return out;
+}
+
+const std::vector<ModelSpec>& model_specs() {
+  static const std::vector<ModelSpec> specs = make_specs(Registry{});
+  return specs;
+}
+
+const ModelSpec& model_spec(Model m) {
+  const auto& specs = model_specs();
+  if (m.index() < 0 || m.index() >= static_cast<int>(specs.size())) throw std::logic_error("unknown model");
+  return specs[static_cast<size_t>(m.index())];
+}
+
+const ModelSpec& model_from_name(const std::string& name) {
+  std::string known;
+  for (const auto& s : model_specs()) {
+    if (name == s.name) return s;
+    known += (known.empty() ? "" : ", ") + std::string(s.name);
+  }
+  throw InputError(fmt::format("unknown model '{}' (expected one of: {})", name, known));
+}
+
+std::vector<color::Rgb> evaluate_curve(Model m, const std::vector<double>& params,
+                                       const std::vector<double>& cos_thetas) {
+  return curve(m, params, cos_thetas, false);
+}
+
+std::vector<color::Rgb> evaluate_curve_unclamped(Model m, const std::vector<double>& params,
+                                                 const std::vector<double>& cos_thetas) {
+  return curve(m, params, cos_thetas, true);
+}
+
+bool output_clamped(Model m, const std::vector<double>& params, const std::vector<double>& cos_thetas) {
+  const auto& spec = model_spec(m);
+  if (!spec.has_output_clamp) return false;
+  for (double c : cos_thetas) {
+    const auto a = spec.evaluate(c, params.data(), false), b = spec.evaluate(c, params.data(), true);
+    if (a.r != b.r || a.g != b.g || a.b != b.b) return true;
+  }
+  return false;
+}
+
+int reflectances_outside_unit(Model m, const std::vector<double>& params) {
+  const auto& spec = model_spec(m);
+  const int pc = spec.per_channel();
+  int n = 0;
+  for (int j = 0; j < pc; ++j) {
+    if (spec.channel_params[j].kind != ParamKind::Reflectance) continue;
+    for (int ch = 0; ch < 3; ++ch) n += params[ch * pc + j] < 0.0 || params[ch * pc + j] > 1.0;
+  }
+  return n;
+}
+
+int clamp_to_domain(Model m, std::vector<double>& params) {
+  const auto domain = model_spec(m).domain();
+  int moved = 0;
+  for (size_t i = 0; i < params.size() && i < domain.size(); ++i) {
+    if (domain[i].lo == -kUnbounded && domain[i].hi == kUnbounded) continue;
+    const double c = std::clamp(params[i], domain[i].lo, domain[i].hi);
+    moved += c != params[i];
+    params[i] = c;
+  }
+  return moved;
+}
+
+std::vector<double> derived_model_params(Model m, const DerivedParameters& d) {
+  std::vector<double> p;
+  visit_model(m, [&](auto unit) { p = decltype(unit)::derive(d); });
+  return p;
+}
+
+std::vector<std::vector<double>> fit_starts(Model m, const DerivedParameters& d) {
+  std::vector<std::vector<double>> s{derived_model_params(m, d)};
+  visit_model(m, [&](auto unit) {
+    for (auto& p : decltype(unit)::extra_starts(d)) s.push_back(std::move(p));
+  });
+  return s;
+}
+
+std::vector<double> example_params(Model m) {
+  std::vector<double> p;
+  visit_model(m, [&](auto unit) { p = decltype(unit)::example(); });
+  return p;
+}
+
+}  // namespace fl::fresnel
