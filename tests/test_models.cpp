@@ -1,4 +1,5 @@
-// Fresnel models, Gulbrandsen's mapping, Ceres Jacobians and fits (issue 3).
+// Fresnel model kernels, Gulbrandsen's mapping and Ceres fits. The generic checks over every
+// model (Jacobians, batch, domains, derivation) are in fresnel/test_registry.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,23 +75,6 @@ struct GoldTarget {
       fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, gold.ior, 1.0, fresnel::kDefaultPointSampleNm);
 };
 
-// Ceres' GradientChecker: analytic (split autodiff) against numeric Jacobians. Finite differences
-// of the CIEDE2000 terms (cube roots, hue angles) are good to about 1e-4 relative.
-constexpr double kGradientTolerance = 1e-3;
-
-TEST(Fit, JacobiansMatchFiniteDifferencesForEveryModel) {
-  GoldTarget g;
-  for (const auto& spec : fresnel::model_specs()) {
-    // Near the optimum, slightly off it: away from CIEDE2000's hue-mean discontinuity (hues 180°
-    // apart), where no derivative exists.
-    auto p = fit::fit_model(spec.model, g.target, {fresnel::derived_model_params(spec.model, g.derived)}).parameters;
-    for (size_t i = 0; i < p.size(); ++i) p[i] *= i % 2 ? 0.995 : 1.004;
-    const auto check = fit::check_model_gradients(spec.model, g.target, p);
-    EXPECT_TRUE(check.ok) << spec.name << ": " << check.report.substr(0, 2000);
-    EXPECT_LT(check.max_relative_error, kGradientTolerance) << spec.name;
-  }
-}
-
 // Synthetic curves made by each model with known parameters are fitted back from a perturbed start.
 constexpr double kRecoveredRms = 1e-4;  // ΔE2000: the fit must reproduce the curve
 constexpr double kRecoveredParam = 2e-3;
@@ -124,7 +108,7 @@ TEST(Fit, NoUsableStartStillReturnsParameters) {
   EXPECT_EQ(r.termination, "NO_USABLE_SOLUTION");
 }
 
-// Issue 3's acceptance figures, measured on the catalog.
+// The methods table and the F82 model's gain over Schlick, measured on the catalog.
 TEST(Acceptance, MethodsTableAndF82Median) {
   analysis::Settings s;
   s.paths = {FL_DEFAULT_DB, FL_MATERIALS};

@@ -1,0 +1,260 @@
+// Generic checks run over every model of the registry, so a model is tested the day it is added:
+// batch against scalar, float against double, Ceres Jacobians against finite differences, the
+// derivation on a spectrally flat material (whose ground truth is known in closed form), domain
+// edges, and the truth of each model's pre-integration declaration.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <set>
+#include <string>
+
+#include "analysis/context.h"
+#include "analysis/study.h"
+#include "fit/fit.h"
+#include "fresnel/batch.h"
+#include "fresnel/derive.h"
+#include "fresnel/exact.h"
+#include "fresnel/model_set.h"
+
+namespace fl {
+namespace {
+
+using fresnel::ModelSpec;
+
+std::vector<double> cosines(int n) {
+  std::vector<double> c;
+  for (int i = 0; i < n; ++i) c.push_back(static_cast<double>(i) / (n - 1));
+  return c;
+}
+
+// The batched kernel runs the same scalar code per element: bit-identical in double. In float the
+// vectorized pow/sqrt of the batch may round differently from the scalar call by a few ulps.
+constexpr double kFloatBatchRelative = 1e-5;
+// Float kernels against double: float has 24 bits; the conductor equations lose a few more
+// through cancellation near grazing incidence.
+constexpr double kFloatVsDouble = 2e-5;
+
+TEST(Registry, BatchMatchesScalarInDoubleAndFloat) {
+  const auto cos_d = cosines(257);
+  std::vector<float> cos_f(cos_d.begin(), cos_d.end());
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto p = fresnel::example_params(spec.model);
+    ASSERT_EQ(static_cast<int>(p.size()), spec.param_count()) << spec.name;
+    const std::vector<float> pf(p.begin(), p.end());
+    std::vector<double> out_d(3 * cos_d.size());
+    std::vector<float> out_f(3 * cos_d.size());
+    fresnel::evaluate_batch(spec.model, p.data(), cos_d.data(), cos_d.size(), out_d.data());
+    fresnel::evaluate_batch(spec.model, pf.data(), cos_f.data(), cos_f.size(), out_f.data());
+    for (size_t i = 0; i < cos_d.size(); ++i) {
+      const auto sd = fresnel::evaluate_rgb(spec.model, cos_d[i], p.data());
+      const auto sf = fresnel::evaluate_rgb(spec.model, cos_f[i], pf.data());
+      for (int c = 0; c < 3; ++c) {
+        const size_t k = c * cos_d.size() + i;
+        EXPECT_EQ(out_d[k], sd[c]) << spec.name << " cos " << cos_d[i];
+        EXPECT_NEAR(out_f[k], sf[c], kFloatBatchRelative * std::max(1.0f, std::abs(sf[c]))) << spec.name;
+        EXPECT_NEAR(sf[c], sd[c], kFloatVsDouble) << spec.name << " cos " << cos_d[i] << " channel " << c;
+      }
+    }
+  }
+}
+
+// Every corner of the fit box, at normal, intermediate and grazing incidence: finite values, and
+// for models whose first channel parameter is F0, exactly F0 at normal incidence.
+TEST(Registry, FiniteAtTheCornersOfTheFitBox) {
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto box = spec.bounds();
+    const size_t n = box.size();
+    ASSERT_LE(n, 12u);
+    for (unsigned corner = 0; corner < (1u << n); corner += 1u + (n > 6 ? 7u : 0u)) {
+      std::vector<double> p(n);
+      for (size_t i = 0; i < n; ++i) p[i] = (corner >> i) & 1u ? box[i].hi : box[i].lo;
+      for (double c : {0.0, 1e-7, 1.0 / 7.0, 0.5, 1.0 - 1e-9, 1.0}) {
+        const auto rgb = spec.evaluate(c, p.data(), false);
+        for (int ch = 0; ch < 3; ++ch) EXPECT_TRUE(std::isfinite(rgb[ch])) << spec.name << " corner " << corner << " cos " << c;
+      }
+      if (std::string(spec.channel_params[0].name) == "f0") {
+        const auto rgb = spec.evaluate(1.0, p.data(), false);
+        for (int ch = 0; ch < 3; ++ch) {
+          // F0 within its domain (Gulbrandsen's mapping is singular at 0 and 1 and holds r in
+          // [1e-9, 0.99999]: hence the 2e-9 tolerance).
+          const auto& dom = spec.channel_params[0].domain;
+          EXPECT_NEAR(rgb[ch], std::clamp(p[ch * spec.per_channel()], dom.lo, dom.hi), 2e-9)
+              << spec.name << " corner " << corner;
+        }
+      }
+    }
+  }
+}
+
+TEST(Registry, ClampToDomainMovesOnlyOutsideValues) {
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto domain = spec.domain();
+    auto inside = fresnel::example_params(spec.model);
+    EXPECT_EQ(fresnel::clamp_to_domain(spec.model, inside), 0) << spec.name;
+    std::vector<double> far(inside.size(), -1e6);
+    int bounded = 0;
+    for (const auto& d : domain) bounded += d.lo > -fresnel::kUnbounded;
+    EXPECT_EQ(fresnel::clamp_to_domain(spec.model, far), bounded) << spec.name;
+    for (size_t i = 0; i < far.size(); ++i) EXPECT_GE(far[i], domain[i].lo) << spec.name;
+  }
+}
+
+// A material whose η and κ do not depend on wavelength: its ground truth at every angle is the
+// exact conductor reflectance R(θ) times the colour pipeline's response to a flat spectrum.
+struct FlatMaterial {
+  analysis::Context ctx{[] {
+    analysis::Settings s;
+    s.paths = {FL_DEFAULT_DB, FL_MATERIALS};
+    return s;
+  }()};
+  std::complex<double> ior;
+  spectral::ComplexIorSpectrum spectrum;
+  color::Rgb flat_response;  // RGB of the constant spectrum 1
+  fresnel::DerivedParameters derived;
+
+  explicit FlatMaterial(std::complex<double> n) : ior(n) {
+    spectrum.grid = ctx.grid();
+    spectrum.ior.assign(static_cast<size_t>(ctx.grid().count), ior);
+    for (const auto& w : ctx.rgb_weights()) flat_response = flat_response + w;
+    derived = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, spectrum, 1.0,
+                                         fresnel::kDefaultPointSampleNm);
+  }
+  double truth(double cos_theta) const { return fresnel::fresnel_conductor(cos_theta, ior); }
+};
+
+// Every model's derived parameters reproduce a flat material's normal-incidence colour, and the
+// models that hold the exact equations (RGB η, κ; Gulbrandsen's exact reparameterization)
+// reproduce its whole curve.
+TEST(Registry, DerivationOnAFlatMaterialIsExactAtNormalIncidence) {
+  for (const auto ior : {std::complex<double>(0.27, 2.9), std::complex<double>(1.5, 0.0), std::complex<double>(2.8, 3.5)}) {
+    const FlatMaterial m(ior);
+    for (const auto& spec : fresnel::model_specs()) {
+      const auto p = fresnel::derived_model_params(spec.model, m.derived);
+      const auto at0 = spec.evaluate(1.0, p.data(), false);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(at0[c], m.truth(1.0) * m.flat_response[c], 1e-9) << spec.name << " ior " << ior;
+    }
+    // RGB η, κ: processed as reflectances, a constant η, κ comes back scaled by the flat response.
+    const auto eta_kappa = fresnel::derived_model_params(fresnel::model_of<fresnel::models::FresnelRgb>, m.derived);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(eta_kappa[2 * c], ior.real() * m.flat_response[c], 1e-9);
+      EXPECT_NEAR(eta_kappa[2 * c + 1], ior.imag() * m.flat_response[c], 1e-9);
+    }
+  }
+}
+
+// Ceres' GradientChecker at several points around each model's gold fit. The finite differences
+// are Ridders-extrapolated; the CIEDE2000 chain (cube roots, hue angles) keeps them to about 1e-6.
+constexpr double kGradientTolerance = 1e-5;
+
+TEST(Registry, JacobiansMatchFiniteDifferencesAtSeveralPoints) {
+  analysis::Settings s;
+  s.paths = {FL_DEFAULT_DB, FL_MATERIALS};
+  const analysis::Context ctx(s);
+  const auto gold = analysis::load_material(ctx, spectral::resolve_material("gold", ctx.settings().paths));
+  const auto truth = analysis::ground_truth_curve(ctx, gold.ior, 1.0);
+  const auto target = analysis::curve_target(ctx, truth);
+  const auto d = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, gold.ior, 1.0,
+                                            fresnel::kDefaultPointSampleNm);
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto fitted = fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d)).parameters;
+    for (const double scale : {0.97, 0.995, 1.004}) {
+      auto p = fitted;
+      for (size_t i = 0; i < p.size(); ++i) p[i] *= i % 2 ? scale : 2.0 - scale;
+      const auto check = fit::check_model_gradients(spec.model, target, p);
+      EXPECT_TRUE(check.ok) << spec.name << ": " << check.report.substr(0, 2000);
+      EXPECT_LT(check.max_relative_error, kGradientTolerance) << spec.name << " scale " << scale;
+    }
+  }
+}
+
+// A model is pre-integrable into the split-sum and LTC tables exactly when, per channel, it is a
+// combination a + b·(1 − μ)⁵ + c·μ(1 − μ)⁶ of the tables' Fresnel terms; it needs the F82 channel
+// exactly when c ≠ 0. Fitted here by least squares at 64 angles (normal equations: the basis is
+// well conditioned on [0, 1]); the residual shows whether the declaration holds.
+struct SpanFit {
+  double residual = 0;
+  double c_abs = 0;
+};
+SpanFit fit_span(const ModelSpec& spec, const std::vector<double>& p, int channel) {
+  const auto mu = cosines(64);
+  std::vector<std::array<double, 3>> a;
+  std::vector<double> y;
+  double ata[3][4] = {};  // normal equations [AᵀA | Aᵀy], solved by Gaussian elimination
+  for (double u : mu) {
+    const double m = 1.0 - u;
+    a.push_back({1.0, std::pow(m, 5), u * std::pow(m, 6)});
+    y.push_back(spec.evaluate(u, p.data(), false)[channel]);
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) ata[r][c] += a.back()[r] * a.back()[c];
+      ata[r][3] += a.back()[r] * y.back();
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+    for (int r = k + 1; r < 3; ++r) {
+      const double f = ata[r][k] / ata[k][k];
+      for (int c = k; c < 4; ++c) ata[r][c] -= f * ata[k][c];
+    }
+  double x[3];
+  for (int r = 2; r >= 0; --r) {
+    double v = ata[r][3];
+    for (int c = r + 1; c < 3; ++c) v -= ata[r][c] * x[c];
+    x[r] = v / ata[r][r];
+  }
+  double residual = 0;
+  for (size_t i = 0; i < mu.size(); ++i)
+    residual = std::max(residual, std::abs(x[0] * a[i][0] + x[1] * a[i][1] + x[2] * a[i][2] - y[i]));
+  return {residual, std::abs(x[2])};
+}
+
+bool lists(const fresnel::LightingSupport& s, const char* channel) {
+  for (const char* c : s.channels)
+    if (std::string(c) == channel) return true;
+  return false;
+}
+
+TEST(Registry, PreIntegrationDeclarationsAreTrue) {
+  namespace ch = fresnel::lut_channel;
+  const std::set<std::string> known{ch::kDfgScale, ch::kDfgBias, ch::kDfgF82, ch::kLtcMatrix,
+                                    ch::kLtcNorm, ch::kLtcSchlick, ch::kLtcF82};
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto& pi = spec.pre_integration;
+    for (const auto* s : {&pi.ibl, &pi.area}) {
+      for (const char* c : s->channels) EXPECT_TRUE(known.count(c)) << spec.name << ": " << c;
+      EXPECT_EQ(s->fresnel_pre_integrated, std::string(s->evaluated_at).empty()) << spec.name;
+    }
+    EXPECT_TRUE(lists(pi.ibl, ch::kDfgScale) && lists(pi.ibl, ch::kDfgBias)) << spec.name;
+    EXPECT_TRUE(lists(pi.area, ch::kLtcMatrix) && lists(pi.area, ch::kLtcNorm)) << spec.name;
+    // Two parameter sets: the unit's example and the middle of its fit box. A declared
+    // pre-integrable model must be in the span for both; a model declared not pre-integrable
+    // must leave it for at least one (Lazányi with α = 6 is the F82 model, in the span).
+    std::vector<double> mid;
+    for (const auto& r : spec.bounds()) mid.push_back(0.5 * (r.lo + r.hi));
+    double worst = 0;
+    bool any_f82 = false;
+    for (const auto& p : {fresnel::example_params(spec.model), mid}) {
+      if (fresnel::output_clamped(spec.model, p, cosines(64))) continue;
+      for (int c = 0; c < 3; ++c) {
+        const auto f = fit_span(spec, p, c);
+        worst = std::max(worst, f.residual);
+        if (!pi.ibl.fresnel_pre_integrated) continue;
+        EXPECT_LT(f.residual, 1e-12) << spec.name << ": declared pre-integrable but not in the tables' span";
+        const bool needs_f82 = f.c_abs > 1e-9;
+        any_f82 = any_f82 || needs_f82;
+        if (needs_f82) EXPECT_TRUE(lists(pi.ibl, ch::kDfgF82) && lists(pi.area, ch::kLtcF82)) << spec.name;
+        EXPECT_TRUE(lists(pi.area, ch::kLtcSchlick)) << spec.name;
+      }
+    }
+    if (!pi.ibl.fresnel_pre_integrated)
+      EXPECT_GT(worst, 1e-6) << spec.name << ": declared not pre-integrable, but the tables' span holds it";
+    else
+      EXPECT_EQ(lists(pi.ibl, ch::kDfgF82), any_f82) << spec.name << ": lists the F82 channel it does not use";
+    EXPECT_EQ(pi.ibl.fresnel_pre_integrated, pi.area.fresnel_pre_integrated) << spec.name;
+  }
+}
+
+}  // namespace
+}  // namespace fl
