@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <set>
 #include <filesystem>
 
 #include "spectral/errors.h"
@@ -133,17 +134,47 @@ PlanChoice choose_model(const MaterialStudy& study, const ModelCosts& costs, dou
                            [](const PlanChoice& a, const PlanChoice& b) { return a.rms_de00 < b.rms_de00; });
 }
 
+namespace {
+
+// The tables `lut` writes, the model channels (fresnel::lut_channel) each holds, and how to make it.
+struct LutSource {
+  const char* name;
+  const char* lighting;
+  std::vector<std::pair<const char*, std::vector<std::string>>> channels;  // model channel → file channels
+  const char* command;
+};
+const std::vector<LutSource>& lut_sources() {
+  namespace ch = fresnel::lut_channel;
+  static const std::vector<LutSource> sources{
+      {"dfg", "ibl", {{ch::kDfgScale, {"dfg1"}}, {ch::kDfgBias, {"dfg2"}}}, "fresnel-lab lut dfg --out dfg.exr"},
+      {"dfg_f82", "ibl", {{ch::kDfgF82, {"dfg_f82"}}}, "not written by fresnel-lab lut yet"},
+      {"ltc_matrix", "area", {{ch::kLtcMatrix, {"inv_m00", "inv_m20", "inv_m02", "inv_m22"}}},
+       "fresnel-lab lut ltc --out ltc.exr (ltc_1.exr)"},
+      {"ltc_moments", "area", {{ch::kLtcNorm, {"n_d"}}, {ch::kLtcSchlick, {"f_d"}}},
+       "fresnel-lab lut ltc --out ltc.exr (ltc_2.exr R, G)"},
+      {"ltc_f82_moment", "area", {{ch::kLtcF82, {"l_d"}}}, "fresnel-lab lut ltc --out ltc.exr (ltc_2.exr B)"},
+  };
+  return sources;
+}
+
+}  // namespace
+
 std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<PlanChoice>& choices) {
+  std::set<std::string> needed;  // "lighting/channel", from every chosen model's declaration
+  for (const auto& c : choices) {
+    const auto& pi = fresnel::model_spec(c.model).pre_integration;
+    if (scene.ibl)
+      for (const char* ch : pi.ibl.channels) needed.insert(std::string("ibl/") + ch);
+    if (scene.area)
+      for (const char* ch : pi.area.channels) needed.insert(std::string("area/") + ch);
+  }
   std::vector<PlanLut> out;
-  if (scene.ibl)
-    out.push_back({"dfg", "ibl", {"dfg1", "dfg2"}, "fresnel-lab lut dfg --out dfg.exr"});
-  if (scene.area) {
-    out.push_back({"ltc_matrix", "area", {"inv_m00", "inv_m20", "inv_m02", "inv_m22"},
-                   "fresnel-lab lut ltc --out ltc.exr (ltc_1.exr)"});
-    out.push_back({"ltc_moments", "area", {"n_d", "f_d"}, "fresnel-lab lut ltc --out ltc.exr (ltc_2.exr R, G)"});
-    const bool f82 = std::any_of(choices.begin(), choices.end(), [](const PlanChoice& c) { return c.model == fresnel::model_of<fresnel::models::F82>; });
-    if (f82)
-      out.push_back({"ltc_f82_moment", "area", {"l_d"}, "fresnel-lab lut ltc --out ltc.exr (ltc_2.exr B)"});
+  for (const auto& src : lut_sources()) {
+    PlanLut lut{src.name, src.lighting, {}, src.command};
+    for (const auto& [model_channel, file_channels] : src.channels)
+      if (needed.count(std::string(src.lighting) + "/" + model_channel))
+        lut.channels.insert(lut.channels.end(), file_channels.begin(), file_channels.end());
+    if (!lut.channels.empty()) out.push_back(std::move(lut));
   }
   return out;
 }

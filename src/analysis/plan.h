@@ -61,8 +61,10 @@ struct PlanLut {
   std::vector<std::string> channels;
   std::string command;   // how to make it
 };
-// DFG for IBL; for area lights the LTC matrix and the n_D, f_D moments, plus the F82 moment l_D
-// only if some chosen model is the F82 model. Punctual lights need no table.
+// The tables the chosen models need under the scene's lighting, from each model's declaration
+// (fresnel::PreIntegration): under IBL the split-sum DFG channels (plus the F82 channel for the F82
+// model); under area lights the LTC matrix and n_D, plus f_D and l_D for the models whose Fresnel
+// term they pre-integrate. Punctual lights need no table.
 std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<PlanChoice>& choices);
 
 struct Plan {
