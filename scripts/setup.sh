@@ -13,8 +13,8 @@ PACKAGES=(
   libopenexr-dev libimath-dev
   libyaml-cpp-dev libcli11-dev libfmt-dev
   colord-data
-  googletest libgtest-dev libgmock-dev libbenchmark-dev
-  liblcms2-dev libpng-dev fonts-dejavu-core libfreetype-dev
+  googletest libgtest-dev libgmock-dev libbenchmark-dev libxml2-utils
+  liblcms2-dev libcairo2-dev fonts-dejavu-core
   clang libclang-rt-14-dev
 )
 

@@ -1,4 +1,4 @@
-// `plot strip | curves` and `render`: issue 7's pictures, and the figures `reproduce` writes.
+// `plot strip | curves` and `render`: the pictures, and the figures `reproduce` writes.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,9 +10,11 @@
 #include <mutex>
 #include <thread>
 
+#include "analysis/figure_data.h"
 #include "analysis/render.h"
 #include "analysis/study.h"
 #include "cli/app.h"
+#include "report/draw.h"
 #include "report/exr.h"
 #include "report/figures.h"
 #include "report/png.h"
@@ -68,9 +70,9 @@ analysis::MaterialStudy study_one(const analysis::Context& ctx, const std::vecto
   return analysis::study_materials(ctx, one, o).front();
 }
 
-report::FigureInput figure_input(const analysis::MaterialStudy& st, const std::vector<fresnel::Model>& models,
-                                 const std::string& kind) {
-  report::FigureInput in;
+analysis::FigureRequest figure_input(const analysis::MaterialStudy& st, const std::vector<fresnel::Model>& models,
+                                     const std::string& kind) {
+  analysis::FigureRequest in;
   in.material = st.material->material.name;
   in.parameter_kind = kind;
   in.ior = &st.material->ior;
@@ -86,7 +88,7 @@ struct PlotArgs {
 };
 
 void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, const char* name, const char* help,
-                         const char* default_models, const char* out_help, bool svg_allowed) {
+                         const char* default_models, const char* out_help) {
   auto* sub = plot.add_subcommand(name, help);
   auto a = std::make_shared<PlotArgs>();
   a->models = default_models;
@@ -96,13 +98,9 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
       ->capture_default_str();
   sub->add_option("--out", a->out, out_help)->required();
   const std::string which = name;
-  sub->callback([&g, &selected, a, which, svg_allowed] {
-    selected = [&g, a, which, svg_allowed] {
-      const std::string ext = lower_extension(a->out);
-      if (ext != ".png" && !(svg_allowed && ext == ".svg"))
-        throw InputError(a->out, 0,
-                         fmt::format("unknown output type '{}' (expected {})", ext.empty() ? "(none)" : ext,
-                                     svg_allowed ? ".png, .svg" : ".png"));
+  sub->callback([&g, &selected, a, which] {
+    selected = [&g, a, which] {
+      const auto type = report::file_type(a->out);
       check_params_kind(a->params);
       const auto models = parse_models(a->models);
       const auto ctx = make_context(g);
@@ -111,14 +109,9 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
       print_warnings(g, one);
       const auto st = study_one(ctx, one, a->params == "fitted");
       const auto in = figure_input(st, models, a->params);
-      report::Font font;
-      if (which == "strip") {
-        report::write_png_atomic(a->out, report::strip_figure(ctx, in, font));
-      } else {
-        const auto d = report::curves_drawing(ctx, in);
-        if (ext == ".svg") report::write_file_atomic(a->out, report::to_svg(d));
-        else report::write_png_atomic(a->out, report::rasterize(d, font));
-      }
+      const auto d = which == "strip" ? report::strip_drawing(analysis::strip_data(ctx, in))
+                                      : report::curves_drawing(analysis::curve_data(ctx, in));
+      report::write_file_atomic(a->out, report::encode(d, type));
       progress(g, fmt::format("plot {}: wrote {}", which, a->out));
       return 0;
     };
@@ -129,6 +122,10 @@ struct RenderArgs {
   std::string material, model = "schlick", params = "derived", out;
   analysis::RenderSettings settings;
 };
+
+std::string display_png(const analysis::Context& ctx, const analysis::SphereImage& img) {
+  return report::encode_png(report::Image8(img.width, img.height, analysis::sphere_display(ctx, img)));
+}
 
 int run_render(const GlobalOptions& g, const RenderArgs& a) {
   if (lower_extension(a.out) != ".exr")
@@ -194,17 +191,15 @@ int run_render(const GlobalOptions& g, const RenderArgs& a) {
   exr.float_attributes = {{"fresnelLab:roughness", static_cast<float>(rs.roughness)},
                           {"fresnelLab:samples", static_cast<float>(rs.samples)}};
 
-  report::Font font;
   std::vector<std::pair<std::string, std::string>> pngs;  // path, bytes
-  pngs.emplace_back(base + ".png", report::encode_png(report::sphere_display(ctx, shown)));
+  pngs.emplace_back(base + ".png", display_png(ctx, shown));
   std::vector<double> de;
   if (!truth_only) {
-    pngs.emplace_back(base + ".truth.png", report::encode_png(report::sphere_display(ctx, truth)));
+    pngs.emplace_back(base + ".truth.png", display_png(ctx, truth));
     de = analysis::de2000_image(ctx, truth, shown);
+    const auto title = fmt::format("{}: ΔE2000, truth vs {}", m.material.name, spec->name);
     pngs.emplace_back(base + ".de2000.png",
-                      report::encode_png(report::heatmap_figure(
-                          de, shown.width, shown.height,
-                          fmt::format("{}: ΔE2000, truth vs {}", m.material.name, spec->name), font)));
+                      report::encode(report::heatmap_drawing(de, shown.width, shown.height, title), report::FileType::Png));
   }
   std::vector<std::string> written;
   try {
@@ -242,10 +237,10 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected) {
   plot->require_subcommand(1);
   add_plot_subcommand(*plot, g, selected, "strip",
                       "stacked colour strips over 0°–90° and 80°–90°: ground truth and each model (sRGB via OCIO)",
-                      "all", "output file (.png)", false);
+                      "all", "output file (.png, .svg or .pdf)");
   add_plot_subcommand(*plot, g, selected, "curves",
                       "R, G, B reflectance against angle (truth and models) and ΔE2000 against angle",
-                      "schlick,f82,gulbrandsen", "output file (.png or .svg)", true);
+                      "schlick,f82,gulbrandsen", "output file (.png, .svg or .pdf)");
 }
 
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
@@ -269,7 +264,7 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
 }
 
 // The figures `reproduce` writes: figures/strip-KEY.png and figures/curves-KEY.png per material
-// (derived parameters), rendered in parallel (one Font per worker), plus a Markdown gallery.
+// (derived parameters), rendered in parallel, plus a Markdown gallery.
 std::vector<std::pair<std::string, std::string>> reproduce_figures(const GlobalOptions& g, const analysis::Context& ctx,
                                                                    const std::vector<analysis::MaterialStudy>& studies,
                                                                    std::string& gallery_md) {
@@ -283,11 +278,13 @@ std::vector<std::pair<std::string, std::string>> reproduce_figures(const GlobalO
   std::exception_ptr error;
   const auto work = [&] {
     try {
-      report::Font font;
       for (size_t i = next++; i < n; i = next++) {
-        strips[i] = report::encode_png(report::strip_figure(ctx, figure_input(studies[i], all, "derived"), font));
-        curves[i] = report::encode_png(
-            report::rasterize(report::curves_drawing(ctx, figure_input(studies[i], curve_models, "derived")), font));
+        strips[i] = report::encode(
+            report::strip_drawing(analysis::strip_data(ctx, figure_input(studies[i], all, "derived"))),
+            report::FileType::Png);
+        curves[i] = report::encode(
+            report::curves_drawing(analysis::curve_data(ctx, figure_input(studies[i], curve_models, "derived"))),
+            report::FileType::Png);
       }
     } catch (...) {
       std::lock_guard lock(error_mutex);

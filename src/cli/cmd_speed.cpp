@@ -1,4 +1,4 @@
-// `speed`: the cost-against-error table with its PNG plot, from the committed costs or timed live.
+// `speed`: the cost-against-error table with its plot, from the committed costs or timed live.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -57,7 +57,7 @@ namespace {
 
 void add_speed(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand(
-      "speed", "every Fresnel model's cost per evaluation against its ΔE2000 error (table speed), with a PNG plot");
+      "speed", "every Fresnel model's cost per evaluation against its ΔE2000 error (table speed), with a plot");
   struct Args {
     std::string format = "csv", costs, plot;
     bool measure = false;
@@ -66,11 +66,11 @@ void add_speed(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--format", a->format, "csv, md or json")->capture_default_str();
   sub->add_option("--costs", a->costs, "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
   sub->add_flag("--measure", a->measure, "time the batched kernels now instead of reading the costs file (not reproducible)");
-  sub->add_option("--plot", a->plot, "also write the error-against-cost plot to this PNG file");
+  sub->add_option("--plot", a->plot, "also write the error-against-cost plot to this file (.png, .svg or .pdf)");
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
       const auto f = report::format_from_name(a->format);
-      if (!a->plot.empty()) report::check_png_path(a->plot);
+      if (!a->plot.empty()) report::file_type(a->plot);
       const auto costs = a->measure ? measure_model_costs() : load_model_costs(a->costs);
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);

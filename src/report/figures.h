@@ -1,47 +1,39 @@
 #pragma once
-// Issue 7's figures: colour strips, reflectance / ΔE2000 curves, and the display images of sphere
-// renders (the render itself is analysis/render.h). Colours are working-space RGB converted to
-// linear Rec.709 with the SpaceLibrary's (OCIO) matrix, then sRGB display-encoded by OCIO
-// (SpaceLibrary::encode_srgb_display).
+// The figures as Drawings (draw.h), from data computed in analysis/figure_data.h: colour strips,
+// reflectance / ΔE2000 curves, and the ΔE2000 heat map of a sphere render.
 #include <string>
 #include <vector>
 
-#include "analysis/context.h"
-#include "analysis/render.h"
-#include "fresnel/model_set.h"
-#include "report/font.h"
-#include "report/image.h"
-#include "report/plot.h"
+#include "analysis/figure_data.h"
+#include "report/draw.h"
 
 namespace fl::report {
 
-struct ModelCurve {
-  fresnel::Model model;
-  std::vector<double> params;  // flat parameter vector (model_set.h)
-};
+// Stacked strips, one row per StripData row (ground truth, then each model), one pixel column per
+// sample of each span, spans side by side; the RMS ΔE2000 of each model on the right.
+Drawing strip_drawing(const analysis::StripData& d);
 
-struct FigureInput {
-  std::string material;          // shown in titles
-  std::string parameter_kind;    // "derived" or "fitted", shown in titles
-  const spectral::ComplexIorSpectrum* ior = nullptr;
-  std::vector<ModelCurve> models;
-};
-
-// Working-space RGB (3 floats per pixel) → 8-bit sRGB display values, through OCIO.
-std::vector<std::uint8_t> display_encode(const analysis::Context& ctx, const std::vector<float>& working_rgb);
-
-// Stacked strips, ground truth then each model: reflectance over 0°–90° and a zoom on 80°–90°,
-// with the RMS ΔE2000 of each model over the context's angles.
-Image8 strip_figure(const analysis::Context& ctx, const FigureInput& in, Font& font);
+// Where strip_drawing paints a sample: the top-left pixel of its column (kStripRowHeight tall).
+constexpr int kStripRowHeight = 30;
+Point strip_cell(const analysis::StripData& d, size_t row, size_t span, int sample);
 
 // R, G, B reflectance against angle (ground truth solid, models dashed) and ΔE2000 against angle.
-Drawing curves_drawing(const analysis::Context& ctx, const FigureInput& in);
+Drawing curves_drawing(const analysis::CurveData& d);
 
-// A render composited over a dark grey background and display-encoded.
-Image8 sphere_display(const analysis::Context& ctx, const analysis::SphereImage& img);
+// ΔE2000 per pixel (row-major, NaN: no surface) as a heat map on the inferno ramp, with a colour
+// bar from 0 to the nice ceiling of the largest ΔE (at least 1), its ticks labelled.
+Drawing heatmap_drawing(const std::vector<double>& de, int width, int height, const std::string& title);
 
-// ΔE2000 per pixel as a heat map (approximate matplotlib "inferno" ramp) with a colour bar; the
-// scale's top is the nice ceiling of the largest ΔE (at least 1).
-Image8 heatmap_figure(const std::vector<double>& de, int width, int height, const std::string& title, Font& font);
+// The map's pixels are drawn unscaled with their top-left corner at (0, kHeatmapImageTop); the
+// colour bar's top pixel row shows the scale's top, its bottom row 0.
+constexpr int kHeatmapImageTop = 34;
+struct ColourBar {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+ColourBar heatmap_colour_bar(int width, int height);
+
+// The ramp: five control points of matplotlib's "inferno" (van der Walt & Smith 2015, CC0),
+// sRGB-encoded, interpolated linearly between them; t is clamped to [0, 1].
+Rgb8 inferno(double t);
 
 }  // namespace fl::report

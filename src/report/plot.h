@@ -1,65 +1,15 @@
 #pragma once
-// A small vector drawing (lines, rectangles, text) for figures, with two back ends: an
-// antialiased rasterizer into an Image8 (labels through report/font.h) and hand-written SVG.
-// Coordinates are pixels, origin at the top-left, y down.
+// Plot panels on a Drawing (draw.h): data ranges mapped onto a pixel rectangle, ticks, axes.
 #include <string>
 #include <vector>
 
-#include "report/font.h"
-#include "report/image.h"
+#include "report/draw.h"
 
 namespace fl::report {
 
-struct Point {
-  double x = 0, y = 0;
-};
+const Rgb8 kInk{30, 30, 30};
+const Rgb8 kGreyInk{110, 110, 110};
 
-// Dash pattern in pixels (on, off, on, off, ...); empty: solid.
-using Dash = std::vector<double>;
-
-struct Polyline {
-  std::vector<Point> points;
-  Rgb8 colour;
-  double width_px = 1.0;
-  Dash dash;
-};
-
-struct Rect {
-  double x = 0, y = 0, w = 0, h = 0;
-  Rgb8 fill;
-};
-
-struct Text {
-  double x = 0, y = 0;  // baseline anchor (or the centre, when vertical)
-  std::string utf8;
-  int size_px = 12;
-  Rgb8 colour;
-  Align align = Align::Left;
-  bool vertical = false;  // reading upwards, centred on (x, y)
-};
-
-struct Drawing {
-  int width = 0, height = 0;
-  Rgb8 background{255, 255, 255};
-  // Painted in order: rectangles, then lines, then text, each in insertion order.
-  std::vector<Rect> rects;
-  std::vector<Polyline> lines;
-  std::vector<Text> texts;
-};
-
-// Distance-based antialiasing (after Gupta & Sproull 1981, "Filtering edges for gray-scale
-// displays"): the coverage of a unit pixel by a line of width w whose centre line is d pixels from
-// the pixel's centre, approximated by a one-pixel linear ramp across the line's edge,
-// clamp(w/2 + 1/2 − d, 0, 1).
-double line_coverage(double distance_px, double width_px);
-
-// Splits a polyline into its dashes (each a polyline), by arc length.
-std::vector<std::vector<Point>> dash_pieces(const std::vector<Point>& points, const Dash& dash);
-
-Image8 rasterize(const Drawing& d, Font& font);
-std::string to_svg(const Drawing& d);
-
-// A plot panel: data ranges mapped onto a pixel rectangle.
 struct Axes {
   double left = 0, top = 0, width = 0, height = 0;  // pixels
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;
@@ -72,6 +22,16 @@ struct Axes {
 std::vector<double> nice_ticks(double lo, double hi, int target = 5);
 // The smallest nice value ≥ v (1, 2, 2.5, 5 × 10^k), for axis maxima.
 double nice_ceiling(double v);
+// The fewest decimals (at most 4) that print every tick exactly.
+int tick_decimals(const std::vector<double>& ticks);
+// `v` with `decimals` decimals, never "-0".
+std::string tick_label(double v, int decimals);
+
+// The centre of the pixel column or row containing v: a 1 px line there covers one whole pixel.
+double pixel_centre(double v);
+
+// A 1 px straight line between two points, both snapped to pixel centres.
+Polyline hairline(Point a, Point b, Rgb8 colour);
 
 // Frame, light grid lines at the ticks, tick labels and axis labels.
 void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks, const std::vector<double>& y_ticks,

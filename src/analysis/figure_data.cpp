@@ -1,0 +1,103 @@
+#include "analysis/figure_data.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "color/ocio.h"
+
+namespace fl::analysis {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+FigureCaption caption(const Context& ctx, const FigureRequest& in) {
+  return {in.material, in.parameter_kind, ctx.settings().space, ctx.settings().illuminant};
+}
+
+color::Rgb model_rgb(const FigureModel& m, double cos_theta) {
+  return fresnel::model_spec(m.model).evaluate(cos_theta, m.params.data(), false);
+}
+
+// Working-space RGB of every row (truth, then models) at every sample, row by row.
+std::vector<float> strip_samples(const Context& ctx, const FigureRequest& in, const std::vector<StripSpan>& spans,
+                                 int columns) {
+  const size_t rows = 1 + in.models.size();
+  std::vector<float> working(rows * columns * 3);
+  const double eta_e = ctx.settings().eta_outside;
+  int col = 0;
+  for (const auto& sp : spans)
+    for (int i = 0; i < sp.samples; ++i, ++col) {
+      const double theta = sp.theta0_deg + (sp.theta1_deg - sp.theta0_deg) * (i + 0.5) / sp.samples;
+      const double c = std::cos(theta * kDegToRad);
+      for (size_t r = 0; r < rows; ++r) {
+        const color::Rgb v = r == 0 ? ground_truth_rgb(ctx, *in.ior, c, eta_e) : model_rgb(in.models[r - 1], c);
+        float* p = &working[3 * (r * columns + col)];
+        p[0] = static_cast<float>(v.r), p[1] = static_cast<float>(v.g), p[2] = static_cast<float>(v.b);
+      }
+    }
+  return working;
+}
+
+}  // namespace
+
+CurveData curve_data(const Context& ctx, const FigureRequest& in) {
+  CurveData d;
+  d.caption = caption(ctx, in);
+  d.angles_deg = ctx.angles_deg();
+  d.truth = ground_truth_curve(ctx, *in.ior, ctx.settings().eta_outside);
+  for (const auto& m : in.models) {
+    ModelCurveData c;
+    c.name = fresnel::model_spec(m.model).name;
+    c.rgb = fresnel::evaluate_curve(m.model, m.params, ctx.cos_thetas());
+    c.de2000 = de2000_per_angle(ctx, d.truth, c.rgb);
+    c.rms_de2000 = curve_error(ctx, d.truth, c.rgb).rms;
+    d.models.push_back(std::move(c));
+  }
+  return d;
+}
+
+std::vector<StripSpan> default_strip_spans() { return {{0.0, 90.0, 540}, {80.0, 90.0, 300}}; }
+
+StripData strip_data(const Context& ctx, const FigureRequest& in, const std::vector<StripSpan>& spans) {
+  StripData d;
+  d.caption = caption(ctx, in);
+  d.spans = spans;
+  int columns = 0;
+  for (const auto& sp : spans) columns += sp.samples;
+  const auto display = display_encode(ctx, strip_samples(ctx, in, spans, columns));
+  const auto curves = curve_data(ctx, in);
+  const size_t row_codes = 3 * static_cast<size_t>(columns);
+  for (size_t r = 0; r <= in.models.size(); ++r) {
+    StripRow row;
+    row.label = r == 0 ? std::string("ground truth (spectral)") : curves.models[r - 1].name;
+    if (r > 0) row.rms_de2000 = curves.models[r - 1].rms_de2000;
+    row.srgb.assign(display.begin() + r * row_codes, display.begin() + (r + 1) * row_codes);
+    d.rows.push_back(std::move(row));
+  }
+  return d;
+}
+
+std::vector<std::uint8_t> display_encode(const Context& ctx, const std::vector<float>& working_rgb) {
+  const auto m = ctx.spaces().conversion(ctx.settings().space, "lin_rec709");
+  std::vector<float> rgb(working_rgb.size());
+  for (size_t i = 0; i + 2 < rgb.size(); i += 3) {
+    const auto o = color::transform_rgb(m, {working_rgb[i], working_rgb[i + 1], working_rgb[i + 2]});
+    rgb[i] = static_cast<float>(o.r);
+    rgb[i + 1] = static_cast<float>(o.g);
+    rgb[i + 2] = static_cast<float>(o.b);
+  }
+  color::SpaceLibrary::encode_srgb_display(rgb);
+  std::vector<std::uint8_t> out(rgb.size());
+  for (size_t i = 0; i < rgb.size(); ++i) out[i] = static_cast<std::uint8_t>(std::lround(255.0f * rgb[i]));
+  return out;
+}
+
+std::vector<std::uint8_t> sphere_display(const Context& ctx, const SphereImage& img) {
+  constexpr float kBackground = 0.02f;  // linear grey behind the sphere
+  std::vector<float> working(img.rgb.size());
+  for (size_t k = 0; k < img.alpha.size(); ++k)
+    for (int c = 0; c < 3; ++c) working[3 * k + c] = img.rgb[3 * k + c] + (1.0f - img.alpha[k]) * kBackground;
+  return display_encode(ctx, working);
+}
+
+}  // namespace fl::analysis
