@@ -155,16 +155,6 @@ TEST(Plan, UnknownMaterialNamesSceneLine) {
   }
 }
 
-TEST(Plan, CliJsonShape) {
-  const auto r = fl::test::run_command(fl::test::cli() + " -q plan '" FL_EXAMPLES_DIR "/scene_metals.yaml' --format json");
-  ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* key : {"\"materials\": [", "\"luts\": [", "\"material\": ", "\"model\": ", "\"params\": {",
-                          "\"rms_de00\": ", "\"ns_per_eval\": "})
-    EXPECT_NE(r.out.find(key), std::string::npos) << key;
-  EXPECT_EQ(fl::test::run_command(fl::test::cli() + " plan --help").status, 0);
-  EXPECT_EQ(fl::test::run_command(fl::test::cli() + " speed --help").status, 0);
-}
-
 TEST(Speed, ParetoRowsAreNotDominated) {
   const fl::analysis::Context ctx(settings());
   std::vector<fl::analysis::LoadedMaterial> ms;

@@ -1,33 +1,35 @@
-// GGX lookup tables (issue 5): the DFG and LTC-moment integrals against an independent
-// deterministic quadrature, the fitted LTCs against the lobes they fit, EXR output, the `lut` CLI.
+// GGX lookup tables (analysis/lut.h): the DFG and LTC-moment integrals against an independent
+// deterministic quadrature, the fitted LTC table against the lobes it fits.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <numbers>
-#include <sstream>
 #include <vector>
 
 #include "analysis/lut.h"
 #include "brdf/ggx.h"
 #include "fit/ltc_fit.h"
-#include "report/exr.h"
-#include "test_util.h"
+#include "quadrature.h"
 
 namespace fl::analysis {
 namespace {
+
+using test::gauss_legendre;
+using test::GaussRule;
+using test::integrate_panel;
+using test::integrate_theta;
+using test::Values;
+using test::operator+;
+using test::operator*;
 
 constexpr double kPi = std::numbers::pi;
 // The tables against the quadrature (the issue's test tolerance).
 constexpr double kQuadratureTolerance = 1e-3;
 // Identities that hold sample by sample (same samples, different accumulation): only rounding.
 constexpr double kSameSamplesTolerance = 1e-12;
-// The quadrature of a smooth normalized density.
-constexpr double kNormalizationTolerance = 1e-6;
 // n_D at normal incidence for the smallest roughness tested.
 constexpr double kSmoothNormTolerance = 1e-3;
 // A fitted LTC integrates to one.
@@ -41,83 +43,6 @@ constexpr double kMaxLobeRelativeL2 = 0.35;
 constexpr double kFitErrorEstimateTolerance = 0.02;
 // The horizon-clipped sphere form factor against a quadrature over the cap.
 constexpr double kFormFactorTolerance = 1e-4;
-
-// ---- An independent quadrature: Gauss–Legendre on panels, in half-vector coordinates.
-
-struct GaussRule {
-  std::vector<double> x, w;  // on [-1, 1]
-};
-GaussRule gauss_legendre(int n) {
-  GaussRule r;
-  r.x.resize(n);
-  r.w.resize(n);
-  for (int i = 0; i < n; ++i) {
-    double x = std::cos(kPi * (i + 0.75) / (n + 0.5));
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      const double dp = n * (x * p1 - p0) / (x * x - 1);
-      const double dx = p1 / dp;
-      x -= dx;
-      if (std::abs(dx) < 1e-16) break;
-    }
-    double p0 = 1, p1 = x;
-    for (int k = 2; k <= n; ++k) {
-      const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-      p0 = p1;
-      p1 = p2;
-    }
-    const double dp = n * (x * p1 - p0) / (x * x - 1);
-    r.x[i] = x;
-    r.w[i] = 2 / ((1 - x * x) * dp * dp);
-  }
-  return r;
-}
-
-// Several integrands at once.
-using Values = std::array<double, 4>;
-Values operator+(Values a, const Values& b) {
-  for (int k = 0; k < 4; ++k) a[k] += b[k];
-  return a;
-}
-Values operator*(double s, Values a) {
-  for (auto& x : a) x *= s;
-  return a;
-}
-
-// ∫_a^b f with the substitution t = a + (b − a)(1 − cos πs)/2, which removes square-root
-// endpoint singularities, then Gauss–Legendre in s.
-template <class V = double, class F>
-V integrate_panel(const F& f, double a, double b, const GaussRule& g) {
-  V s{};
-  for (size_t k = 0; k < g.x.size(); ++k) {
-    const double u = 0.5 * (g.x[k] + 1);
-    const double t = a + (b - a) * 0.5 * (1 - std::cos(kPi * u));
-    const double dt = (b - a) * 0.5 * kPi * std::sin(kPi * u) * 0.5;
-    s = s + (g.w[k] * dt) * f(t);
-  }
-  return s;
-}
-
-// Panels on [0, end]: the given breakpoints, geometric steps from α/16 (where D varies), and at most 0.1 rad.
-template <class V = double, class F>
-V integrate_theta(const F& f, double end, double alpha, std::vector<double> breaks, const GaussRule& g) {
-  for (double t = alpha / 16; t < end; t *= 2) breaks.push_back(t);
-  for (double t = 0.1; t < end; t += 0.1) breaks.push_back(t);
-  breaks.push_back(0);
-  breaks.push_back(end);
-  std::sort(breaks.begin(), breaks.end());
-  V s{};
-  for (size_t k = 0; k + 1 < breaks.size(); ++k) {
-    const double a = std::clamp(breaks[k], 0.0, end), b = std::clamp(breaks[k + 1], 0.0, end);
-    if (b > a) s = s + integrate_panel<V>(f, a, b, g);
-  }
-  return s;
-}
 
 LutOptions options(int samples, int threads = 0) {
   LutOptions o;
@@ -160,55 +85,6 @@ Reference reference_moments(double nov, double alpha) {
   };
   const Values v = integrate_theta<Values>(f_theta, theta2, alpha, {theta1}, g_theta);
   return {v[0], v[1], v[2], v[3], v[1]};
-}
-
-TEST(GgxKernels, NdfProjectedAreaIsOne) {
-  static const GaussRule g = gauss_legendre(16);
-  for (double alpha : {1e-3, 0.05, 0.3, 0.7, 1.0}) {
-    const double s = integrate_theta(
-        [&](double t) { return 2 * kPi * brdf::ggx_ndf(std::cos(t), alpha) * std::cos(t) * std::sin(t); }, kPi / 2,
-        alpha, {}, g);
-    EXPECT_NEAR(s, 1.0, kNormalizationTolerance) << alpha;
-  }
-}
-
-// Heitz 2014, eq. 72 and 99: Λ(θ) = (−1 + √(1 + α² tan²θ))/2, G₁ = 1/(1 + Λ(v)) and the
-// height-correlated G₂ = 1/(1 + Λ(v) + Λ(l)) = 4 (n·v)(n·l) V.
-TEST(GgxKernels, VisibilityMatchesTheSmithLambdaForm) {
-  auto lambda = [](double c, double alpha) {
-    const double tan2 = (1 - c * c) / (c * c);
-    return 0.5 * (-1 + std::sqrt(1 + alpha * alpha * tan2));
-  };
-  for (double alpha : {0.01, 0.2, 0.6, 1.0})
-    for (double nov : {0.05, 0.4, 0.9, 1.0})
-      for (double nol : {0.1, 0.5, 0.99}) {
-        const double g2 = 1 / (1 + lambda(nov, alpha) + lambda(nol, alpha));
-        EXPECT_NEAR(4 * nov * nol * brdf::smith_ggx_correlated_visibility(nov, nol, alpha), g2, 1e-12);
-        EXPECT_NEAR(brdf::smith_ggx_g1(nov, alpha), 1 / (1 + lambda(nov, alpha)), 1e-12);
-      }
-}
-
-TEST(GgxKernels, HammersleyPointsAreStratified) {
-  constexpr int n = 16;
-  std::vector<double> u1;
-  for (int i = 0; i < n; ++i) {
-    const auto p = brdf::hammersley(i, n);
-    EXPECT_DOUBLE_EQ(p.u2, (i + 0.5) / n);
-    u1.push_back(p.u1);
-  }
-  std::sort(u1.begin(), u1.end());
-  for (int i = 0; i < n; ++i) EXPECT_DOUBLE_EQ(u1[i], static_cast<double>(i) / n);
-}
-
-TEST(GgxKernels, VisibleNormalSamplesLieInTheViewHemisphere) {
-  const brdf::Vec3 v = brdf::view_from_nov(0.3);
-  for (int i = 0; i < 256; ++i) {
-    const auto p = brdf::hammersley(i, 256);
-    const auto h = brdf::sample_ggx_vndf(v, 0.5, p.u1, p.u2);
-    EXPECT_NEAR(brdf::dot(h, h), 1.0, 1e-12);
-    EXPECT_GE(brdf::dot(v, h), 0.0);
-    EXPECT_GE(h.z, 0.0);
-  }
 }
 
 TEST(Lut, NormTendsToOneAtNormalIncidenceAsRoughnessVanishes) {
@@ -288,18 +164,7 @@ TEST(Lut, DISABLED_FullTablesAgreeWithQuadrature) {
 
 // ∫ f over the sphere in the LTC frame's polar coordinates (θ from Z), panels in θ.
 double integrate_sphere(const std::function<double(const brdf::Vec3&)>& f, double theta_end) {
-  static const GaussRule g_theta = gauss_legendre(16), g_phi = gauss_legendre(48);
-  return integrate_theta(
-      [&](double t) {
-        const double st = std::sin(t), ct = std::cos(t);
-        double s = 0;
-        for (int half = 0; half < 2; ++half)
-          s += integrate_panel(
-              [&](double phi) { return f({st * std::cos(phi), st * std::sin(phi), ct}); }, half * kPi,
-              (half + 1) * kPi, g_phi);
-        return s * st;
-      },
-      theta_end, 0.05, {}, g_theta);
+  return test::integrate_sphere([&](double x, double y, double z) { return f({x, y, z}); }, theta_end);
 }
 
 TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdf) {
@@ -392,114 +257,6 @@ TEST(Ltc, SphereFormFactorMatchesCapQuadrature) {
           << z << "," << len;
   EXPECT_DOUBLE_EQ(horizon_clipped_sphere_form_factor(0.5, 0.0), 0.5);
   EXPECT_DOUBLE_EQ(horizon_clipped_sphere_form_factor(-0.5, 0.0), 0.0);
-}
-
-// ---- Files and CLI
-
-TEST(Exr, RoundTripKeepsFloatsAndAttributes) {
-  test::TempDir tmp;
-  report::ExrImage img;
-  img.width = 3;
-  img.height = 2;
-  img.channels = {"R", "G"};
-  for (int k = 0; k < 12; ++k) img.pixels.push_back(0.1f * k - 0.3f);
-  img.string_attributes = {{"fresnelLab:xAxis", "nov"}};
-  img.float_attributes = {{"fresnelLab:xMax", 0.75f}};
-  const auto path = tmp.path() + "/t.exr";
-  report::write_exr_atomic(path, img);
-  const auto back = report::read_exr(path);
-  ASSERT_EQ(back.width, 3);
-  ASSERT_EQ(back.height, 2);
-  // OpenEXR lists channels alphabetically: G, R.
-  ASSERT_EQ(back.channels, (std::vector<std::string>{"G", "R"}));
-  for (int p = 0; p < 6; ++p) {
-    EXPECT_EQ(back.pixels[2 * p + 0], img.pixels[2 * p + 1]);
-    EXPECT_EQ(back.pixels[2 * p + 1], img.pixels[2 * p + 0]);
-  }
-  const auto has_string = std::find(back.string_attributes.begin(), back.string_attributes.end(),
-                                    std::pair<std::string, std::string>{"fresnelLab:xAxis", "nov"});
-  EXPECT_NE(has_string, back.string_attributes.end());
-  const auto has_float = std::find(back.float_attributes.begin(), back.float_attributes.end(),
-                                   std::pair<std::string, float>{"fresnelLab:xMax", 0.75f});
-  EXPECT_NE(has_float, back.float_attributes.end());
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(tmp.path()), {}), 1);  // no temporary left
-}
-
-std::string slurp(const std::string& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-TEST(LutCli, WritesTablesDeterministically) {
-  test::TempDir tmp;
-  const std::string lut = std::string("'") + FL_CLI + "' -q lut ";
-  auto r = test::run_command(lut + "dfg --size 4 --samples 256 --out '" + tmp.path() + "/a.csv'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_TRUE(r.err.empty()) << r.err;
-  const auto csv = slurp(tmp.path() + "/a.csv");
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "nov,perceptual_roughness,alpha,dfg1,dfg2");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 17);
-  r = test::run_command(lut + "dfg --size 4 --samples 256 --threads 1 --out '" + tmp.path() + "/b.csv'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(slurp(tmp.path() + "/b.csv"), csv);
-
-  r = test::run_command(lut + "dfg --size 4 --samples 256 --out '" + tmp.path() + "/dfg.h'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(slurp(tmp.path() + "/dfg.h").find("constexpr float kDfgLut[4 * 4 * 2]"), std::string::npos);
-
-  r = test::run_command(lut + "ltc-moments --size 4 --samples 256 --out '" + tmp.path() + "/m.csv'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  const auto m = slurp(tmp.path() + "/m.csv");
-  EXPECT_EQ(m.substr(0, m.find('\n')), "nov,perceptual_roughness,alpha,n_d,f_d,l_d");
-
-  r = test::run_command(lut + "ltc --size 4 --samples 256 --out '" + tmp.path() + "/ltc.exr'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  const auto t1 = report::read_exr(tmp.path() + "/ltc_1.exr");
-  const auto t2 = report::read_exr(tmp.path() + "/ltc_2.exr");
-  EXPECT_EQ(t1.width, 4);
-  EXPECT_EQ(t1.channels.size(), 4u);
-  EXPECT_EQ(t2.channels.size(), 4u);
-  EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/ltc.csv"));
-}
-
-TEST(LutCli, BadInputExitsTwoAndWritesNothing) {
-  test::TempDir tmp;
-  const std::string lut = std::string("'") + FL_CLI + "' lut ";
-  for (const std::string args : {"dfg --size 1 --out x.csv", "dfg --size 4 --out x.txt", "ltc-moments --size 4 --out x.h",
-                                 "ltc --size 4 --samples 0 --out x.exr", "dfg --size 4", "frob --out x.csv"}) {
-    const auto r = test::run_command("cd '" + tmp.path() + "' && " + lut + args);
-    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
-    EXPECT_FALSE(r.err.empty()) << args;
-  }
-  EXPECT_TRUE(std::filesystem::is_empty(tmp.path()));
-  for (const char* sub : {"", "dfg", "ltc-moments", "ltc"}) {
-    const auto r = test::run_command(lut + sub + " --help");
-    EXPECT_EQ(r.status, 0) << sub;
-    EXPECT_NE(r.out.find(std::string(sub).empty() ? "ltc-moments" : "--out"), std::string::npos) << sub;
-  }
-}
-
-TEST(LutCli, F82MomentBeatsSchlickOnMetals) {
-  const auto r = test::run_command(test::cli() + " -q table lut-accuracy");
-  ASSERT_EQ(r.status, 0) << r.err;
-  std::istringstream in(r.out);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "material,schlick_median_de00,schlick_max_de00,f82_median_de00,f82_max_de00");
-  std::vector<double> schlick, f82;
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    std::string cell;
-    std::vector<std::string> cells;
-    while (std::getline(row, cell, ',')) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 5u) << line;
-    schlick.push_back(std::stod(cells[1]));
-    f82.push_back(std::stod(cells[3]));
-  }
-  ASSERT_EQ(schlick.size(), 14u);  // the catalog's metals
-  std::sort(schlick.begin(), schlick.end());
-  std::sort(f82.begin(), f82.end());
-  EXPECT_LT(f82[7] + f82[6], schlick[7] + schlick[6]);  // medians of 14 values
 }
 
 }  // namespace

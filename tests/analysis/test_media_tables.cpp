@@ -1,4 +1,4 @@
-// Blending, gamut conversion, external media, internal reflection (issue 4).
+// The blend, gamut, external-medium and internal-reflection tables (analysis/media_tables.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,15 +90,6 @@ TEST(Gamut, SchlickAndF82ConvertExactly) {
   double worst = 0;
   for (const auto& row : g.rows) worst = std::max(worst, std::get<double>(row[2]));
   EXPECT_GT(worst, 0.5) << "Gulbrandsen's parameters do not convert like colours";
-}
-
-TEST(Media, SymmetricAdjustmentIsExactForDielectricsAtNormalIncidence) {
-  for (double n : {1.33, 1.5, 2.417})
-    for (double eta_e : {1.0, 1.333, 1.6, 2.0, 2.417, 3.0}) {
-      const double f0 = std::pow((n - 1) / (n + 1), 2), expected = std::pow((n - eta_e) / (n + eta_e), 2);
-      EXPECT_NEAR(fresnel::f0_in_medium_symmetric(f0, eta_e), expected, kExact) << n << " in " << eta_e;
-    }
-  for (double f0 : {0.04, 0.5, 0.95}) EXPECT_NEAR(fresnel::f0_in_medium_metal(f0, 1.0), f0, kExact);
 }
 
 TEST(Media, OwnIndexHasNoReflectionAndAirMatchesSchlickTable) {
