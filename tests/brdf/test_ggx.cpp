@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "brdf/ggx.h"
+#include "ggx_reference.h"
 #include "quadrature.h"
 
 namespace fl::brdf {
@@ -19,6 +20,12 @@ using test::integrate_theta;
 constexpr double kPi = std::numbers::pi;
 // The quadrature of a smooth normalized density.
 constexpr double kNormalizationTolerance = 1e-6;
+// Two algebraic forms of the same closed formula, relative. Filament's (n·h)²(α² − 1) + 1 cancels as
+// n·h → 1, to a relative rounding of about ε/α² (2e-10 at α = 1e-3).
+constexpr double kNdfFormsTolerance = 1e-9;
+// Means over 16384 Hammersley points against the quadrature of the density they sample (measured
+// ≤ 3.1e-5; the quadrature alone integrates D_v to 1 within 2.5e-6, at the kink where v·h = 0).
+constexpr double kSampleMeanTolerance = 1e-4;
 
 TEST(GgxKernels, NdfProjectedAreaIsOne) {
   static const GaussRule g = gauss_legendre(16);
@@ -44,6 +51,45 @@ TEST(GgxKernels, VisibilityMatchesTheSmithLambdaForm) {
         EXPECT_NEAR(4 * nov * nol * smith_ggx_correlated_visibility(nov, nol, alpha), g2, 1e-12);
         EXPECT_NEAR(smith_ggx_g1(nov, alpha), 1 / (1 + lambda(nov, alpha)), 1e-12);
       }
+}
+
+TEST(GgxKernels, NdfMatchesWaltersTangentForm) {
+  for (double alpha : {1e-3, 0.05, 0.3, 0.7, 1.0})
+    for (double noh : {1.0, 0.99, 0.9, 0.6, 0.2, 0.01}) {
+      const double want = test::ggx_ref::ndf(noh, alpha);
+      EXPECT_NEAR(ggx_ndf(noh, alpha), want, kNdfFormsTolerance * want) << alpha << " " << noh;
+    }
+}
+
+// Heitz 2018, eq. 1: h drawn by sample_ggx_vndf has the density D_v(h) = G₁(v) max(0, v·h) D(h)/(n·v).
+// The means of h's components over the samples must be the integrals of h·D_v by quadrature (with
+// D and G₁ = 1/(1 + Λ) from ggx_reference.h); ∫ D_v = 1 is the normalization.
+TEST(GgxKernels, VisibleNormalSamplesFollowTheVisibleNormalDensity) {
+  constexpr int kSamples = 16384;
+  for (double alpha : {0.1, 0.5, 1.0})
+    for (double nov : {1.0, 0.8, 0.3}) {
+      const Vec3 v = view_from_nov(nov);
+      const double g1 = 1 / (1 + test::ggx_ref::lambda(nov, alpha));
+      auto moment = [&](int k) {
+        return test::integrate_sphere(
+            [&](double x, double y, double z) {
+              const double voh = v.x * x + v.y * y + v.z * z;
+              const double dv = g1 * std::max(0.0, voh) * test::ggx_ref::ndf(z, alpha) / nov;
+              return dv * (k == 0 ? 1.0 : (k == 1 ? x : z));
+            },
+            kPi / 2, alpha);
+      };
+      double mx = 0, mz = 0;
+      for (int i = 0; i < kSamples; ++i) {
+        const auto p = hammersley(i, kSamples);
+        const Vec3 h = sample_ggx_vndf(v, alpha, p.u1, p.u2);
+        mx += h.x / kSamples;
+        mz += h.z / kSamples;
+      }
+      EXPECT_NEAR(moment(0), 1.0, kSampleMeanTolerance) << alpha << " " << nov;
+      EXPECT_NEAR(mx, moment(1), kSampleMeanTolerance) << alpha << " " << nov;
+      EXPECT_NEAR(mz, moment(2), kSampleMeanTolerance) << alpha << " " << nov;
+    }
 }
 
 TEST(GgxKernels, HammersleyPointsAreStratified) {
