@@ -159,7 +159,9 @@ TEST(Media, AirRowsMatchTheSchlickTable) {
     if (std::get<std::string>(row[medium]) != "air") continue;
     ++air;
     for (const auto& srow : s.rows) {
-      if (srow[0] == row[0]) EXPECT_NEAR(std::get<double>(row[sym]), std::get<double>(srow[3]), kExact);
+      if (srow[0] == row[0]) {
+        EXPECT_NEAR(std::get<double>(row[sym]), std::get<double>(srow[3]), kExact);
+      }
     }
   }
   EXPECT_EQ(air, 28);
