@@ -1,4 +1,4 @@
-// Issue 8: the bad-input corpus (tests/bad_input/, listed in manifest.tsv) run through the CLI.
+// The bad-input corpus (tests/bad_input/, listed in manifest.tsv) run through the CLI.
 // Every bad input must give exit status 2, exactly one stderr line naming the file (and line) and
 // the problem, nothing on stdout and no output file; byte-order marks and CRLF line endings are
 // valid input (tests/good_input/).
@@ -156,7 +156,7 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
       args += "--illuminant " + target.substr(15, target.size() - 15 - 3) + " ";
     args += "reproduce --out " + quote(out_dir);
     env = "FRESNEL_LAB_COLORD=" + quote(colord);
-  } else if (c.command == "plan") {  // issue 6: scene files
+  } else if (c.command == "plan") {  // scene files
     file = c.file == "<missing>" ? (s.dir / "does_not_exist.yaml").string() : kBadDir + "/" + c.reader + "/" + c.file;
     args = "plan " + quote(file);
     writes_output = false;

@@ -28,7 +28,7 @@ constexpr double kFloatCookTorranceKappa80 = 2e-4;  // ... Cook-Torrance with κ
 constexpr double kFloatGulbrandsenEta = 5e-3;  // float vs double: η from F0 near 1 (relative; 1.4e-3)
 constexpr double kFloatGulbrandsenG = 2e-3;    // float vs double: g recovered from float η, F0 < 0.99 (9.4e-4)
 
-// The dense grids of the issue: F0, g, F82 in [0, 1]; η in [0.01, 10]; κ in [0, 80]; θ in [0°, 90°].
+// Dense grids: F0, g, F82 in [0, 1]; η in [0.01, 10]; κ in [0, 80]; θ in [0°, 90°].
 std::vector<double> unit_grid() {
   std::vector<double> v;
   for (int i = 0; i <= 50; ++i) v.push_back(i / 50.0);
