@@ -172,7 +172,9 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
   EXPECT_EQ(r.err.back(), '\n');
   EXPECT_EQ(r.err.rfind("fresnel-lab: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find(want), std::string::npos) << "expected '" << want << "' in: " << r.err;
-  if (writes_output) EXPECT_EQ(count_files(out_dir), 0u) << "partial output left in " << out_dir;
+  if (writes_output) {
+    EXPECT_EQ(count_files(out_dir), 0u) << "partial output left in " << out_dir;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, BadInput, testing::ValuesIn(load_manifest()), test_name);
