@@ -1,5 +1,5 @@
 CGATS.17
-# synthetic test input (Fresnel Lab issue 8)
+# synthetic test input (Fresnel Lab bad-input corpus)
 SPECTRAL_START_NM	360
 SPECTRAL_END_NM	830
 SPECTRAL_BANDS	1e12

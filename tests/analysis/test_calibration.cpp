@@ -1,4 +1,4 @@
-// The talk's Schlick table (SPEC §4) reproduced: values, tolerance counts and rank order.
+// The Schlick table of Hoffman's talk (ACEScg, D60) reproduced: values, tolerance counts and rank order.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +11,7 @@
 namespace fl::analysis {
 namespace {
 
-// Issue 2's acceptance: at least 24 of 28 within ±0.10, none off by more than 0.35, and
+// The reproduction's acceptance: at least 24 of 28 within ±0.10, none off by more than 0.35, and
 // Spearman ρ ≥ 0.9 within metals and within dielectrics.
 constexpr double kCloseDe = 0.10;
 constexpr int kMinClose = 24;

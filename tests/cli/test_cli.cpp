@@ -1,4 +1,4 @@
-// The command-line contract (SPEC §6): exit statuses, messages, atomic output, determinism.
+// The command-line contract: exit statuses, messages, atomic output, determinism.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -94,7 +94,7 @@ TEST(Cli, ReproduceIsDeterministic) {
   ASSERT_EQ(run_command(cli() + " -q reproduce --out '" + b + "'").status, 0);
   int files = 0;
   for (const auto& e : std::filesystem::recursive_directory_iterator(a)) {
-    if (e.is_directory()) continue;  // figures/ (issue 7): its files are compared one by one
+    if (e.is_directory()) continue;  // figures/: its files are compared one by one
     auto slurp = [](const std::filesystem::path& p) {
       std::ifstream in(p, std::ios::binary);
       return std::string(std::istreambuf_iterator<char>(in), {});

@@ -1,4 +1,4 @@
-// Issue 8: the bad-input corpus (tests/bad_input/, listed in manifest.tsv) run through the CLI.
+// The bad-input corpus (tests/bad_input/, listed in manifest.tsv) run through the CLI.
 // Every bad input must give exit status 2, exactly one stderr line naming the file (and line) and
 // the problem, nothing on stdout and no output file; byte-order marks and CRLF line endings are
 // valid input (tests/good_input/).
@@ -156,7 +156,7 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
       args += "--illuminant " + target.substr(15, target.size() - 15 - 3) + " ";
     args += "reproduce --out " + quote(out_dir);
     env = "FRESNEL_LAB_COLORD=" + quote(colord);
-  } else if (c.command == "plan") {  // issue 6: scene files
+  } else if (c.command == "plan") {  // scene files
     file = c.file == "<missing>" ? (s.dir / "does_not_exist.yaml").string() : kBadDir + "/" + c.reader + "/" + c.file;
     args = "plan " + quote(file);
     writes_output = false;
@@ -172,7 +172,9 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
   EXPECT_EQ(r.err.back(), '\n');
   EXPECT_EQ(r.err.rfind("fresnel-lab: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find(want), std::string::npos) << "expected '" << want << "' in: " << r.err;
-  if (writes_output) EXPECT_EQ(count_files(out_dir), 0u) << "partial output left in " << out_dir;
+  if (writes_output) {
+    EXPECT_EQ(count_files(out_dir), 0u) << "partial output left in " << out_dir;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, BadInput, testing::ValuesIn(load_manifest()), test_name);

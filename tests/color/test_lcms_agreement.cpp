@@ -1,4 +1,4 @@
-// Issue 6: our CIEDE2000 (the differentiable template and the double fast path) against Little CMS's
+// Our CIEDE2000 (the differentiable template and the double fast path) against Little CMS's
 // cmsCIE2000DeltaE on the 34 pairs of Sharma, Wu & Dalal 2005, and the fast path against the
 // template on many pairs. Correctness only; speed is measured in bench/bench_speed.cpp.
 #include <gtest/gtest.h>

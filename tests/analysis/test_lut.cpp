@@ -1,0 +1,412 @@
+// GGX lookup tables (analysis/lut.h) against independent references: the DFG and moment integrals
+// against a Gauss–Legendre quadrature of the GGX lobe written from the papers (ggx_reference.h),
+// the mirror limit, energy bounds, and ltc_code's published 64 × 64 fit (its n_D and, on one
+// error metric, its lobes); the ltc_1 texture read back the way a shader reads it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "analysis/lut.h"
+#include "brdf/ggx.h"
+#include "fit/ltc_fit.h"
+#include "ggx_reference.h"
+#include "quadrature.h"
+
+namespace fl::analysis {
+namespace {
+
+namespace ref = test::ggx_ref;
+using test::gauss_legendre;
+using test::GaussRule;
+using test::integrate_panel;
+using test::integrate_theta;
+using test::Values;
+using test::operator+;
+using test::operator*;
+
+constexpr double kPi = std::numbers::pi;
+// The tables (8192 quasi-Monte Carlo points per cell) against the quadrature: measured ≤ 1.8e-4
+// over a 10 × 10 grid, 2.5e-4 over 64 × 64.
+constexpr double kQuadratureTolerance = 3e-4;
+// The mirror limit at α = 1e-4: Λ ∝ α² tan²θ, and the lobe's spread shifts the mean v·h by
+// O(α² log 1/α) (GGX slopes have heavy tails): ~1e-6 for n·v ≥ 0.15.
+constexpr double kMirrorTolerance = 1e-5;
+// A fitted LTC integrates to one, by quadrature over its frame's hemisphere (measured 4e-16).
+constexpr double kLtcUnitIntegralTolerance = 1e-9;
+// A fitted LTC lobe against the GGX lobe, relative L2 error by quadrature, over ltc_code's published
+// fit of the same cell. The error itself is large towards grazing (0.29 at n·v = 0.27, α = 0.33,
+// for ltc_code's fit as for ours): the three-parameter LTC family cannot follow the GGX lobe there;
+// what can be asked of a fit is to do as well as the reference (measured ratio ≤ 1.012).
+constexpr double kLobeAgainstLtcCodeRatio = 1.02;
+// ltc_code's n_D (float, stratified samples) against the quadrature: per cell and on average.
+constexpr double kLtcCodeNormTolerance = 1.5e-2;
+constexpr double kLtcCodeNormMeanTolerance = 2e-3;
+// The ltc_1 texture's lobe against the fit's density: the same function, only rounding.
+constexpr double kTextureDensityTolerance = 1e-9;
+// The fit error the table reports (sample estimate) against the same error by quadrature
+// (measured ≤ 1e-3).
+constexpr double kFitErrorEstimateTolerance = 2e-3;
+// The horizon-clipped sphere form factor against a quadrature over the cap.
+constexpr double kFormFactorTolerance = 1e-4;
+
+
+LutOptions options(int samples, int threads = 0) {
+  LutOptions o;
+  o.samples = samples;
+  o.threads = threads;
+  return o;
+}
+
+struct Reference {
+  double n_d = 0, f_d = 0, l_d = 0, dfg1 = 0, dfg2 = 0;
+};
+
+// ∫ g(v·h) f (n·l) dl over l with n·l > 0, written over half vectors h = (θ, φ):
+// dl = 4 (v·h) dω_h, so f (n·l) dl = D G₂ (v·h)/(n·v) dω_h. n·l > 0 ⇔ cos φ > c(θ) =
+// −(cos θ_v / sin θ_v) cot 2θ, which is −1 at θ₁ = (π/2 − θ_v)/2 and +1 at θ₂ = (π/2 + θ_v)/2;
+// the φ-range is integrated exactly (Gauss–Legendre panels, no sampling).
+Reference reference_moments(double nov, double alpha) {
+  static const GaussRule g_theta = gauss_legendre(16), g_phi = gauss_legendre(32);
+  const double theta_v = std::acos(nov), sin_v = std::sin(theta_v);
+  const double theta1 = 0.5 * (kPi / 2 - theta_v), theta2 = 0.5 * (kPi / 2 + theta_v);
+  auto f_theta = [&](double theta) -> Values {
+    const double ct = std::cos(theta), st = std::sin(theta);
+    double phi_max = kPi;
+    if (sin_v > 0) {
+      const double c = -(nov / sin_v) * std::cos(2 * theta) / std::sin(2 * theta);
+      phi_max = c <= -1 ? kPi : (c >= 1 ? 0 : std::acos(c));
+    } else if (theta >= kPi / 4) {
+      phi_max = 0;
+    }
+    if (phi_max <= 0) return Values{};
+    const double d = ref::ndf(ct, alpha);
+    auto f_phi = [&](double phi) -> Values {
+      const double voh = sin_v * st * std::cos(phi) + nov * ct;
+      const double nol = 2 * voh * ct - nov;
+      if (nol <= 0 || voh <= 0) return Values{};
+      const double w = d * ref::g2(nov, nol, alpha) * voh / nov;
+      const double m = 1 - voh, m5 = m * m * m * m * m;
+      return {w, w * m5, w * voh * m5 * m, w * (1 - m5)};
+    };
+    return (2 * st) * integrate_panel<Values>(f_phi, 0, phi_max, g_phi);
+  };
+  const Values v = integrate_theta<Values>(f_theta, theta2, alpha, {theta1}, g_theta);
+  return {v[0], v[1], v[2], v[3], v[1]};
+}
+
+TEST(Lut, NormTendsToOneAtNormalIncidenceAsRoughnessVanishes) {
+  double previous = 0;
+  for (double roughness : {0.8, 0.5, 0.2, 0.05, 0.01}) {
+    const double n_d = integrate_moments(1.0, roughness * roughness).n_d;
+    EXPECT_GT(n_d, previous) << roughness;
+    previous = n_d;
+  }
+  EXPECT_NEAR(previous, 1.0, kMirrorTolerance);  // roughness 0.01: α = 1e-4
+}
+
+// A mirror (α → 0): D concentrates on h = n, so v·h → n·v and G₂ → 1 (Λ ∝ α² tan²θ). The lobe
+// integrates to 1, the Fresnel moment to (1 − n·v)⁵ and the F82 moment to n·v (1 − n·v)⁶.
+TEST(Lut, MirrorLimit) {
+  constexpr double kAlpha = 1e-4;
+  for (double nov : {1.0, 0.9, 0.7, 0.5, 0.3, 0.15}) {
+    const double m = 1 - nov, m5 = std::pow(m, 5);
+    const auto dfg = integrate_dfg(nov, kAlpha);
+    const auto mo = integrate_moments(nov, kAlpha);
+    EXPECT_NEAR(dfg.dfg1, 1 - m5, kMirrorTolerance) << nov;
+    EXPECT_NEAR(dfg.dfg2, m5, kMirrorTolerance) << nov;
+    EXPECT_NEAR(mo.n_d, 1.0, kMirrorTolerance) << nov;
+    EXPECT_NEAR(mo.f_d, m5, kMirrorTolerance) << nov;
+    EXPECT_NEAR(mo.l_d, nov * m5 * m, kMirrorTolerance) << nov;
+    // The lobe's mean direction is the mirror direction (sin θ_v, 0, cos θ_v) reflected: (−x, z).
+    EXPECT_NEAR(mo.average_dir.x, -std::sqrt(1 - nov * nov), kMirrorTolerance) << nov;
+    EXPECT_NEAR(mo.average_dir.z, nov, kMirrorTolerance) << nov;
+  }
+}
+
+// Energy: a single-scattering lobe without Fresnel reflects at most what arrives (n_D ≤ 1), each weight (1 − v·h)⁵ ≤ 1 and (v·h)(1 − v·h)⁶ ≤ (1 − v·h)⁵
+// keeps 0 ≤ l_D ≤ f_D ≤ n_D, and the DFG channels split n_D into two non-negative parts.
+TEST(Lut, EnergyBoundsInEveryCell) {
+  constexpr int kSize = 8;
+  const auto dfg = dfg_table(dfg_grid(kSize), options(2048));
+  for (const auto& c : dfg.cells) {
+    EXPECT_GE(c.dfg1, 0.0);
+    EXPECT_GE(c.dfg2, 0.0);
+    EXPECT_LE(c.dfg1 + c.dfg2, 1.0);
+  }
+  const auto mom = moments_table(ltc_grid(kSize), options(2048));
+  for (int i = 0; i < kSize; ++i)
+    for (int j = 0; j < kSize; ++j) {
+      const auto& c = mom.cells[mom.grid.index(i, j)];
+      EXPECT_GE(c.l_d, 0.0) << i << "," << j;
+      EXPECT_LE(c.l_d, c.f_d) << i << "," << j;
+      EXPECT_LE(c.f_d, c.n_d) << i << "," << j;
+      EXPECT_LE(c.n_d, 1.0) << i << "," << j;
+    }
+}
+
+TEST(Lut, ResultsDoNotDependOnThreads) {
+  const auto grid = ltc_grid(6);
+  const auto a = moments_table(grid, options(512, 1));
+  const auto b = moments_table(grid, options(512, 3));
+  for (size_t k = 0; k < a.cells.size(); ++k) {
+    EXPECT_EQ(a.cells[k].n_d, b.cells[k].n_d);
+    EXPECT_EQ(a.cells[k].l_d, b.cells[k].l_d);
+  }
+}
+
+// Max |table − quadrature| over every cell of both grids; also run at 64×64 by hand with
+// --gtest_also_run_disabled_tests (FullTables).
+struct MaxDiff {
+  double dfg1 = 0, dfg2 = 0, n_d = 0, f_d = 0, l_d = 0;
+};
+MaxDiff compare_with_quadrature(int size, int samples) {
+  MaxDiff m;
+  const auto dfg = dfg_table(dfg_grid(size), options(samples));
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      const auto ref = reference_moments(dfg.grid.nov[i], dfg.grid.alpha[j]);
+      const auto& c = dfg.cells[dfg.grid.index(i, j)];
+      m.dfg1 = std::max(m.dfg1, std::abs(c.dfg1 - ref.dfg1));
+      m.dfg2 = std::max(m.dfg2, std::abs(c.dfg2 - ref.dfg2));
+    }
+  const auto mom = moments_table(ltc_grid(size), options(samples));
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      const auto ref = reference_moments(mom.grid.nov[i], mom.grid.alpha[j]);
+      const auto& c = mom.cells[mom.grid.index(i, j)];
+      m.n_d = std::max(m.n_d, std::abs(c.n_d - ref.n_d));
+      m.f_d = std::max(m.f_d, std::abs(c.f_d - ref.f_d));
+      m.l_d = std::max(m.l_d, std::abs(c.l_d - ref.l_d));
+    }
+  return m;
+}
+
+TEST(Lut, TablesAgreeWithQuadrature) {
+  const auto m = compare_with_quadrature(10, kLutSamples);
+  std::printf("max |table - quadrature| at 10x10: dfg1 %.3g, dfg2 %.3g, n_d %.3g, f_d %.3g, l_d %.3g\n", m.dfg1,
+              m.dfg2, m.n_d, m.f_d, m.l_d);
+  EXPECT_LT(m.dfg1, kQuadratureTolerance);
+  EXPECT_LT(m.dfg2, kQuadratureTolerance);
+  EXPECT_LT(m.n_d, kQuadratureTolerance);
+  EXPECT_LT(m.f_d, kQuadratureTolerance);
+  EXPECT_LT(m.l_d, kQuadratureTolerance);
+}
+
+TEST(Lut, DISABLED_FullTablesAgreeWithQuadrature) {
+  const auto m = compare_with_quadrature(64, kLutSamples);
+  std::printf("max |table - quadrature| at 64x64: dfg1 %.3g, dfg2 %.3g, n_d %.3g, f_d %.3g, l_d %.3g\n", m.dfg1,
+              m.dfg2, m.n_d, m.f_d, m.l_d);
+  EXPECT_LT(std::max({m.dfg1, m.dfg2, m.n_d, m.f_d, m.l_d}), kQuadratureTolerance);
+}
+
+// ---- ltc_code's published fit (Heitz, Dupuy, Hill & Neubelt 2016; shared/testdata/ltc_code).
+
+// fit/results/ltc.inc: 64 × 64 cells at index a + 64·t (a: roughness a/63, t: x = t/63 with
+// n·v = 1 − x², the ltc_grid(64) axes), each a glm mat3 (column-major) and the norm n_D.
+struct LtcCodeTable {
+  std::vector<std::array<double, 9>> m_inv;  // row-major here
+  std::vector<double> magnitude;
+  bool loaded = false;
+};
+
+std::vector<double> numbers_after(const std::string& text, const std::string& name, size_t count) {
+  std::vector<double> out;
+  size_t p = text.find(name);
+  if (p == std::string::npos) return out;
+  p = text.find('{', p);
+  const char* c = text.c_str() + p;
+  while (out.size() < count && *c) {
+    if (std::isdigit(static_cast<unsigned char>(*c)) || *c == '-' || *c == '.') {
+      char* end = nullptr;
+      out.push_back(std::strtod(c, &end));
+      c = end;
+    } else {
+      ++c;
+    }
+  }
+  return out;
+}
+
+const LtcCodeTable& ltc_code() {
+  static const LtcCodeTable t = [] {
+    LtcCodeTable r;
+    std::ifstream in(std::string(FL_SHARED_TESTDATA) + "/ltc_code/ltc.inc");
+    const std::string text(std::istreambuf_iterator<char>(in), {});
+    constexpr size_t kCells = 64 * 64;
+    const auto minv = numbers_after(text, "tabMinv[size*size]", 9 * kCells);
+    r.magnitude = numbers_after(text, "tabMagnitude[size*size]", kCells);
+    if (minv.size() != 9 * kCells || r.magnitude.size() != kCells) return r;
+    for (size_t k = 0; k < kCells; ++k) {
+      std::array<double, 9> m{};
+      for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) m[3 * row + col] = minv[9 * k + 3 * col + row];
+      r.m_inv.push_back(m);
+    }
+    r.loaded = true;
+    return r;
+  }();
+  return t;
+}
+int ltc_code_index(int t_nov, int a_roughness) { return a_roughness + 64 * t_nov; }
+
+// ltc_code estimated n_D in float with stratified GGX-NDF samples (32 × 32 per cell): its values
+// scatter about the quadrature here by up to ~1e-2 with alternating sign (measured 1.15e-2 max,
+// mean difference −9.5e-4), so the check is both a bound per cell and a bound on the mean, which a
+// systematic difference (another masking function, say) would break. The grazing row (n·v = 8e-4),
+// where ltc_code's values sit 0.06 below, is left out; the quadrature and the table agree there.
+TEST(Lut, NormMatchesLtcCode) {
+  const auto& lc = ltc_code();
+  ASSERT_TRUE(lc.loaded) << "missing shared/testdata/ltc_code/ltc.inc";
+  const auto grid = ltc_grid(64);
+  double worst = 0, sum = 0;
+  int cells = 0;
+  for (int t = 0; t < 63; t += 7)
+    for (int a = 7; a < 64; a += 7) {
+      const double diff = reference_moments(grid.nov[t], grid.alpha[a]).n_d - lc.magnitude[ltc_code_index(t, a)];
+      worst = std::max(worst, std::abs(diff));
+      sum += diff;
+      ++cells;
+    }
+  std::printf("n_D against ltc_code over %d cells: max |difference| %.3g, mean difference %.3g\n", cells, worst,
+              sum / cells);
+  EXPECT_LT(worst, kLtcCodeNormTolerance);
+  EXPECT_LT(std::abs(sum / cells), kLtcCodeNormMeanTolerance);
+}
+
+// ---- LTC fits
+
+// ∫ f over the sphere in the LTC frame's polar coordinates (θ from Z), panels in θ.
+double integrate_sphere(const std::function<double(const brdf::Vec3&)>& f, double theta_end) {
+  return test::integrate_sphere([&](double x, double y, double z) { return f({x, y, z}); }, theta_end);
+}
+
+// Relative L2 distance between ρ cos and an approximation of it, over the sphere.
+double relative_l2(const brdf::Vec3& v, double alpha, const std::function<double(const brdf::Vec3&)>& approx) {
+  const double err2 = integrate_sphere(
+      [&](const brdf::Vec3& w) {
+        const double d = ref::lobe_cos(v, w, alpha) - approx(w);
+        return d * d;
+      },
+      kPi);
+  const double norm2 = integrate_sphere(
+      [&](const brdf::Vec3& w) {
+        const double b = ref::lobe_cos(v, w, alpha);
+        return b * b;
+      },
+      kPi / 2);
+  return std::sqrt(err2 / norm2);
+}
+
+// ltc_grid(8) samples the same axes as ltc_code's 64 × 64 table at every ninth cell (i/7 = 9i/63),
+// so both fits can be judged on one metric: the relative L2 error against the GGX lobe by
+// quadrature. Our fit minimizes an L2 error, ltc_code's an L3-style one, so ours may not be worse.
+TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
+  constexpr int size = 8, kLtcCodeStride = 9;
+  const auto& lc = ltc_code();
+  ASSERT_TRUE(lc.loaded) << "missing shared/testdata/ltc_code/ltc.inc";
+  const auto t = fit_ltc_table(size, options(2048));
+  int checked = 0;
+  for (int j = size / 2; j < size; ++j)
+    for (int i = 0; i < size; i += 2) {
+      const int k = t.grid.index(i, j);
+      const auto& c = t.cells[k];
+      const auto& mo = t.moments[k];
+      EXPECT_TRUE(c.fit.usable) << i << "," << j;
+      const auto frame = i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(mo.average_dir);
+      // The normalized LTC: polar coordinates about the frame's Z (it vanishes for z < 0 there).
+      const double unit = integrate_sphere(
+          [&](const brdf::Vec3& w) { return fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, w.x, w.y, w.z); },
+          kPi / 2);
+      EXPECT_NEAR(unit, 1.0, kLtcUnitIntegralTolerance) << i << "," << j;
+
+      const brdf::Vec3 v = brdf::view_from_nov(t.grid.nov[i]);
+      const double alpha = t.grid.alpha[j];
+      const double ours = relative_l2(v, alpha, [&](const brdf::Vec3& w) {
+        const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
+        return mo.n_d * fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, f.x, f.y, f.z);
+      });
+      const int lk = ltc_code_index(kLtcCodeStride * i, kLtcCodeStride * j);
+      const double theirs = relative_l2(
+          v, alpha, [&](const brdf::Vec3& w) { return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk], w); });
+      std::printf("n.v %.3f alpha %.3f: relative L2 ours %.4f (estimate %.4f), ltc_code %.4f\n", t.grid.nov[i], alpha,
+                  ours, c.fit_error, theirs);
+      EXPECT_LT(ours, theirs * kLobeAgainstLtcCodeRatio) << i << "," << j;
+      EXPECT_NEAR(c.fit_error, ours, kFitErrorEstimateTolerance) << i << "," << j;
+      ++checked;
+    }
+  EXPECT_EQ(checked, 16);
+}
+
+// The ltc_1 texture as a shader reads it (ltc_code's GLSL: mat3(vec3(t.x, 0, t.y), vec3(0, 1, 0),
+// vec3(t.z, 0, t.w)), columns) must give the fitted lobe: evaluated with eq. 3 from the four
+// texture entries, it equals the fit's density in its own frame, direction by direction.
+TEST(Ltc, TextureEntriesReproduceTheFittedLobe) {
+  const auto t = fit_ltc_table(4, options(512));
+  for (size_t k = 0; k < t.cells.size(); ++k) {
+    const auto& c = t.cells[k];
+    const int i = static_cast<int>(k) % t.grid.size;
+    // M · M⁻¹ = I.
+    for (int r = 0; r < 3; ++r)
+      for (int q = 0; q < 3; ++q) {
+        double s = 0;
+        for (int n = 0; n < 3; ++n) s += c.m(r, n) * c.m_inv(n, q);
+        EXPECT_NEAR(s, r == q ? 1.0 : 0.0, 1e-9);
+      }
+    const auto& p = c.inv_packed;
+    const std::array<double, 9> shader_minv{p[0], 0, p[2], 0, 1, 0, p[1], 0, p[3]};  // row-major
+    const auto frame = i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(t.moments[k].average_dir);
+    for (int a = 0; a < 12; ++a)
+      for (int b = 0; b < 6; ++b) {
+        const double theta = (b + 0.5) * kPi / 12, phi = (a + 0.5) * kPi / 6;
+        const brdf::Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+        const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
+        const double fitted = fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, f.x, f.y, f.z);
+        EXPECT_NEAR(ref::ltc_from_inverse(shader_minv, w), fitted, kTextureDensityTolerance * std::max(1.0, fitted))
+            << "cell " << k << " direction " << a << "," << b;
+      }
+  }
+}
+
+// Cosine-weighted solid angle of a spherical cap (centre at angle ω from the normal, radius σ)
+// above the horizon, over π sin²σ, by quadrature over the cap.
+double reference_form_factor(double z, double len) {
+  static const GaussRule g = gauss_legendre(48);
+  const double sigma = std::asin(std::sqrt(len)), omega = std::acos(z);
+  double s = 0;
+  for (int pr = 0; pr < 8; ++pr)
+    s += integrate_panel(
+        [&](double rho) {
+          double inner = 0;
+          for (int pp = 0; pp < 16; ++pp)
+            inner += integrate_panel(
+                [&](double psi) {
+                  return std::max(0.0, std::cos(omega) * std::cos(rho) + std::sin(omega) * std::sin(rho) * std::cos(psi));
+                },
+                pp * kPi / 8, (pp + 1) * kPi / 8, g);
+          return inner * std::sin(rho);
+        },
+        pr * sigma / 8, (pr + 1) * sigma / 8, g);
+  return s / (kPi * len);
+}
+
+TEST(Ltc, SphereFormFactorMatchesCapQuadrature) {
+  for (double len : {0.05, 0.3, 0.7, 0.95})
+    for (double z : {-0.9, -0.3, 0.0, 0.2, 0.6, 1.0})
+      EXPECT_NEAR(horizon_clipped_sphere_form_factor(z, len), reference_form_factor(z, len), kFormFactorTolerance)
+          << z << "," << len;
+  EXPECT_DOUBLE_EQ(horizon_clipped_sphere_form_factor(0.5, 0.0), 0.5);
+  EXPECT_DOUBLE_EQ(horizon_clipped_sphere_form_factor(-0.5, 0.0), 0.0);
+}
+
+}  // namespace
+}  // namespace fl::analysis
