@@ -3,15 +3,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <mutex>
 #include <numbers>
-#include <thread>
 
 #include "color/lab.h"
 #include "fresnel/models.h"
 #include "spectral/errors.h"
+#include "util/median.h"
+#include "util/parallel.h"
 
 namespace fl::analysis {
 
@@ -26,42 +25,6 @@ void check_size(int size) {
 }
 void check_samples(int samples) {
   if (samples < 1) throw InputError(fmt::format("sample count {} must be positive", samples));
-}
-
-// Runs body(k) for k in [0, count) on `threads` workers. Each k writes only its own results, so the
-// outcome does not depend on the number of threads or the schedule.
-template <class Body>
-void parallel_for(int count, int threads, const LutProgress& progress, int progress_total, Body body) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(1, std::min(threads, count));
-  std::atomic<int> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  std::mutex mutex;
-  int done = 0;
-  auto worker = [&] {
-    for (;;) {
-      const int k = next.fetch_add(1);
-      if (k >= count || failed) return;
-      try {
-        const int units = body(k);
-        if (progress) {
-          std::lock_guard lock(mutex);
-          done += units;
-          progress(done, progress_total);
-        }
-      } catch (...) {
-        std::lock_guard lock(mutex);
-        if (!error) error = std::current_exception();
-        failed = true;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
 }
 
 // One quasi-Monte Carlo sample of the lobe: l drawn from the visible normals of v, weight G₂/G₁
@@ -165,10 +128,15 @@ template <class Cell, class Integrand>
 std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options, Integrand integrand) {
   check_samples(options.samples);
   std::vector<Cell> cells(static_cast<size_t>(grid.size) * grid.size);
-  parallel_for(grid.size, options.threads, options.progress, grid.size * grid.size, [&](int j) {
-    for (int i = 0; i < grid.size; ++i) cells[grid.index(i, j)] = integrand(grid.nov[i], grid.alpha[j], options.samples);
-    return grid.size;
-  });
+  ProgressCounter done(options.progress, grid.size * grid.size);
+  parallel_for(
+      grid.size,
+      [&](size_t j) {
+        for (int i = 0; i < grid.size; ++i)
+          cells[grid.index(i, static_cast<int>(j))] = integrand(grid.nov[i], grid.alpha[j], options.samples);
+        done.add(grid.size);
+      },
+      options.threads);
   return cells;
 }
 
@@ -231,19 +199,20 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   const int total = size * size;
   t.moments.resize(static_cast<size_t>(total));
   t.cells.resize(static_cast<size_t>(total));
-  int done_before_rows = 0;
 
   // Stage 1: moments and mean directions (the LTC magnitudes and frames), every cell independent.
   // Stage 2: the normal-incidence column, rough to smooth (sequential warm starts).
   // Stage 3: each roughness row from normal to grazing (warm starts along the row); rows in parallel.
-  const int progress_total = 2 * total;
-  LutProgress moments_progress;
-  if (options.progress) moments_progress = [&](int done, int) { options.progress(done, progress_total); };
-  parallel_for(size, options.threads, moments_progress, total, [&](int j) {
-    for (int i = 0; i < size; ++i) t.moments[g.index(i, j)] = integrate_moments(g.nov[i], g.alpha[j], options.samples);
-    return size;
-  });
-  done_before_rows = total;
+  // Progress counts every cell twice: once for its moments, once for its fit.
+  ProgressCounter done(options.progress, 2 * total);
+  parallel_for(
+      size,
+      [&](size_t j) {
+        for (int i = 0; i < size; ++i)
+          t.moments[g.index(i, static_cast<int>(j))] = integrate_moments(g.nov[i], g.alpha[j], options.samples);
+        done.add(size);
+      },
+      options.threads);
 
   auto fit_cell = [&](int i, int j, const fit::LtcParams& start) {
     const auto& mo = t.moments[g.index(i, j)];
@@ -270,15 +239,16 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
     }
     fit_cell(0, j, start);
   }
-  if (options.progress) options.progress(done_before_rows + size, progress_total);
+  done.add(size);
 
-  LutProgress rows_progress;
-  if (options.progress)
-    rows_progress = [&](int done, int) { options.progress(done_before_rows + size + done, progress_total); };
-  parallel_for(size, options.threads, rows_progress, total - size, [&](int j) {
-    for (int i = 1; i < size; ++i) fit_cell(i, j, t.cells[g.index(i - 1, j)].params);
-    return size - 1;
-  });
+  parallel_for(
+      size,
+      [&](size_t row) {
+        const int j = static_cast<int>(row);
+        for (int i = 1; i < size; ++i) fit_cell(i, j, t.cells[g.index(i - 1, j)].params);
+        done.add(size - 1);
+      },
+      options.threads);
   t.sphere_form_factor = sphere_form_factor_table(size);
   return t;
 }
@@ -303,13 +273,6 @@ struct RgbCurve {
     return (1.0 - f) * values[k] + f * values[k + 1];
   }
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 }  // namespace
 

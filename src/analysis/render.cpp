@@ -4,10 +4,10 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-#include <thread>
 
 #include "color/lab.h"
 #include "fresnel/ground_truth.h"
+#include "util/parallel.h"
 
 namespace fl::analysis {
 namespace {
@@ -182,14 +182,7 @@ SphereImage render_sphere(const Environment& env, const FresnelTable& fresnel, c
       img.alpha[k] = static_cast<float>(cover);
     }
   };
-  int threads = s.threads > 0 ? s.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, s.size_px);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (int y = t; y < s.size_px; y += threads) render_row(y);
-    });
-  for (auto& th : pool) th.join();
+  parallel_for(static_cast<size_t>(s.size_px), [&](size_t y) { render_row(static_cast<int>(y)); }, s.threads);
   return img;
 }
 

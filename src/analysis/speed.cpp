@@ -7,6 +7,7 @@
 
 #include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/median.h"
 
 namespace fl::analysis {
 
@@ -80,15 +81,6 @@ std::vector<double> benchmark_params(Model m) {
   return {};
 }
 
-namespace {
-double median_of(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-}  // namespace
-
 std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs) {
   std::vector<SpeedRow> rows;
   for (const auto& spec : fresnel::model_specs()) {
@@ -102,7 +94,7 @@ std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, cons
       row.model = spec.model;
       row.fitted = fitted != 0;
       row.ns_per_eval = costs.ns_per_eval(spec.model);
-      row.median_rms_de00 = median_of(rms);
+      row.median_rms_de00 = median(rms);
       row.max_rms_de00 = rms.empty() ? 0 : *std::max_element(rms.begin(), rms.end());
       rows.push_back(row);
     }

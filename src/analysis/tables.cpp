@@ -7,6 +7,7 @@
 
 #include "fresnel/model_set.h"
 #include "spectral/errors.h"
+#include "util/median.h"
 
 namespace fl::analysis {
 
@@ -80,12 +81,6 @@ std::string params_text(fresnel::Model m, const std::vector<double>& p) {
   std::string out;
   for (size_t i = 0; i < p.size(); ++i) out += fmt::format("{}{}={:.5f}", i ? " " : "", names[i], p[i]);
   return out;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
 bool is_metal(const MaterialStudy& s) {

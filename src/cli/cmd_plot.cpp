@@ -2,13 +2,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <mutex>
-#include <thread>
 
 #include "analysis/render.h"
 #include "analysis/study.h"
@@ -18,6 +15,7 @@
 #include "report/png.h"
 #include "report/writer.h"
 #include "spectral/errors.h"
+#include "util/parallel.h"
 
 namespace fl::cli {
 namespace {
@@ -269,7 +267,7 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
 }
 
 // The figures `reproduce` writes: figures/strip-KEY.png and figures/curves-KEY.png per material
-// (derived parameters), rendered in parallel (one Font per worker), plus a Markdown gallery.
+// (derived parameters), rendered in parallel (one Font per material), plus a Markdown gallery.
 std::vector<std::pair<std::string, std::string>> reproduce_figures(const GlobalOptions& g, const analysis::Context& ctx,
                                                                    const std::vector<analysis::MaterialStudy>& studies,
                                                                    std::string& gallery_md) {
@@ -278,28 +276,12 @@ std::vector<std::pair<std::string, std::string>> reproduce_figures(const GlobalO
   const auto curve_models = parse_models("schlick,f82,gulbrandsen");
   const size_t n = studies.size();
   std::vector<std::string> strips(n), curves(n);
-  std::atomic<size_t> next{0};
-  std::mutex error_mutex;
-  std::exception_ptr error;
-  const auto work = [&] {
-    try {
-      report::Font font;
-      for (size_t i = next++; i < n; i = next++) {
-        strips[i] = report::encode_png(report::strip_figure(ctx, figure_input(studies[i], all, "derived"), font));
-        curves[i] = report::encode_png(
-            report::rasterize(report::curves_drawing(ctx, figure_input(studies[i], curve_models, "derived")), font));
-      }
-    } catch (...) {
-      std::lock_guard lock(error_mutex);
-      if (!error) error = std::current_exception();
-      next = n;
-    }
-  };
-  const int threads = static_cast<int>(std::clamp<size_t>(std::thread::hardware_concurrency(), 1, std::max<size_t>(1, n)));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  parallel_for(n, [&](size_t i) {
+    report::Font font;
+    strips[i] = report::encode_png(report::strip_figure(ctx, figure_input(studies[i], all, "derived"), font));
+    curves[i] = report::encode_png(
+        report::rasterize(report::curves_drawing(ctx, figure_input(studies[i], curve_models, "derived")), font));
+  });
 
   std::vector<std::pair<std::string, std::string>> files;
   gallery_md =
