@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "analysis/tables.h"
 #include "color/lab.h"
 #include "fresnel/ground_truth.h"
 #include "util/parallel.h"
@@ -184,6 +185,22 @@ SphereImage render_sphere(const Environment& env, const FresnelTable& fresnel, c
   };
   parallel_for(static_cast<size_t>(s.size_px), [&](size_t y) { render_row(static_cast<int>(y)); }, s.threads);
   return img;
+}
+
+MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const fresnel::ModelSpec* model,
+                               const std::string& kind, const RenderSettings& settings) {
+  const auto env = default_environment();
+  MaterialRender r;
+  r.truth = render_sphere(env, truth_fresnel_table(ctx, m.ior, ctx.settings().eta_outside), settings);
+  if (!model) {
+    r.shown = r.truth;
+    return r;
+  }
+  const std::vector<LoadedMaterial> one{m};
+  r.params = model_params(study_one(ctx, one, kind), model->model, kind);
+  r.shown = render_sphere(env, model_fresnel_table(model->model, r.params), settings);
+  r.de2000 = de2000_image(ctx, r.truth, r.shown);
+  return r;
 }
 
 std::vector<double> de2000_image(const Context& ctx, const SphereImage& a, const SphereImage& b) {

@@ -6,6 +6,12 @@
 
 namespace fl::analysis {
 
+// The colorimetric setting in one sentence, the first note of the tables.
+std::string setting_note(const Context& ctx);
+
+// `materials`: the catalog (key, name, class, data source, reference).
+Table catalog_table(const spectral::DataPaths& paths);
+
 // The talk's Schlick table: ΔE2000 of Schlick (F0 from the spectral procedure) against spectral
 // ground truth, per catalog material.
 Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& materials);
@@ -20,8 +26,14 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 // The OpenPBR form: base_color = F0, specular_color = F82 / Schlick(F0) at arccos(1/7).
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
-// A MaterialX document with one generalized_schlick_bsdf (color0, color82) per material.
-std::string presets_materialx(const Context& ctx, const std::vector<MaterialStudy>& studies);
+
+// A parameter set's name, "derived" or "fitted" (InputError otherwise): whether it is the fitted one.
+bool wants_fitted(const std::string& kind);
+// The study of one material, fitting only for `kind` "fitted". `one` holds the material and must
+// outlive the study, which points into it.
+MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one, const std::string& kind);
+// A model's derived or fitted parameters (`kind`) from a study.
+const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m, const std::string& kind);
 
 // One curve's worth of output for `curve`: per angle, ground truth, model and ΔE2000.
 // `parameters` is "derived" or "fitted".
