@@ -1,5 +1,5 @@
 #pragma once
-// Issue 6: what each Fresnel model costs against what it gets wrong (`table speed`), and the
+// What each Fresnel model costs against what it gets wrong (`table speed`), and the
 // per-material choice of the cheapest model within a ΔE2000 budget (`plan`).
 //
 // Determinism: costs are not timed inside a report. The benchmark (bench/bench_speed.cpp, run by
