@@ -44,6 +44,12 @@ Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& mater
   return t;
 }
 
+std::string model_names() {
+  std::string s;
+  for (const auto& m : fresnel::model_specs()) s += (s.empty() ? "" : ", ") + std::string(m.name);
+  return s;
+}
+
 bool wants_fitted(const std::string& kind) {
   if (kind != "derived" && kind != "fitted")
     throw InputError(fmt::format("--params must be derived or fitted, not '{}'", kind));

@@ -27,6 +27,9 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
 // The OpenPBR form: base_color = F0, specular_color = F82 / Schlick(F0) at arccos(1/7).
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
+// "schlick, generalized_schlick, ...": every model's name, for option help.
+std::string model_names();
+
 // A parameter set's name, "derived" or "fitted" (InputError otherwise): whether it is the fitted one.
 bool wants_fitted(const std::string& kind);
 // The study of one material, fitting only for `kind` "fitted". `one` holds the material and must

@@ -6,16 +6,9 @@
 #include <filesystem>
 #include <optional>
 
-#include "fresnel/model_set.h"
 #include "spectral/errors.h"
 
 namespace fl::cli {
-
-std::string model_names() {
-  std::string s;
-  for (const auto& m : fresnel::model_specs()) s += (s.empty() ? "" : ", ") + std::string(m.name);
-  return s;
-}
 
 void progress(const GlobalOptions& g, const std::string& message) {
   if (!g.quiet) fmt::print(stderr, "{}\n", message);

@@ -33,9 +33,6 @@ const std::vector<Command>& commands();
 // caller (main) maps exceptions to exit codes.
 int run(int argc, char** argv);
 
-// "schlick, generalized_schlick, ...": the models, for option help.
-std::string model_names();
-
 // Progress / warnings on stderr unless --quiet.
 void progress(const GlobalOptions& g, const std::string& message);
 // The context for the run, with material warnings printed once.

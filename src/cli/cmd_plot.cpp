@@ -1,6 +1,7 @@
 // `plot strip | curves` and `render`: figures and sphere renders of one material.
 #include <memory>
 
+#include "analysis/tables.h"
 #include "cli/app.h"
 #include "report/pictures.h"
 
@@ -14,7 +15,8 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
   r->figure = name;
   r->models = default_models;
   sub->add_option("MATERIAL", r->material, "catalog name, database page (main/Au/nk/Johnson) or file")->required();
-  sub->add_option("--models", r->models, "comma-separated models, or all: " + model_names())->capture_default_str();
+  sub->add_option("--models", r->models, "comma-separated models, or all: " + analysis::model_names())
+      ->capture_default_str();
   sub->add_option("--params", r->params, "derived (from the spectral procedure) or fitted (Ceres)")
       ->capture_default_str();
   sub->add_option("--out", r->out, out_help)->required();
@@ -47,7 +49,7 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "and the ΔE2000 heat map FILE.de2000.png");
   auto r = std::make_shared<report::RenderRequest>();
   sub->add_option("MATERIAL", r->material, "catalog name, database page (main/Au/nk/Johnson) or file")->required();
-  sub->add_option("--model", r->model, "truth (spectral ground truth) or a model: " + model_names())
+  sub->add_option("--model", r->model, "truth (spectral ground truth) or a model: " + analysis::model_names())
       ->capture_default_str();
   sub->add_option("--params", r->params, "derived or fitted model parameters")->capture_default_str();
   sub->add_option("--roughness", r->settings.roughness, "GGX perceptual roughness (0: perfect mirror)")

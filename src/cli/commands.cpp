@@ -38,7 +38,7 @@ void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto format = std::make_shared<std::string>("csv");
   auto params = std::make_shared<std::string>("derived");
   sub->add_option("MATERIAL", *material, "catalog name, database page (main/Au/nk/Johnson) or file")->required();
-  sub->add_option("--model", *model, "Fresnel model: " + model_names())->capture_default_str();
+  sub->add_option("--model", *model, "Fresnel model: " + analysis::model_names())->capture_default_str();
   sub->add_option("--params", *params, "derived (from the spectral procedure) or fitted (Ceres)")->capture_default_str();
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, material, model, format, params] {
