@@ -1,4 +1,4 @@
-// Issue 6: what every Fresnel model costs, scalar and batched, float and double; the spectral
+// What every Fresnel model costs, scalar and batched, float and double; the spectral
 // ground truth; our CIEDE2000 next to Little CMS's cmsCIE2000DeltaE; each report table's generation.
 //   bench_speed                                   run everything, console output
 //   bench_speed --benchmark_filter=de2000         one group

@@ -1,5 +1,5 @@
 #pragma once
-// The report tables (SPEC §6).
+// The report tables, and the helpers of the one-material commands.
 #include "analysis/context.h"
 #include "analysis/study.h"
 #include "analysis/table.h"
@@ -16,13 +16,13 @@ Table catalog_table(const spectral::DataPaths& paths);
 // ground truth, per catalog material.
 Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& materials);
 
-// The talk's table of derivation methods (SPEC §3), metals only.
+// The talk's table of derivation methods, metals only.
 Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
 // Every material × every model × {derived, fitted}: RMS, mean, max and render-weighted RMS.
 Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
-// F0, F82, g, η, κ per material (SPEC §6 columns; values outside [0, 1] kept and flagged).
+// F0, F82, g, η, κ per material (values outside [0, 1] kept and flagged in out_of_range).
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 // The OpenPBR form: base_color = F0, specular_color = F82 / Schlick(F0) at arccos(1/7).
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies);

@@ -29,7 +29,7 @@ std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::
   const bool tty = ::isatty(STDERR_FILENO);
   return [&g, what, tty](int done, int total) {
     if (g.quiet || (!tty && done != total)) return;
-    fmt::print(stderr, "{}{}: {}/{} materials{}", tty ? "\r" : "", what, done, total, done == total ? "\n" : "");
+    fmt::print(stderr, "{}{}{}/{} materials{}", tty ? "\r" : "", what, done, total, done == total ? "\n" : "");
   };
 }
 

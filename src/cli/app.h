@@ -40,7 +40,7 @@ analysis::Context make_context(const GlobalOptions& g);
 void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms);
 // MATERIAL (a catalog name, database page or file) loaded, its warnings printed.
 analysis::LoadedMaterial load_one(const GlobalOptions& g, const analysis::Context& ctx, const std::string& material);
-// Study progress "WHAT: done/total materials": a live counter on a terminal, one line when stderr
+// Study progress "<what>done/total materials": a live counter on a terminal, one line when stderr
 // is a log, nothing with --quiet.
 std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::string& what);
 // Writes out.files (all or nothing), then prints out.messages; returns exit status 0.

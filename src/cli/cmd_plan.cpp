@@ -41,7 +41,7 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       }();
       const auto ms = analysis::load_scene_materials(ctx, scene);
       print_warnings(g, ms);
-      const auto studies = analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting"));
+      const auto studies = analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
       const auto p = analysis::make_plan(scene, ctx, studies, costs);
       fmt::print("{}", a->format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs.source));
       return 0;

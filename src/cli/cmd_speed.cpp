@@ -31,7 +31,7 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting"));
+      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       const auto t = analysis::speed_table(ctx, in.studies(), costs);
       if (!a->plot.empty()) {
         report::write_speed_plot(a->plot, analysis::speed_rows(in.studies(), costs));

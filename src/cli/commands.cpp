@@ -70,7 +70,7 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting"));
+      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       fmt::print("{}", report::render(spec.build(in), f));
       return 0;
     };
@@ -89,7 +89,7 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting"));
+      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       if (*format == "mtlx") {
         fmt::print("{}", report::presets_materialx(ctx, in.studies()));
         return 0;
@@ -112,7 +112,7 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting"));
+      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       auto files = report::reproduce_files(in, !*no_figures, [&g](const std::string& line) { progress(g, line); });
       for (auto& f : files) f.first = *out + "/" + f.first;
       report::write_files_atomic(files);
