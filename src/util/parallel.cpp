@@ -1,6 +1,7 @@
 #include "util/parallel.h"
 
 #include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
@@ -18,9 +19,11 @@ void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, i
         },
         tbb::simple_partitioner());
   };
-  if (threads == 1) {
+  // More threads than the machine has would only make oneTBB warn on stderr.
+  const int machine = tbb::info::default_concurrency();
+  if (threads == 1 || machine == 1) {
     for (std::size_t i = 0; i < n; ++i) body(i);
-  } else if (threads > 1) {
+  } else if (threads > 1 && threads < machine) {
     tbb::task_arena arena(threads);
     arena.execute(loop);
   } else {
