@@ -1,4 +1,4 @@
-// Issue 6: what every Fresnel model costs, scalar and batched, float and double; the spectral
+// What every Fresnel model costs, scalar and batched, float and double; the spectral
 // ground truth; our CIEDE2000 next to Little CMS's cmsCIE2000DeltaE; each report table's generation.
 //   bench_speed                                   run everything, console output
 //   bench_speed --benchmark_filter=de2000         one group
@@ -22,11 +22,12 @@
 #include <vector>
 
 #include "analysis/speed.h"
-#include "cli/table_registry.h"
+#include "analysis/table_registry.h"
 #include "color/ciede2000_fast.h"
 #include "color/lab.h"
 #include "fresnel/batch.h"
 #include "report/writer.h"
+#include "util/median.h"
 
 namespace {
 
@@ -126,10 +127,10 @@ void bm_de2000_lcms(benchmark::State& state) {
 
 // ---- The catalog, loaded once for the ground truth and table benchmarks.
 struct Catalog {
-  fl::cli::GlobalOptions g;
+  fl::analysis::Settings settings;
   std::unique_ptr<fl::analysis::Context> ctx;
   std::vector<fl::analysis::LoadedMaterial> materials;
-  std::unique_ptr<fl::cli::TableInputs> inputs;
+  std::unique_ptr<fl::analysis::TableInputs> inputs;
   const fl::analysis::LoadedMaterial& gold() const {
     for (const auto& m : materials)
       if (m.material.key == "gold") return m;
@@ -139,12 +140,11 @@ struct Catalog {
 Catalog& catalog() {
   static Catalog c = [] {
     Catalog c;
-    c.g.quiet = true;
-    c.g.settings.paths.database = FRESNEL_LAB_DEFAULT_DB;
-    c.g.settings.paths.materials = FRESNEL_LAB_DEFAULT_MATERIALS;
-    c.ctx = std::make_unique<fl::analysis::Context>(c.g.settings);
+    c.settings.paths.database = FRESNEL_LAB_DEFAULT_DB;
+    c.settings.paths.materials = FRESNEL_LAB_DEFAULT_MATERIALS;
+    c.ctx = std::make_unique<fl::analysis::Context>(c.settings);
     c.materials = fl::analysis::load_catalog(*c.ctx);
-    c.inputs = std::make_unique<fl::cli::TableInputs>(*c.ctx, c.materials, c.g);
+    c.inputs = std::make_unique<fl::analysis::TableInputs>(*c.ctx, c.materials);
     return c;
   }();
   return c;
@@ -179,7 +179,7 @@ void bm_studies(benchmark::State& state) {
     benchmark::DoNotOptimize(fl::analysis::study_materials(*c.ctx, c.materials, o));
   }
 }
-void bm_table(benchmark::State& state, const fl::cli::TableSpec* spec) {
+void bm_table(benchmark::State& state, const fl::analysis::TableSpec* spec) {
   auto& c = catalog();
   c.inputs->studies();  // computed once, outside the timing (bm_studies times it)
   try {
@@ -205,7 +205,7 @@ void register_all() {
   RegisterBenchmark("ground_truth/curve_91_angles", bm_ground_truth_curve)->Unit(benchmark::kMicrosecond);
   RegisterBenchmark("tables/load_catalog", bm_load_catalog)->Unit(benchmark::kMillisecond)->UseRealTime();
   RegisterBenchmark("tables/studies_all_fits", bm_studies)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
-  for (const auto& spec : fl::cli::table_specs())
+  for (const auto& spec : fl::analysis::table_specs())
     RegisterBenchmark(("tables/" + std::string(spec.name)).c_str(), bm_table, &spec)
         ->Unit(benchmark::kMillisecond)
         ->Iterations(spec.in_reproduce ? 3 : 1)
@@ -216,12 +216,7 @@ void register_all() {
 struct Result {
   std::vector<double> seconds_per_iter;  // CPU time, one per repetition
   double evals = 0;
-  double median_seconds() const {
-    auto v = seconds_per_iter;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  }
+  double median_seconds() const { return fl::median(seconds_per_iter); }
   double ns_per_eval() const { return median_seconds() * 1e9 / (evals > 0 ? evals : 1.0); }
 };
 

@@ -3,15 +3,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <mutex>
 #include <numbers>
-#include <thread>
 
 #include "color/lab.h"
 #include "fresnel/models.h"
 #include "spectral/errors.h"
+#include "util/median.h"
+#include "util/parallel.h"
 
 namespace fl::analysis {
 
@@ -26,42 +25,6 @@ void check_size(int size) {
 }
 void check_samples(int samples) {
   if (samples < 1) throw InputError(fmt::format("sample count {} must be positive", samples));
-}
-
-// Runs body(k) for k in [0, count) on `threads` workers. Each k writes only its own results, so the
-// outcome does not depend on the number of threads or the schedule.
-template <class Body>
-void parallel_for(int count, int threads, const LutProgress& progress, int progress_total, Body body) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(1, std::min(threads, count));
-  std::atomic<int> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  std::mutex mutex;
-  int done = 0;
-  auto worker = [&] {
-    for (;;) {
-      const int k = next.fetch_add(1);
-      if (k >= count || failed) return;
-      try {
-        const int units = body(k);
-        if (progress) {
-          std::lock_guard lock(mutex);
-          done += units;
-          progress(done, progress_total);
-        }
-      } catch (...) {
-        std::lock_guard lock(mutex);
-        if (!error) error = std::current_exception();
-        failed = true;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
 }
 
 // One quasi-Monte Carlo sample of the lobe: l drawn from the visible normals of v, weight G₂/G₁
@@ -160,26 +123,52 @@ GgxMoments integrate_moments(double nov, double alpha, int samples) {
 
 namespace {
 
-// Every cell of the grid, integrand(n·v, α, samples), filled in parallel column by column.
+// Every cell of the grid, integrand(n·v, α, samples), filled in parallel column by column; each
+// cell counts once in `done`.
 template <class Cell, class Integrand>
-std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options, Integrand integrand) {
+std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options, Integrand integrand,
+                                 ProgressCounter& done) {
   check_samples(options.samples);
   std::vector<Cell> cells(static_cast<size_t>(grid.size) * grid.size);
-  parallel_for(grid.size, options.threads, options.progress, grid.size * grid.size, [&](int j) {
-    for (int i = 0; i < grid.size; ++i) cells[grid.index(i, j)] = integrand(grid.nov[i], grid.alpha[j], options.samples);
-    return grid.size;
-  });
+  parallel_for(
+      grid.size,
+      [&](size_t j) {
+        for (int i = 0; i < grid.size; ++i)
+          cells[grid.index(i, static_cast<int>(j))] = integrand(grid.nov[i], grid.alpha[j], options.samples);
+        done.add(grid.size);
+      },
+      options.threads);
   return cells;
+}
+
+// Fits cell (i, j) of an LTC grid from `start`; i = 0 (normal incidence) is isotropic.
+LtcCell fit_ltc_cell(const LutGrid& g, const GgxMoments& mo, int i, int j, const fit::LtcParams& start,
+                     const LtcCellFitter& fitter, int fit_sample_sqrt) {
+  const bool isotropic = i == 0;
+  const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
+  const auto problem = fit::make_ltc_problem(g.nov[i], g.alpha[j], mo.n_d, dir, fit_sample_sqrt);
+  LtcCell c;
+  c.fit = fitter(problem, start, isotropic);
+  if (c.fit.parameters.size() != 3) throw std::runtime_error("LTC fitter returned no parameters");
+  c.params = {c.fit.parameters[0], c.fit.parameters[1], c.fit.parameters[2]};
+  c.fit_error = fit::ltc_fit_error(problem, c.params);
+  c.m = fit::ltc_matrix(problem.frame, c.params);
+  c.m_inv = fit::inverse(c.m);
+  const double s = 1.0 / c.m_inv(1, 1);
+  c.inv_packed = {c.m_inv(0, 0) * s, c.m_inv(2, 0) * s, c.m_inv(0, 2) * s, c.m_inv(2, 2) * s};
+  return c;
 }
 
 }  // namespace
 
 DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
-  return {grid, integrate_grid<DfgTexel>(grid, options, integrate_dfg)};
+  ProgressCounter done(options.progress, grid.size * grid.size);
+  return {grid, integrate_grid<DfgTexel>(grid, options, integrate_dfg, done)};
 }
 
 MomentsTable moments_table(const LutGrid& grid, const LutOptions& options) {
-  return {grid, integrate_grid<GgxMoments>(grid, options, integrate_moments)};
+  ProgressCounter done(options.progress, grid.size * grid.size);
+  return {grid, integrate_grid<GgxMoments>(grid, options, integrate_moments, done)};
 }
 
 double horizon_clipped_sphere_form_factor(double z, double len) {
@@ -228,40 +217,16 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   LtcTable t;
   t.grid = ltc_grid(size);
   const auto& g = t.grid;
-  const int total = size * size;
-  t.moments.resize(static_cast<size_t>(total));
-  t.cells.resize(static_cast<size_t>(total));
-  int done_before_rows = 0;
+  t.cells.resize(static_cast<size_t>(size) * size);
+  const auto fit_cell = [&](int i, int j, const fit::LtcParams& start) {
+    t.cells[g.index(i, j)] = fit_ltc_cell(g, t.moments[g.index(i, j)], i, j, start, fitter, fit_sample_sqrt);
+  };
+  // Progress counts every cell twice: once for its moments, once for its fit.
+  ProgressCounter done(options.progress, 2 * size * size);
 
   // Stage 1: moments and mean directions (the LTC magnitudes and frames), every cell independent.
+  t.moments = integrate_grid<GgxMoments>(g, options, integrate_moments, done);
   // Stage 2: the normal-incidence column, rough to smooth (sequential warm starts).
-  // Stage 3: each roughness row from normal to grazing (warm starts along the row); rows in parallel.
-  const int progress_total = 2 * total;
-  LutProgress moments_progress;
-  if (options.progress) moments_progress = [&](int done, int) { options.progress(done, progress_total); };
-  parallel_for(size, options.threads, moments_progress, total, [&](int j) {
-    for (int i = 0; i < size; ++i) t.moments[g.index(i, j)] = integrate_moments(g.nov[i], g.alpha[j], options.samples);
-    return size;
-  });
-  done_before_rows = total;
-
-  auto fit_cell = [&](int i, int j, const fit::LtcParams& start) {
-    const auto& mo = t.moments[g.index(i, j)];
-    const bool isotropic = i == 0;
-    const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
-    const auto problem = fit::make_ltc_problem(g.nov[i], g.alpha[j], mo.n_d, dir, fit_sample_sqrt);
-    LtcCell c;
-    c.fit = fitter(problem, start, isotropic);
-    if (c.fit.parameters.size() != 3) throw std::runtime_error("LTC fitter returned no parameters");
-    c.params = {c.fit.parameters[0], c.fit.parameters[1], c.fit.parameters[2]};
-    c.fit_error = fit::ltc_fit_error(problem, c.params);
-    c.m = fit::ltc_matrix(problem.frame, c.params);
-    c.m_inv = fit::inverse(c.m);
-    const double s = 1.0 / c.m_inv(1, 1);
-    c.inv_packed = {c.m_inv(0, 0) * s, c.m_inv(2, 0) * s, c.m_inv(0, 2) * s, c.m_inv(2, 2) * s};
-    t.cells[g.index(i, j)] = c;
-  };
-
   for (int j = size - 1; j >= 0; --j) {
     fit::LtcParams start;
     if (j < size - 1) {
@@ -270,15 +235,16 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
     }
     fit_cell(0, j, start);
   }
-  if (options.progress) options.progress(done_before_rows + size, progress_total);
-
-  LutProgress rows_progress;
-  if (options.progress)
-    rows_progress = [&](int done, int) { options.progress(done_before_rows + size + done, progress_total); };
-  parallel_for(size, options.threads, rows_progress, total - size, [&](int j) {
-    for (int i = 1; i < size; ++i) fit_cell(i, j, t.cells[g.index(i - 1, j)].params);
-    return size - 1;
-  });
+  done.add(size);
+  // Stage 3: each roughness row from normal to grazing (warm starts along the row); rows in parallel.
+  parallel_for(
+      size,
+      [&](size_t row) {
+        const int j = static_cast<int>(row);
+        for (int i = 1; i < size; ++i) fit_cell(i, j, t.cells[g.index(i - 1, j)].params);
+        done.add(size - 1);
+      },
+      options.threads);
   t.sphere_form_factor = sphere_form_factor_table(size);
   return t;
 }
@@ -304,80 +270,62 @@ struct RgbCurve {
   }
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-}  // namespace
-
-Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& materials) {
-  const double eta_e = ctx.settings().eta_outside;
-  // The lobe samples of every grid point, shared by all metals.
-  struct Point {
-    double roughness, view_deg;
-    std::vector<LobeSample> samples;
-    GgxMoments moments;
-  };
-  std::vector<Point> points;
+// The grid points with the lobe samples of each, shared by all metals.
+struct AccuracyPoint {
+  double roughness, view_deg;
+  std::vector<LobeSample> samples;
+  GgxMoments moments;
+};
+std::vector<AccuracyPoint> accuracy_points() {
+  std::vector<AccuracyPoint> points;
   for (double r : kAccuracyRoughness)
     for (double deg : kAccuracyViewDeg) {
-      Point p{r, deg, {}, {}};
+      AccuracyPoint p{r, deg, {}, {}};
       const double nov = std::cos(deg * kPi / 180.0);
       for_each_lobe_sample(nov, r * r, kAccuracySamples, [&](const LobeSample& s) { p.samples.push_back(s); });
       p.moments = integrate_moments(nov, r * r, kAccuracySamples);
       points.push_back(std::move(p));
     }
+  return points;
+}
 
-  Table t;
-  t.name = "lut-accuracy";
-  t.title = "Pre-integrated Fresnel (LTC moments) against brute-force spectral integration (ΔE2000)";
-  t.columns = {{"material"}, {"schlick_median_de00", 3}, {"schlick_max_de00", 3}, {"f82_median_de00", 3},
-               {"f82_max_de00", 3}};
-  std::vector<double> all_schlick, all_f82, metal_schlick, metal_f82;
-  for (const auto& m : materials) {
-    if (m.material.material_class != spectral::MaterialClass::Metal) continue;
-    RgbCurve truth_curve;
-    for (int k = 0; k < kFresnelTableSize; ++k)
-      truth_curve.values.push_back(ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kFresnelTableSize - 1), eta_e));
-    const color::Rgb f0 = truth_curve.values.back();
-    const color::Rgb f82 = ground_truth_rgb(ctx, m.ior, 1.0 / 7.0, eta_e);
-    std::vector<double> de_schlick, de_f82;
-    for (const auto& p : points) {
-      color::Rgb truth{};
-      for (const auto& s : p.samples) truth = truth + s.weight * truth_curve.at(s.voh);
-      truth = (1.0 / kAccuracySamples) * truth;
-      color::Rgb schlick{}, hoffman{};
-      for (int c = 0; c < 3; ++c) {
-        const double base = f0[c] * p.moments.n_d + (1.0 - f0[c]) * p.moments.f_d;
-        schlick[c] = base;
-        hoffman[c] = base - fresnel::f82_coefficient(f0[c], f82[c]) * p.moments.l_d;
-      }
-      const auto lab_truth = ctx.rgb_to_lab(truth);
-      de_schlick.push_back(color::ciede2000(lab_truth, ctx.rgb_to_lab(schlick)));
-      de_f82.push_back(color::ciede2000(lab_truth, ctx.rgb_to_lab(hoffman)));
+// ΔE2000 of pre-integrated Schlick and F82 against the brute-force integral, per grid point.
+struct MetalAccuracy {
+  std::vector<double> de_schlick, de_f82;
+};
+MetalAccuracy metal_accuracy(const Context& ctx, const LoadedMaterial& m, const std::vector<AccuracyPoint>& points) {
+  const double eta_e = ctx.settings().eta_outside;
+  RgbCurve truth_curve;
+  for (int k = 0; k < kFresnelTableSize; ++k)
+    truth_curve.values.push_back(ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kFresnelTableSize - 1), eta_e));
+  const color::Rgb f0 = truth_curve.values.back();
+  const color::Rgb f82 = ground_truth_rgb(ctx, m.ior, 1.0 / 7.0, eta_e);
+  MetalAccuracy out;
+  for (const auto& p : points) {
+    color::Rgb truth{};
+    for (const auto& s : p.samples) truth = truth + s.weight * truth_curve.at(s.voh);
+    truth = (1.0 / kAccuracySamples) * truth;
+    color::Rgb schlick{}, hoffman{};
+    for (int c = 0; c < 3; ++c) {
+      const double base = f0[c] * p.moments.n_d + (1.0 - f0[c]) * p.moments.f_d;
+      schlick[c] = base;
+      hoffman[c] = base - fresnel::f82_coefficient(f0[c], f82[c]) * p.moments.l_d;
     }
-    all_schlick.insert(all_schlick.end(), de_schlick.begin(), de_schlick.end());
-    all_f82.insert(all_f82.end(), de_f82.begin(), de_f82.end());
-    metal_schlick.push_back(median(de_schlick));
-    metal_f82.push_back(median(de_f82));
-    t.rows.push_back({m.material.name, metal_schlick.back(), *std::max_element(de_schlick.begin(), de_schlick.end()),
-                      metal_f82.back(), *std::max_element(de_f82.begin(), de_f82.end())});
+    const auto lab_truth = ctx.rgb_to_lab(truth);
+    out.de_schlick.push_back(color::ciede2000(lab_truth, ctx.rgb_to_lab(schlick)));
+    out.de_f82.push_back(color::ciede2000(lab_truth, ctx.rgb_to_lab(hoffman)));
   }
+  return out;
+}
+
+std::vector<std::string> accuracy_notes(const Context& ctx) {
   std::string roughness_list, view_list;
   for (double r : kAccuracyRoughness) roughness_list += (roughness_list.empty() ? "" : ", ") + fmt::format("{:g}", r);
   for (double d : kAccuracyViewDeg) view_list += (view_list.empty() ? "" : ", ") + fmt::format("{:g}°", d);
-  t.reading = fmt::format(
-      "Median ΔE2000 over all metals and grid points: Schlick {:.3f}, F82 {:.3f} (median of the per-metal medians: "
-      "Schlick {:.3f}, F82 {:.3f}). Schlick's error grows towards grazing views and for metals with a strong edge "
-      "tint (the max columns); the F82 moment l_D removes most of it.",
-      median(all_schlick), median(all_f82), median(metal_schlick), median(metal_f82));
   const auto& s = ctx.settings();
-  t.notes = {
+  return {
       fmt::format("Working space {}, illuminant {}, {} adaptation, outside medium η = {:g}.", s.space, s.illuminant,
-                  s.adaptation, eta_e),
+                  s.adaptation, s.eta_outside),
       fmt::format("Grid: perceptual roughness {} (α = roughness²) × view angle {}; per point the GGX lobe "
                   "(height-correlated Smith) is integrated with {} visible-normal samples (Hammersley).",
                   roughness_list, view_list, kAccuracySamples),
@@ -386,6 +334,34 @@ Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& 
       "with a from Hoffman 2019 (no clamping is possible after pre-integration). R0 = F0 and F82 from the ground "
       "truth at cos θ = 1 and 1/7; moments from the same samples as the truth, so only the Fresnel model differs.",
       "Only metals are listed."};
+}
+
+}  // namespace
+
+Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& materials) {
+  const auto points = accuracy_points();
+  Table t;
+  t.name = "lut-accuracy";
+  t.title = "Pre-integrated Fresnel (LTC moments) against brute-force spectral integration (ΔE2000)";
+  t.columns = {{"material"}, {"schlick_median_de00", 3}, {"schlick_max_de00", 3}, {"f82_median_de00", 3},
+               {"f82_max_de00", 3}};
+  std::vector<double> all_schlick, all_f82, metal_schlick, metal_f82;
+  for (const auto& m : materials) {
+    if (m.material.material_class != spectral::MaterialClass::Metal) continue;
+    const auto [de_schlick, de_f82] = metal_accuracy(ctx, m, points);
+    all_schlick.insert(all_schlick.end(), de_schlick.begin(), de_schlick.end());
+    all_f82.insert(all_f82.end(), de_f82.begin(), de_f82.end());
+    metal_schlick.push_back(median(de_schlick));
+    metal_f82.push_back(median(de_f82));
+    t.rows.push_back({m.material.name, metal_schlick.back(), *std::max_element(de_schlick.begin(), de_schlick.end()),
+                      metal_f82.back(), *std::max_element(de_f82.begin(), de_f82.end())});
+  }
+  t.reading = fmt::format(
+      "Median ΔE2000 over all metals and grid points: Schlick {:.3f}, F82 {:.3f} (median of the per-metal medians: "
+      "Schlick {:.3f}, F82 {:.3f}). Schlick's error grows towards grazing views and for metals with a strong edge "
+      "tint (the max columns); the F82 moment l_D removes most of it.",
+      median(all_schlick), median(all_f82), median(metal_schlick), median(metal_f82));
+  t.notes = accuracy_notes(ctx);
   return t;
 }
 

@@ -1,27 +1,17 @@
 #include "analysis/plan.h"
 
-#include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <set>
 #include <filesystem>
 
 #include "spectral/errors.h"
-#include "spectral/text_file.h"
+#include "spectral/scene_file.h"
 
 namespace fl::analysis {
 
 using fresnel::Model;
 
 namespace {
-
-int line_of(const YAML::Node& n) { return n.Mark().line + 1; }
-
-std::string scalar_text(const std::string& path, const YAML::Node& n, const std::string& what) {
-  if (!n.IsScalar()) throw InputError(path, line_of(n), fmt::format("{} must be a string", what));
-  return n.Scalar();
-}
 
 // A material given as a relative file path is looked up next to the scene first.
 std::string resolve_relative(const std::string& scene_path, const std::string& spec) {
@@ -37,60 +27,16 @@ std::string resolve_relative(const std::string& scene_path, const std::string& s
 }  // namespace
 
 Scene read_scene(const std::string& path) {
+  const auto f = spectral::read_scene_file(path);
   Scene s;
-  s.path = path;
-  const std::string text = spectral::read_text_file(path);  // missing, directory, empty, binary
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path, e.mark.line + 1, "invalid YAML: " + e.msg);
-  }
-  if (root.IsNull()) throw InputError(path, 1, "scene is empty (expected a map with 'materials')");
-  if (!root.IsMap()) throw InputError(path, line_of(root), "a scene must be a YAML map with 'materials'");
-  bool have_materials = false;
-  for (const auto& kv : root) {
-    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
-    const YAML::Node& v = kv.second;
-    const int line = line_of(kv.first);
-    if (key == "materials") {
-      have_materials = true;
-      if (!v.IsSequence() || v.size() == 0)
-        throw InputError(path, line, "'materials' must be a non-empty list of material names, database pages or files");
-      for (const auto& m : v) {
-        const std::string spec = scalar_text(path, m, "each material");
-        if (spec.empty()) throw InputError(path, line_of(m), "empty material name");
-        s.materials.push_back({resolve_relative(path, spec), line_of(m)});
-      }
-    } else if (key == "max_de00") {
-      double x = 0;
-      if (!v.IsScalar() || !spectral::parse_finite(v.Scalar(), x) || !(x > 0.0))
-        throw InputError(path, line, fmt::format("'max_de00' must be a positive number (a ΔE2000 budget), not '{}'",
-                                                 v.IsScalar() ? v.Scalar() : std::string("a list or map")));
-      s.max_de00 = x;
-    } else if (key == "space") {
-      s.space = scalar_text(path, v, "'space'");
-      if (s.space.empty()) throw InputError(path, line, "'space' is empty");
-      s.space_line = line;
-    } else if (key == "lighting") {
-      std::vector<YAML::Node> items;
-      if (v.IsScalar()) items.push_back(v);
-      else if (v.IsSequence())
-        for (const auto& x : v) items.push_back(x);
-      if (items.empty()) throw InputError(path, line, "'lighting' must list any of punctual, ibl, area");
-      for (const auto& x : items) {
-        const std::string l = scalar_text(path, x, "each lighting");
-        if (l == "punctual") s.punctual = true;
-        else if (l == "ibl") s.ibl = true;
-        else if (l == "area") s.area = true;
-        else throw InputError(path, line_of(x), fmt::format("unknown lighting '{}' (expected punctual, ibl or area)", l));
-      }
-    } else {
-      throw InputError(path, line, fmt::format("unknown key '{}' (expected materials, max_de00, space, lighting)", key));
-    }
-  }
-  if (!have_materials) throw InputError(path, 1, "missing 'materials' (a list of material names, database pages or files)");
-  if (!s.punctual && !s.ibl && !s.area) s.punctual = true;
+  s.path = f.path;
+  for (const auto& m : f.materials) s.materials.push_back({resolve_relative(path, m.spec), m.line});
+  s.max_de00 = f.max_de00.value_or(kDefaultMaxDe00);
+  s.space = f.space;
+  s.space_line = f.space_line;
+  s.punctual = f.punctual || (!f.ibl && !f.area);
+  s.ibl = f.ibl;
+  s.area = f.area;
   return s;
 }
 

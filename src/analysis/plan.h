@@ -1,13 +1,9 @@
 #pragma once
-// Issue 6, `plan SCENE.yaml`: for each material of a scene, the cheapest Fresnel model (derived or
-// fitted parameters) whose RMS ΔE2000 against spectral ground truth meets the scene's budget, and
-// the lookup tables the chosen models need under the scene's lighting.
+// `plan SCENE.yaml`: for each material of a scene, the cheapest Fresnel model (derived or fitted
+// parameters) whose RMS ΔE2000 against spectral ground truth meets the scene's budget, and the
+// lookup tables the chosen models need under the scene's lighting.
 //
-// Scene file (YAML map):
-//   materials: [gold, main/Cu/nk/Johnson, my_glass.yml]   # catalog names, database pages or files
-//   max_de00: 1.0                                        # optional RMS ΔE2000 budget (default 1.0)
-//   space: acescg                                        # optional working space (default: --space)
-//   lighting: [punctual, ibl, area]                      # optional, any of these (default: punctual)
+// Scene file: spectral/scene_file.h. Defaults: max_de00 1.0, space --space, lighting punctual.
 // Relative file paths are taken relative to the scene file's folder when they exist there.
 #include <string>
 #include <vector>
@@ -32,9 +28,7 @@ struct Scene {
   bool punctual = false, ibl = false, area = false;
 };
 
-// Reads and checks a scene file. InputError naming the file and line for a missing file, a
-// directory, an empty file, invalid YAML, an unknown key, an empty or non-string material list,
-// an unknown lighting, or a budget that is not a positive number.
+// Reads and checks a scene file (spectral::read_scene_file's InputErrors) and applies the defaults.
 Scene read_scene(const std::string& path);
 
 // Resolves and loads the scene's materials; a material that cannot be resolved is an InputError

@@ -4,10 +4,11 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-#include <thread>
 
+#include "analysis/tables.h"
 #include "color/lab.h"
 #include "fresnel/ground_truth.h"
+#include "util/parallel.h"
 
 namespace fl::analysis {
 namespace {
@@ -181,15 +182,24 @@ SphereImage render_sphere(const Environment& env, const FresnelTable& fresnel, c
       img.alpha[k] = static_cast<float>(cover);
     }
   };
-  int threads = s.threads > 0 ? s.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, s.size_px);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (int y = t; y < s.size_px; y += threads) render_row(y);
-    });
-  for (auto& th : pool) th.join();
+  parallel_for(static_cast<size_t>(s.size_px), [&](size_t y) { render_row(static_cast<int>(y)); }, s.threads);
   return img;
+}
+
+MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const fresnel::ModelSpec* model,
+                               const std::string& kind, const RenderSettings& settings) {
+  const auto env = default_environment();
+  MaterialRender r;
+  r.truth = render_sphere(env, truth_fresnel_table(ctx, m.ior, ctx.settings().eta_outside), settings);
+  if (!model) {
+    r.shown = r.truth;
+    return r;
+  }
+  const std::vector<LoadedMaterial> one{m};
+  r.params = model_params(study_one(ctx, one, kind), model->model, kind);
+  r.shown = render_sphere(env, model_fresnel_table(model->model, r.params), settings);
+  r.de2000 = de2000_image(ctx, r.truth, r.shown);
+  return r;
 }
 
 std::vector<double> de2000_image(const Context& ctx, const SphereImage& a, const SphereImage& b) {

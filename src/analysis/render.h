@@ -1,6 +1,6 @@
 #pragma once
 // A sphere shaded with the GGX specular lobe (brdf/ggx.h) and a chosen Fresnel, lit by an analytic
-// environment: the pictures of issue 7. Pure functions; no I/O.
+// environment. Pure functions; no I/O.
 //
 // Scene (world frame: y up, +z toward the camera). Orthographic camera looking along −z at a
 // unit sphere at the origin; the image spans [−1.1, 1.1]² so the sphere fills 1/1.1 of it. With an
@@ -14,6 +14,7 @@
 //   view ray at the sphere's centre (straight back along +z) lands in the key light: a mirror
 //   sphere's centre pixel is exactly F(cos 0) · key_radiance = F0 · key_radiance.
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "analysis/context.h"
@@ -75,6 +76,17 @@ struct SphereImage {
   std::vector<float> alpha;  // coverage
 };
 SphereImage render_sphere(const Environment& env, const FresnelTable& fresnel, const RenderSettings& settings);
+
+// A material's sphere under default_environment() with the spectral ground truth and, given a model,
+// with that model's derived or fitted parameters (`kind`, from the material's study).
+struct MaterialRender {
+  SphereImage truth;
+  SphereImage shown;           // the model's render; the truth's without a model
+  std::vector<double> params;  // the model's parameters (empty without a model)
+  std::vector<double> de2000;  // per pixel, truth against the model (empty without a model)
+};
+MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const fresnel::ModelSpec* model,
+                               const std::string& kind, const RenderSettings& settings);
 
 // Per pixel ΔE2000 between two renders of the same scene (un-premultiplied colours taken as
 // working-space RGB, CIELAB relative to the space's white at Y = 1); NaN where alpha is 0.

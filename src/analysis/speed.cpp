@@ -3,10 +3,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdlib>
 #include <stdexcept>
+#include <thread>
 
+#include "fresnel/batch.h"
 #include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/median.h"
 
 namespace fl::analysis {
 
@@ -66,14 +71,42 @@ ModelCosts read_model_costs(const std::string& path) {
   return out;
 }
 
-namespace {
-double median_of(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+ModelCosts load_model_costs(const std::string& path) {
+  if (!path.empty()) return read_model_costs(path);
+  if (const char* env = std::getenv("FRESNEL_LAB_COSTS"); env && *env) return read_model_costs(env);
+  auto costs = read_model_costs(FRESNEL_LAB_DEFAULT_COSTS);
+  costs.source = "bench/model_costs.csv";  // the committed file, named the same on every machine
+  return costs;
 }
-}  // namespace
+
+ModelCosts measure_model_costs(int repeats, double min_ms) {
+  constexpr std::size_t kAngles = 4096;
+  std::vector<float> cos_theta(kAngles), out(3 * kAngles);
+  for (std::size_t i = 0; i < kAngles; ++i) cos_theta[i] = static_cast<float>(i) / (kAngles - 1);
+  ModelCosts costs;
+  costs.source = "measured live (speed --measure)";
+  costs.machine = fmt::format("{} hardware threads", std::thread::hardware_concurrency());
+  volatile float sink = 0;
+  for (const auto& spec : fresnel::model_specs()) {
+    std::vector<float> params;
+    for (double p : fresnel::example_params(spec.model)) params.push_back(static_cast<float>(p));
+    double best_ns = 1e300;
+    for (int r = 0; r < repeats; ++r) {
+      long long evals = 0;
+      const auto t0 = std::chrono::steady_clock::now();
+      double ms = 0;
+      do {
+        fresnel::evaluate_batch(spec.model, params.data(), cos_theta.data(), kAngles, out.data());
+        sink = sink + out[kAngles / 2];
+        evals += kAngles;
+        ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      } while (ms < min_ms);
+      best_ns = std::min(best_ns, ms * 1e6 / static_cast<double>(evals));
+    }
+    costs.costs.push_back({spec.model, best_ns});
+  }
+  return costs;
+}
 
 std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs) {
   std::vector<SpeedRow> rows;
@@ -88,7 +121,7 @@ std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, cons
       row.model = spec.model;
       row.fitted = fitted != 0;
       row.ns_per_eval = costs.ns_per_eval(spec.model);
-      row.median_rms_de00 = median_of(rms);
+      row.median_rms_de00 = median(rms);
       row.max_rms_de00 = rms.empty() ? 0 : *std::max_element(rms.begin(), rms.end());
       rows.push_back(row);
     }

@@ -1,5 +1,5 @@
 #pragma once
-// Issue 6: what each Fresnel model costs against what it gets wrong (`table speed`), and the
+// What each Fresnel model costs against what it gets wrong (`table speed`), and the
 // per-material choice of the cheapest model within a ΔE2000 budget (`plan`).
 //
 // Determinism: costs are not timed inside a report. The benchmark (bench/bench_speed.cpp, run by
@@ -32,6 +32,12 @@ struct ModelCosts {
 // columns are model,ns_per_eval_float_batched, then one row per model (every model exactly once).
 // InputError (file:line) for anything else.
 ModelCosts read_model_costs(const std::string& path);
+// `path`, else $FRESNEL_LAB_COSTS, else the repository's bench/model_costs.csv.
+ModelCosts load_model_costs(const std::string& path = "");
+
+// Times every model's batched float evaluation (4096 angles) now, on this machine: the least
+// time per evaluation over `repeats` runs of at least `min_ms` each. Not deterministic.
+ModelCosts measure_model_costs(int repeats = 5, double min_ms = 20.0);
 
 
 // One (model, parameter set) candidate with its error statistics over the studied materials.

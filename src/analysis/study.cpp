@@ -3,10 +3,8 @@
 #include "fresnel/registry.h"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <mutex>
-#include <thread>
+
+#include "util/parallel.h"
 
 namespace fl::analysis {
 
@@ -64,32 +62,14 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
 std::vector<MaterialStudy> study_materials(const Context& ctx, const std::vector<LoadedMaterial>& materials,
                                            const StudyOptions& options, const std::function<void(int, int)>& progress) {
   std::vector<MaterialStudy> out(materials.size());
-  std::atomic<size_t> next{0};
-  int done = 0;
-  std::mutex mutex;  // guards done, progress and error
-  std::exception_ptr error;
-  const int threads = std::max(1, options.threads > 0 ? options.threads
-                                                      : static_cast<int>(std::thread::hardware_concurrency()));
-  auto worker = [&] {
-    for (size_t i = next++; i < materials.size(); i = next++) {
-      try {
+  ProgressCounter done(progress, static_cast<int>(materials.size()));
+  parallel_for(
+      materials.size(),
+      [&](size_t i) {
         out[i] = study_one(ctx, materials[i], options);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!error) error = std::current_exception();
-        next = materials.size();
-        return;
-      }
-      std::lock_guard<std::mutex> lock(mutex);
-      ++done;
-      if (progress) progress(done, static_cast<int>(materials.size()));
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+        done.add(1);
+      },
+      options.threads);
   return out;
 }
 

@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 
 #include "fresnel/model_set.h"
 #include "spectral/errors.h"
+#include "util/median.h"
 
 namespace fl::analysis {
 
@@ -16,6 +16,8 @@ std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) 
   return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}, ctx.cos_thetas());
 }
 
+}  // namespace
+
 std::string setting_note(const Context& ctx) {
   const auto& s = ctx.settings();
   return fmt::format("Working space {}, illuminant {}, {} adaptation, CIE 1931 2° observer, {:g}-{:g} nm at {:g} nm, "
@@ -23,8 +25,6 @@ std::string setting_note(const Context& ctx) {
                      s.space, s.illuminant, s.adaptation, ctx.grid().start_nm, ctx.grid().end_nm(),
                      ctx.grid().step_nm, s.angles, s.eta_outside);
 }
-
-}  // namespace
 
 Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& materials) {
   Table t;
@@ -44,18 +44,36 @@ Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& mater
   return t;
 }
 
+std::string model_names() {
+  std::string s;
+  for (const auto& m : fresnel::model_specs()) s += (s.empty() ? "" : ", ") + std::string(m.name);
+  return s;
+}
+
+bool wants_fitted(const std::string& kind) {
+  if (kind != "derived" && kind != "fitted")
+    throw InputError(fmt::format("--params must be derived or fitted, not '{}'", kind));
+  return kind == "fitted";
+}
+
+MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one, const std::string& kind) {
+  StudyOptions o;
+  o.fit = wants_fitted(kind);
+  o.threads = 1;
+  return study_materials(ctx, one, o).front();
+}
+
+const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m, const std::string& kind) {
+  const auto& r = st.result(m);
+  return wants_fitted(kind) ? r.fitted.parameters : r.derived;
+}
+
 Table curve_table(const Context& ctx, const LoadedMaterial& m, const std::string& model,
                   const std::string& parameters) {
   const auto& spec = fresnel::model_from_name(model);
-  if (parameters != "derived" && parameters != "fitted")
-    throw InputError(fmt::format("--params must be derived or fitted, not '{}'", parameters));
-  StudyOptions o;
-  o.fit = parameters == "fitted";
-  o.threads = 1;
   const std::vector<LoadedMaterial> one{m};
-  const auto st = study_materials(ctx, one, o).front();
-  const auto& r = st.result(spec.model);
-  const auto& params = o.fit ? r.fitted.parameters : r.derived;
+  const auto st = study_one(ctx, one, parameters);
+  const auto& params = model_params(st, spec.model, parameters);
   const auto approx = fresnel::evaluate_curve(spec.model, params, ctx.cos_thetas());
   const auto de = de2000_per_angle(ctx, st.truth, approx);
   Table t;
@@ -80,12 +98,6 @@ std::string params_text(fresnel::Model m, const std::vector<double>& p) {
   std::string out;
   for (size_t i = 0; i < p.size(); ++i) out += fmt::format("{}{}={:.5f}", i ? " " : "", names[i], p[i]);
   return out;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
 bool is_metal(const MaterialStudy& s) {
@@ -252,37 +264,14 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   return t;
 }
 
-std::string presets_materialx(const Context& ctx, const std::vector<MaterialStudy>& studies) {
-  // MaterialX's names for our working spaces (its colour-management vocabulary).
-  const std::string& space = ctx.settings().space;
-  const std::string mtlx_space = space == "aces2065-1"   ? "lin_ap0"
-                                 : space == "lin_p3d65"  ? "lin_displayp3"
-                                 : space == "lin_rec2020" ? "lin_rec2020"
-                                                          : space;
-  std::string out = "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\" colorspace=\"" + mtlx_space + "\">\n";
-  out += fmt::format("  <!-- Fresnel Lab presets: generalized_schlick_bsdf with color0 = F0 and color82 = the F82 tint "
-                     "(true F82 / Schlick at arccos(1/7)); {} -->\n", setting_note(ctx));
-  for (const auto& s : studies) {
-    std::string id = s.material->material.key;
-    for (auto& ch : id)
-      if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0]))) id = "m_" + id;
-    const auto& d = s.derived;
-    auto c3 = [](const color::Rgb& v) { return fmt::format("{:.6f}, {:.6f}, {:.6f}", v.r, v.g, v.b); };
-    out += fmt::format("  <generalized_schlick_bsdf name=\"{0}_bsdf\" type=\"BSDF\">\n"
-                       "    <input name=\"color0\" type=\"color3\" value=\"{1}\" />\n"
-                       "    <input name=\"color82\" type=\"color3\" value=\"{2}\" />\n"
-                       "    <input name=\"color90\" type=\"color3\" value=\"1, 1, 1\" />\n"
-                       "  </generalized_schlick_bsdf>\n"
-                       "  <surface name=\"{0}_surface\" type=\"surfaceshader\">\n"
-                       "    <input name=\"bsdf\" type=\"BSDF\" nodename=\"{0}_bsdf\" />\n"
-                       "  </surface>\n"
-                       "  <surfacematerial name=\"{0}\" type=\"material\">\n"
-                       "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"{0}_surface\" />\n"
-                       "  </surfacematerial>\n",
-                       id, c3(d.f0), c3(d.f82_tint));
-  }
-  return out + "</materialx>\n";
+Table catalog_table(const spectral::DataPaths& paths) {
+  Table t;
+  t.name = "materials";
+  t.title = "Material catalog";
+  t.columns = {{"key"}, {"material"}, {"class"}, {"source"}, {"reference"}};
+  for (const auto& m : spectral::read_catalog(paths))
+    t.rows.push_back({m.key, m.name, std::string(spectral::to_string(m.material_class)), m.source, m.reference});
+  return t;
 }
 
 }  // namespace fl::analysis

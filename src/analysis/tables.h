@@ -1,27 +1,42 @@
 #pragma once
-// The report tables (SPEC §6).
+// The report tables, and the helpers of the one-material commands.
 #include "analysis/context.h"
 #include "analysis/study.h"
 #include "analysis/table.h"
 
 namespace fl::analysis {
 
+// The colorimetric setting in one sentence, the first note of the tables.
+std::string setting_note(const Context& ctx);
+
+// `materials`: the catalog (key, name, class, data source, reference).
+Table catalog_table(const spectral::DataPaths& paths);
+
 // The talk's Schlick table: ΔE2000 of Schlick (F0 from the spectral procedure) against spectral
 // ground truth, per catalog material.
 Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& materials);
 
-// The talk's table of derivation methods (SPEC §3), metals only.
+// The talk's table of derivation methods, metals only.
 Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
 // Every material × every model × {derived, fitted}: RMS, mean, max and render-weighted RMS.
 Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
-// F0, F82, g, η, κ per material (SPEC §6 columns; values outside [0, 1] kept and flagged).
+// F0, F82, g, η, κ per material (values outside [0, 1] kept and flagged in out_of_range).
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 // The OpenPBR form: base_color = F0, specular_color = F82 / Schlick(F0) at arccos(1/7).
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
-// A MaterialX document with one generalized_schlick_bsdf (color0, color82) per material.
-std::string presets_materialx(const Context& ctx, const std::vector<MaterialStudy>& studies);
+
+// "schlick, generalized_schlick, ...": every model's name, for option help.
+std::string model_names();
+
+// A parameter set's name, "derived" or "fitted" (InputError otherwise): whether it is the fitted one.
+bool wants_fitted(const std::string& kind);
+// The study of one material, fitting only for `kind` "fitted". `one` holds the material and must
+// outlive the study, which points into it.
+MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one, const std::string& kind);
+// A model's derived or fitted parameters (`kind`) from a study.
+const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m, const std::string& kind);
 
 // One curve's worth of output for `curve`: per angle, ground truth, model and ΔE2000.
 // `parameters` is "derived" or "fitted".

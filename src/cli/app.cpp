@@ -1,8 +1,10 @@
 #include "cli/app.h"
 
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <filesystem>
 #include <optional>
-#include <fmt/format.h>
 
 #include "spectral/errors.h"
 
@@ -15,6 +17,26 @@ void progress(const GlobalOptions& g, const std::string& message) {
 void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms) {
   for (const auto& m : ms)
     for (const auto& w : m.warnings) progress(g, "warning: " + w);
+}
+
+analysis::LoadedMaterial load_one(const GlobalOptions& g, const analysis::Context& ctx, const std::string& material) {
+  auto m = analysis::load_material(ctx, spectral::resolve_material(material, g.settings.paths));
+  print_warnings(g, {m});
+  return m;
+}
+
+std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::string& what) {
+  const bool tty = ::isatty(STDERR_FILENO);
+  return [&g, what, tty](int done, int total) {
+    if (g.quiet || (!tty && done != total)) return;
+    fmt::print(stderr, "{}{}{}/{} materials{}", tty ? "\r" : "", what, done, total, done == total ? "\n" : "");
+  };
+}
+
+int write_output(const GlobalOptions& g, const report::Output& out) {
+  report::write_files_atomic(out.files);
+  for (const auto& m : out.messages) progress(g, m);
+  return 0;
 }
 
 analysis::Context make_context(const GlobalOptions& g) {

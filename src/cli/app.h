@@ -7,6 +7,7 @@
 
 #include "analysis/context.h"
 #include "analysis/media_tables.h"
+#include "report/writer.h"
 
 namespace fl::cli {
 
@@ -37,5 +38,12 @@ void progress(const GlobalOptions& g, const std::string& message);
 // The context for the run, with material warnings printed once.
 analysis::Context make_context(const GlobalOptions& g);
 void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms);
+// MATERIAL (a catalog name, database page or file) loaded, its warnings printed.
+analysis::LoadedMaterial load_one(const GlobalOptions& g, const analysis::Context& ctx, const std::string& material);
+// Study progress "<what>done/total materials": a live counter on a terminal, one line when stderr
+// is a log, nothing with --quiet.
+std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::string& what);
+// Writes out.files (all or nothing), then prints out.messages; returns exit status 0.
+int write_output(const GlobalOptions& g, const report::Output& out);
 
 }  // namespace fl::cli

@@ -1,24 +1,18 @@
 #include <fmt/format.h>
 
-#include <chrono>
-#include <filesystem>
-
+#include "analysis/table_registry.h"
 #include "analysis/tables.h"
 #include "cli/app.h"
-#include "cli/table_registry.h"
-#include "fresnel/model_set.h"
+#include "report/materialx.h"
+#include "report/reproduce.h"
 #include "report/writer.h"
 #include "spectral/errors.h"
 
 namespace fl::cli {
 
-void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_lut.cpp
+void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected);     // cli/cmd_lut.cpp
 void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_plot.cpp
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_plot.cpp
-// The figures reproduce writes (relative path, bytes) and their Markdown gallery (cli/cmd_plot.cpp).
-std::vector<std::pair<std::string, std::string>> reproduce_figures(const GlobalOptions& g, const analysis::Context& ctx,
-                                                                   const std::vector<analysis::MaterialStudy>& studies,
-                                                                   std::string& gallery_md);
 void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_speed.cpp
 void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_plan.cpp
 
@@ -30,14 +24,8 @@ void add_materials(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, format] {
     selected = [&g, format] {
-      const auto fmt_out = report::format_from_name(*format);
-      analysis::Table t;
-      t.name = "materials";
-      t.title = "Material catalog";
-      t.columns = {{"key"}, {"material"}, {"class"}, {"source"}, {"reference"}};
-      for (const auto& m : spectral::read_catalog(g.settings.paths))
-        t.rows.push_back({m.key, m.name, std::string(spectral::to_string(m.material_class)), m.source, m.reference});
-      fmt::print("{}", report::render(t, fmt_out));
+      const auto f = report::format_from_name(*format);
+      fmt::print("{}", report::render(analysis::catalog_table(g.settings.paths), f));
       return 0;
     };
   });
@@ -49,18 +37,15 @@ void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto model = std::make_shared<std::string>("schlick");
   auto format = std::make_shared<std::string>("csv");
   auto params = std::make_shared<std::string>("derived");
-  std::string models;
-  for (const auto& m : fresnel::model_specs()) models += (models.empty() ? "" : ", ") + std::string(m.name);
   sub->add_option("MATERIAL", *material, "catalog name, database page (main/Au/nk/Johnson) or file")->required();
-  sub->add_option("--model", *model, "Fresnel model: " + models)->capture_default_str();
+  sub->add_option("--model", *model, "Fresnel model: " + analysis::model_names())->capture_default_str();
   sub->add_option("--params", *params, "derived (from the spectral procedure) or fitted (Ceres)")->capture_default_str();
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, material, model, format, params] {
     selected = [&g, material, model, format, params] {
       const auto f = report::format_from_name(*format);
       const auto ctx = make_context(g);
-      const auto m = analysis::load_material(ctx, spectral::resolve_material(*material, g.settings.paths));
-      print_warnings(g, {m});
+      const auto m = load_one(g, ctx, *material);
       fmt::print("{}", report::render(analysis::curve_table(ctx, m, *model, *params), f));
       return 0;
     };
@@ -69,7 +54,7 @@ void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
 
 void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
   std::string names;
-  for (const auto& t : table_specs()) names += (names.empty() ? "" : " | ") + std::string(t.name);
+  for (const auto& t : analysis::table_specs()) names += (names.empty() ? "" : " | ") + std::string(t.name);
   auto* sub = app.add_subcommand("table", "one report table to stdout: " + names);
   auto name = std::make_shared<std::string>();
   auto format = std::make_shared<std::string>("csv");
@@ -80,12 +65,12 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
       ->capture_default_str();
   sub->callback([&g, &selected, name, format] {
     selected = [&g, name, format] {
-      const auto& spec = find_table(*name);
+      const auto& spec = analysis::find_table(*name);
       const auto f = report::format_from_name(*format);
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      TableInputs in(ctx, ms, g);
+      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       fmt::print("{}", report::render(spec.build(in), f));
       return 0;
     };
@@ -104,9 +89,9 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      TableInputs in(ctx, ms, g);
+      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       if (*format == "mtlx") {
-        fmt::print("{}", analysis::presets_materialx(ctx, in.studies()));
+        fmt::print("{}", report::presets_materialx(ctx, in.studies()));
         return 0;
       }
       const auto t = *openpbr ? analysis::openpbr_table(ctx, in.studies()) : analysis::presets_table(ctx, in.studies());
@@ -127,36 +112,8 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      // Everything is computed before anything is written, so a failure leaves no partial set.
-      std::vector<std::pair<std::string, std::string>> files;
-      std::string index = "# Fresnel Lab reports\n\nGenerated by `fresnel-lab reproduce`. Every table is a CSV "
-                          "(machine-readable, SPEC §6 columns) and a Markdown file.\n\n| table | what it shows | files |\n|---|---|---|\n";
-      TableInputs in(ctx, ms, g);
-      for (const auto& spec : table_specs()) {
-        if (!spec.in_reproduce) continue;
-        const auto t0 = std::chrono::steady_clock::now();
-        const auto t = spec.build(in);
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        progress(g, fmt::format("reproduce: {} ({} rows, {:.2f} s)", spec.name, t.rows.size(), s));
-        files.emplace_back(std::string(spec.name) + ".csv", report::to_csv(t));
-        files.emplace_back(std::string(spec.name) + ".md", report::to_markdown(t));
-        index += fmt::format("| {} | {} | [{}.md]({}.md), [{}.csv]({}.csv) |\n", spec.name, spec.summary, spec.name,
-                             spec.name, spec.name, spec.name);
-      }
-      files.emplace_back("presets.json", report::to_json(analysis::presets_table(ctx, in.studies())));
-      files.emplace_back("presets.mtlx", analysis::presets_materialx(ctx, in.studies()));
-      index += "| presets (JSON, MaterialX) | the presets as JSON, and a MaterialX document with one "
-               "generalized_schlick_bsdf per material | [presets.json](presets.json), [presets.mtlx](presets.mtlx) |\n";
-      if (!*no_figures) {  // issue 7: DIR/figures/ and the gallery DIR/figures.md
-        std::string gallery;
-        for (auto& f : reproduce_figures(g, ctx, in.studies(), gallery)) files.push_back(std::move(f));
-        files.emplace_back("figures.md", gallery);
-        index += "| figures | colour strips and reflectance / ΔE2000 curves per material (PNG) | [figures.md](figures.md) |\n";
-      }
-      const auto& st = g.settings;
-      index += fmt::format("\nSettings: space {}, illuminant {}, {} adaptation, {} angles, {:g} nm steps.\n", st.space,
-                           st.illuminant, st.adaptation, st.angles, st.step_nm);
-      files.emplace_back("README.md", index);
+      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
+      auto files = report::reproduce_files(in, !*no_figures, [&g](const std::string& line) { progress(g, line); });
       for (auto& f : files) f.first = *out + "/" + f.first;
       report::write_files_atomic(files);
       progress(g, fmt::format("reproduce: wrote {} files to {}", files.size(), *out));

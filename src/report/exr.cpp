@@ -1,7 +1,6 @@
 #include "report/exr.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFloatAttribute.h>
@@ -11,33 +10,41 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <cstring>
 
+#include "report/writer.h"
 #include "spectral/errors.h"
 
 namespace fl::report {
 
-void write_exr_atomic(const std::string& path, const ExrImage& image) {
-  namespace fs = std::filesystem;
+namespace {
+
+// An in-memory output stream; OpenEXR seeks back to fill in the line offset table.
+class MemoryStream : public Imf::OStream {
+ public:
+  MemoryStream() : Imf::OStream("memory") {}
+  void write(const char c[], int n) override {
+    if (position_ + n > bytes.size()) bytes.resize(position_ + n);
+    std::memcpy(bytes.data() + position_, c, static_cast<size_t>(n));
+    position_ += static_cast<size_t>(n);
+  }
+  uint64_t tellp() override { return position_; }
+  void seekp(uint64_t position) override { position_ = static_cast<size_t>(position); }
+  std::string bytes;
+
+ private:
+  size_t position_ = 0;
+};
+
+}  // namespace
+
+std::string encode_exr(const ExrImage& image) {
   const size_t nc = image.channels.size();
   if (image.width <= 0 || image.height <= 0 || nc == 0 ||
       image.pixels.size() != static_cast<size_t>(image.width) * image.height * nc)
-    throw std::runtime_error(fmt::format("{}: inconsistent image ({}x{}, {} channels, {} values)", path, image.width,
+    throw std::runtime_error(fmt::format("inconsistent EXR image ({}x{}, {} channels, {} values)", image.width,
                                          image.height, nc, image.pixels.size()));
-  const fs::path p(path);
-  std::error_code ec;
-  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
-  if (fs::is_directory(p, ec)) throw InputError(path, 0, "is a directory, cannot write a file there");
-  {
-    std::ofstream probe(path + ".probe", std::ios::binary);
-    if (!probe) throw InputError(path, 0, "cannot write (folder missing or not writable)");
-  }
-  std::remove((path + ".probe").c_str());
-
-  // The temporary name keeps the .exr extension so that nothing mistakes it for another format.
-  const std::string tmp = fmt::format("{}.tmp.{}.exr", path, static_cast<long>(::getpid()));
+  MemoryStream stream;
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
@@ -52,19 +59,16 @@ void write_exr_atomic(const std::string& path, const ExrImage& image) {
       char* base = reinterpret_cast<char*>(const_cast<float*>(image.pixels.data() + c));
       fb.insert(image.channels[c], Imf::Slice(Imf::FLOAT, base, x_stride, y_stride));
     }
-    Imf::OutputFile out(tmp.c_str(), header);
+    Imf::OutputFile out(stream, header);
     out.setFrameBuffer(fb);
     out.writePixels(image.height);
   } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(fmt::format("{}: EXR write failed: {}", path, e.what()));
+    throw std::runtime_error(fmt::format("EXR encoding failed: {}", e.what()));
   }
-  fs::rename(tmp, p, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(fmt::format("{}: cannot move the finished file into place: {}", path, ec.message()));
-  }
+  return std::move(stream.bytes);
 }
+
+void write_exr_atomic(const std::string& path, const ExrImage& image) { write_file_atomic(path, encode_exr(image)); }
 
 ExrImage read_exr(const std::string& path) {
   try {

@@ -16,9 +16,11 @@ struct ExrImage {
   std::vector<std::pair<std::string, float>> float_attributes;
 };
 
-// Writes ZIP-compressed float channels with the attributes in the header, to a temporary file
-// beside `path` that is renamed into place when complete. Throws InputError when the folder
-// cannot be written.
+// The EXR file (ZIP-compressed float channels, the attributes in the header) as bytes, for
+// write_files_atomic.
+std::string encode_exr(const ExrImage& image);
+
+// encode_exr, then written with write_file_atomic (report/writer.h).
 void write_exr_atomic(const std::string& path, const ExrImage& image);
 
 // Reads every channel of a file written by write_exr_atomic (float pixels and the string and

@@ -2,12 +2,16 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <map>
+#include <stdexcept>
 
+#include "report/json.h"
 #include "spectral/errors.h"
 
 namespace fl::report {
@@ -53,22 +57,6 @@ std::string csv_quote(const std::string& s) {
 }
 
 }  // namespace
-
-std::string json_escape(const std::string& s) {
-  std::string out;
-  for (unsigned char ch : s) {
-    switch (ch) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (ch < 0x20) out += fmt::format("\\u{:04x}", ch);
-        else out += static_cast<char>(ch);
-    }
-  }
-  return out;
-}
 
 std::string to_csv(const analysis::Table& t) {
   std::string out;
@@ -119,23 +107,22 @@ std::string to_markdown(const analysis::Table& t, int level) {
 }
 
 std::string to_json(const analysis::Table& t) {
-  std::string out = "{\n  \"name\": \"" + json_escape(t.name) + "\",\n  \"title\": \"" + json_escape(t.title) +
-                    "\",\n  \"rows\": [";
-  for (size_t r = 0; r < t.rows.size(); ++r) {
-    out += r ? ",\n    {" : "\n    {";
-    for (size_t c = 0; c < t.rows[r].size(); ++c) {
-      out += (c ? ", \"" : "\"") + json_escape(t.columns[c].name) + "\": ";
-      const auto& cell = t.rows[r][c];
-      if (const auto* s = std::get_if<std::string>(&cell)) out += "\"" + json_escape(*s) + "\"";
-      else out += cell_text(cell, t.columns[c].precision, "null");
-    }
-    out += "}";
+  std::map<std::string, int> decimals;
+  for (const auto& c : t.columns)
+    if (!decimals.emplace(c.name, c.precision).second)
+      throw std::logic_error(fmt::format("table {}: column '{}' appears twice", t.name, c.name));
+  Json rows = Json::array();
+  for (const auto& row : t.rows) {
+    Json r = Json::object();
+    for (size_t c = 0; c < row.size(); ++c)
+      std::visit([&](const auto& v) { r[t.columns[c].name] = v; }, row[c]);
+    rows.push_back(std::move(r));
   }
-  out += t.rows.empty() ? "],\n" : "\n  ],\n";
-  out += "  \"notes\": [";
-  for (size_t i = 0; i < t.notes.size(); ++i) out += (i ? ", \"" : "\"") + json_escape(t.notes[i]) + "\"";
-  out += "]\n}\n";
-  return out;
+  const Json doc = {{"name", t.name}, {"title", t.title}, {"rows", std::move(rows)}, {"notes", t.notes}};
+  return write_json(doc, [&](const std::string& key) {
+    const auto it = decimals.find(key);
+    return it == decimals.end() ? 0 : it->second;
+  });
 }
 
 std::string render(const analysis::Table& t, Format f) {
@@ -169,7 +156,7 @@ std::string write_temporary(const std::string& path, const std::string& content)
 
 }  // namespace
 
-void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files) {
+void write_files_atomic(const Files& files) {
   std::vector<std::string> temps;
   try {
     for (const auto& [path, content] : files) temps.push_back(write_temporary(path, content));
@@ -188,5 +175,28 @@ void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& 
 }
 
 void write_file_atomic(const std::string& path, const std::string& content) { write_files_atomic({{path, content}}); }
+
+std::string file_list(const Files& files) {
+  std::string out;
+  for (size_t i = 0; i < files.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == files.size() ? " and " : ", ") + files[i].first;
+  return out;
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return ext;
+}
+
+std::string output_extension(const std::string& path, std::initializer_list<const char*> allowed) {
+  const std::string ext = lower_extension(path);
+  std::string list;
+  for (const char* a : allowed) {
+    if (ext == a) return ext;
+    list += (list.empty() ? "" : ", ") + std::string(a);
+  }
+  throw InputError(path, 0, fmt::format("unknown output type '{}' (expected {})", ext.empty() ? "(none)" : ext, list));
+}
 
 }  // namespace fl::report

@@ -1,0 +1,58 @@
+#include "analysis/table_registry.h"
+
+#include <fmt/format.h>
+
+#include "analysis/lut.h"
+#include "analysis/speed.h"
+#include "analysis/tables.h"
+#include "spectral/errors.h"
+
+namespace fl::analysis {
+
+const std::vector<MaterialStudy>& TableInputs::studies() {
+  if (!studies_) studies_ = study_materials(ctx, materials, StudyOptions{}, study_progress_);
+  return *studies_;
+}
+
+const std::vector<TableSpec>& table_specs() {
+  static const std::vector<TableSpec> specs{
+      {"schlick", "Schlick (spectral F0) against spectral ground truth, every catalog material",
+       [](TableInputs& in) { return schlick_table(in.ctx, in.materials); }},
+      {"methods", "the talk's ways to derive RGB parameters (point sampling, reflectance processing, fitting), metals",
+       [](TableInputs& in) { return methods_table(in.ctx, in.studies()); }},
+      {"models", "every Fresnel model with derived and fitted parameters, every catalog material",
+       [](TableInputs& in) { return models_table(in.ctx, in.studies()); }},
+      {"blend", "parameter blending of Gulbrandsen (F0, g) against blending its results, every pair of metals",
+       [](TableInputs& in) { return blend_table(in.ctx, in.studies(), in.blend); }},
+      {"blend_models", "parameter blending for every model",
+       [](TableInputs& in) { return blend_models_table(in.ctx, in.studies(), in.blend); }},
+      {"gamut", "gamut conversion of Gulbrandsen parameters against converting results (Rec.709, AP0)",
+       [](TableInputs& in) { return gamut_table(in.ctx, in.studies()); }},
+      {"gamut_models", "gamut conversion for every model",
+       [](TableInputs& in) { return gamut_models_table(in.ctx, in.studies()); }},
+      {"media", "external media: exact against Schlick with adjusted F0, every material in 7 media",
+       [](TableInputs& in) { return media_table(in.ctx, in.studies()); }},
+      {"internal", "internal reflection of dielectrics: exact against Schlick with the transmission angle",
+       [](TableInputs& in) { return internal_table(in.ctx, in.studies()); }},
+      {"presets", "F0, F82, g, eta, kappa per material in the working space",
+       [](TableInputs& in) { return presets_table(in.ctx, in.studies()); }},
+      {"presets_openpbr", "OpenPBR F82-tint form: base_color and specular_color per material",
+       [](TableInputs& in) { return openpbr_table(in.ctx, in.studies()); }},
+      {"lut-accuracy", "pre-integrated Schlick and F82 (LTC moments) against brute-force spectral integration, metals",
+       [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.materials); }},
+      {"speed", "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, Pareto front",
+       [](TableInputs& in) { return speed_table(in.ctx, in.studies(), load_model_costs()); }},
+  };
+  return specs;
+}
+
+const TableSpec& find_table(const std::string& name) {
+  std::string known;
+  for (const auto& t : table_specs()) {
+    if (name == t.name) return t;
+    known += (known.empty() ? "" : ", ") + std::string(t.name);
+  }
+  throw InputError(fmt::format("unknown table '{}' (expected one of: {})", name, known));
+}
+
+}  // namespace fl::analysis

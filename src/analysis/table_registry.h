@@ -1,0 +1,42 @@
+#pragma once
+// The tables `table NAME` and `reproduce` know, in report order.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/media_tables.h"
+#include "analysis/study.h"
+#include "analysis/table.h"
+
+namespace fl::analysis {
+
+// What a table builder gets: the context, the loaded catalog, the blend options, and the
+// per-material study (derivations and every fit), computed on first use and shared by all tables
+// of a run. `study_progress` is called with (done, total) while the studies run.
+class TableInputs {
+ public:
+  TableInputs(const Context& ctx, const std::vector<LoadedMaterial>& materials, const BlendOptions& blend = {},
+              std::function<void(int, int)> study_progress = {})
+      : ctx(ctx), materials(materials), blend(blend), study_progress_(std::move(study_progress)) {}
+  const Context& ctx;
+  const std::vector<LoadedMaterial>& materials;
+  const BlendOptions blend;
+  const std::vector<MaterialStudy>& studies();
+
+ private:
+  std::function<void(int, int)> study_progress_;
+  std::optional<std::vector<MaterialStudy>> studies_;
+};
+
+struct TableSpec {
+  const char* name;
+  const char* summary;
+  Table (*build)(TableInputs& in);
+  bool in_reproduce = true;  // `reproduce` writes it (keep reproduce fast: slow tables opt out)
+};
+
+const std::vector<TableSpec>& table_specs();
+const TableSpec& find_table(const std::string& name);  // InputError if unknown
+
+}  // namespace fl::analysis

@@ -1,0 +1,238 @@
+#include "report/lut_files.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "report/exr.h"
+#include "spectral/errors.h"
+
+namespace fl::report {
+namespace {
+
+void validate(const LutRequest& r) {
+  if (r.size < 2 || r.size > 4096) throw InputError(fmt::format("--size {} out of range (2 to 4096)", r.size));
+  if (r.samples < 1) throw InputError(fmt::format("--samples {} must be positive", r.samples));
+  if (r.threads < 0) throw InputError(fmt::format("--threads {} must be 0 (all) or positive", r.threads));
+}
+
+analysis::LutOptions lut_options(const LutRequest& r, const analysis::LutProgress& progress) {
+  return {r.samples, r.threads, progress};
+}
+
+analysis::Column col(const char* name) { return {name, 8}; }
+
+// Texture-axis attributes shared by every EXR written here.
+struct Axes {
+  std::string x_axis;
+  double x_min, x_max;
+  std::string y_axis;
+  double y_min, y_max;
+};
+constexpr const char* kRoughnessAxis = "perceptual_roughness";
+
+ExrImage texture(const std::string& table, int size, std::vector<std::string> channels, const Axes& a,
+                 const std::string& grid, const std::string& channel_text) {
+  ExrImage img;
+  img.width = img.height = size;
+  img.channels = std::move(channels);
+  img.string_attributes = {{"fresnelLab:table", table},
+                           {"fresnelLab:xAxis", a.x_axis},
+                           {"fresnelLab:yAxis", a.y_axis},
+                           {"fresnelLab:grid", grid},
+                           {"fresnelLab:channels", channel_text},
+                           {"fresnelLab:rowOrder", "row y = 0 is the first y-axis value"}};
+  img.float_attributes = {{"fresnelLab:xMin", static_cast<float>(a.x_min)},
+                          {"fresnelLab:xMax", static_cast<float>(a.x_max)},
+                          {"fresnelLab:yMin", static_cast<float>(a.y_min)},
+                          {"fresnelLab:yMax", static_cast<float>(a.y_max)}};
+  return img;
+}
+
+// The LTC texture layout (Heitz & Hill's ltc_code packTab): x = roughness (j), y = √(1 − n·v) (i).
+const Axes kLtcAxes{kRoughnessAxis, 0.0, 1.0, "sqrt(1 - nov)", 0.0, 1.0};
+
+Output one_file(const std::string& what, const std::string& path, std::string bytes) {
+  Output o;
+  o.files.emplace_back(path, std::move(bytes));
+  o.messages.push_back(fmt::format("{}: wrote {}", what, path));
+  return o;
+}
+
+// ----- dfg
+
+std::string dfg_csv(const analysis::DfgTable& t) {
+  const auto& g = t.grid;
+  analysis::Table tab;
+  tab.name = "dfg";
+  tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha"), col("dfg1"), col("dfg2")};
+  for (int j = 0; j < g.size; ++j)
+    for (int i = 0; i < g.size; ++i) {
+      const auto& c = t.cells[g.index(i, j)];
+      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], c.dfg1, c.dfg2});
+    }
+  return to_csv(tab);
+}
+
+ExrImage dfg_texture(const analysis::DfgTable& t) {
+  const auto& g = t.grid;
+  const Axes axes{"nov", g.nov.front(), g.nov.back(), kRoughnessAxis, g.perceptual_roughness.front(),
+                  g.perceptual_roughness.back()};
+  auto img = texture("dfg", g.size, {"R", "G"}, axes, g.convention,
+                     "R = dfg1 = integral (1 - Fc) rho cos, G = dfg2 = integral Fc rho cos, Fc = (1 - <v,h>)^5");
+  for (int j = 0; j < g.size; ++j)
+    for (int i = 0; i < g.size; ++i) {
+      const auto& c = t.cells[g.index(i, j)];
+      img.pixels.push_back(static_cast<float>(c.dfg1));
+      img.pixels.push_back(static_cast<float>(c.dfg2));
+    }
+  return img;
+}
+
+// ----- ltc-moments
+
+std::string moments_csv(const analysis::MomentsTable& t) {
+  const auto& g = t.grid;
+  analysis::Table tab;
+  tab.name = "ltc-moments";
+  tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha"), col("n_d"), col("f_d"), col("l_d")};
+  for (int j = 0; j < g.size; ++j)
+    for (int i = 0; i < g.size; ++i) {
+      const auto& c = t.cells[g.index(i, j)];
+      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], c.n_d, c.f_d, c.l_d});
+    }
+  return to_csv(tab);
+}
+
+ExrImage moments_texture(const analysis::MomentsTable& t) {
+  const auto& g = t.grid;
+  auto img = texture("ltc-moments", g.size, {"R", "G", "B"}, kLtcAxes, g.convention,
+                     "R = n_D = integral rho cos, G = f_D = integral (1 - <v,h>)^5 rho cos, "
+                     "B = l_D = integral <v,h> (1 - <v,h>)^6 rho cos");
+  for (int i = 0; i < g.size; ++i)
+    for (int j = 0; j < g.size; ++j) {
+      const auto& c = t.cells[g.index(i, j)];
+      img.pixels.insert(img.pixels.end(), {static_cast<float>(c.n_d), static_cast<float>(c.f_d), static_cast<float>(c.l_d)});
+    }
+  return img;
+}
+
+// ----- ltc
+
+// The sphere table shares the texel: its axes are texel x → z, texel y → len.
+double sphere_at(const analysis::LtcTable& t, int i, int j) {
+  return t.sphere_form_factor[static_cast<size_t>(i) * t.grid.size + j];
+}
+
+std::string ltc_csv(const analysis::LtcTable& t) {
+  const auto& g = t.grid;
+  const int n = g.size;
+  analysis::Table tab;
+  tab.name = "ltc";
+  tab.columns = {col("nov"),        col("perceptual_roughness"), col("alpha"),   col("inv_m00"),
+                 col("inv_m20"),    col("inv_m02"),              col("inv_m22"), col("m11"),
+                 col("m22"),        col("m13"),                  col("n_d"),     col("f_d"),
+                 col("l_d"),        col("sphere_z"),             col("sphere_len"), col("sphere_form_factor"),
+                 col("fit_error"),  {"iterations", 0},           {"termination"}};
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int k = g.index(i, j);
+      const auto& c = t.cells[k];
+      const auto& m = t.moments[k];
+      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], c.inv_packed[0], c.inv_packed[1],
+                          c.inv_packed[2], c.inv_packed[3], c.params.m11, c.params.m22, c.params.m13, m.n_d, m.f_d,
+                          m.l_d, 2.0 * j / (n - 1) - 1.0, static_cast<double>(i) / (n - 1), sphere_at(t, i, j),
+                          c.fit_error, static_cast<long long>(c.fit.iterations), c.fit.termination});
+    }
+  return to_csv(tab);
+}
+
+// ltc_1 (the normalized inverse matrix) and ltc_2 (the moments and the sphere form factor).
+std::pair<ExrImage, ExrImage> ltc_textures(const analysis::LtcTable& t) {
+  const auto& g = t.grid;
+  auto tex1 = texture("ltc_1", g.size, {"R", "G", "B", "A"}, kLtcAxes, g.convention,
+                      "inverse LTC matrix M^-1 normalized by M^-1[1][1], row-major indices: R = M^-1[0][0], "
+                      "G = M^-1[2][0], B = M^-1[0][2], A = M^-1[2][2]; shader: mat3(vec3(R, 0, G), vec3(0, 1, 0), "
+                      "vec3(B, 0, A))");
+  auto tex2 = texture("ltc_2", g.size, {"R", "G", "B", "A"}, kLtcAxes, g.convention,
+                      "R = n_D, G = f_D, B = l_D (the F82 moment), A = horizon-clipped sphere form factor "
+                      "(its own axes: x → z = 2x - 1, y → length of the vector form factor)");
+  for (int i = 0; i < g.size; ++i)
+    for (int j = 0; j < g.size; ++j) {
+      const int k = g.index(i, j);
+      for (double v : t.cells[k].inv_packed) tex1.pixels.push_back(static_cast<float>(v));
+      const auto& m = t.moments[k];
+      tex2.pixels.insert(tex2.pixels.end(), {static_cast<float>(m.n_d), static_cast<float>(m.f_d),
+                                             static_cast<float>(m.l_d), static_cast<float>(sphere_at(t, i, j))});
+    }
+  return {std::move(tex1), std::move(tex2)};
+}
+
+std::string ltc_fit_message(const analysis::LtcTable& t) {
+  double sum = 0, max = 0;
+  for (const auto& c : t.cells) {
+    sum += c.fit_error;
+    max = std::max(max, c.fit_error);
+  }
+  return fmt::format("lut ltc: fit error (relative L2) mean {:.4f}, max {:.4f} over {} cells",
+                     sum / static_cast<double>(t.cells.size()), max, t.cells.size());
+}
+
+}  // namespace
+
+std::string dfg_header(const analysis::DfgTable& t) {
+  const auto& g = t.grid;
+  std::string s = fmt::format(
+      "// Generated by `fresnel-lab lut dfg --size {}`: Filament's DFG table for the GGX lobe with\n"
+      "// height-correlated Smith visibility. Per texel (i, j), two floats: dfg1 = integral of (1 - Fc) rho cos,\n"
+      "// dfg2 = integral of Fc rho cos, Fc = (1 - <v,h>)^5. Texel index (j * size + i) * 2.\n"
+      "// Grid: {}.\n"
+      "#pragma once\n\nnamespace fresnel_lab {{\n\nconstexpr int kDfgLutSize = {};\n"
+      "constexpr float kDfgLut[{} * {} * 2] = {{\n",
+      g.size, g.convention, g.size, g.size, g.size);
+  for (int j = 0; j < g.size; ++j) {
+    s += "   ";
+    for (int i = 0; i < g.size; ++i) {
+      const auto& c = t.cells[g.index(i, j)];
+      s += fmt::format(" {:.9e}f, {:.9e}f,", static_cast<float>(c.dfg1), static_cast<float>(c.dfg2));
+    }
+    s += "\n";
+  }
+  s += "};\n\n}  // namespace fresnel_lab\n";
+  return s;
+}
+
+Output dfg_lut(const LutRequest& r, const analysis::LutProgress& progress) {
+  validate(r);
+  const std::string ext = output_extension(r.out, {".exr", ".csv", ".h"});
+  const auto t = analysis::dfg_table(analysis::dfg_grid(r.size), lut_options(r, progress));
+  const std::string bytes = ext == ".csv" ? dfg_csv(t) : ext == ".h" ? dfg_header(t) : encode_exr(dfg_texture(t));
+  return one_file("lut dfg", r.out, bytes);
+}
+
+Output moments_lut(const LutRequest& r, const analysis::LutProgress& progress) {
+  validate(r);
+  const std::string ext = output_extension(r.out, {".exr", ".csv"});
+  const auto t = analysis::moments_table(analysis::ltc_grid(r.size), lut_options(r, progress));
+  return one_file("lut ltc-moments", r.out, ext == ".csv" ? moments_csv(t) : encode_exr(moments_texture(t)));
+}
+
+Output ltc_lut(const LutRequest& r, const analysis::LutProgress& progress) {
+  validate(r);
+  const std::string ext = output_extension(r.out, {".exr", ".csv"});
+  const auto t = analysis::fit_ltc_table(r.size, lut_options(r, progress));
+  Output o;
+  if (ext == ".csv") {
+    o = one_file("lut ltc", r.out, ltc_csv(t));
+  } else {
+    const auto stem = (std::filesystem::path(r.out).parent_path() / std::filesystem::path(r.out).stem()).string();
+    const auto [tex1, tex2] = ltc_textures(t);
+    o.files = {{stem + "_1.exr", encode_exr(tex1)}, {stem + "_2.exr", encode_exr(tex2)}, {stem + ".csv", ltc_csv(t)}};
+    o.messages.push_back("lut ltc: wrote " + file_list(o.files));
+  }
+  o.messages.push_back(ltc_fit_message(t));
+  return o;
+}
+
+}  // namespace fl::report

@@ -1,0 +1,41 @@
+#pragma once
+// The picture commands' outputs: `plot strip | curves` (one figure), `render` (a sphere as EXR and
+// PNGs) and the figures `reproduce` writes.
+#include <string>
+#include <vector>
+
+#include "analysis/render.h"
+#include "analysis/study.h"
+#include "report/writer.h"
+
+namespace fl::report {
+
+// "all" or a comma-separated list of model names (InputError for an unknown or empty name).
+std::vector<fresnel::Model> parse_models(const std::string& list);
+
+struct PlotRequest {
+  std::string figure;  // strip | curves
+  std::string material, models, params = "derived", out;
+};
+// InputError for an output type (.png; .svg also for curves), parameter set or model list that
+// does not exist, checked before any work.
+void check_plot_request(const PlotRequest& request);
+// The figure of `m` with the request's models and parameter set, as request.out.
+Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m, const PlotRequest& request);
+
+struct RenderRequest {
+  std::string material, model = "schlick", params = "derived", out;
+  analysis::RenderSettings settings;
+};
+// InputError for an output that is not .exr, an unknown model or parameter set, or a roughness,
+// size, sample or thread count out of range, checked before any work.
+void check_render_request(const RenderRequest& request);
+// FILE.exr (linear, premultiplied RGBA, the scene in its attributes) and FILE.png; with a model
+// also FILE.truth.png and the ΔE2000 heat map FILE.de2000.png.
+Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m, const RenderRequest& request);
+
+// figures/strip-KEY.png and figures/curves-KEY.png per material (derived parameters), rendered in
+// parallel, and their Markdown gallery as figures.md.
+Files reproduce_figures(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies);
+
+}  // namespace fl::report

@@ -1,0 +1,72 @@
+#include "spectral/scene_file.h"
+
+#include <fmt/format.h>
+
+#include "spectral/errors.h"
+#include "spectral/text_file.h"
+#include "spectral/yaml_file.h"
+
+namespace fl::spectral {
+namespace {
+
+int line_of(const YAML::Node& n) { return n.Mark().line + 1; }
+
+std::string scalar_text(const std::string& path, const YAML::Node& n, const std::string& what) {
+  if (!n.IsScalar()) throw InputError(path, line_of(n), fmt::format("{} must be a string", what));
+  return n.Scalar();
+}
+
+}  // namespace
+
+SceneFile read_scene_file(const std::string& path) {
+  SceneFile s;
+  s.path = path;
+  const YAML::Node root = read_yaml_file(path);  // missing, directory, empty, binary, invalid YAML
+  if (root.IsNull()) throw InputError(path, 1, "scene is empty (expected a map with 'materials')");
+  if (!root.IsMap()) throw InputError(path, line_of(root), "a scene must be a YAML map with 'materials'");
+  bool have_materials = false;
+  for (const auto& kv : root) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+    const YAML::Node& v = kv.second;
+    const int line = line_of(kv.first);
+    if (key == "materials") {
+      have_materials = true;
+      if (!v.IsSequence() || v.size() == 0)
+        throw InputError(path, line, "'materials' must be a non-empty list of material names, database pages or files");
+      for (const auto& m : v) {
+        const std::string spec = scalar_text(path, m, "each material");
+        if (spec.empty()) throw InputError(path, line_of(m), "empty material name");
+        s.materials.push_back({spec, line_of(m)});
+      }
+    } else if (key == "max_de00") {
+      double x = 0;
+      if (!v.IsScalar() || !parse_finite(v.Scalar(), x) || !(x > 0.0))
+        throw InputError(path, line, fmt::format("'max_de00' must be a positive number (a ΔE2000 budget), not '{}'",
+                                                 v.IsScalar() ? v.Scalar() : std::string("a list or map")));
+      s.max_de00 = x;
+    } else if (key == "space") {
+      s.space = scalar_text(path, v, "'space'");
+      if (s.space.empty()) throw InputError(path, line, "'space' is empty");
+      s.space_line = line;
+    } else if (key == "lighting") {
+      std::vector<YAML::Node> items;
+      if (v.IsScalar()) items.push_back(v);
+      else if (v.IsSequence())
+        for (const auto& x : v) items.push_back(x);
+      if (items.empty()) throw InputError(path, line, "'lighting' must list any of punctual, ibl, area");
+      for (const auto& x : items) {
+        const std::string l = scalar_text(path, x, "each lighting");
+        if (l == "punctual") s.punctual = true;
+        else if (l == "ibl") s.ibl = true;
+        else if (l == "area") s.area = true;
+        else throw InputError(path, line_of(x), fmt::format("unknown lighting '{}' (expected punctual, ibl or area)", l));
+      }
+    } else {
+      throw InputError(path, line, fmt::format("unknown key '{}' (expected materials, max_de00, space, lighting)", key));
+    }
+  }
+  if (!have_materials) throw InputError(path, 1, "missing 'materials' (a list of material names, database pages or files)");
+  return s;
+}
+
+}  // namespace fl::spectral
