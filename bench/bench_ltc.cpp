@@ -12,7 +12,7 @@
 #include <map>
 #include <vector>
 
-#include "analysis/lut.h"
+#include "analysis/lut/lut.h"
 #include "fit/ltc_fit.h"
 
 namespace {

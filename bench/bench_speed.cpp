@@ -21,8 +21,8 @@
 #include <thread>
 #include <vector>
 
-#include "analysis/speed.h"
-#include "analysis/table_registry.h"
+#include "analysis/tables/speed.h"
+#include "analysis/tables/table_registry.h"
 #include "color/ciede2000_fast.h"
 #include "color/lab.h"
 #include "fresnel/batch.h"

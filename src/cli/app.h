@@ -5,8 +5,8 @@
 #include <functional>
 #include <string>
 
-#include "analysis/context.h"
-#include "analysis/media_tables.h"
+#include "analysis/pipeline/context.h"
+#include "analysis/tables/media_tables.h"
 #include "report/writer.h"
 
 namespace fl::cli {

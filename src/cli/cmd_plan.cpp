@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "analysis/plan.h"
+#include "analysis/plan/plan.h"
 #include "cli/app.h"
 #include "report/plan_report.h"
 #include "spectral/errors.h"

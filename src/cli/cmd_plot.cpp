@@ -1,7 +1,7 @@
 // `plot strip | curves` and `render`: figures and sphere renders of one material.
 #include <memory>
 
-#include "analysis/tables.h"
+#include "analysis/tables/tables.h"
 #include "cli/app.h"
 #include "report/pictures.h"
 

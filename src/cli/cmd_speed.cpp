@@ -3,8 +3,8 @@
 
 #include <memory>
 
-#include "analysis/speed.h"
-#include "analysis/table_registry.h"
+#include "analysis/tables/speed.h"
+#include "analysis/tables/table_registry.h"
 #include "cli/app.h"
 #include "report/speed_plot.h"
 #include "report/writer.h"

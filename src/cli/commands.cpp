@@ -1,7 +1,7 @@
 #include <fmt/format.h>
 
-#include "analysis/table_registry.h"
-#include "analysis/tables.h"
+#include "analysis/tables/table_registry.h"
+#include "analysis/tables/tables.h"
 #include "cli/app.h"
 #include "report/materialx.h"
 #include "report/reproduce.h"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/figure_data.h"
+#include "analysis/render/figure_data.h"
 #include "report/draw.h"
 
 namespace fl::report {

@@ -3,7 +3,7 @@
 // written as EXR textures, CSV tables and C++ headers.
 #include <string>
 
-#include "analysis/lut.h"
+#include "analysis/lut/lut.h"
 #include "report/writer.h"
 
 namespace fl::report {

@@ -4,7 +4,7 @@
 
 #include <cctype>
 
-#include "analysis/tables.h"
+#include "analysis/tables/tables.h"
 
 namespace fl::report {
 

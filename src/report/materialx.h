@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/study.h"
+#include "analysis/study/study.h"
 
 namespace fl::report {
 

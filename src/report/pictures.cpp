@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "analysis/tables.h"
-#include "analysis/figure_data.h"
+#include "analysis/tables/tables.h"
+#include "analysis/render/figure_data.h"
 #include "report/draw.h"
 #include "report/figures.h"
 #include "report/png.h"

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/render.h"
-#include "analysis/study.h"
+#include "analysis/render/render.h"
+#include "analysis/study/study.h"
 #include "report/writer.h"
 
 namespace fl::report {

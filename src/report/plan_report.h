@@ -2,7 +2,7 @@
 // `plan`'s output: the chosen model per scene material and the lookup tables, as JSON or Markdown.
 #include <string>
 
-#include "analysis/plan.h"
+#include "analysis/plan/plan.h"
 
 namespace fl::report {
 

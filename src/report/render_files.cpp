@@ -4,9 +4,9 @@
 #include <chrono>
 #include <cmath>
 
-#include "analysis/tables.h"
+#include "analysis/tables/tables.h"
 #include "report/exr.h"
-#include "analysis/figure_data.h"
+#include "analysis/render/figure_data.h"
 #include "report/draw.h"
 #include "report/figures.h"
 #include "report/pictures.h"

@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "analysis/tables.h"
+#include "analysis/tables/tables.h"
 #include "report/materialx.h"
 #include "report/pictures.h"
 

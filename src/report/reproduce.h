@@ -3,7 +3,7 @@
 #include <functional>
 #include <string>
 
-#include "analysis/table_registry.h"
+#include "analysis/tables/table_registry.h"
 #include "report/writer.h"
 
 namespace fl::report {

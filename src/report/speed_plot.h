@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/speed.h"
+#include "analysis/tables/speed.h"
 #include "report/draw.h"
 
 namespace fl::report {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <numeric>
 
-#include "analysis/tables.h"
+#include "analysis/tables/tables.h"
 
 namespace fl::analysis {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/context.h"
+#include "analysis/pipeline/context.h"
 #include "color/rgb_space.h"
 
 namespace fl::analysis {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/lut.h"
+#include "analysis/lut/lut.h"
 #include "brdf/ggx.h"
 #include "fit/ltc_fit.h"
 #include "ggx_reference.h"

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/media_tables.h"
-#include "analysis/tables.h"
+#include "analysis/tables/media_tables.h"
+#include "analysis/tables/tables.h"
 #include "fresnel/models.h"
 #include "spectral/errors.h"
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/plan.h"
-#include "analysis/speed.h"
+#include "analysis/plan/plan.h"
+#include "analysis/tables/speed.h"
 #include "spectral/errors.h"
 #include "test_util.h"
 

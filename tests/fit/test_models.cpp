@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/study.h"
-#include "analysis/tables.h"
+#include "analysis/study/study.h"
+#include "analysis/tables/tables.h"
 #include "fit/fit.h"
 #include "fresnel/derive.h"
 #include "fresnel/model_set.h"

@@ -11,8 +11,8 @@
 #include <set>
 #include <string>
 
-#include "analysis/context.h"
-#include "analysis/study.h"
+#include "analysis/pipeline/context.h"
+#include "analysis/study/study.h"
 #include "fit/fit.h"
 #include "fresnel/batch.h"
 #include "fresnel/derive.h"

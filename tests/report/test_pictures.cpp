@@ -8,8 +8,8 @@
 #include <fstream>
 #include <numbers>
 
-#include "analysis/figure_data.h"
-#include "analysis/render.h"
+#include "analysis/render/figure_data.h"
+#include "analysis/render/render.h"
 #include "report/draw.h"
 #include "report/exr.h"
 #include "report/figures.h"

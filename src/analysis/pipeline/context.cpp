@@ -1,4 +1,4 @@
-#include "analysis/context.h"
+#include "analysis/pipeline/context.h"
 
 #include <algorithm>
 #include <cmath>

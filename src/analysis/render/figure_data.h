@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/context.h"
-#include "analysis/render.h"
+#include "analysis/pipeline/context.h"
+#include "analysis/render/render.h"
 #include "fresnel/model_set.h"
 
 namespace fl::analysis {

@@ -1,4 +1,4 @@
-#include "analysis/speed.h"
+#include "analysis/tables/speed.h"
 
 #include <fmt/format.h>
 

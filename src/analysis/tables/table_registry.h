@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/media_tables.h"
-#include "analysis/study.h"
-#include "analysis/table.h"
+#include "analysis/tables/media_tables.h"
+#include "analysis/study/study.h"
+#include "analysis/tables/table.h"
 
 namespace fl::analysis {
 

@@ -1,10 +1,11 @@
-#include "analysis/table_registry.h"
+#include "analysis/tables/table_registry.h"
 
 #include <fmt/format.h>
 
-#include "analysis/lut.h"
-#include "analysis/speed.h"
-#include "analysis/tables.h"
+#include "analysis/lut/lut.h"
+#include "analysis/tables/lut_accuracy.h"
+#include "analysis/tables/speed.h"
+#include "analysis/tables/tables.h"
 #include "spectral/errors.h"
 
 namespace fl::analysis {

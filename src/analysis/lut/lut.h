@@ -5,13 +5,14 @@
 // Every integral is over the hemisphere of light directions l of the GGX lobe without Fresnel,
 // ρ(v, l)·(n·l) = D(h) V(v, l) (n·l) (brdf/ggx.h), estimated with GGX visible-normal sampling
 // (Heitz 2018) at the points of a Hammersley set (deterministic quasi-Monte Carlo).
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "analysis/context.h"
-#include "analysis/table.h"
+#include "analysis/pipeline/context.h"
 #include "brdf/ggx.h"
 #include "fit/ltc_fit.h"
 
@@ -54,6 +55,25 @@ struct GgxMoments {
   double n_d = 0, f_d = 0, l_d = 0;
   brdf::Vec3 average_dir{0, 0, 1};
 };
+
+// One quasi-Monte Carlo sample of the lobe: l drawn from the visible normals of v, weight G₂/G₁
+// (brdf::ggx_vndf_weight) so that the mean of weight·g(l) estimates ∫ g ρ cos dl.
+struct LobeSample {
+  brdf::Vec3 l;
+  double voh = 0, weight = 0;
+};
+template <class Fn>
+void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
+  const brdf::Vec3 v = brdf::view_from_nov(nov);
+  for (int k = 0; k < samples; ++k) {
+    const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
+    const brdf::Vec3 h = brdf::sample_ggx_vndf(v, alpha, u.u1, u.u2);
+    const brdf::Vec3 l = brdf::reflect(v, h);
+    const double w = brdf::ggx_vndf_weight(v.z, l.z, alpha);
+    if (w <= 0.0) continue;
+    fn(LobeSample{l, std::clamp(brdf::dot(v, h), 0.0, 1.0), w});
+  }
+}
 
 DfgTexel integrate_dfg(double nov, double alpha, int samples = kLutSamples);
 GgxMoments integrate_moments(double nov, double alpha, int samples = kLutSamples);
@@ -111,9 +131,6 @@ using LtcCellFitter = std::function<fit::FitResult(const fit::LtcProblem&, const
 LtcTable fit_ltc_table(int size, const LutOptions& options = {}, const LtcCellFitter& fitter = fit::fit_ltc_ceres,
                        int fit_sample_sqrt = fit::kLtcDefaultSampleSqrt);
 
-// `table lut-accuracy`: per metal, pre-integrated Schlick (R0 n_D + (1 − R0) f_D) and F82
-// (… − a l_D) shading against brute-force integration of the lobe with the spectral Fresnel
-// ground truth, in ΔE2000, over a grid of roughness × view angle.
-Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& materials);
+
 
 }  // namespace fl::analysis

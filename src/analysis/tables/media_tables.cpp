@@ -1,4 +1,4 @@
-#include "analysis/media_tables.h"
+#include "analysis/tables/media_tables.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include <functional>
 #include <vector>
 
-#include "analysis/context.h"
+#include "analysis/pipeline/context.h"
 #include "fit/fit.h"
 #include "fresnel/derive.h"
 

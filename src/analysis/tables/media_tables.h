@@ -1,8 +1,8 @@
 #pragma once
 // The talk's arguments for linear models, made measurable (issue 4): parameter blending, gamut
 // conversion, external media and internal reflection.
-#include "analysis/study.h"
-#include "analysis/table.h"
+#include "analysis/study/study.h"
+#include "analysis/tables/table.h"
 
 namespace fl::analysis {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/study.h"
-#include "analysis/table.h"
+#include "analysis/study/study.h"
+#include "analysis/tables/table.h"
 #include "fresnel/model_set.h"
 
 namespace fl::analysis {

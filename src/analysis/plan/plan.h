@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "analysis/speed.h"
-#include "analysis/study.h"
+#include "analysis/tables/speed.h"
+#include "analysis/study/study.h"
 
 namespace fl::analysis {
 

@@ -1,4 +1,4 @@
-#include "analysis/study.h"
+#include "analysis/study/study.h"
 
 #include "fresnel/registry.h"
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/context.h"
+#include "analysis/pipeline/context.h"
 #include "brdf/ggx.h"
 #include "color/types.h"
 #include "fresnel/model_set.h"

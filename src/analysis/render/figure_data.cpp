@@ -1,4 +1,4 @@
-#include "analysis/figure_data.h"
+#include "analysis/render/figure_data.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,8 +1,8 @@
 #pragma once
 // The report tables, and the helpers of the one-material commands.
-#include "analysis/context.h"
-#include "analysis/study.h"
-#include "analysis/table.h"
+#include "analysis/pipeline/context.h"
+#include "analysis/study/study.h"
+#include "analysis/tables/table.h"
 
 namespace fl::analysis {
 

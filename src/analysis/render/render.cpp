@@ -1,11 +1,11 @@
-#include "analysis/render.h"
+#include "analysis/render/render.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
-#include "analysis/tables.h"
+#include "analysis/tables/tables.h"
 #include "color/lab.h"
 #include "fresnel/ground_truth.h"
 #include "util/parallel.h"
