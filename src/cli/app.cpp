@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
+#include "analysis/pipeline/materials.h"
 #include "spectral/errors.h"
 
 namespace fl::cli {
@@ -19,10 +22,21 @@ void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMa
     for (const auto& w : m.warnings) progress(g, "warning: " + w);
 }
 
-analysis::LoadedMaterial load_one(const GlobalOptions& g, const analysis::Context& ctx, const std::string& material) {
-  auto m = analysis::load_material(ctx, spectral::resolve_material(material, g.settings.paths));
-  print_warnings(g, {m});
-  return m;
+const char* const kMaterialsHelp =
+    "catalog names (gold), database pages (main/Au/nk/Johnson), page globs ('main/*/nk/*', '**') or files "
+    "(refractiveindex.info .yml, CSV/text tables, SOPRA .nk, NAME.eta.spd + NAME.k.spd)";
+
+std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g, const analysis::Context& ctx,
+                                                const std::vector<std::string>& specs) {
+  analysis::LoadPolicy policy;
+  policy.min_coverage = std::max(0.0, g.min_coverage);
+  auto set = analysis::load_materials(ctx, specs, policy);
+  print_warnings(g, set.materials);
+  for (const auto& s : set.skipped) progress(g, fmt::format("skipped {}: {}", s.spec, s.reason));
+  if (!set.skipped.empty())
+    progress(g, fmt::format("skipped {} of {} materials", set.skipped.size(), set.requested));
+  if (set.materials.empty()) throw InputError("no material left to work on (every one was skipped)");
+  return std::move(set.materials);
 }
 
 std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::string& what) {
@@ -30,6 +44,25 @@ std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::
   return [&g, what, tty](int done, int total) {
     if (g.quiet || (!tty && done != total)) return;
     fmt::print(stderr, "{}{}{}/{} materials{}", tty ? "\r" : "", what, done, total, done == total ? "\n" : "");
+  };
+}
+
+std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const std::string& what, double seconds) {
+  const bool tty = ::isatty(STDERR_FILENO);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto last = std::make_shared<std::pair<int, double>>(0, 0.0);  // (tenths reported, seconds at the last line)
+  return [&g, what, tty, t0, last, seconds](int done, int total) {
+    if (g.quiet || total <= 0) return;
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (tty) {
+      fmt::print(stderr, "\r{}{}/{}{}", what, done, total, done == total ? "\n" : "");
+      return;
+    }
+    const int tenth = static_cast<int>(10LL * done / total);
+    if (done != total && tenth <= last->first && t - last->second < seconds) return;
+    last->first = std::max(last->first, tenth);
+    last->second = t;
+    fmt::print(stderr, "{}{}/{} ({:.0f} s)\n", what, done, total, t);
   };
 }
 
@@ -92,6 +125,10 @@ int run(int argc, char** argv) {
   app.add_option("--ocio-config", s.ocio_config, "an OpenColorIO config whose colour-space names --space takes (default $OCIO; empty: built-in spaces)");
   app.add_option("--ocio-xyz", s.ocio_xyz, "the config's CIE XYZ D65 space (default: role cie_xyz_d65_interchange)");
   app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
+  app.add_option("--min-coverage", g.min_coverage,
+                 "refuse (one material) or skip (several) materials whose data covers less than this share of the "
+                 "visible range, weighted by the illuminant x ybar (0-1; default 0, library 0.99)")
+      ->check(CLI::Range(0.0, 1.0));
 
   Runner selected;
   for (const auto& c : commands()) c.add(app, g, selected);

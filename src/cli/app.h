@@ -15,6 +15,7 @@ struct GlobalOptions {
   analysis::Settings settings;
   bool quiet = false;  // no progress or warnings on stderr
   analysis::BlendOptions blend;  // `table blend` options
+  double min_coverage = -1;      // --min-coverage (negative: not given)
 };
 
 using Runner = std::function<int()>;
@@ -38,11 +39,18 @@ void progress(const GlobalOptions& g, const std::string& message);
 // The context for the run, with material warnings printed once.
 analysis::Context make_context(const GlobalOptions& g);
 void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms);
-// MATERIAL (a catalog name, database page or file) loaded, its warnings printed.
-analysis::LoadedMaterial load_one(const GlobalOptions& g, const analysis::Context& ctx, const std::string& material);
+// MATERIALS (catalog names, database pages, page globs, files; none: the catalog) loaded under
+// --min-coverage, their warnings and the skipped ones printed.
+std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g, const analysis::Context& ctx,
+                                                const std::vector<std::string>& specs);
+// The help text of a MATERIALS argument.
+extern const char* const kMaterialsHelp;
 // Study progress "<what>done/total materials": a live counter on a terminal, one line when stderr
 // is a log, nothing with --quiet.
 std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::string& what);
+// Progress for long runs: a live counter on a terminal; when stderr is not a terminal, a line at
+// every tenth of the work (and at least every `seconds`), with the elapsed time.
+std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const std::string& what, double seconds = 30);
 // Writes out.files (all or nothing), then prints out.messages; returns exit status 0.
 int write_output(const GlobalOptions& g, const report::Output& out);
 

@@ -14,17 +14,18 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
   auto r = std::make_shared<report::PlotRequest>();
   r->figure = name;
   r->models = default_models;
-  sub->add_option("MATERIAL", r->material, "catalog name, database page (main/Au/nk/Johnson) or file")->required();
+  sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
   sub->add_option("--models", r->models, "comma-separated models, or all: " + analysis::model_names())
       ->capture_default_str();
   sub->add_option("--params", r->params, "derived (from the spectral procedure) or fitted (Ceres)")
       ->capture_default_str();
-  sub->add_option("--out", r->out, out_help)->required();
+  sub->add_option("--out", r->out, std::string(out_help) + "; with several materials '{name}' in it is replaced by each one's name")
+      ->required();
   sub->callback([&g, &selected, r] {
     selected = [&g, r] {
       report::check_plot_request(*r);
       const auto ctx = make_context(g);
-      return write_output(g, report::plot_output(ctx, load_one(g, ctx, r->material), *r));
+      return write_output(g, report::plot_outputs(ctx, load_many(g, ctx, r->materials), *r));
     };
   });
 }
@@ -48,7 +49,7 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "a GGX sphere under an analytic sky and key light: FILE.exr and FILE.png; with a model also FILE.truth.png "
       "and the ΔE2000 heat map FILE.de2000.png");
   auto r = std::make_shared<report::RenderRequest>();
-  sub->add_option("MATERIAL", r->material, "catalog name, database page (main/Au/nk/Johnson) or file")->required();
+  sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
   sub->add_option("--model", r->model, "truth (spectral ground truth) or a model: " + analysis::model_names())
       ->capture_default_str();
   sub->add_option("--params", r->params, "derived or fitted model parameters")->capture_default_str();
@@ -58,12 +59,15 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
       ->capture_default_str();
   sub->add_option("--samples", r->settings.samples, "samples per strategy per shading point")->capture_default_str();
   sub->add_option("--threads", r->settings.threads, "worker threads (0: all cores)")->capture_default_str();
-  sub->add_option("--out", r->out, "output .exr (PNGs are written beside it)")->required();
+  sub->add_option("--out", r->out,
+                  "output .exr (PNGs are written beside it); with several materials '{name}' in it is replaced by each "
+                  "one's name")
+      ->required();
   sub->callback([&g, &selected, r] {
     selected = [&g, r] {
       report::check_render_request(*r);
       const auto ctx = make_context(g);
-      return write_output(g, report::render_output(ctx, load_one(g, ctx, r->material), *r));
+      return write_output(g, report::render_outputs(ctx, load_many(g, ctx, r->materials), *r));
     };
   });
 }

@@ -17,8 +17,10 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   struct Args {
     std::string format = "csv", costs, plot;
     bool measure = false;
+    std::vector<std::string> materials;
   };
   auto a = std::make_shared<Args>();
+  sub->add_option("MATERIALS", a->materials, std::string(kMaterialsHelp) + "; default: the catalog");
   sub->add_option("--format", a->format, "csv, md or json")->capture_default_str();
   sub->add_option("--costs", a->costs, "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
   sub->add_flag("--measure", a->measure, "time the batched kernels now instead of reading the costs file (not reproducible)");
@@ -29,8 +31,7 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       if (!a->plot.empty()) report::file_type(a->plot);
       const auto costs = a->measure ? analysis::measure_model_costs() : analysis::load_model_costs(a->costs);
       const auto ctx = make_context(g);
-      const auto ms = analysis::load_catalog(ctx);
-      print_warnings(g, ms);
+      const auto ms = load_many(g, ctx, a->materials);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       const auto t = analysis::speed_table(ctx, in.studies(), costs);
       if (!a->plot.empty()) {

@@ -32,21 +32,22 @@ void add_materials(CLI::App& app, GlobalOptions& g, Runner& selected) {
 }
 
 void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand("curve", "per-angle ground truth RGB, model RGB and ΔE2000 (CSV)");
-  auto material = std::make_shared<std::string>();
+  auto* sub = app.add_subcommand("curve", "per-angle ground truth RGB, model RGB and ΔE2000 per material (CSV)");
+  auto materials = std::make_shared<std::vector<std::string>>();
   auto model = std::make_shared<std::string>("schlick");
   auto format = std::make_shared<std::string>("csv");
   auto params = std::make_shared<std::string>("derived");
-  sub->add_option("MATERIAL", *material, "catalog name, database page (main/Au/nk/Johnson) or file")->required();
+  sub->add_option("MATERIALS", *materials, kMaterialsHelp)->required();
   sub->add_option("--model", *model, "Fresnel model: " + analysis::model_names())->capture_default_str();
   sub->add_option("--params", *params, "derived (from the spectral procedure) or fitted (Ceres)")->capture_default_str();
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
-  sub->callback([&g, &selected, material, model, format, params] {
-    selected = [&g, material, model, format, params] {
+  sub->callback([&g, &selected, materials, model, format, params] {
+    selected = [&g, materials, model, format, params] {
       const auto f = report::format_from_name(*format);
+      analysis::wants_fitted(*params);
       const auto ctx = make_context(g);
-      const auto m = load_one(g, ctx, *material);
-      fmt::print("{}", report::render(analysis::curve_table(ctx, m, *model, *params), f));
+      const auto ms = load_many(g, ctx, *materials);
+      fmt::print("{}", report::render(analysis::curve_table(ctx, ms, *model, *params), f));
       return 0;
     };
   });
@@ -57,19 +58,20 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
   for (const auto& t : analysis::table_specs()) names += (names.empty() ? "" : " | ") + std::string(t.name);
   auto* sub = app.add_subcommand("table", "one report table to stdout: " + names);
   auto name = std::make_shared<std::string>();
+  auto materials = std::make_shared<std::vector<std::string>>();
   auto format = std::make_shared<std::string>("csv");
   sub->add_option("NAME", *name, names)->required();
+  sub->add_option("MATERIALS", *materials, std::string(kMaterialsHelp) + "; default: the catalog");
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
   sub->add_option("--blend-weight", g.blend.weight, "blend tables: share of the second material")->capture_default_str();
   sub->add_option("--blend-chain", g.blend.chain, "blend tables: materials per blend (2 = pairs; N blends N consecutive metals)")
       ->capture_default_str();
-  sub->callback([&g, &selected, name, format] {
-    selected = [&g, name, format] {
+  sub->callback([&g, &selected, name, materials, format] {
+    selected = [&g, name, materials, format] {
       const auto& spec = analysis::find_table(*name);
       const auto f = report::format_from_name(*format);
       const auto ctx = make_context(g);
-      const auto ms = analysis::load_catalog(ctx);
-      print_warnings(g, ms);
+      const auto ms = load_many(g, ctx, *materials);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       fmt::print("{}", report::render(spec.build(in), f));
       return 0;
@@ -78,17 +80,18 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
 }
 
 void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand("presets", "F0, F82, g, eta, kappa per catalog material in the working space");
+  auto* sub = app.add_subcommand("presets", "F0, F82, g, eta, kappa per material in the working space");
+  auto materials = std::make_shared<std::vector<std::string>>();
   auto format = std::make_shared<std::string>("csv");
   auto openpbr = std::make_shared<bool>(false);
+  sub->add_option("MATERIALS", *materials, std::string(kMaterialsHelp) + "; default: the catalog");
   sub->add_option("--format", *format, "csv, md, json, or mtlx (a MaterialX document)")->capture_default_str();
   sub->add_flag("--openpbr", *openpbr, "the OpenPBR form: base_color = F0, specular_color = F82 tint");
-  sub->callback([&g, &selected, format, openpbr] {
-    selected = [&g, format, openpbr] {
+  sub->callback([&g, &selected, materials, format, openpbr] {
+    selected = [&g, materials, format, openpbr] {
       if (*format != "mtlx") report::format_from_name(*format);  // validate before the work
       const auto ctx = make_context(g);
-      const auto ms = analysis::load_catalog(ctx);
-      print_warnings(g, ms);
+      const auto ms = load_many(g, ctx, *materials);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       if (*format == "mtlx") {
         fmt::print("{}", report::presets_materialx(ctx, in.studies()));

@@ -69,6 +69,18 @@ ceres::CostFunction* create_cost(Model m, const CurveTarget* target) {
   return cost;
 }
 
+// The flat indices of the model's extinction parameters (ParamKind::Extinction).
+std::vector<int> extinction_indices(Model m) {
+  const auto& spec = fresnel::model_spec(m);
+  std::vector<int> out;
+  for (int c = 0; c < 3; ++c)
+    for (int j = 0; j < spec.per_channel(); ++j)
+      if (spec.channel_params[j].kind == fresnel::ParamKind::Extinction) out.push_back(c * spec.per_channel() + j);
+  for (size_t j = 0; j < spec.shared_params.size(); ++j)
+    if (spec.shared_params[j].kind == fresnel::ParamKind::Extinction) out.push_back(3 * spec.per_channel() + int(j));
+  return out;
+}
+
 FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> params, const FitOptions& options) {
   const auto bounds = fresnel::model_spec(m).bounds();
   for (size_t i = 0; i < params.size(); ++i) {
@@ -76,8 +88,11 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
     const double margin = 1e-9 * (bounds[i].hi - bounds[i].lo);
     params[i] = std::clamp(params[i], bounds[i].lo + margin, bounds[i].hi - margin);
   }
+  const auto held = options.lossless ? extinction_indices(m) : std::vector<int>{};
+  for (int i : held) params[i] = 0.0;
   ceres::Problem problem;
   problem.AddResidualBlock(create_cost(m, &target), nullptr, params.data());
+  if (!held.empty()) problem.SetManifold(params.data(), new ceres::SubsetManifold(static_cast<int>(params.size()), held));
   for (size_t i = 0; i < params.size(); ++i) {
     problem.SetParameterLowerBound(params.data(), static_cast<int>(i), bounds[i].lo);
     problem.SetParameterUpperBound(params.data(), static_cast<int>(i), bounds[i].hi);
@@ -99,7 +114,23 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
   r.iterations = static_cast<int>(summary.iterations.size()) - 1;
   r.termination = ceres::TerminationTypeToString(summary.termination_type);
   r.usable = summary.IsSolutionUsable() && std::isfinite(summary.final_cost);
+  r.iteration_limit = summary.termination_type == ceres::NO_CONVERGENCE;
   return r;
+}
+
+// Parameters within a millionth of their box's width of a box bound that the domain does not share.
+std::vector<std::string> pinned_parameters(Model m, const std::vector<double>& p) {
+  const auto& spec = fresnel::model_spec(m);
+  const auto box = spec.bounds(), domain = spec.domain();
+  const auto names = spec.param_names();
+  std::vector<std::string> out;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const double tol = 1e-6 * (box[i].hi - box[i].lo);
+    const bool low = box[i].lo > domain[i].lo && p[i] <= box[i].lo + tol;
+    const bool high = box[i].hi < domain[i].hi && p[i] >= box[i].hi - tol;
+    if (low || high) out.push_back(names[i]);
+  }
+  return out;
 }
 
 }  // namespace
@@ -115,12 +146,14 @@ static double start_cost(Model m, const CurveTarget& target, const std::vector<d
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
 
-FitResult fit_model(Model m, const CurveTarget& target, const std::vector<std::vector<double>>& starts,
+FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<double>> starts,
                     const FitOptions& options) {
   // Rank the starts by their cost (cheap), then solve from the best few.
   std::vector<std::pair<double, size_t>> ranked;
+  const auto held = options.lossless ? extinction_indices(m) : std::vector<int>{};
   for (size_t i = 0; i < starts.size(); ++i) {
     if (static_cast<int>(starts[i].size()) != fresnel::model_spec(m).param_count()) throw std::invalid_argument("fit_model: wrong parameter count");
+    for (int h : held) starts[i][h] = 0.0;
     ranked.emplace_back(start_cost(m, target, starts[i]), i);
   }
   std::stable_sort(ranked.begin(), ranked.end());
@@ -134,17 +167,30 @@ FitResult fit_model(Model m, const CurveTarget& target, const std::vector<std::v
       have = true;
     }
   }
-  if (!have) {
-    // No start gave a usable solution: report the best start itself, marked unusable, so callers
-    // always get parameters.
+  // Worse than the best start (beyond rounding between the two cost evaluations, 1e-9 relative),
+  // e.g. a start outside the fit box, or no usable solve: the start itself is returned.
+  if (!have || best.cost > ranked.front().first * (1.0 + 1e-9)) {
     best.parameters = starts[ranked.front().second];
     best.cost = best.initial_cost = ranked.front().first;
     best.iterations = 0;
-    best.termination = "NO_USABLE_SOLUTION";
-    best.usable = false;
+    best.termination = have ? "START_KEPT" : "NO_USABLE_SOLUTION";
+    best.usable = have;
+    best.kept_start = have;
+    best.iteration_limit = false;
   }
+  best.at_bound = pinned_parameters(m, best.parameters);
   best.starts = static_cast<int>(ranked.size());
   return best;
+}
+
+std::string fit_flags(const FitResult& r) {
+  std::string out;
+  auto add = [&](const std::string& f) { out += (out.empty() ? "" : " ") + f; };
+  for (const auto& name : r.at_bound) add("at_bound:" + name);
+  if (r.iteration_limit) add("iteration_limit");
+  if (r.kept_start) add("kept_start");
+  if (!r.usable) add("no_usable_solution");
+  return out;
 }
 
 double rms_from_cost(double cost, size_t angles) { return std::sqrt(2.0 * cost / static_cast<double>(angles)); }

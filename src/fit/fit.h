@@ -17,7 +17,16 @@ struct FitResult {
   std::string termination;  // CONVERGENCE, NO_CONVERGENCE, ...
   bool usable = false;      // the solver ended with a usable solution
   int starts = 1;           // how many starts were tried
+  bool kept_start = false;  // no solve ended below the best start's cost: the best start itself
+  bool iteration_limit = false;           // the winning solve stopped at FitOptions::max_iterations
+  std::vector<std::string> at_bound;      // parameters ending on a fit-box bound that is not the domain's
 };
+
+// The quality flags of a fit, space-separated (empty when there are none): "at_bound:eta_g"
+// (a parameter pinned by its fit box, ParamSpec::fit, where the kernel's domain goes on),
+// "iteration_limit", "kept_start" (no solve improved on the best start, which is returned),
+// "no_usable_solution".
+std::string fit_flags(const FitResult& r);
 
 // A ground-truth curve to fit; the cost is ½ Σ ΔE2000² over its angles.
 struct CurveTarget {
@@ -29,13 +38,20 @@ struct CurveTarget {
 struct FitOptions {
   int max_iterations = 100;
   int max_solves = 2;  // starts ranked by their initial cost; only the best few are solved
+  // Extinction parameters (ParamKind::Extinction) held at 0: the material is lossless.
+  bool lossless = false;
 };
 
 // Fits the model's parameters to minimize the RMS ΔE2000 over the target's angles, within the
 // model's bounds. The starts are ranked by cost, the best `max_solves` are solved, the lowest
-// final cost wins. Starts are clamped into the bounds.
-FitResult fit_model(fresnel::Model model, const CurveTarget& target, const std::vector<std::vector<double>>& starts,
+// final cost wins. Starts are clamped into the bounds. The result is never worse than the best
+// start: when no solve ends below its cost, the start itself is returned (kept_start).
+FitResult fit_model(fresnel::Model model, const CurveTarget& target, std::vector<std::vector<double>> starts,
                     const FitOptions& options = {});
+
+// The largest k (over the grid) of a material whose fits hold κ at 0: below it k changes a
+// reflectance by k²/(n − 1)² < 4e-6 relative at n = 1.5, nothing a colour difference can see.
+inline constexpr double kLosslessMaxK = 1e-3;
 
 // The RMS ΔE2000 a fit's cost stands for over N angles: sqrt(2·cost / N).
 double rms_from_cost(double cost, size_t angles);

@@ -21,8 +21,9 @@ struct ParamRange {
 
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
-// What a parameter stands for; reflectances are the ones reported when outside [0, 1].
-enum class ParamKind { Reflectance, Index, Exponent, Coefficient };
+// What a parameter stands for; reflectances are the ones reported when outside [0, 1]; extinction
+// coefficients are held at 0 when a fit's material is lossless (fit.h).
+enum class ParamKind { Reflectance, Index, Extinction, Exponent, Coefficient };
 
 struct ParamSpec {
   const char* name;  // column name without the channel suffix: "f0", "eta_rep"

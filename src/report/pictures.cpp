@@ -66,6 +66,45 @@ Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial&
   return o;
 }
 
+std::string material_output(const std::string& out, const analysis::LoadedMaterial& m, size_t count) {
+  const auto at = out.find("{name}");
+  if (at == std::string::npos) {
+    if (count > 1) throw InputError(out, 0, fmt::format("{} materials need '{{name}}' in --out (one file each)", count));
+    return out;
+  }
+  const auto& mat = m.material;
+  std::string name = mat.origin == spectral::Material::Origin::File ? mat.name : mat.key;
+  for (auto& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '_';
+  return out.substr(0, at) + name + out.substr(at + 6);
+}
+
+Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
+                    const PlotRequest& request) {
+  Output all;
+  for (const auto& m : ms) {
+    PlotRequest r = request;
+    r.out = material_output(request.out, m, ms.size());
+    auto o = plot_output(ctx, m, r);
+    for (auto& f : o.files) all.files.push_back(std::move(f));
+    for (auto& line : o.messages) all.messages.push_back(std::move(line));
+  }
+  return all;
+}
+
+Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
+                      const RenderRequest& request) {
+  Output all;
+  for (const auto& m : ms) {
+    RenderRequest r = request;
+    r.out = material_output(request.out, m, ms.size());
+    auto o = render_output(ctx, m, r);
+    for (auto& f : o.files) all.files.push_back(std::move(f));
+    for (auto& line : o.messages) all.messages.push_back(std::move(line));
+  }
+  return all;
+}
+
 Files reproduce_figures(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies) {
   const auto all = parse_models("all");
   const auto curve_models = parse_models("schlick,f82,gulbrandsen");

@@ -15,7 +15,8 @@ std::vector<fresnel::Model> parse_models(const std::string& list);
 
 struct PlotRequest {
   std::string figure;  // strip | curves
-  std::string material, models, params = "derived", out;
+  std::vector<std::string> materials;
+  std::string models, params = "derived", out;
 };
 // InputError for an output type (.png; .svg also for curves), parameter set or model list that
 // does not exist, checked before any work.
@@ -24,7 +25,8 @@ void check_plot_request(const PlotRequest& request);
 Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m, const PlotRequest& request);
 
 struct RenderRequest {
-  std::string material, model = "schlick", params = "derived", out;
+  std::vector<std::string> materials;
+  std::string model = "schlick", params = "derived", out;
   analysis::RenderSettings settings;
 };
 // InputError for an output that is not .exr, an unknown model or parameter set, or a roughness,
@@ -33,6 +35,16 @@ void check_render_request(const RenderRequest& request);
 // FILE.exr (linear, premultiplied RGBA, the scene in its attributes) and FILE.png; with a model
 // also FILE.truth.png and the ΔE2000 heat map FILE.de2000.png.
 Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m, const RenderRequest& request);
+
+// Several materials write one output each: `out` must then hold "{name}", replaced per material by
+// a file-safe form of its name (the catalog key, the page path or the file's stem, with characters
+// other than letters, digits, '.', '-' and '_' turned into '_'); InputError otherwise.
+std::string material_output(const std::string& out, const analysis::LoadedMaterial& m, size_t count);
+// plot_output / render_output for every material, to material_output paths.
+Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
+                    const PlotRequest& request);
+Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
+                      const RenderRequest& request);
 
 // figures/strip-KEY.png and figures/curves-KEY.png per material (derived parameters), rendered in
 // parallel, and their Markdown gallery as figures.md.

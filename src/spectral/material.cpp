@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "spectral/errors.h"
+#include "spectral/nk_text.h"
+#include "spectral/pages.h"
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
 
@@ -15,6 +17,21 @@ namespace fl::spectral {
 namespace fs = std::filesystem;
 
 const char* to_string(MaterialClass c) { return c == MaterialClass::Metal ? "metal" : "dielectric"; }
+
+MaterialClass classify(const OpticalConstants& oc) {
+  // Sampled on the whole visible grid so that a range error names 360-830 nm.
+  const SpectralGrid g = SpectralGrid::visible(5.0);
+  const auto s = sample_ior(oc, g, oc.file);
+  double eps = 0;
+  int count = 0;
+  for (int i = 0; i < g.count; ++i) {
+    if (g.lambda_nm(i) < 400.0 || g.lambda_nm(i) > 700.0) continue;
+    const auto z = s.ior.ior[i];
+    eps += z.real() * z.real() - z.imag() * z.imag();
+    ++count;
+  }
+  return eps / count < 0.0 ? MaterialClass::Metal : MaterialClass::Dielectric;
+}
 
 namespace {
 
@@ -25,15 +42,6 @@ std::string lower(std::string s) {
 
 std::string database_file(const DataPaths& paths, const std::string& page) {
   return paths.database + "/data/" + page + ".yml";
-}
-
-// Metals absorb strongly in the visible: k at 550 nm above 1.
-MaterialClass guess_class(const OpticalConstants& oc) {
-  // Sampled on the whole visible grid so that a range error names 360-830 nm, not 550-550.
-  const SpectralGrid g = SpectralGrid::visible(5.0);
-  const auto s = sample_ior(oc, g, oc.file);
-  return s.ior.ior[static_cast<size_t>((550.0 - g.start_nm) / g.step_nm)].imag() > 1.0 ? MaterialClass::Metal
-                                                                                       : MaterialClass::Dielectric;
 }
 
 std::string scalar(const YAML::Node& root, const char* key, const std::string& path, bool required) {
@@ -72,9 +80,16 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
     else m.talk_schlick_rms_de00 = x;
   }
   const std::string page = scalar(root, "source", path, false);
+  const std::string file = scalar(root, "file", path, false);
+  if (!page.empty() && !file.empty())
+    throw InputError(path, root["file"].Mark().line + 1, "give either 'source' (a database page) or 'file', not both");
   if (!page.empty()) {
     m.source = page;
     m.constants = read_refractiveindex_file(database_file(paths, page));
+  } else if (!file.empty()) {
+    const fs::path f = fs::path(file).is_absolute() ? fs::path(file) : fs::path(path).parent_path() / file;
+    m.source = file;
+    m.constants = read_optical_file(f.string());
   } else if (const YAML::Node c = root["constant"]) {
     double n = 0, k = 0;
     try {
@@ -87,7 +102,7 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
     m.source = k == 0 ? fmt::format("constant n={}", n) : fmt::format("constant n={} k={}", n, k);
     m.constants = constant_ior(n, k, path);
   } else {
-    throw InputError(path, 0, "needs either 'source' (a database page) or 'constant'");
+    throw InputError(path, 0, "needs 'source' (a database page), 'file' or 'constant'");
   }
   return m;
 }
@@ -131,37 +146,62 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
   // A file path.
   if (fs::exists(spec, ec)) {
     Material m;
+    m.origin = Material::Origin::File;
     m.key = spec;
     m.name = fs::path(spec).stem().string();
+    if (lower(fs::path(spec).extension().string()) == ".spd")  // NAME.eta.spd or NAME.k.spd: NAME
+      m.name = fs::path(m.name).stem().string();
     m.source = spec;
     const auto ext = lower(fs::path(spec).extension().string());
-    if (ext == ".csv") {
-      m.constants = read_nk_csv(spec);
-    } else {
+    if (ext == ".yml" || ext == ".yaml") {
       // A catalog entry has 'class'; a database file has 'DATA'.
       const YAML::Node root = read_yaml_file(spec);
       if (root.IsMap() && root["class"] && !root["DATA"]) return read_catalog_entry(spec, paths);
-      m.constants = read_refractiveindex_file(spec);
     }
-    m.material_class = guess_class(m.constants);
+    m.constants = read_optical_file(spec);
+    m.material_class = classify(m.constants);
     return m;
   }
   // A database page.
   const std::string page = spec.size() > 4 && spec.substr(spec.size() - 4) == ".yml" ? spec.substr(0, spec.size() - 4) : spec;
-  if (page.find('/') != std::string::npos && fs::exists(database_file(paths, page), ec)) {
-    Material m;
-    m.key = page;
-    m.name = page;
-    m.source = page;
-    m.constants = read_refractiveindex_file(database_file(paths, page));
-    m.material_class = guess_class(m.constants);
-    return m;
-  }
-  if (const auto ext = lower(fs::path(spec).extension().string()); ext == ".csv" || ext == ".yml" || ext == ".yaml")
+  if (page.find('/') != std::string::npos && fs::exists(database_file(paths, page), ec))
+    return read_database_page(page, paths);
+  if (const auto ext = lower(fs::path(spec).extension().string());
+      ext == ".csv" || ext == ".yml" || ext == ".yaml" || ext == ".txt" || ext == ".tsv" || ext == ".nk" || ext == ".spd")
     throw InputError(spec, 0, fmt::format("no such file (nor a catalog name in {} or a database page under {}/data)",
                                           paths.materials, paths.database));
   throw InputError(fmt::format("unknown material '{}': not a catalog name in {}, a file, or a database page under {}/data",
                                spec, paths.materials, paths.database));
+}
+
+Material read_database_page(const std::string& page, const DataPaths& paths) {
+  Material m;
+  m.origin = Material::Origin::Page;
+  m.key = page;
+  m.name = page;
+  m.source = page;
+  m.constants = read_refractiveindex_file(database_file(paths, page));
+  m.reference = m.constants.reference;
+  m.material_class = classify(m.constants);
+  return m;
+}
+
+std::vector<MaterialRequest> expand_materials(const std::vector<std::string>& specs, const DataPaths& paths) {
+  std::vector<MaterialRequest> out;
+  std::vector<std::string> pages;
+  bool listed = false;
+  for (const auto& spec : specs) {
+    if (!is_glob(spec)) {
+      out.push_back({spec, ""});
+      continue;
+    }
+    if (!listed) pages = list_pages(paths.database), listed = true;
+    const auto matched = match_pages(pages, spec);
+    if (matched.empty())
+      throw InputError(fmt::format("'{}' matches no database page under {}/data", spec, paths.database));
+    for (const auto& p : matched) out.push_back({p, spec});
+  }
+  return out;
 }
 
 }  // namespace fl::spectral

@@ -11,6 +11,8 @@ enum class MaterialClass { Metal, Dielectric };
 const char* to_string(MaterialClass c);
 
 struct Material {
+  enum class Origin { Catalog, Page, File };
+  Origin origin = Origin::Catalog;
   std::string key;        // catalog file stem ("gold"), or the argument it was loaded from
   std::string name;       // display name ("Gold")
   MaterialClass material_class = MaterialClass::Metal;
@@ -27,14 +29,35 @@ struct DataPaths {
   std::string materials;  // the catalog folder
 };
 
-// One catalog entry (materials/<key>.yml). Reads its data from the database.
+// One catalog entry (materials/<key>.yml): its data from a database page (`source: main/Au/nk/Johnson`),
+// a file (`file: PATH`, relative to the entry's folder unless absolute; any format nk_text.h reads)
+// or a constant index (`constant: {n: 1.64, k: 0}`).
 Material read_catalog_entry(const std::string& path, const DataPaths& paths);
 
 // Every catalog entry, in catalog order: the `order` field, then the key.
 std::vector<Material> read_catalog(const DataPaths& paths);
 
 // A catalog key or display name (case-insensitive), a database page (main/Au/nk/Johnson), or a
-// file path (.yml refractiveindex.info format or catalog entry, .csv lambda_nm,n,k).
+// file path (a refractiveindex.info page or catalog entry .yml, or any format nk_text.h reads).
+// Pages and files get their class from the data (classify).
 Material resolve_material(const std::string& spec, const DataPaths& paths);
+
+// A database page (main/Au/nk/Johnson): its file under DATABASE/data/, class from the data.
+Material read_database_page(const std::string& page, const DataPaths& paths);
+
+// Metal or dielectric from the data: a metal when the mean of ε′ = n² − k² over 400–700 nm (5 nm
+// steps) is negative, the real permittivity of a conductor below its plasma frequency; k alone
+// would call caesium (n ≈ 0.3, k ≈ 1.3 at 550 nm) or a thin absorbing film the wrong thing.
+MaterialClass classify(const OpticalConstants& oc);
+
+// A material argument after glob expansion: `spec` is a catalog name, page or file as written, or
+// a page matched by the glob `pattern` (empty when the argument named it).
+struct MaterialRequest {
+  std::string spec;
+  std::string pattern;
+};
+// Expands page globs (pages.h: 'main/*/nk/*', '**') into the matching database pages, sorted, in
+// argument order; other arguments stay as given. A glob that matches no page is an InputError.
+std::vector<MaterialRequest> expand_materials(const std::vector<std::string>& specs, const DataPaths& paths);
 
 }  // namespace fl::spectral

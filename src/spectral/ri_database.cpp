@@ -3,11 +3,13 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "spectral/errors.h"
+#include "spectral/tabulated.h"
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
 
@@ -39,57 +41,63 @@ std::vector<double> parse_numbers(const std::string& file, int line, std::string
   return out;
 }
 
-// Beyond any material's optical constants at any wavelength (far-infrared metals reach ~10³),
-// and far below where n² + κ² would overflow in the Fresnel equations.
-constexpr double kMaxOpticalConstant = 1e6;
-
-void check_physical(const std::string& file, int line, double n, double k, bool has_n, bool has_k) {
-  if (has_n && !(n > 0.0 && n <= kMaxOpticalConstant))
-    throw InputError(file, line, fmt::format("n = {} is not physical (must be in (0, {:g}])", n, kMaxOpticalConstant));
-  if (has_k && !(k >= 0.0 && k <= kMaxOpticalConstant))
-    throw InputError(file, line, fmt::format("k = {} is not physical (must be in [0, {:g}])", k, kMaxOpticalConstant));
+// One data line into `rows`: the first field is the wavelength (in µm; an error when it is not a
+// number), the others the values; a wrong column count or a value that is not a number is a
+// defect of the row, judged where its wavelength lies.
+void add_data_line(TabulatedRows& rows, const std::string& file, int line, std::string_view raw, size_t columns) {
+  const auto fields = split_fields(raw, " \t,");
+  double lambda_um = 0;
+  if (!parse_finite(fields.front(), lambda_um))
+    throw InputError(file, line, fmt::format("data: '{}' is not a finite number", fields.front()));
+  const double lambda_nm = lambda_um * kNmPerUm;
+  if (fields.size() != columns)
+    return rows.add_defect(line, lambda_nm, fmt::format("expected {} columns, found {}", columns, fields.size()));
+  double v[3] = {lambda_um, 0, 0};
+  for (size_t c = 1; c < columns; ++c)
+    if (!parse_finite(fields[c], v[c]))
+      return rows.add_defect(line, lambda_nm, fmt::format("data: '{}' is not a finite number", fields[c]));
+  const bool nk = columns == 3;
+  rows.add(line, lambda_nm, v[1], nk ? v[2] : v[1]);
 }
 
-DispersionBlock parse_tabulated(const std::string& file, const YAML::Node& block,
-                                DispersionBlock::Kind kind, int block_line) {
-  DispersionBlock b;
-  b.kind = kind;
-  b.line = block_line;
+DispersionBlock parse_tabulated(const std::string& file, const YAML::Node& block, DispersionBlock::Kind kind,
+                                int block_line, const UsedRange& used, std::vector<std::string>& warnings) {
   const YAML::Node data = block["data"];
   if (!data || !data.IsScalar()) throw InputError(file, block_line, "tabulated block without 'data'");
   const std::string text = data.as<std::string>();
   // A literal block scalar starts on the line after its key.
   const int first_line = data.Mark().line + 2;
   const size_t columns = kind == DispersionBlock::Kind::TabulatedNK ? 3 : 2;
+  TabulatedRows rows(file, kind, first_line);
   int i = 0;
   for (auto raw : split_lines(text)) {
     const int line = first_line + i++;
-    if (trim(raw).empty()) continue;
-    auto v = parse_numbers(file, line, raw, "data");
-    if (v.size() != columns)
-      throw InputError(file, line, fmt::format("expected {} columns, found {}", columns, v.size()));
-    const double lambda = v[0] * kNmPerUm;
-    b.lambda_nm.push_back(lambda);
-    double n = 0, k = 0;
-    if (kind == DispersionBlock::Kind::TabulatedNK) { n = v[1]; k = v[2]; }
-    else if (kind == DispersionBlock::Kind::TabulatedN) n = v[1];
-    else k = v[1];
-    check_physical(file, line, n, k, kind != DispersionBlock::Kind::TabulatedK,
-                   kind != DispersionBlock::Kind::TabulatedN);
-    b.n.push_back(n);
-    b.k.push_back(k);
-    if (b.lambda_nm.size() > 1 && !(b.lambda_nm.back() > b.lambda_nm[b.lambda_nm.size() - 2]))
-      throw InputError(file, line, "wavelengths are not strictly increasing");
-    if (!(lambda > 0.0)) throw InputError(file, line, "wavelength must be positive");
+    if (!trim(raw).empty()) add_data_line(rows, file, line, raw, columns);
   }
-  if (b.lambda_nm.empty()) throw InputError(file, first_line, "tabulated block has no rows");
-  b.min_nm = b.lambda_nm.front();
-  b.max_nm = b.lambda_nm.back();
+  if (rows.empty()) throw InputError(file, first_line, "tabulated block has no rows");
+  auto b = rows.finish(used, warnings);
+  b.line = block_line;
   return b;
 }
 
-DispersionBlock parse_formula(const std::string& file, const YAML::Node& block, int formula,
-                              int block_line) {
+// The formula must give a physical index wherever it is read: over its range's overlap with the
+// used range at every nm (the finest grid step) and at the overlap's ends, or at the one end of its
+// range that the nearest-value rule reads when they do not overlap.
+void check_formula(const std::string& file, int line, const DispersionBlock& b, const UsedRange& used) {
+  double lo = std::max(b.min_nm, used.min_nm), hi = std::min(b.max_nm, used.max_nm);
+  if (lo > hi) lo = hi = b.max_nm < used.min_nm ? b.max_nm : b.min_nm;
+  std::vector<double> at{lo, hi};
+  for (double nm = std::ceil(lo); nm <= hi; nm += 1.0) at.push_back(nm);
+  for (double nm : at) {
+    const double n = evaluate_formula(b.formula, b.coefficients, nm / kNmPerUm);
+    if (!std::isfinite(n) || !(n > 0.0) || n > kMaxOpticalConstant)
+      throw InputError(file, line, fmt::format("formula {} gives n = {} at {:g} um (not physical)", b.formula, n,
+                                               nm / kNmPerUm));
+  }
+}
+
+DispersionBlock parse_formula(const std::string& file, const YAML::Node& block, int formula, int block_line,
+                              const UsedRange& used) {
   DispersionBlock b;
   b.kind = DispersionBlock::Kind::Formula;
   b.formula = formula;
@@ -112,14 +120,27 @@ DispersionBlock parse_formula(const std::string& file, const YAML::Node& block, 
     throw InputError(file, rline, "wavelength_range must be positive and increasing");
   b.min_nm = r[0] * kNmPerUm;
   b.max_nm = r[1] * kNmPerUm;
-  // The formula must give a physical index over its whole range.
-  for (int i = 0; i <= 64; ++i) {
-    const double lum = r[0] + (r[1] - r[0]) * i / 64.0;
-    const double n = evaluate_formula(formula, b.coefficients, lum);
-    if (!std::isfinite(n) || !(n > 0.0) || n > kMaxOpticalConstant)
-      throw InputError(file, cline, fmt::format("formula {} gives n = {} at {} um (not physical)", formula, n, lum));
-  }
+  check_formula(file, cline, b, used);
   return b;
+}
+
+// A page's REFERENCES as one line of plain text: HTML tags removed, whitespace runs collapsed.
+std::string plain_reference(const YAML::Node& root) {
+  const YAML::Node r = root["REFERENCES"];
+  if (!r || !r.IsScalar()) return {};
+  std::string out;
+  bool in_tag = false, space = false;
+  for (const char c : r.as<std::string>()) {
+    if (c == '<') in_tag = true;
+    else if (c == '>') in_tag = false;
+    else if (!in_tag && std::isspace(static_cast<unsigned char>(c))) space = !out.empty();
+    else if (!in_tag) {
+      if (space) out += ' ';
+      out += c;
+      space = false;
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -180,7 +201,32 @@ double evaluate_formula(int formula, const std::vector<double>& coeffs, double w
   }
 }
 
-OpticalConstants read_refractiveindex_file(const std::string& path) {
+namespace {
+
+DispersionBlock parse_block(const std::string& path, const YAML::Node& block, const UsedRange& used,
+                            std::vector<std::string>& warnings) {
+  using Kind = DispersionBlock::Kind;
+  const int line = block.Mark().line + 1;
+  if (!block.IsMap() || !block["type"] || !block["type"].IsScalar())
+    throw InputError(path, line, "DATA block without a 'type'");
+  const std::string type = block["type"].as<std::string>();
+  if (type == "tabulated nk") return parse_tabulated(path, block, Kind::TabulatedNK, line, used, warnings);
+  if (type == "tabulated n") return parse_tabulated(path, block, Kind::TabulatedN, line, used, warnings);
+  if (type == "tabulated k") return parse_tabulated(path, block, Kind::TabulatedK, line, used, warnings);
+  if (type.rfind("formula ", 0) == 0) {
+    const std::string num = type.substr(8);
+    if (num.size() != 1 || num[0] < '1' || num[0] > '9')
+      throw InputError(path, line, fmt::format("unknown formula type '{}' (expected formula 1 to 9)", type));
+    return parse_formula(path, block, num[0] - '0', line, used);
+  }
+  if (type == "tabulated n2")
+    throw InputError(path, line, "DATA block type 'tabulated n2' is a nonlinear index, not n, k data");
+  throw InputError(path, line, fmt::format("unknown DATA block type '{}'", type));
+}
+
+}  // namespace
+
+OpticalConstants read_refractiveindex_file(const std::string& path, const UsedRange& used) {
   const YAML::Node root = read_yaml_file(path);
   if (!root.IsMap()) throw InputError(path, 1, "expected a refractiveindex.info YAML map with DATA");
   const YAML::Node data = root["DATA"];
@@ -190,23 +236,8 @@ OpticalConstants read_refractiveindex_file(const std::string& path) {
   OpticalConstants oc;
   oc.file = path;
   try {
-    for (const auto& block : data) {
-      const int line = block.Mark().line + 1;
-      if (!block.IsMap() || !block["type"] || !block["type"].IsScalar())
-        throw InputError(path, line, "DATA block without a 'type'");
-      const std::string type = block["type"].as<std::string>();
-      if (type == "tabulated nk") oc.blocks.push_back(parse_tabulated(path, block, DispersionBlock::Kind::TabulatedNK, line));
-      else if (type == "tabulated n") oc.blocks.push_back(parse_tabulated(path, block, DispersionBlock::Kind::TabulatedN, line));
-      else if (type == "tabulated k") oc.blocks.push_back(parse_tabulated(path, block, DispersionBlock::Kind::TabulatedK, line));
-      else if (type.rfind("formula ", 0) == 0) {
-        const std::string num = type.substr(8);
-        if (num.size() != 1 || num[0] < '1' || num[0] > '9')
-          throw InputError(path, line, fmt::format("unknown formula type '{}' (expected formula 1 to 9)", type));
-        oc.blocks.push_back(parse_formula(path, block, num[0] - '0', line));
-      } else {
-        throw InputError(path, line, fmt::format("unknown DATA block type '{}'", type));
-      }
-    }
+    for (const auto& block : data) oc.blocks.push_back(parse_block(path, block, used, oc.warnings));
+    oc.reference = plain_reference(root);
   } catch (const YAML::Exception& e) {
     throw InputError(path, e.mark.line + 1, "malformed DATA: " + e.msg);
   }
@@ -216,57 +247,8 @@ OpticalConstants read_refractiveindex_file(const std::string& path) {
   return oc;
 }
 
-OpticalConstants read_nk_csv(const std::string& path) {
-  const std::string text = read_text_file(path);
-  const auto lines = split_lines(text);
-  size_t i = 0;
-  while (i < lines.size() && (trim(lines[i]).empty() || trim(lines[i])[0] == '#')) ++i;
-  if (i == lines.size()) throw InputError(path, 0, "no header line");
-  std::vector<std::string> header;
-  for (auto f : split_fields(lines[i], ",")) header.emplace_back(trim(f));
-  const bool with_k = header == std::vector<std::string>{"lambda_nm", "n", "k"};
-  if (!with_k && header != std::vector<std::string>{"lambda_nm", "n"})
-    throw InputError(path, static_cast<int>(i + 1), "header must be 'lambda_nm,n,k' (or 'lambda_nm,n')");
-  DispersionBlock b;
-  b.kind = with_k ? DispersionBlock::Kind::TabulatedNK : DispersionBlock::Kind::TabulatedN;
-  b.line = static_cast<int>(i + 1);
-  for (++i; i < lines.size(); ++i) {
-    const int line = static_cast<int>(i + 1);
-    const auto t = trim(lines[i]);
-    if (t.empty() || t[0] == '#') continue;
-    std::vector<std::string_view> fields;
-    size_t start = 0;
-    while (true) {  // keep empty fields so that a missing value is reported
-      const size_t c = t.find(',', start);
-      fields.push_back(t.substr(start, c == std::string_view::npos ? std::string_view::npos : c - start));
-      if (c == std::string_view::npos) break;
-      start = c + 1;
-    }
-    if (fields.size() != header.size())
-      throw InputError(path, line, fmt::format("expected {} columns, found {}", header.size(), fields.size()));
-    double v[3] = {0, 0, 0};
-    for (size_t c = 0; c < fields.size(); ++c)
-      if (!parse_finite(fields[c], v[c]))
-        throw InputError(path, line, fmt::format("column '{}': '{}' is not a finite number", header[c], trim(fields[c])));
-    if (!(v[0] > 0.0)) throw InputError(path, line, "wavelength must be positive");
-    if (!b.lambda_nm.empty() && !(v[0] > b.lambda_nm.back()))
-      throw InputError(path, line, "wavelengths are not strictly increasing");
-    check_physical(path, line, v[1], v[2], true, with_k);
-    b.lambda_nm.push_back(v[0]);
-    b.n.push_back(v[1]);
-    b.k.push_back(v[2]);
-  }
-  if (b.lambda_nm.empty()) throw InputError(path, 0, "no data rows");
-  b.min_nm = b.lambda_nm.front();
-  b.max_nm = b.lambda_nm.back();
-  OpticalConstants oc;
-  oc.file = path;
-  oc.blocks.push_back(std::move(b));
-  return oc;
-}
-
 OpticalConstants constant_ior(double n, double k, const std::string& label) {
-  check_physical(label, 0, n, k, true, true);
+  if (const auto problem = value_problem(n, k, true, true); !problem.empty()) throw InputError(label, 0, problem);
   DispersionBlock b;
   b.kind = DispersionBlock::Kind::Constant;
   b.min_nm = 0.0;
@@ -311,6 +293,34 @@ struct QuantitySource {
 
 }  // namespace
 
+namespace {
+
+// Samples one quantity on the grid into `values` and `measured`; returns the held runs ("360-385").
+std::vector<std::string> sample_quantity(const QuantitySource& src, const SpectralGrid& grid,
+                                         std::vector<double>& values, std::vector<bool>& measured) {
+  values.assign(grid.count, 0.0);
+  measured.assign(grid.count, false);
+  std::vector<std::string> runs;
+  if (src.blocks.empty()) return runs;
+  int run_start = -1;
+  for (int i = 0; i <= grid.count; ++i) {
+    bool clamped = false;
+    if (i < grid.count) {
+      values[i] = src.at(grid.lambda_nm(i), clamped);
+      measured[i] = !clamped;
+    }
+    if (clamped && run_start < 0) run_start = i;
+    if (!clamped && run_start >= 0) {
+      runs.push_back(run_start == i - 1 ? fmt::format("{:g}", grid.lambda_nm(run_start))
+                                        : fmt::format("{:g}-{:g}", grid.lambda_nm(run_start), grid.lambda_nm(i - 1)));
+      run_start = -1;
+    }
+  }
+  return runs;
+}
+
+}  // namespace
+
 SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, const std::string& label) {
   SampledIor out;
   out.ior.grid = grid;
@@ -321,42 +331,24 @@ SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, cons
     if (b.defines_k()) k_src.blocks.push_back(&b);
   }
   if (n_src.blocks.empty()) throw InputError(oc.file, 0, "no n data");
-  // Samples one quantity; returns the uncovered wavelength runs ("360-385").
-  auto sample = [&](const QuantitySource& src, const char* what, std::vector<double>& values) {
-    values.assign(grid.count, 0.0);
-    std::vector<std::string> runs;
-    if (src.blocks.empty()) return runs;
-    int clamped_count = 0, run_start = -1;
-    for (int i = 0; i <= grid.count; ++i) {
-      bool clamped = false;
-      if (i < grid.count) {
-        values[i] = src.at(grid.lambda_nm(i), clamped);
-        clamped_count += clamped;
-      }
-      if (clamped && run_start < 0) run_start = i;
-      if (!clamped && run_start >= 0) {
-        runs.push_back(fmt::format("{:g}-{:g}", grid.lambda_nm(run_start), grid.lambda_nm(i - 1)));
-        run_start = -1;
-      }
-    }
-    if (clamped_count == grid.count)
-      throw InputError(oc.file, 0, fmt::format("{} data does not cover any of {:g}-{:g} nm", what, grid.start_nm, grid.end_nm()));
-    return runs;
-  };
+  out.has_k_data = !k_src.blocks.empty();
   std::vector<double> n, k;
-  const auto n_runs = sample(n_src, "n", n);
-  const auto k_runs = sample(k_src, "k", k);
-  auto warn = [&](const char* what, const std::vector<std::string>& runs) {
-    if (!runs.empty())
-      out.warnings.push_back(fmt::format("{}: {} data does not cover {} nm; using the nearest value there", label,
-                                         what, fmt::join(runs, " and ")));
+  const auto n_runs = sample_quantity(n_src, grid, n, out.n_measured);
+  const auto k_runs = sample_quantity(k_src, grid, k, out.k_measured);
+  for (const auto& [what, src, measured] : {std::tuple{"n", &n_src, &out.n_measured}, {"k", &k_src, &out.k_measured}})
+    if (!src->blocks.empty() && std::find(measured->begin(), measured->end(), true) == measured->end())
+      throw InputError(oc.file, 0, fmt::format("{} data does not cover any of {:g}-{:g} nm", what, grid.start_nm, grid.end_nm()));
+  auto describe = [](const char* what, const std::vector<std::string>& runs) {
+    return runs.empty() ? std::string() : fmt::format("{} data does not cover {} nm", what, fmt::join(runs, " and "));
   };
-  if (n_runs == k_runs) {
-    warn("n and k", n_runs);
-  } else {
-    warn("n", n_runs);
-    warn("k", k_runs);
-  }
+  std::vector<std::string> parts;
+  if (n_runs == k_runs) parts.push_back(describe("n and k", n_runs));
+  else parts = {describe("n", n_runs), describe("k", k_runs)};
+  for (const auto& p : parts)
+    if (!p.empty()) {
+      out.warnings.push_back(fmt::format("{}: {}; using the nearest value there", label, p));
+      out.uncovered += (out.uncovered.empty() ? "" : "; ") + p;
+    }
   for (int i = 0; i < grid.count; ++i) {
     if (!(n[i] > 0.0) || !std::isfinite(n[i]))
       throw InputError(oc.file, 0, fmt::format("n = {} at {:g} nm is not physical", n[i], grid.lambda_nm(i)));

@@ -1,6 +1,6 @@
 #pragma once
 // Scene files for `plan`, read as written (the defaults are analysis/plan.h's). A YAML map:
-//   materials: [gold, main/Cu/nk/Johnson, my_glass.yml]   # catalog names, database pages or files
+//   materials: [gold, main/Cu/nk/Johnson, my_glass.yml]   # catalog names, database pages, page globs or files
 //   max_de00: 1.0                                        # optional RMS ΔE2000 budget
 //   space: acescg                                        # optional working space
 //   lighting: [punctual, ibl, area]                      # optional, any of these (or one of them)

@@ -1,6 +1,7 @@
 #include "spectral/text_file.h"
 
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -88,7 +89,10 @@ bool parse_finite(std::string_view field, double& value) {
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(s.c_str(), &end);
-  if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v)) return false;
+  if (end != s.c_str() + s.size() || !std::isfinite(v)) return false;
+  // strtod reports underflow (a denormal such as 5.04e-317, or a result rounded to 0) with ERANGE
+  // too: that is still a number. Overflow gives ±HUGE_VAL, which is not finite.
+  if (errno == ERANGE && std::fabs(v) >= DBL_MIN) return false;
   value = v;
   return true;
 }

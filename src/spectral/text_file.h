@@ -17,7 +17,8 @@ std::vector<std::string_view> split_lines(std::string_view text);
 // Splits on any run of the given delimiter characters, dropping empty fields.
 std::vector<std::string_view> split_fields(std::string_view line, std::string_view delimiters);
 
-// strtod over the whole field; false when the field is not a finite number.
+// strtod over the whole field; false when the field is not a finite number. Denormals (strtod's
+// underflow) are numbers.
 bool parse_finite(std::string_view field, double& value);
 
 std::string_view trim(std::string_view s);

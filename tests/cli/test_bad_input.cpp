@@ -194,6 +194,21 @@ TEST(BadInputCorpus, EveryCorpusEntryIsInTheManifestAndThereAreAtLeast30) {
 
 // ---- Valid inputs: BOM, CRLF and CR line endings change nothing. ----
 
+// A curve CSV without its material column (the file's name, which differs between the copies).
+std::string without_material(const std::string& csv) {
+  std::string out;
+  std::stringstream ss(csv);
+  for (std::string line; std::getline(ss, line);) {
+    std::vector<std::string> cells;
+    std::stringstream ls(line);
+    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+    if (cells.size() > 8) cells.erase(cells.begin() + 8);
+    for (size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + cells[i];
+    out += "\n";
+  }
+  return out;
+}
+
 TEST(GoodInput, BomAndCrlfDatabaseFileGivesTheSameCurveAsThePlainFile) {
   Scratch s("good_ri");
   const fs::path plain = s.dir / "plain.yml";
@@ -213,8 +228,8 @@ TEST(GoodInput, BomAndCrlfDatabaseFileGivesTheSameCurveAsThePlainFile) {
   EXPECT_EQ(b.status, 0) << b.err;
   EXPECT_EQ(c.status, 0) << c.err;
   EXPECT_GT(std::count(a.out.begin(), a.out.end(), '\n'), 90);  // header + 91 angles
-  EXPECT_EQ(a.out, b.out);
-  EXPECT_EQ(a.out, c.out);
+  EXPECT_EQ(without_material(a.out), without_material(b.out));
+  EXPECT_EQ(without_material(a.out), without_material(c.out));
   EXPECT_EQ(a.out.find("nan"), std::string::npos);
 }
 
@@ -231,7 +246,8 @@ TEST(GoodInput, CsvWithBomCrlfOrCrOnlyIsAccepted) {
   std::string text = read_all(kGoodDir + "/nk_cr_only.csv");
   std::replace(text.begin(), text.end(), '\r', '\n');
   std::ofstream(lf, std::ios::binary) << text;
-  EXPECT_EQ(run_cli(s.dir, "curve " + quote(lf)).out, run_cli(s.dir, "curve " + quote(kGoodDir + "/nk_cr_only.csv")).out);
+  EXPECT_EQ(without_material(run_cli(s.dir, "curve " + quote(lf)).out),
+            without_material(run_cli(s.dir, "curve " + quote(kGoodDir + "/nk_cr_only.csv")).out));
 }
 
 TEST(GoodInput, CatalogEntriesWithBomAndCrlfLoad) {

@@ -73,7 +73,9 @@ TEST(Cli, MalformedInputNamesFileAndLineAndLeavesNoOutput) {
 TEST(Cli, SchlickTableHasSpecColumns) {
   const auto r = run_command(cli() + " -q table schlick");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out.substr(0, r.out.find('\n')), "material,class,source,rms_de00,mean_de00,max_de00");
+  // The stable columns first; the coverage columns are appended after them.
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n')),
+            "material,class,source,rms_de00,mean_de00,max_de00,coverage,coverage_n,coverage_k,extrapolated");
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 29);
 }
 

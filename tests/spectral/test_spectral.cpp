@@ -5,6 +5,7 @@
 
 #include "spectral/errors.h"
 #include "spectral/material.h"
+#include "spectral/nk_text.h"
 #include "spectral/ri_database.h"
 #include "test_util.h"
 
@@ -102,7 +103,7 @@ TEST(Database, SeparateTabulatedNAndK) {
 TEST(Database, CsvInput) {
   test::TempDir tmp;
   const auto path = tmp.file("m.csv", "lambda_nm,n,k\r\n300,0.5,3\r\n900,0.2,6\r\n");
-  const auto s = sample_ior(read_nk_csv(path), SpectralGrid{600.0, 5.0, 1}, "csv");
+  const auto s = sample_ior(read_nk_table(path), SpectralGrid{600.0, 5.0, 1}, "csv");
   EXPECT_DOUBLE_EQ(s.ior.ior[0].real(), 0.35);
   EXPECT_DOUBLE_EQ(s.ior.ior[0].imag(), 4.5);
 }

@@ -39,7 +39,11 @@ Context::Context(const Settings& s)
   const color::Mat3 m = space_.xyz_to_rgb *
                         color::adaptation_matrix(color::adaptation_from_name(s.adaptation), illuminant_white_, space_.white);
   rgb_weights_.resize(xyz_w.size());
-  for (size_t i = 0; i < xyz_w.size(); ++i) rgb_weights_[i] = m * xyz_w[i];
+  luminance_weights_.resize(xyz_w.size());
+  for (size_t i = 0; i < xyz_w.size(); ++i) {
+    rgb_weights_[i] = m * xyz_w[i];
+    luminance_weights_[i] = xyz_w[i].Y;
+  }
 
   const int n = s.angles;
   double wsum = 0;
@@ -61,9 +65,34 @@ color::Rgb Context::spectrum_to_rgb(const std::vector<double>& v) const {
   return out;
 }
 
+Coverage coverage_of(const Context& ctx, const spectral::SampledIor& s) {
+  Coverage c;
+  const auto& w = ctx.luminance_weights();
+  c.n = c.k = c.both = 0.0;
+  for (size_t i = 0; i < w.size(); ++i) {
+    const bool k = !s.has_k_data || s.k_measured[i];
+    c.n += s.n_measured[i] ? w[i] : 0.0;
+    c.k += s.k_measured[i] ? w[i] : 0.0;
+    c.both += s.n_measured[i] && k ? w[i] : 0.0;
+    c.extrapolated |= !s.n_measured[i] || !k;
+  }
+  // Divided by the weights' own sum, so that full coverage is exactly 1.
+  double total = 0;
+  for (double x : w) total += x;
+  c.n /= total;
+  c.k /= total;
+  c.both /= total;
+  if (!s.has_k_data) c.k = std::nan("");
+  c.uncovered = s.uncovered;
+  return c;
+}
+
 LoadedMaterial load_material(const Context& ctx, spectral::Material m) {
   auto sampled = spectral::sample_ior(m.constants, ctx.grid(), m.name);
-  return {std::move(m), std::move(sampled.ior), std::move(sampled.warnings)};
+  LoadedMaterial out{std::move(m), std::move(sampled.ior), {}, coverage_of(ctx, sampled)};
+  for (const auto& w : out.material.constants.warnings) out.warnings.push_back(w);
+  for (auto& w : sampled.warnings) out.warnings.push_back(std::move(w));
+  return out;
 }
 
 std::vector<LoadedMaterial> load_catalog(const Context& ctx) {

@@ -34,6 +34,8 @@ class Context {
   const color::RgbSpace& space() const { return space_; }
   const color::SpaceLibrary& spaces() const { return spaces_; }
   const std::vector<color::Rgb>& rgb_weights() const { return rgb_weights_; }
+  // Per grid wavelength S·ȳ / Σ S·ȳ: its share of a white surface's luminance (sums to 1).
+  const std::vector<double>& luminance_weights() const { return luminance_weights_; }
   const color::Xyz& illuminant_white() const { return illuminant_white_; }
 
   // Incidence angles θ_i = 90°·i/(N − 1); cos is exactly 0 at 90°.
@@ -56,13 +58,27 @@ class Context {
   color::RgbSpace space_;
   color::Xyz illuminant_white_;
   std::vector<color::Rgb> rgb_weights_;
+  std::vector<double> luminance_weights_;
   std::vector<double> angles_deg_, cos_thetas_, render_weights_;
 };
+
+// How much of the visible range the data measures rather than holds at its nearest value, each
+// grid wavelength weighted by its share of a white surface's luminance (Context::luminance_weights,
+// the illuminant × ȳ). Data without any k (a lossless material) counts k as given everywhere.
+struct Coverage {
+  double n = 1.0;             // weighted fraction where n is measured
+  double k = 1.0;             // where k is measured; NaN when the data has no k at all
+  double both = 1.0;          // where n and k are both measured (k counted everywhere without k data)
+  bool extrapolated = false;  // some grid wavelength holds a nearest value (any weight)
+  std::string uncovered;      // "n and k data does not cover 360-600 nm" (empty: nothing held)
+};
+Coverage coverage_of(const Context& ctx, const spectral::SampledIor& s);
 
 struct LoadedMaterial {
   spectral::Material material;
   spectral::ComplexIorSpectrum ior;
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings;  // the reader's and the sampling's, one line each
+  Coverage coverage;
 };
 LoadedMaterial load_material(const Context& ctx, spectral::Material m);
 std::vector<LoadedMaterial> load_catalog(const Context& ctx);

@@ -42,9 +42,12 @@ Scene read_scene(const std::string& path) {
 
 std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, const Scene& scene) {
   std::vector<LoadedMaterial> out;
+  const auto& paths = ctx.settings().paths;
   for (const auto& m : scene.materials) {
     try {
-      out.push_back(load_material(ctx, spectral::resolve_material(m.spec, ctx.settings().paths)));
+      for (const auto& r : spectral::expand_materials({m.spec}, paths))
+        out.push_back(load_material(ctx, r.pattern.empty() ? spectral::resolve_material(r.spec, paths)
+                                                            : spectral::read_database_page(r.spec, paths)));
     } catch (const InputError& e) {
       throw InputError(scene.path, m.line, e.what());
     }

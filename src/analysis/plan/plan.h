@@ -31,8 +31,8 @@ struct Scene {
 // Reads and checks a scene file (spectral::read_scene_file's InputErrors) and applies the defaults.
 Scene read_scene(const std::string& path);
 
-// Resolves and loads the scene's materials; a material that cannot be resolved is an InputError
-// naming the scene file and the line of the material.
+// Resolves and loads the scene's materials (a page glob gives every page it matches); a material
+// that cannot be resolved is an InputError naming the scene file and the line of the material.
 std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, const Scene& scene);
 
 struct PlanChoice {

@@ -24,6 +24,12 @@ fit::CurveTarget curve_target(const Context& ctx, const std::vector<color::Rgb>&
   return t;
 }
 
+bool is_lossless(const spectral::ComplexIorSpectrum& ior) {
+  for (const auto& z : ior.ior)
+    if (z.imag() > fit::kLosslessMaxK) return false;
+  return true;
+}
+
 namespace {
 
 MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const StudyOptions& o) {
@@ -35,6 +41,8 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
   const auto& d = st.derived;
   const auto& cos = ctx.cos_thetas();
   const auto target = curve_target(ctx, st.truth);
+  fit::FitOptions fit_options;
+  fit_options.lossless = st.lossless = is_lossless(m.ior);
   for (const auto& spec : fresnel::model_specs()) {
     ModelResult r;
     r.model = spec.model;
@@ -42,7 +50,7 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
     r.derived_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.derived, cos));
     r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
     if (o.fit) {
-      r.fitted = fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d));
+      r.fitted = fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d), fit_options);
       r.fitted_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
       r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);
     }

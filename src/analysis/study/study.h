@@ -24,9 +24,10 @@ struct MaterialStudy {
   std::vector<color::Rgb> truth;
   fresnel::DerivedParameters derived;
   std::vector<ModelResult> models;  // registry order
-  // The talk's method table (SPEC §3) beyond what `models` holds.
+  // The talk's method table beyond what `models` holds.
   CurveError ps_eta_kappa, refl_f0_ps_eta;
   int g_clamped_ps = 0, g_clamped_refl = 0;  // channels whose g left [0, 1]
+  bool lossless = false;  // k ≤ fit::kLosslessMaxK over the grid: fits hold κ at 0
 
   const ModelResult& result(fresnel::Model m) const;
 };
@@ -42,6 +43,9 @@ struct StudyOptions {
 std::vector<MaterialStudy> study_materials(const Context& ctx, const std::vector<LoadedMaterial>& materials,
                                            const StudyOptions& options,
                                            const std::function<void(int, int)>& progress = {});
+
+// k at most fit::kLosslessMaxK at every grid wavelength.
+bool is_lossless(const spectral::ComplexIorSpectrum& ior);
 
 // The target of a fit: the ground truth in the working space's CIELAB at the context's angles.
 fit::CurveTarget curve_target(const Context& ctx, const std::vector<color::Rgb>& truth);

@@ -1,4 +1,5 @@
 #include "analysis/tables/media_tables.h"
+#include "analysis/tables/tables.h"
 
 #include <algorithm>
 #include <cmath>
@@ -186,6 +187,7 @@ Table gamut_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
   t.title = fmt::format("Gamut conversion: Gulbrandsen (F0, g) derived in {}, RMS ΔE2000 in the target space",
                         ctx.settings().space);
   t.columns = {{"material"}, {"rec709", 3}, {"ap0", 3}, {"channels_clamped", 0, false}};
+  add_coverage_columns(t);
   std::vector<color::Mat3> conv;
   std::vector<color::LabConverter> lab;
   for (const auto& target : gamut_targets()) {
@@ -206,6 +208,7 @@ Table gamut_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
     }
     total += static_cast<int>(moved);
     row.push_back(moved);
+    add_coverage_cells(row, *s.material);
     t.rows.push_back(std::move(row));
   }
   t.reading = fmt::format(
@@ -214,7 +217,8 @@ Table gamut_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
   t.notes = {"Case A evaluates in the working space and converts the resulting RGB with OpenColorIO's matrix; case B "
              "converts F0 and g as colours and evaluates in the target space. Lab relative to the target's white.",
              fmt::format("Converted parameters can leave the model's domain (F0 < 0 or ≥ 1, g outside [0, 1]); they "
-                         "are clamped into it and counted in channels_clamped: {} channels in all.", total)};
+                         "are clamped into it and counted in channels_clamped: {} channels in all.", total),
+             coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -226,6 +230,7 @@ Table gamut_models_table(const Context& ctx, const std::vector<MaterialStudy>& s
   for (const auto& spec : fresnel::model_specs()) t.columns.push_back({spec.name, 12});
   t.columns.push_back({"channels_clamped", 0});
   t.columns.push_back({"reflectances_outside_unit", 0});
+  add_coverage_columns(t);
   int total = 0, outside = 0;
   for (const auto& target : gamut_targets()) {
     const auto conv = ctx.spaces().conversion(ctx.settings().space, target);
@@ -244,6 +249,7 @@ Table gamut_models_table(const Context& ctx, const std::vector<MaterialStudy>& s
       outside += static_cast<int>(out_unit);
       row.push_back(moved);
       row.push_back(out_unit);
+      add_coverage_cells(row, *s.material);
       t.rows.push_back(std::move(row));
     }
   }
@@ -256,7 +262,8 @@ Table gamut_models_table(const Context& ctx, const std::vector<MaterialStudy>& s
              fmt::format("Reflectance parameters (F0, F82, F90) outside [0, 1] after conversion are kept (Schlick and the "
                          "F82 formula are defined there; e.g. gold's F0 lies outside the Rec.709 gamut) and counted: {}. "
                          "Both cases evaluate the F82 model without its [0, 1] output clamp, a range guard that would "
-                         "otherwise break its linearity.", outside)};
+                         "otherwise break its linearity.", outside),
+             coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -284,6 +291,7 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
   t.title = "External media: exact spectral Fresnel against Schlick with an adjusted F0 (RMS ΔE2000)";
   t.columns = {{"material"}, {"class"}, {"medium"}, {"eta_medium", 3}, {"symmetric", 3}, {"metal_variant", 3},
                {"exact_max_reflectance", 6}};
+  add_coverage_columns(t);
   double own_max = 0;
   for (const auto& s : studies) {
     const auto& m = *s.material;
@@ -301,6 +309,7 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
       const double e_metal = is_metal(s) ? curve_error(ctx, truth, schlick_curve(ctx, metal)).rms : std::nan("");
       t.rows.push_back({m.material.name, std::string(spectral::to_string(m.material.material_class)),
                         std::string(md.name), md.eta, e_sym, e_metal, max_r});
+      add_coverage_cells(t.rows.back(), m);
     }
     if (!is_metal(s)) {
       // In a medium of the material's own index the relative index is 1: the interface vanishes.
@@ -313,6 +322,7 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
       const double e_sym = curve_error(ctx, truth, schlick_curve(ctx, {0, 0, 0})).rms;
       t.rows.push_back({m.material.name, std::string("dielectric"), std::string("own index"), std::nan(""), e_sym,
                         std::nan(""), max_r});
+      add_coverage_cells(t.rows.back(), m);
     }
   }
   t.reading = fmt::format(
@@ -321,14 +331,15 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
       "grazing. For metals neither adjustment knows η and κ separately; compare both columns before trusting one.",
       own_max);
   t.notes = {"symmetric: √F0′ = (√F0 − √F0E)/(1 − √F0·√F0E) with √F0E = (η_E − 1)/(η_E + 1), per channel, from the "
-             "F0 in air (SPEC §2).",
+             "F0 in air.",
              "metal_variant: treats the metal as real index 1 with κ² = 4F0/(1 − F0): F0′ = ((1 − η_E)²(1 − F0) + 4F0) / "
              "((1 + η_E)²(1 − F0) + 4F0). The talk's own asymmetric variant could not be recovered from the sources "
              "available here; this one is derived and measured instead.",
              "exact: the spectral Fresnel equations with the index relative to the medium, (n + iκ)/η_E per "
              "wavelength; exact_max_reflectance is the largest RGB channel over all angles.",
              "own index: the medium has the material's own complex index, so the relative index is exactly 1 at every "
-             "wavelength: no interface, no reflection; Schlick with F0′ = 0 still rises towards grazing."};
+             "wavelength: no interface, no reflection; Schlick with F0′ = 0 still rises towards grazing.",
+             coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -338,6 +349,8 @@ Table internal_table(const Context& ctx, const std::vector<MaterialStudy>& studi
   t.title = "Internal reflection: dielectrics seen from inside, exact against Schlick with the transmission angle";
   t.columns = {{"material"}, {"critical_angle_deg", 2}, {"rms_de00", 3}, {"mean_de00", 3}, {"max_de00", 3},
                {"de00_normal", 3}, {"exact_at_critical", 6}, {"schlick_at_critical", 6}};
+  add_coverage_columns(t);
+  std::vector<const LoadedMaterial*> dielectrics;
   const auto& cos = ctx.cos_thetas();
   for (const auto& s : studies) {
     if (is_metal(s)) continue;
@@ -371,6 +384,8 @@ Table internal_table(const Context& ctx, const std::vector<MaterialStudy>& studi
                                        fresnel::schlick_internal(c_beyond, f0.b)});
     t.rows.push_back({m.material.name, std::acos(crit_cos) * 180.0 / M_PI, e.rms, e.mean, e.max, de.front(),
                       std::min({exact_c.r, exact_c.g, exact_c.b}), schlick_c});
+    add_coverage_cells(t.rows.back(), m);
+    dielectrics.push_back(&m);
   }
   t.reading = "Seen from inside, both curves start at F0 and end in total internal reflection; Schlick with the "
               "transmission angle follows the exact curve closely below the critical angle.";
@@ -378,7 +393,8 @@ Table internal_table(const Context& ctx, const std::vector<MaterialStudy>& studi
              "reflection; Schlick: per channel with n = (1 + √F0)/(1 − √F0) and cos θt from Snell's law, 1 past the "
              "critical angle.",
              "critical_angle_deg: the smallest angle past which every wavelength and every channel is totally "
-             "reflected; the last two columns are the smallest RGB channel just past it (1 means total reflection)."};
+             "reflected; the last two columns are the smallest RGB channel just past it (1 means total reflection).",
+             coverage_note(dielectrics)};
   return t;
 }
 

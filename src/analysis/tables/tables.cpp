@@ -26,21 +26,51 @@ std::string setting_note(const Context& ctx) {
                      ctx.grid().step_nm, s.angles, s.eta_outside);
 }
 
+void add_coverage_columns(Table& t) {
+  for (const char* c : {"coverage", "coverage_n", "coverage_k"}) t.columns.push_back({c, 3});
+  t.columns.push_back({"extrapolated"});
+}
+
+void add_coverage_cells(std::vector<Cell>& row, const LoadedMaterial& m) {
+  const auto& c = m.coverage;
+  row.insert(row.end(), {c.both, c.n, c.k, std::string(c.extrapolated ? "yes" : "no")});
+}
+
+std::string coverage_note(const std::vector<const LoadedMaterial*>& materials) {
+  int held = 0;
+  for (const auto* m : materials) held += m->coverage.extrapolated;
+  return fmt::format("coverage: the share of 360-830 nm, each wavelength weighted by the illuminant × ȳ, where the "
+                     "data measures n and k (coverage_n, coverage_k: each alone; data without k counts k as given); "
+                     "extrapolated: somewhere the nearest measured value is held ({} of {} materials).",
+                     held, materials.size());
+}
+
+std::vector<const LoadedMaterial*> materials_of(const std::vector<MaterialStudy>& studies) {
+  std::vector<const LoadedMaterial*> out;
+  for (const auto& s : studies) out.push_back(s.material);
+  return out;
+}
+
 Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& materials) {
   Table t;
   t.name = "schlick";
   t.title = "Schlick against spectral ground truth (ΔE2000)";
   t.columns = {{"material"}, {"class"}, {"source"}, {"rms_de00", 3}, {"mean_de00", 3}, {"max_de00", 3}};
+  add_coverage_columns(t);
+  std::vector<const LoadedMaterial*> all;
   for (const auto& m : materials) {
     const auto truth = ground_truth_curve(ctx, m.ior, ctx.settings().eta_outside);
     const auto e = curve_error(ctx, truth, schlick_curve(ctx, truth.front()));
     t.rows.push_back({m.material.name, std::string(spectral::to_string(m.material.material_class)),
                       m.material.source, e.rms, e.mean, e.max});
+    add_coverage_cells(t.rows.back(), m);
+    all.push_back(&m);
   }
   t.reading =
       "Schlick's model with F0 taken from the spectral ground truth at normal incidence, per material. "
       "Metals with a strongly coloured grazing tint (chromium, zinc, iron) are where Schlick is weakest.";
-  t.notes = {setting_note(ctx), "ΔE2000 per Sharma, Wu & Dalal 2005; RMS, mean and max over the incidence angles."};
+  t.notes = {setting_note(ctx), "ΔE2000 per Sharma, Wu & Dalal 2005; RMS, mean and max over the incidence angles.",
+             coverage_note(all)};
   return t;
 }
 
@@ -68,26 +98,52 @@ const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model 
   return wants_fitted(kind) ? r.fitted.parameters : r.derived;
 }
 
-Table curve_table(const Context& ctx, const LoadedMaterial& m, const std::string& model,
-                  const std::string& parameters) {
-  const auto& spec = fresnel::model_from_name(model);
+namespace {
+
+// One material's rows of the curve table.
+void add_curve_rows(Table& t, const Context& ctx, const LoadedMaterial& m, const fresnel::ModelSpec& spec,
+                    const std::string& parameters) {
   const std::vector<LoadedMaterial> one{m};
   const auto st = study_one(ctx, one, parameters);
   const auto& params = model_params(st, spec.model, parameters);
   const auto approx = fresnel::evaluate_curve(spec.model, params, ctx.cos_thetas());
   const auto de = de2000_per_angle(ctx, st.truth, approx);
-  Table t;
-  t.name = "curve";
-  t.title = fmt::format("{}: ground truth and {} ({} parameters) per angle", m.material.name, spec.label, parameters);
-  t.columns = {{"theta_deg", 2}, {"truth_r", 6}, {"truth_g", 6}, {"truth_b", 6},
-               {"model_r", 6},   {"model_g", 6}, {"model_b", 6}, {"de00", 4}};
-  for (size_t i = 0; i < st.truth.size(); ++i)
+  const std::string flags = wants_fitted(parameters) ? fit::fit_flags(st.result(spec.model).fitted) : "";
+  for (size_t i = 0; i < st.truth.size(); ++i) {
     t.rows.push_back({ctx.angles_deg()[i], st.truth[i].r, st.truth[i].g, st.truth[i].b, approx[i].r, approx[i].g,
-                      approx[i].b, de[i]});
+                      approx[i].b, de[i], m.material.name});
+    add_coverage_cells(t.rows.back(), m);
+    t.rows.back().push_back(flags);
+  }
   const auto names = spec.param_names();
   std::string p;
   for (size_t i = 0; i < names.size(); ++i) p += fmt::format("{}{}={:.6f}", i ? ", " : "", names[i], params[i]);
-  t.notes = {setting_note(ctx), "Parameters: " + p};
+  t.notes.push_back(fmt::format("{} parameters: {}{}", m.material.name, p, flags.empty() ? "" : " (fit: " + flags + ")"));
+  if (m.coverage.extrapolated) t.notes.push_back(fmt::format("{}: extrapolated, {}", m.material.name, m.coverage.uncovered));
+}
+
+}  // namespace
+
+Table curve_table(const Context& ctx, const std::vector<LoadedMaterial>& materials, const std::string& model,
+                  const std::string& parameters) {
+  const auto& spec = fresnel::model_from_name(model);
+  wants_fitted(parameters);
+  Table t;
+  t.name = "curve";
+  t.title = materials.size() == 1
+                ? fmt::format("{}: ground truth and {} ({} parameters) per angle", materials.front().material.name,
+                              spec.label, parameters)
+                : fmt::format("Ground truth and {} ({} parameters) per angle, {} materials", spec.label, parameters,
+                              materials.size());
+  t.columns = {{"theta_deg", 2}, {"truth_r", 6}, {"truth_g", 6}, {"truth_b", 6}, {"model_r", 6},
+               {"model_g", 6},   {"model_b", 6}, {"de00", 4},    {"material"}};
+  add_coverage_columns(t);
+  t.columns.push_back({"fit_flags"});
+  t.notes = {setting_note(ctx)};
+  for (const auto& m : materials) add_curve_rows(t, ctx, m, spec, parameters);
+  std::vector<const LoadedMaterial*> all;
+  for (const auto& m : materials) all.push_back(&m);
+  t.notes.push_back(coverage_note(all));
   return t;
 }
 
@@ -98,6 +154,20 @@ std::string params_text(fresnel::Model m, const std::vector<double>& p) {
   std::string out;
   for (size_t i = 0; i < p.size(); ++i) out += fmt::format("{}{}={:.5f}", i ? " " : "", names[i], p[i]);
   return out;
+}
+
+std::string fit_flags_note(const std::vector<MaterialStudy>& studies) {
+  int flagged = 0, fits = 0;
+  for (const auto& s : studies)
+    for (const auto& r : s.models) {
+      ++fits;
+      flagged += !fit::fit_flags(r.fitted).empty();
+    }
+  return fmt::format("fit_flags ({} of {} fits): at_bound:NAME a parameter ended on its fit box where the model goes "
+                     "on; iteration_limit the solver stopped at its iteration limit; kept_start no solve improved on "
+                     "the best start, which is published instead (a fit never publishes worse than its best start). "
+                     "Lossless materials (k ≤ {:g} everywhere) keep κ = 0 in their fits.",
+                     flagged, fits, fit::kLosslessMaxK);
 }
 
 bool is_metal(const MaterialStudy& s) {
@@ -113,12 +183,16 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   t.title = "Ways to derive RGB parameters from spectral data (RMS ΔE2000, metals)";
   t.columns = {{"material"}, {"schlick", 3}, {"ps_eta_kappa", 3}, {"refl_eta_kappa", 3},
                {"refl_f0_ps_eta", 3}, {"refl_f0_refl_eta", 3}, {"fitted_eta_kappa", 3}};
+  add_coverage_columns(t);
   int g_clamped_ps = 0, g_clamped_refl = 0;
+  std::vector<const LoadedMaterial*> metals;
   for (const auto& s : studies) {
     if (!is_metal(s)) continue;
     t.rows.push_back({s.material->material.name, s.result(fresnel::model_of<fresnel::models::Schlick>).derived_error.rms, s.ps_eta_kappa.rms,
                       s.result(fresnel::model_of<fresnel::models::FresnelRgb>).derived_error.rms, s.refl_f0_ps_eta.rms,
                       s.result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived_error.rms, s.result(fresnel::model_of<fresnel::models::FresnelRgb>).fitted_error.rms});
+    add_coverage_cells(t.rows.back(), *s.material);
+    metals.push_back(s.material);
     g_clamped_ps += s.g_clamped_ps;
     g_clamped_refl += s.g_clamped_refl;
   }
@@ -135,7 +209,8 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
              "Gulbrandsen columns: g from (F0, η) by inverting η(r, g), clamped to [0, 1]; channels clamped: " +
                  fmt::format("{} (PS η), {} (Refl. η).", g_clamped_ps, g_clamped_refl),
              "Fitted: RGB η, κ fitted with Ceres (Levenberg-Marquardt, bounded) to minimize the RMS ΔE2000 over angles, "
-             "started from the Refl. η, κ, Gulbrandsen and PS values; the best start wins."};
+             "started from the Refl. η, κ, Gulbrandsen and PS values; the best start wins.",
+             coverage_note(metals)};
   return t;
 }
 
@@ -146,6 +221,8 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
   t.columns = {{"material"},         {"class"},         {"model"},         {"parameters"},  {"rms_de00", 3},
                {"mean_de00", 3},     {"max_de00", 3},   {"rms_weighted_de00", 3},        {"clamped"},
                {"fit_iterations", 0}, {"fit_termination"}, {"values"}};
+  add_coverage_columns(t);
+  t.columns.push_back({"fit_flags"});
   std::vector<double> med[2][2];  // [schlick, f82][metal] for the reading
   int clamped_rows = 0;
   for (const auto& s : studies) {
@@ -161,6 +238,8 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
                           fitted ? static_cast<long long>(r.fitted.iterations) : 0LL,
                           std::string(fitted ? r.fitted.termination : "-"),
                           params_text(r.model, fitted ? r.fitted.parameters : r.derived)});
+        add_coverage_cells(t.rows.back(), *s.material);
+        t.rows.back().push_back(fitted ? fit::fit_flags(r.fitted) : std::string());
         // The talk's comparison: Schlick as derived (spectral F0) against the fitted F82 model.
         const bool schlick_derived = r.model == fresnel::model_of<fresnel::models::Schlick> && !fitted;
         const bool f82_fitted = r.model == fresnel::model_of<fresnel::models::F82> && fitted;
@@ -179,7 +258,8 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
              fmt::format("clamped: the F82 model's result left [0, 1] somewhere and was clamped ({} rows).", clamped_rows),
              "Derived: Schlick F0; generalized Schlick F0, F90 = 1, p through F82; Cook-Torrance F0 with the luminance "
              "of Refl. η, κ as representative index; Lazányi F0, a from F82, α = 6; F82 model F0, F82; Gulbrandsen F0 "
-             "and g from Refl. η; RGB Fresnel Refl. η, κ."};
+             "and g from Refl. η; RGB Fresnel Refl. η, κ.",
+             fit_flags_note(studies), coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -205,6 +285,8 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   for (const char* q : {"f0", "f82", "g", "eta", "kappa"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
   t.columns.push_back({"out_of_range", 0, false});
+  add_coverage_columns(t);
+  t.columns.push_back({"fit_flags"});
   int flagged = 0;
   for (const auto& s : studies) {
     const auto& d = s.derived;
@@ -224,14 +306,17 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       unit.push_back({fmt::format("g_{}", ch[c]), d.g_refl_eta[c]});
     }
     row.push_back(flag_list(unit, flagged));
+    add_coverage_cells(row, *s.material);
+    row.push_back(eta_kappa.fitted.parameters.empty() ? std::string() : fit::fit_flags(eta_kappa.fitted));
     t.rows.push_back(std::move(row));
   }
-  t.reading = "Parameters for shading models, per catalog material, in the working space.";
+  t.reading = "Parameters for shading models, per material, in the working space.";
   t.notes = {setting_note(ctx),
              "F0, F82: the spectral procedure at 0° and at arccos(1/7) ≈ 81.79°.",
              "g: Gulbrandsen's edge tint from (F0, Refl. η), unclamped.",
              "eta, kappa: RGB η, κ fitted with Ceres to minimize the RMS ΔE2000 against ground truth.",
-             fmt::format("Values outside [0, 1] (F0, F82, g) are kept and listed in out_of_range: {} values.", flagged)};
+             fmt::format("Values outside [0, 1] (F0, F82, g) are kept and listed in out_of_range: {} values.", flagged),
+             "fit_flags: of the eta, kappa fit (see the models table's notes).", coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -243,6 +328,7 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   for (const char* q : {"base_color", "specular_color"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
   t.columns.push_back({"out_of_range"});
+  add_coverage_columns(t);
   int flagged = 0;
   for (const auto& s : studies) {
     const auto& d = s.derived;
@@ -256,11 +342,13 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       unit.push_back({fmt::format("specular_color_{}", ch[c]), d.f82_tint[c]});
     }
     row.push_back(flag_list(unit, flagged));
+    add_coverage_cells(row, *s.material);
     t.rows.push_back(std::move(row));
   }
   t.reading = "OpenPBR's F82-tint form: base_color is F0, specular_color the ratio of the true F82 to Schlick's value "
               "at arccos(1/7); a tint above 1 means the true curve is brighter there than Schlick's.";
-  t.notes = {setting_note(ctx), fmt::format("Values outside [0, 1] are kept and listed in out_of_range: {} values.", flagged)};
+  t.notes = {setting_note(ctx), fmt::format("Values outside [0, 1] are kept and listed in out_of_range: {} values.", flagged),
+             coverage_note(materials_of(studies))};
   return t;
 }
 

@@ -9,6 +9,14 @@ namespace fl::analysis {
 // The colorimetric setting in one sentence, the first note of the tables.
 std::string setting_note(const Context& ctx);
 
+// Per-material tables end with the material's coverage (Coverage, docs/conventions.md "Coverage"):
+// coverage, coverage_n, coverage_k (empty without k data) and extrapolated (yes / no).
+void add_coverage_columns(Table& t);
+void add_coverage_cells(std::vector<Cell>& row, const LoadedMaterial& m);
+// The note that explains them, with how many of the table's materials are extrapolated.
+std::string coverage_note(const std::vector<const LoadedMaterial*>& materials);
+std::vector<const LoadedMaterial*> materials_of(const std::vector<MaterialStudy>& studies);
+
 // `materials`: the catalog (key, name, class, data source, reference).
 Table catalog_table(const spectral::DataPaths& paths);
 
@@ -38,9 +46,10 @@ MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& o
 // A model's derived or fitted parameters (`kind`) from a study.
 const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m, const std::string& kind);
 
-// One curve's worth of output for `curve`: per angle, ground truth, model and ΔE2000.
-// `parameters` is "derived" or "fitted".
-Table curve_table(const Context& ctx, const LoadedMaterial& m, const std::string& model,
+// `curve`: per material and angle, ground truth, model and ΔE2000, then the material, its
+// coverage and the fit's flags (fit::fit_flags; empty for derived parameters). `parameters` is
+// "derived" or "fitted".
+Table curve_table(const Context& ctx, const std::vector<LoadedMaterial>& materials, const std::string& model,
                   const std::string& parameters = "derived");
 
 }  // namespace fl::analysis

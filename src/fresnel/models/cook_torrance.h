@@ -28,8 +28,9 @@ struct CookTorrance {
   static constexpr std::array<ParamSpec, 1> kChannelParams{
       {{"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}}}};
   static constexpr std::array<ParamSpec, 2> kSharedParams{{
-      {"eta_rep", "relative index", ParamKind::Index, {0.01, 10.0}, {-kUnbounded, kUnbounded}},
-      {"kappa_rep", "extinction", ParamKind::Index, {0.0, 20.0}, {-kUnbounded, kUnbounded}},
+      // As wide as RGB η, κ (fresnel_rgb.h).
+      {"eta_rep", "relative index", ParamKind::Index, {0.01, 1000.0}, {-kUnbounded, kUnbounded}},
+      {"kappa_rep", "extinction", ParamKind::Extinction, {0.0, 1000.0}, {-kUnbounded, kUnbounded}},
   }};
   static constexpr bool kCanLeaveUnitRange = false;
   // The shape comes from the exact equations of a per-material index: no shared table holds it.

@@ -14,10 +14,11 @@ namespace fl::fresnel::models {
 struct FresnelRgb {
   static constexpr const char* kName = "fresnel_rgb";
   static constexpr const char* kLabel = "RGB Fresnel equations (eta, kappa)";
-  // Indices covering every catalog material with margin.
+  // Wide enough for every page of the database: RGB η reaches 13.7 (main/Zn/nk/Querry), and no
+  // material's η or κ in the visible comes near 10³.
   static constexpr std::array<ParamSpec, 2> kChannelParams{{
-      {"eta", "relative index", ParamKind::Index, {0.01, 10.0}, {0.01, kUnbounded}},
-      {"kappa", "extinction", ParamKind::Index, {0.0, 20.0}, {0.0, kUnbounded}},
+      {"eta", "relative index", ParamKind::Index, {0.01, 1000.0}, {0.01, kUnbounded}},
+      {"kappa", "extinction", ParamKind::Extinction, {0.0, 1000.0}, {0.0, kUnbounded}},
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;

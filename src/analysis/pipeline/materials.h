@@ -1,0 +1,38 @@
+#pragma once
+// The materials a command works on: catalog names, database pages, page globs and files
+// (spectral::expand_materials), or the whole catalog when none is named, loaded under a policy.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/pipeline/context.h"
+
+namespace fl::analysis {
+
+struct LoadPolicy {
+  // Coverage::both below this: an InputError for a single named material, skipped (with the
+  // reason) when there are several.
+  double min_coverage = 0.0;
+  // A page matched by a glob that cannot be read is skipped with its reason unless strict. A
+  // material named on its own is always an error when it cannot be read.
+  bool strict = false;
+  std::optional<spectral::MaterialClass> only;  // keep this class only (others skipped, with the reason)
+  int threads = 0;                              // 0: every hardware thread
+};
+
+struct SkippedMaterial {
+  std::string spec, reason;
+};
+
+struct MaterialSet {
+  std::vector<LoadedMaterial> materials;  // in argument order (a glob's pages sorted)
+  std::vector<SkippedMaterial> skipped;   // in argument order
+  int requested = 0;                      // after glob expansion
+};
+
+// Loads `specs` (none: the catalog) in parallel; `progress` gets (done, total) after each.
+MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& specs, const LoadPolicy& policy,
+                           const std::function<void(int, int)>& progress = {});
+
+}  // namespace fl::analysis

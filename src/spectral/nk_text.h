@@ -1,0 +1,34 @@
+#pragma once
+// Optical constants from the text files people have (docs/conventions.md, "Inputs"). Every reader
+// judges rows like the database reader (tabulated.h) and throws InputError naming file, line and
+// problem.
+#include <string>
+
+#include "spectral/optical_constants.h"
+
+namespace fl::spectral {
+
+// A table with a header line naming its columns, in any order: the wavelength (`wl`, `lambda`,
+// `wavelength`, `λ`, with the unit in the name: `lambda_nm`, `Wavelength (µm)`, `wl [um]`,
+// `wavelength, nm` in quotes), `n` (or `eta`) and optionally `k` (or `kappa`); any case, spaces
+// around names ignored. Comma-, tab- or whitespace-separated (the header's separator), `#` starts
+// a comment line. A wavelength without a unit is in nm, except refractiveindex.info's `wl`, in µm.
+// A new header line starts a new section: refractiveindex.info's CSV download (`wl,n` rows, then
+// `wl,k` rows) is two sections. Wavelengths that miss the used range in their unit but would
+// overlap it in the other are refused with a message saying so.
+OpticalConstants read_nk_table(const std::string& path, const UsedRange& used = {});
+
+// SOPRA's .nk format: a first line "UNIT FIRST LAST INTERVALS" (UNIT 1 = eV, 2 = µm, 3 = cm⁻¹,
+// 4 = nm; INTERVALS + 1 evenly spaced points from FIRST to LAST), then n, k pairs (whitespace, `;`
+// or `,` between values). A file whose first line does not start with a number is read as a table.
+OpticalConstants read_sopra_nk(const std::string& path, const UsedRange& used = {});
+
+// Mitsuba / pbrt spectra: `NAME.eta.spd` and `NAME.k.spd`, each wavelength (nm) and value pairs,
+// `#` comments. `path` is either file of the pair; without the k file, k = 0 (a dielectric).
+OpticalConstants read_spd_pair(const std::string& path, const UsedRange& used = {});
+
+// By file name: .yml/.yaml a refractiveindex.info page, .nk SOPRA, .spd a pair, anything else
+// (.csv, .txt, .tsv, .dat, ...) a table.
+OpticalConstants read_optical_file(const std::string& path, const UsedRange& used = {});
+
+}  // namespace fl::spectral

@@ -1,0 +1,102 @@
+#include "spectral/pages.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace fl::spectral {
+namespace fs = std::filesystem;
+
+std::vector<std::string> list_pages(const std::string& database) {
+  std::vector<std::string> out;
+  const fs::path data = fs::path(database) / "data";
+  std::error_code ec;
+  if (!fs::is_directory(data, ec)) return out;
+  for (auto it = fs::recursive_directory_iterator(data, fs::directory_options::skip_permission_denied, ec);
+       it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (ec) break;
+    const auto& p = it->path();
+    if (!it->is_regular_file(ec) || p.extension() != ".yml" || p.filename() == "about.yml") continue;
+    std::string rel = fs::relative(p, data, ec).generic_string();
+    out.push_back(rel.substr(0, rel.size() - 4));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+bool glob_match(std::string_view pattern, std::string_view path) {
+  if (pattern.empty()) return path.empty();
+  if (pattern.substr(0, 2) == "**") {
+    for (size_t i = 0; i <= path.size(); ++i)
+      if (glob_match(pattern.substr(2), path.substr(i))) return true;
+    return false;
+  }
+  if (pattern[0] == '*') {
+    for (size_t i = 0; i <= path.size(); ++i) {
+      if (glob_match(pattern.substr(1), path.substr(i))) return true;
+      if (i < path.size() && path[i] == '/') break;
+    }
+    return false;
+  }
+  if (path.empty()) return false;
+  if (pattern[0] == '?' ? path[0] == '/' : pattern[0] != path[0]) return false;
+  return glob_match(pattern.substr(1), path.substr(1));
+}
+
+bool is_glob(std::string_view spec) { return spec.find_first_of("*?") != std::string_view::npos; }
+
+std::vector<std::string> match_pages(const std::vector<std::string>& pages, const std::string& pattern) {
+  std::vector<std::string> out;
+  for (const auto& p : pages)
+    if (glob_match(pattern, p)) out.push_back(p);
+  return out;
+}
+
+std::string book_of(const std::string& page) {
+  const fs::path folder = fs::path(page).parent_path();
+  const fs::path above = folder.parent_path();
+  return (above.empty() ? folder : above).filename().string();
+}
+
+namespace {
+
+std::string text(const YAML::Node& n, const char* key) {
+  const YAML::Node v = n[key];
+  return v && v.IsScalar() ? v.as<std::string>() : std::string();
+}
+
+void add_book(const YAML::Node& book, std::map<std::string, PageEntry>& out) {
+  const YAML::Node content = book["content"];
+  if (!content || !content.IsSequence()) return;
+  std::string section;
+  for (const auto& item : content) {
+    if (!item.IsMap()) continue;
+    if (item["DIVIDER"]) section = text(item, "DIVIDER");
+    if (!item["PAGE"]) continue;
+    std::string data = text(item, "data");
+    if (data.size() < 4 || data.substr(data.size() - 4) != ".yml") continue;
+    data.resize(data.size() - 4);
+    out.emplace(data, PageEntry{book_of(data), text(book, "name"), text(item, "name"), section});
+  }
+}
+
+}  // namespace
+
+std::map<std::string, PageEntry> read_page_catalog(const std::string& database) {
+  std::map<std::string, PageEntry> out;
+  try {
+    const YAML::Node root = YAML::LoadFile(database + "/catalog-nk.yml");
+    if (!root.IsSequence()) return out;
+    for (const auto& shelf : root) {
+      if (!shelf.IsMap() || !shelf["content"] || !shelf["content"].IsSequence()) continue;
+      for (const auto& book : shelf["content"])
+        if (book.IsMap() && book["BOOK"]) add_book(book, out);
+    }
+  } catch (const YAML::Exception&) {
+    out.clear();
+  }
+  return out;
+}
+
+}  // namespace fl::spectral

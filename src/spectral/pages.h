@@ -1,0 +1,37 @@
+#pragma once
+// The database's pages: listing, globs over their paths, and where each sits in the database's own
+// catalog (catalog-nk.yml: book and page names).
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fl::spectral {
+
+// Every data file under DATABASE/data/ except the books' about.yml, as page paths relative to data/
+// without ".yml" ("main/Au/nk/Johnson"), sorted.
+std::vector<std::string> list_pages(const std::string& database);
+
+// A page path glob: `*` matches any run of characters within one path segment, `?` one character
+// other than '/', `**` any run including '/' (so 'main/**' is every page of the main shelf and '**'
+// every page). Everything else matches itself.
+bool glob_match(std::string_view pattern, std::string_view path);
+bool is_glob(std::string_view spec);  // contains '*' or '?'
+
+// The pages matching `pattern`, sorted.
+std::vector<std::string> match_pages(const std::vector<std::string>& pages, const std::string& pattern);
+
+// A page's place in the database's catalog.
+struct PageEntry {
+  std::string book;       // the book's folder name ("Au"); from the path when the catalog lacks it
+  std::string book_name;  // "Au (Gold)" (empty when the catalog lacks the page)
+  std::string page_name;  // "Johnson and Christy 1972: n,k 0.188–1.94 µm"
+  std::string section;    // the catalog divider above the page ("Experimental data: thin film")
+};
+// catalog-nk.yml's entries by page path; empty when the file is missing or unreadable (the catalog
+// only names things: pages are listed from data/ either way).
+std::map<std::string, PageEntry> read_page_catalog(const std::string& database);
+// The book folder of a page path: the folder above the page's own ("main/Au/nk/Johnson" → "Au").
+std::string book_of(const std::string& page);
+
+}  // namespace fl::spectral
