@@ -15,6 +15,8 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_plot.cpp
 void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_speed.cpp
 void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_plan.cpp
+void add_pages_command(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_library.cpp
+void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_library.cpp
 
 namespace {
 
@@ -139,6 +141,8 @@ const std::vector<Command>& commands() {
       {"render", add_render},
       {"speed", add_speed_command},
       {"plan", add_plan_command},
+      {"pages", add_pages_command},
+      {"library", add_library_command},
   };
   return table;
 }

@@ -183,6 +183,9 @@ Material read_database_page(const std::string& page, const DataPaths& paths) {
   m.constants = read_refractiveindex_file(database_file(paths, page));
   m.reference = m.constants.reference;
   m.material_class = classify(m.constants);
+  const PageEntry* entry = page_entry(paths.database, page);
+  if (entry) m.book_name = entry->book_name, m.section = entry->section;
+  m.bulk_measurement = is_bulk_measurement(entry);
   return m;
 }
 

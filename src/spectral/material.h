@@ -18,6 +18,9 @@ struct Material {
   MaterialClass material_class = MaterialClass::Metal;
   std::string source;     // database page, file path or "constant n=…"
   std::string reference;  // citation of the data
+  std::string book_name;  // a page's book in the database's catalog ("Au (Gold)"), if listed
+  std::string section;    // a page's catalog section ("Experimental data: thin film"), if listed
+  bool bulk_measurement = false;  // a page measuring the bulk material (pages.h, is_bulk_measurement)
   int order = 0;          // catalog order (the talk's table order)
   double talk_schlick_rms_de00 = -1.0;  // Hoffman 2020's Schlick RMS ΔE2000, when the talk lists it
   OpticalConstants constants;

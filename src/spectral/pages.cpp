@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <mutex>
 
 namespace fl::spectral {
 namespace fs = std::filesystem;
@@ -97,6 +98,25 @@ std::map<std::string, PageEntry> read_page_catalog(const std::string& database) 
     out.clear();
   }
   return out;
+}
+
+const PageEntry* page_entry(const std::string& database, const std::string& page) {
+  static std::mutex mutex;
+  static std::map<std::string, std::map<std::string, PageEntry>> catalogs;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto it = catalogs.find(database);
+  if (it == catalogs.end()) it = catalogs.emplace(database, read_page_catalog(database)).first;
+  const auto e = it->second.find(page);
+  return e == it->second.end() ? nullptr : &e->second;
+}
+
+bool is_bulk_measurement(const PageEntry* entry) {
+  if (!entry) return false;
+  std::string s = entry->section;
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  for (const char* word : {"model", "simulation", "thin film", "nanoparticle", "flake", "2d"})
+    if (s.find(word) != std::string::npos) return false;
+  return true;
 }
 
 }  // namespace fl::spectral

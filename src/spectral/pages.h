@@ -31,6 +31,13 @@ struct PageEntry {
 // catalog-nk.yml's entries by page path; empty when the file is missing or unreadable (the catalog
 // only names things: pages are listed from data/ either way).
 std::map<std::string, PageEntry> read_page_catalog(const std::string& database);
+// read_page_catalog(database)'s entry for `page`, read once per database and kept (thread-safe);
+// nullptr when the catalog lacks the page.
+const PageEntry* page_entry(const std::string& database, const std::string& page);
+// A measurement of the bulk material: the page's catalog section is not one of models and
+// simulations, thin films, nanoparticles, flakes or 2D structures (an empty section counts as bulk:
+// books without sections are measurements); false for a page the catalog does not list.
+bool is_bulk_measurement(const PageEntry* entry);
 // The book folder of a page path: the folder above the page's own ("main/Au/nk/Johnson" → "Au").
 std::string book_of(const std::string& page);
 

@@ -91,8 +91,8 @@ void check_formula(const std::string& file, int line, const DispersionBlock& b, 
   for (double nm : at) {
     const double n = evaluate_formula(b.formula, b.coefficients, nm / kNmPerUm);
     if (!std::isfinite(n) || !(n > 0.0) || n > kMaxOpticalConstant)
-      throw InputError(file, line, fmt::format("formula {} gives n = {} at {:g} um (not physical)", b.formula, n,
-                                               nm / kNmPerUm));
+      throw InputError(file, line, fmt::format("formula {} gives n = {} at {:g} um (not physical)", b.formula,
+                                               std::isnan(n) ? "nan" : fmt::format("{}", n), nm / kNmPerUm));
   }
 }
 

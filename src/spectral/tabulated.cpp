@@ -65,6 +65,7 @@ Split split_rows(const std::vector<TabulatedRow>& rows) {
       continue;
     }
     TabulatedRow d = r;
+    d.misplaced = !same_wavelength;
     d.problem = same_wavelength
                     ? fmt::format("wavelengths are not strictly increasing ({} repeats line {} with other values)",
                                   nm_text(r.lambda_nm), it->line)
@@ -89,21 +90,47 @@ std::pair<double, double> used_span(const std::vector<TabulatedRow>& rows, const
 
 }  // namespace
 
+namespace {
+
+// Puts a misplaced row into `kept` (sorted); an exact repeat there is merged, another repeat is an
+// error. Returns whether it was inserted.
+bool place(std::vector<TabulatedRow>& kept, const TabulatedRow& r, const std::string& file) {
+  const auto it = std::lower_bound(kept.begin(), kept.end(), r.lambda_nm,
+                                   [](const TabulatedRow& a, double x) { return a.lambda_nm < x; });
+  if (it != kept.end() && it->lambda_nm == r.lambda_nm) {
+    if (it->n == r.n && it->k == r.k) return false;
+    throw InputError(file, r.line, fmt::format("wavelengths are not strictly increasing ({} repeats line {} with other "
+                                               "values)", nm_text(r.lambda_nm), it->line));
+  }
+  kept.insert(it, r);
+  return true;
+}
+
+std::string rows_text(size_t n) { return n == 1 ? "1 row" : fmt::format("{} rows", n); }
+
+}  // namespace
+
 DispersionBlock TabulatedRows::finish(const UsedRange& used, std::vector<std::string>& warnings) const {
-  const Split s = split_rows(rows_);
+  Split s = split_rows(rows_);
   if (s.kept.empty()) {
     if (s.defects.empty()) throw InputError(file_, block_line_, "tabulated block has no rows");
     throw InputError(file_, s.defects.front().line, s.defects.front().problem);
   }
   const auto [lo, hi] = used_span(rows_, used);
-  for (const auto& d : s.defects)
-    if (d.lambda_nm >= lo && d.lambda_nm <= hi) throw InputError(file_, d.line, d.problem);
-  if (!s.defects.empty()) {
-    const auto n = s.defects.size();
-    warnings.push_back(fmt::format("{}:{}: {} row{} outside the used {:g}-{:g} nm dropped (first: {})", file_,
-                                   s.defects.front().line, n, n == 1 ? "" : "s", used.min_nm, used.max_nm,
-                                   s.defects.front().problem));
+  std::vector<const TabulatedRow*> dropped, placed;
+  for (const auto& d : s.defects) {
+    const bool inside = d.lambda_nm >= lo && d.lambda_nm <= hi;
+    if (inside && !d.misplaced) throw InputError(file_, d.line, d.problem);
+    if (!inside) dropped.push_back(&d);
+    else if (place(s.kept, d, file_)) placed.push_back(&d);
   }
+  if (!dropped.empty())
+    warnings.push_back(fmt::format("{}:{}: {} outside the used {:g}-{:g} nm dropped (first: {})", file_,
+                                   dropped.front()->line, rows_text(dropped.size()), used.min_nm, used.max_nm,
+                                   dropped.front()->problem));
+  if (!placed.empty())
+    warnings.push_back(fmt::format("{}:{}: {} out of order placed in wavelength order (first: {})", file_,
+                                   placed.front()->line, rows_text(placed.size()), placed.front()->problem));
   if (s.merged)
     warnings.push_back(fmt::format("{}:{}: {} exact duplicate row{} merged", file_, s.first_merged_line, s.merged,
                                    s.merged == 1 ? "" : "s"));

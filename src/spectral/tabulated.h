@@ -3,9 +3,12 @@
 // (docs/conventions.md, "Reading data"):
 // - a row's wavelength must be a positive number, anywhere;
 // - an exact duplicate of an earlier row is merged;
-// - a row that is out of order, repeats a wavelength with other values, or has a value that is not
-//   physical is a defect: inside the used span it is an error naming file and line; outside it the
-//   row is dropped and one warning per block names the first such line;
+// - a row that repeats a wavelength with other values, or has a value that is not physical, is a
+//   defect: inside the used span it is an error naming file and line; outside it the row is dropped
+//   and one warning per block names the first such line;
+// - a row out of order (a wavelength no other row has, listed after a longer one) is placed in
+//   wavelength order inside the used span (the wavelength says where it goes; one warning per block)
+//   and dropped outside it, like a defect;
 // - a negative k above −kNegligibleNegativeK is read as 0.
 // The used span is [UsedRange.min_nm, UsedRange.max_nm] widened to the nearest rows outside it,
 // since interpolation at the range's ends reads them.
@@ -17,9 +20,10 @@
 namespace fl::spectral {
 
 // A negative k above this is read as 0. For reflectance such a k is nothing: at n = 1.5 it changes
-// F0 by k²/(n − 1)² < 4e-8 relative. The database's negatives of this size (down to −1.4e-5 on
-// glass pages inside the visible) are the noise of transmission measurements.
-inline constexpr double kNegligibleNegativeK = 1e-4;
+// F0 by k²/(n + 1)² < 4e-6 (absolute), far below anything a colour difference sees. The database's
+// negatives of this size are noise around 0: −1.4e-5 on glass pages (specs/hikari/optical/LAK09 at
+// 700 nm), −0.001 to −0.002 on data tabulated to three decimals (main/GaP/nk/Jellison near 500 nm).
+inline constexpr double kNegligibleNegativeK = 0.005;
 
 // Beyond any material's optical constants at any wavelength (far-infrared metals reach ~10³),
 // and far below where n² + κ² would overflow in the Fresnel equations.
@@ -30,6 +34,7 @@ struct TabulatedRow {
   int line = 0;
   double lambda_nm = 0, n = 0, k = 0;
   std::string problem;
+  bool misplaced = false;  // out of order only: its values are valid
 };
 
 class TabulatedRows {

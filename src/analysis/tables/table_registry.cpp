@@ -15,6 +15,11 @@ const std::vector<MaterialStudy>& TableInputs::studies() {
   return *studies_;
 }
 
+const PageStudies& TableInputs::group_pages() {
+  if (!group_pages_) group_pages_ = study_pages(ctx, group_globs(materials));
+  return *group_pages_;
+}
+
 const std::vector<TableSpec>& table_specs() {
   static const std::vector<TableSpec> specs{
       {"schlick", "Schlick (spectral F0) against spectral ground truth, every catalog material",
@@ -39,6 +44,10 @@ const std::vector<TableSpec>& table_specs() {
        [](TableInputs& in) { return presets_table(in.ctx, in.studies()); }},
       {"presets_openpbr", "OpenPBR F82-tint form: base_color and specular_color per material",
        [](TableInputs& in) { return openpbr_table(in.ctx, in.studies()); }},
+      {"spread", "the spread between database pages of the same metal: F0, F82 colours and Schlick errors",
+       [](TableInputs& in) { return spread_table(in.ctx, in.group_pages().studies); }},
+      {"talk_spread", "the talk's Schlick values against the spread of each metal's database pages",
+       [](TableInputs& in) { return talk_misses_table(in.ctx, in.materials, in.group_pages().studies); }},
       {"lut-accuracy", "pre-integrated Schlick and F82 (LTC moments) against brute-force spectral integration, metals",
        [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.materials); }},
       {"speed", "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, Pareto front",

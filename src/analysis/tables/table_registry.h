@@ -7,6 +7,7 @@
 
 #include "analysis/tables/media_tables.h"
 #include "analysis/study/study.h"
+#include "analysis/tables/spread.h"
 #include "analysis/tables/table.h"
 
 namespace fl::analysis {
@@ -23,10 +24,14 @@ class TableInputs {
   const std::vector<LoadedMaterial>& materials;
   const BlendOptions blend;
   const std::vector<MaterialStudy>& studies();
+  // Every conductor page (covering the visible range) of the groups of the metals among `materials`
+  // (spread.h), studied without fits.
+  const PageStudies& group_pages();
 
  private:
   std::function<void(int, int)> study_progress_;
   std::optional<std::vector<MaterialStudy>> studies_;
+  std::optional<PageStudies> group_pages_;
 };
 
 struct TableSpec {

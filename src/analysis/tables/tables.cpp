@@ -27,7 +27,7 @@ std::string setting_note(const Context& ctx) {
 }
 
 void add_coverage_columns(Table& t) {
-  for (const char* c : {"coverage", "coverage_n", "coverage_k"}) t.columns.push_back({c, 3});
+  for (const char* c : {"coverage", "coverage_n", "coverage_k"}) t.columns.push_back({c, 4});
   t.columns.push_back({"extrapolated"});
 }
 
@@ -249,10 +249,10 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
   }
   const double m_schlick = median(med[0][1]), m_f82 = median(med[1][1]);
   t.reading = fmt::format(
-      "Over the 14 metals the fitted F82 model's median RMS ΔE2000 is {:.3f} against Schlick's (spectral F0) {:.3f} "
+      "Over the {} metals the fitted F82 model's median RMS ΔE2000 is {:.3f} against Schlick's (spectral F0) {:.3f} "
       "({:.1f}× lower). "
       "Derived parameters come straight from the spectral procedure; fitted ones minimize each material's error.",
-      m_f82, m_schlick, m_schlick / m_f82);
+      med[1][1].size(), m_f82, m_schlick, m_schlick / m_f82);
   t.notes = {setting_note(ctx),
              "rms_weighted_de00 weights each angle by sinθ·cosθ, the share of a sphere's image that sees it.",
              fmt::format("clamped: the F82 model's result left [0, 1] somewhere and was clamped ({} rows).", clamped_rows),

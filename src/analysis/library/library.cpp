@@ -1,0 +1,188 @@
+#include "analysis/library/library.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+#include "analysis/tables/tables.h"
+#include "fresnel/model_set.h"
+#include "spectral/pages.h"
+
+namespace fl::analysis {
+
+namespace {
+
+int column_index(const Table& t, const std::string& name) {
+  for (size_t i = 0; i < t.columns.size(); ++i)
+    if (t.columns[i].name == name) return static_cast<int>(i);
+  throw std::logic_error("table " + t.name + " has no column " + name);
+}
+
+std::vector<Cell> page_row(const std::string& page, const spectral::PageEntry* entry) {
+  return {page, spectral::book_of(page), entry ? entry->book_name : std::string(), entry ? entry->section : std::string()};
+}
+
+}  // namespace
+
+Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
+                  const std::function<void(int, int)>& progress) {
+  const auto set = load_materials(ctx, globs.empty() ? std::vector<std::string>{"**"} : globs, {}, progress);
+  Table t;
+  t.name = "pages";
+  t.title = "Database pages";
+  t.columns = {{"page"}, {"book"}, {"book_name"}, {"section"}, {"class"}};
+  add_coverage_columns(t);
+  t.columns.insert(t.columns.end(), {{"reference"}, {"status"}});
+  std::map<std::string, std::vector<Cell>> rows;  // sorted by page
+  const auto& db = ctx.settings().paths.database;
+  for (const auto& m : set.materials) {
+    auto row = page_row(m.material.source, spectral::page_entry(db, m.material.source));
+    row.push_back(std::string(spectral::to_string(m.material.material_class)));
+    add_coverage_cells(row, m);
+    row.insert(row.end(), {m.material.reference, std::string("ok")});
+    rows[m.material.source] = std::move(row);
+  }
+  for (const auto& s : set.skipped) {
+    auto row = page_row(s.spec, spectral::page_entry(db, s.spec));
+    row.insert(row.end(), {std::string(), std::nan(""), std::nan(""), std::nan(""), std::string(), std::string(), s.reason});
+    rows[s.spec] = std::move(row);
+  }
+  for (auto& [page, row] : rows) t.rows.push_back(std::move(row));
+  t.reading = fmt::format("{} pages: {} read, {} that cannot be read (status says why).", rows.size(),
+                          set.materials.size(), set.skipped.size());
+  t.notes = {setting_note(ctx),
+             "class: metal when the mean of n² − k² over 400-700 nm is negative (a conductor's real permittivity), "
+             "dielectric otherwise.",
+             coverage_note([&] {
+               std::vector<const LoadedMaterial*> all;
+               for (const auto& m : set.materials) all.push_back(&m);
+               return all;
+             }())};
+  return t;
+}
+
+Library build_library(const Context& ctx, const LibraryOptions& options,
+                      const std::function<void(int, int)>& load_progress,
+                      const std::function<void(int, int)>& fit_progress) {
+  LoadPolicy policy;
+  policy.min_coverage = options.min_coverage;
+  policy.only = options.only;
+  policy.strict = options.strict;
+  Library lib;
+  lib.set = load_materials(ctx, options.globs, policy, load_progress);
+  lib.studies = study_materials(ctx, lib.set.materials, StudyOptions{}, fit_progress);
+  return lib;
+}
+
+namespace {
+
+// Every quality flag of a page: extrapolated, each model's fit flags, the values out of range.
+std::string quality_flags(const MaterialStudy& s, const std::string& out_of_range) {
+  std::vector<std::string> flags;
+  if (s.material->coverage.extrapolated) flags.push_back("extrapolated");
+  for (const auto& r : s.models) {
+    const std::string f = fit::fit_flags(r.fitted);
+    size_t start = 0;
+    while (start < f.size()) {
+      const size_t end = std::min(f.find(' ', start), f.size());
+      flags.push_back(std::string(fresnel::model_spec(r.model).name) + ":" + f.substr(start, end - start));
+      start = end + 1;
+    }
+  }
+  size_t start = 0;
+  while (start < out_of_range.size()) {
+    const size_t end = std::min(out_of_range.find(' ', start), out_of_range.size());
+    flags.push_back("out_of_range:" + out_of_range.substr(start, end - start));
+    start = end + 1;
+  }
+  std::string out;
+  for (const auto& f : flags) out += (out.empty() ? "" : " ") + f;
+  return out;
+}
+
+}  // namespace
+
+Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
+  Table t = presets_table(ctx, studies);
+  t.name = "library";
+  t.title = fmt::format("Preset library in {}: {} pages", ctx.settings().space, studies.size());
+  const int out_of_range = column_index(t, "out_of_range");
+  t.columns.insert(t.columns.end(), {{"book"}, {"section"}, {"uncovered"}});
+  for (const auto& spec : fresnel::model_specs())
+    for (const char* kind : {"derived", "fitted"}) t.columns.push_back({fmt::format("{}_{}_rms", spec.name, kind), 3});
+  t.columns.insert(t.columns.end(), {{"flags"}, {"warnings", 0}});
+  int flagged = 0;
+  for (size_t i = 0; i < studies.size(); ++i) {
+    const auto& s = studies[i];
+    const auto& m = s.material->material;
+    auto& row = t.rows[i];
+    row.insert(row.end(), {m.origin == spectral::Material::Origin::Page ? spectral::book_of(m.source) : std::string(),
+                           m.section, s.material->coverage.uncovered});
+    for (const auto& r : s.models) row.insert(row.end(), {r.derived_error.rms, r.fitted_error.rms});
+    const std::string flags = quality_flags(s, std::get<std::string>(row[out_of_range]));
+    flagged += !flags.empty();
+    row.insert(row.end(), {flags, static_cast<long long>(s.material->warnings.size())});
+  }
+  t.reading = fmt::format("{} pages, {} of them flagged. Every value comes with its flags: a page whose data does "
+                          "not cover the visible range is marked extrapolated and says which wavelengths it holds.",
+                          studies.size(), flagged);
+  t.notes.push_back("flags: extrapolated (see uncovered); MODEL:at_bound:NAME, MODEL:iteration_limit, MODEL:kept_start "
+                    "(the fit's flags, models table); out_of_range:NAME (a value outside [0, 1]); warnings: what the "
+                    "reader dropped or merged outside 360-830 nm.");
+  return t;
+}
+
+std::string reason_class(const std::string& reason) {
+  std::string r = reason;
+  // "FILE: ..." or "FILE:LINE: ...", where FILE is a .yml path (which may hold spaces).
+  if (const auto yml = r.find(".yml:"); yml != std::string::npos) {
+    size_t p = yml + 5;
+    while (p < r.size() && std::isdigit(static_cast<unsigned char>(r[p]))) ++p;
+    if (p < r.size() && r[p] == ':') ++p;
+    r = r.substr(p + (p < r.size() && r[p] == ' '));
+  }
+  r = r.substr(0, r.find(" ("));
+  std::string out;
+  for (size_t i = 0; i < r.size(); ++i) {
+    const bool digit = std::isdigit(static_cast<unsigned char>(r[i]));
+    const bool sign = (r[i] == '-' || r[i] == '+') && i + 1 < r.size() && std::isdigit(static_cast<unsigned char>(r[i + 1])) &&
+                      (i == 0 || !std::isalnum(static_cast<unsigned char>(r[i - 1])));
+    if (!digit && !sign) {
+      out += r[i];
+      continue;
+    }
+    while (i + 1 < r.size() && (std::isalnum(static_cast<unsigned char>(r[i + 1])) || r[i + 1] == '.' ||
+                                ((r[i + 1] == '-' || r[i + 1] == '+') && (r[i] == 'e' || r[i] == 'E'))))
+      ++i;
+    out += 'N';
+  }
+  return out;
+}
+
+Table skipped_table(const std::vector<SkippedMaterial>& skipped) {
+  Table t;
+  t.name = "skipped";
+  t.title = fmt::format("Pages left out of the library: {}", skipped.size());
+  t.columns = {{"page"}, {"reason_class"}, {"reason"}};
+  for (const auto& s : skipped) t.rows.push_back({s.spec, reason_class(s.reason), s.reason});
+  return t;
+}
+
+Table skip_reasons_table(const std::vector<SkippedMaterial>& skipped) {
+  std::map<std::string, std::pair<long long, std::string>> by_reason;  // class → (count, first page)
+  for (const auto& s : skipped) {
+    auto& e = by_reason[reason_class(s.reason)];
+    if (e.first++ == 0) e.second = s.spec;
+  }
+  std::vector<std::pair<std::string, std::pair<long long, std::string>>> sorted(by_reason.begin(), by_reason.end());
+  std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.second.first > b.second.first; });
+  Table t;
+  t.name = "skip_reasons";
+  t.title = "Pages left out, by reason";
+  t.columns = {{"reason"}, {"pages", 0}, {"example"}};
+  for (const auto& [reason, e] : sorted) t.rows.push_back({reason, e.first, e.second});
+  return t;
+}
+
+}  // namespace fl::analysis
