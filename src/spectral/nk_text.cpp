@@ -208,7 +208,7 @@ OpticalConstants read_nk_table(const std::string& path, const UsedRange& used) {
     } else if (sections.empty()) {
       throw InputError(path, line, "expected a header line naming the columns (e.g. 'wavelength_nm,n,k'), found numbers");
     } else {
-      add_table_row(sections.back(), path, line, t);
+      add_table_row(sections.back(), path, line, lines[i]);  // untrimmed: a trailing tab ends an empty field
     }
   }
   if (sections.empty()) throw InputError(path, 0, "no header line");

@@ -184,7 +184,7 @@ TEST(BadInputCorpus, EveryCorpusEntryIsInTheManifestAndThereAreAtLeast30) {
   for (const auto& c : load_manifest())
     if (c.file != "<missing>") listed.insert(c.reader + "/" + c.file);
   std::set<std::string> present;
-  for (const char* reader : {"ri_yaml", "csv", "cgats", "catalog", "scene"})
+  for (const char* reader : {"ri_yaml", "csv", "text", "sopra", "spd", "cgats", "catalog", "scene"})
     for (const auto& e : fs::directory_iterator(kBadDir + "/" + reader))
       present.insert(std::string(reader) + "/" + e.path().filename().string());
   EXPECT_EQ(listed, present);

@@ -1,7 +1,7 @@
 // The tool's metal presets against published ones computed by others from the same database pages:
 // physicallybased.info's f0 and f82tint (OpenPBR's specular_color) and the OpenPBR repository's
-// example materials (shared/testdata/peer_presets, README there). Run through the CLI: a catalog of
-// the 30 pages is written to a temporary folder and `presets --openpbr` prints F0 and the F82 tint.
+// example materials (shared/testdata/peer_presets, README there). Run through the CLI: `presets
+// --openpbr` on the 30 database pages prints F0 and the F82 tint.
 //
 // Clean columns (per the README): f0 and f82tint in acescg (D60), f0 in lin_rec709 (D65) except
 // Cesium's. lin_rec709's f82tint is not listed as clean or as biased; it is checked too.
@@ -60,15 +60,17 @@ struct Preset {
   Rgb f0, f82tint;
 };
 
-// Runs `presets --openpbr` on a catalog of the pages physicallybased.info used.
+// Runs `presets --openpbr` on the database pages physicallybased.info used, named directly.
 std::map<std::string, Preset> run_presets(const std::string& options) {
-  test::TempDir dir;
   const auto pages = read_csv(kPresets + "/physicallybased_pages.csv");
-  for (size_t i = 1; i < pages.size(); ++i)
-    dir.file("catalog/" + std::to_string(i) + ".yml", "name: " + pages[i][0] + "\nclass: metal\norder: " +
-                                                           std::to_string(i) + "\nsource: \"" + pages[i][1] + "\"\n");
-  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB + "' --materials '" +
-                                   dir.path() + "/catalog' " + options + " presets --openpbr --format csv");
+  std::map<std::string, std::string> metal_of;
+  std::string args;
+  for (size_t i = 1; i < pages.size(); ++i) {
+    metal_of[pages[i][1]] = pages[i][0];
+    args += " '" + pages[i][1] + "'";
+  }
+  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB + "' " + options +
+                                   " presets --openpbr --format csv" + args);
   EXPECT_EQ(r.status, 0) << r.err;
   std::map<std::string, Preset> out;
   std::stringstream ss(r.out);
@@ -81,7 +83,9 @@ std::map<std::string, Preset> run_presets(const std::string& options) {
     std::stringstream ls(line);
     for (std::string x; std::getline(ls, x, ',');) c.push_back(x);
     if (c.size() < 7) continue;
-    out[c[0]] = {{std::stod(c[1]), std::stod(c[2]), std::stod(c[3])}, {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}};
+    EXPECT_TRUE(metal_of.count(c[0])) << c[0];
+    out[metal_of[c[0]]] = {{std::stod(c[1]), std::stod(c[2]), std::stod(c[3])},
+                           {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}};
   }
   EXPECT_EQ(out.size(), pages.size() - 1);
   return out;

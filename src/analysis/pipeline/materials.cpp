@@ -34,22 +34,21 @@ std::string coverage_reason(const LoadedMaterial& m, double min_coverage) {
                      min_coverage, m.coverage.uncovered);
 }
 
-// Applies the class and coverage filters to what loaded; `single` refuses instead of skipping.
-void filter(MaterialSet& set, std::vector<LoadedMaterial> loaded, const std::vector<std::string>& specs,
-            const LoadPolicy& p, bool single) {
-  for (size_t i = 0; i < loaded.size(); ++i) {
-    auto& m = loaded[i];
-    if (p.only && m.material.material_class != *p.only) {
-      set.skipped.push_back({specs[i], fmt::format("class {} (the data's), not {}",
-                                                   spectral::to_string(m.material.material_class),
-                                                   spectral::to_string(*p.only))});
-    } else if (m.coverage.both < p.min_coverage) {
-      if (single) throw InputError(m.material.source, 0, coverage_reason(m, p.min_coverage));
-      set.skipped.push_back({specs[i], coverage_reason(m, p.min_coverage)});
-    } else {
-      set.materials.push_back(std::move(m));
-    }
-  }
+// Why the class and coverage filters leave `m` out (empty: kept); `single` refuses instead.
+std::string filtered_out(const LoadedMaterial& m, const LoadPolicy& p, bool single) {
+  if (p.only && m.material.material_class != *p.only)
+    return fmt::format("class {} (the data's), not {}", spectral::to_string(m.material.material_class),
+                       spectral::to_string(*p.only));
+  if (m.coverage.both >= p.min_coverage) return {};
+  if (single) throw InputError(m.material.source, 0, coverage_reason(m, p.min_coverage));
+  return coverage_reason(m, p.min_coverage);
+}
+
+// Adds a loaded material or its reason to be left out, in order.
+void add(MaterialSet& set, LoadedMaterial m, const std::string& spec, const LoadPolicy& p, bool single) {
+  const std::string why = filtered_out(m, p, single);
+  if (why.empty()) set.materials.push_back(std::move(m));
+  else set.skipped.push_back({spec, why});
 }
 
 }  // namespace
@@ -58,14 +57,11 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
                            const std::function<void(int, int)>& progress) {
   MaterialSet set;
   if (specs.empty()) {
-    std::vector<LoadedMaterial> loaded;
-    std::vector<std::string> keys;
     for (auto& m : spectral::read_catalog(ctx.settings().paths)) {
-      keys.push_back(m.key);
-      loaded.push_back(load_material(ctx, std::move(m)));
+      const std::string key = m.key;
+      add(set, load_material(ctx, std::move(m)), key, policy, false);
+      ++set.requested;
     }
-    set.requested = static_cast<int>(loaded.size());
-    filter(set, std::move(loaded), keys, policy, false);
     return set;
   }
   const auto requests = spectral::expand_materials(specs, ctx.settings().paths);
@@ -79,19 +75,13 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
         done.add(1);
       },
       policy.threads);
-  std::vector<LoadedMaterial> loaded;
-  std::vector<std::string> names;
-  for (size_t i = 0; i < slots.size(); ++i) {
-    if (slots[i].error) std::rethrow_exception(slots[i].error);
-    if (!slots[i].material) {
-      set.skipped.push_back({requests[i].spec, slots[i].reason});
-      continue;
-    }
-    loaded.push_back(std::move(*slots[i].material));
-    names.push_back(requests[i].spec);
-  }
+  for (const auto& s : slots)
+    if (s.error) std::rethrow_exception(s.error);
   const bool single = requests.size() == 1 && requests.front().pattern.empty();
-  filter(set, std::move(loaded), names, policy, single);
+  for (size_t i = 0; i < slots.size(); ++i) {
+    if (slots[i].material) add(set, std::move(*slots[i].material), requests[i].spec, policy, single);
+    else set.skipped.push_back({requests[i].spec, slots[i].reason});
+  }
   return set;
 }
 

@@ -27,7 +27,7 @@ struct SkippedMaterial {
 
 struct MaterialSet {
   std::vector<LoadedMaterial> materials;  // in argument order (a glob's pages sorted)
-  std::vector<SkippedMaterial> skipped;   // in argument order
+  std::vector<SkippedMaterial> skipped;   // in argument order, with the reason
   int requested = 0;                      // after glob expansion
 };
 

@@ -1,0 +1,264 @@
+// Any material, first class: lists of catalog names, database pages, page globs and files in every
+// command; coverage in the outputs and --min-coverage; `pages`; `library`; fits that never publish
+// worse than their best start. Run through the CLI on the database pages named in each test.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "test_util.h"
+
+namespace fl {
+namespace {
+
+using test::cli;
+using test::run_command;
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream ss(text);
+  for (std::string line; std::getline(ss, line);) {
+    std::vector<std::string> cells;
+    std::string cell;
+    bool quoted = false;
+    for (const char c : line) {
+      if (c == '"') quoted = !quoted;
+      else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
+      else cell += c;
+    }
+    cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// The rows of a CSV as maps from column name to cell.
+std::vector<std::map<std::string, std::string>> records(const std::string& text) {
+  const auto rows = csv_rows(text);
+  std::vector<std::map<std::string, std::string>> out;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    std::map<std::string, std::string> r;
+    for (size_t c = 0; c < rows[0].size() && c < rows[i].size(); ++c) r[rows[0][c]] = rows[i][c];
+    out.push_back(r);
+  }
+  return out;
+}
+
+int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+TEST(MaterialsCli, PresetsTakeDatabasePagesCatalogNamesAndFiles) {
+  test::TempDir tmp;
+  const auto csv = tmp.file("glass.csv", "Wavelength (nm),n\n350,1.53\n850,1.51\n");
+  const auto r = run_command(cli() + " -q presets main/Co/nk/Werner-DFT gold '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = records(r.out);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].at("material"), "main/Co/nk/Werner-DFT");
+  EXPECT_EQ(rows[1].at("material"), "Gold");
+  EXPECT_EQ(rows[2].at("material"), "glass");
+  EXPECT_EQ(rows[2].at("class"), "dielectric");
+  // A lossless dielectric's fitted κ stays 0.
+  for (const char* c : {"kappa_r", "kappa_g", "kappa_b"}) EXPECT_EQ(std::stod(rows[2].at(c)), 0.0) << c;
+}
+
+TEST(MaterialsCli, EveryModelsErrorForOneFileInOneRun) {
+  test::TempDir tmp;
+  const auto csv = tmp.file("metal.csv", "lambda_um,n,k\n0.35,1.2,1.9\n0.85,0.3,5.0\n");
+  const auto r = run_command(cli() + " -q table models '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(lines(r.out), 1 + 7 * 2);  // header, every model × {derived, fitted}
+}
+
+TEST(MaterialsCli, GlobsExpandToSortedPagesAndAGlobMatchingNothingIsAnError) {
+  const auto r = run_command(cli() + " -q table schlick 'main/Ti/nk/Rakic-*'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = records(r.out);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].at("material"), "main/Ti/nk/Rakic-BB");
+  EXPECT_EQ(rows[1].at("material"), "main/Ti/nk/Rakic-LD");
+  const auto none = run_command(cli() + " table schlick 'main/Xx/**'");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_EQ(lines(none.err), 1) << none.err;
+  EXPECT_NE(none.err.find("'main/Xx/**' matches no database page"), std::string::npos) << none.err;
+}
+
+// main/Au/nk/Ordal measures 667 nm and up: its gold is held grey below. Every output says so.
+TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesOneAndSkipsMany) {
+  const auto r = run_command(cli() + " -q presets main/Au/nk/Ordal main/Au/nk/Johnson");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = records(r.out);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_LT(std::stod(rows[0].at("coverage")), 0.5);
+  EXPECT_EQ(rows[0].at("extrapolated"), "yes");
+  EXPECT_EQ(rows[1].at("coverage"), "1.0000");
+  EXPECT_EQ(rows[1].at("extrapolated"), "no");
+  const auto json = run_command(cli() + " -q presets main/Au/nk/Ordal --format json");
+  EXPECT_NE(json.out.find("\"extrapolated\": \"yes\""), std::string::npos) << json.out;
+  const auto md = run_command(cli() + " -q curve main/Au/nk/Ordal --format md");
+  EXPECT_NE(md.out.find("main/Au/nk/Ordal: extrapolated, n and k data does not cover 360-665 nm"), std::string::npos);
+
+  const auto one = run_command(cli() + " --min-coverage 0.9 curve main/Au/nk/Ordal");
+  EXPECT_EQ(one.status, 2);
+  EXPECT_EQ(lines(one.err), 1) << one.err;
+  EXPECT_NE(one.err.find("main/Au/nk/Ordal: covers 0.004 of the visible range, below --min-coverage 0.9"), std::string::npos)
+      << one.err;
+  EXPECT_EQ(one.out, "");
+  const auto many = run_command(cli() + " --min-coverage 0.9 presets main/Au/nk/Ordal main/Au/nk/Johnson");
+  ASSERT_EQ(many.status, 0) << many.err;
+  EXPECT_EQ(records(many.out).size(), 1u);
+  EXPECT_NE(many.err.find("skipped main/Au/nk/Ordal: covers 0.004"), std::string::npos) << many.err;
+}
+
+TEST(MaterialsCli, CurveOverSeveralMaterialsNamesEachRowsMaterial) {
+  const auto r = run_command(cli() + " -q curve gold main/Cu/nk/Johnson");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = records(r.out);
+  ASSERT_EQ(rows.size(), 2u * 91);
+  EXPECT_EQ(rows.front().at("material"), "Gold");
+  EXPECT_EQ(rows.back().at("material"), "main/Cu/nk/Johnson");
+  EXPECT_EQ(csv_rows(r.out)[0][0], "theta_deg");  // the original columns keep their places
+}
+
+TEST(MaterialsCli, CatalogEntryMayPointAtAFile) {
+  test::TempDir tmp;
+  tmp.file("catalog/data/silver.csv", "wl,n\n0.35,0.2\n0.85,0.15\nwl,k\n0.35,1.6\n0.85,5.8\n");
+  tmp.file("catalog/my_silver.yml", "name: My silver\nclass: metal\nfile: data/silver.csv\n");
+  const auto r = run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB + "' --materials '" +
+                             tmp.path() + "/catalog' presets");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = records(r.out);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].at("material"), "My silver");
+}
+
+TEST(MaterialsCli, PlotsOfSeveralMaterialsNeedANamePlaceholder) {
+  test::TempDir tmp;
+  const auto bad = run_command(cli() + " plot strip gold silver --out '" + tmp.path() + "/s.png'");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(lines(bad.err), 1) << bad.err;
+  EXPECT_NE(bad.err.find("2 materials need '{name}' in --out"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/s.png"));
+  const auto ok = run_command(cli() + " -q plot strip gold main/Au/nk/Babar --models schlick --out '" + tmp.path() +
+                              "/{name}.png'");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/gold.png"));
+  EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/main_Au_nk_Babar.png"));
+}
+
+TEST(MaterialsCli, ScenesTakePageGlobs) {
+  test::TempDir tmp;
+  const auto scene = tmp.file("s.yaml", "materials: [gold, 'main/Ti/nk/Rakic-*']\n");
+  const auto r = run_command(cli() + " -q plan '" + scene + "' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("main/Ti/nk/Rakic-BB"), std::string::npos);
+  EXPECT_NE(r.out.find("main/Ti/nk/Rakic-LD"), std::string::npos);
+}
+
+// The class comes from the data: caesium (n ≈ 0.3, k ≈ 1.3 at 550 nm) is a metal, silicon is not.
+TEST(MaterialsCli, PagesListsBookClassCoverageAndReference) {
+  const auto r = run_command(cli() + " -q pages 'main/Cs/nk/*' main/Si/nk/Aspnes main/Au/nk/Ordal 'main/AgBr/n2/*'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::map<std::string, std::map<std::string, std::string>> by_page;
+  for (const auto& row : records(r.out)) by_page[row.at("page")] = row;
+  ASSERT_TRUE(by_page.count("main/Cs/nk/Smith")) << r.out;
+  EXPECT_EQ(by_page["main/Cs/nk/Smith"].at("class"), "metal");
+  EXPECT_EQ(by_page["main/Cs/nk/Smith"].at("book"), "Cs");
+  EXPECT_EQ(by_page["main/Cs/nk/Smith"].at("status"), "ok");
+  EXPECT_EQ(by_page["main/Si/nk/Aspnes"].at("class"), "dielectric");
+  EXPECT_EQ(by_page["main/Au/nk/Ordal"].at("book_name"), "Au (Gold)");
+  EXPECT_EQ(by_page["main/Au/nk/Ordal"].at("extrapolated"), "yes");
+  EXPECT_NE(by_page["main/Au/nk/Ordal"].at("reference").find("Ordal"), std::string::npos);
+  for (const auto& [page, row] : by_page)
+    if (page.find("/n2/") != std::string::npos)
+      EXPECT_NE(row.at("status").find("nonlinear index, not n, k data"), std::string::npos) << page;
+}
+
+// A small database: one good metal page, one extrapolated, one that cannot be read, one glass.
+std::string small_db(const test::TempDir& tmp) {
+  const std::string rows = "        0.30 0.5 2.0\n        0.90 0.4 6.0\n";
+  tmp.file("db/data/main/M/nk/Good.yml", "REFERENCES: A. Author 2024\nDATA:\n  - type: tabulated nk\n    data: |\n" + rows);
+  tmp.file("db/data/main/M/nk/Red.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.70 0.3 4.0\n        0.90 0.4 6.0\n");
+  tmp.file("db/data/main/M/nk/Bad.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.50 -1 2.0\n");
+  tmp.file("db/data/main/G/nk/Glass.yml", "DATA:\n  - type: formula 5\n    wavelength_range: 0.3 1.0\n    coefficients: 1.5\n");
+  return tmp.path() + "/db";
+}
+
+TEST(MaterialsCli, LibraryListsEveryPageInOrSkippedWithItsReasonAndFlagsExtrapolation) {
+  test::TempDir tmp;
+  const auto db = small_db(tmp);
+  const auto out = tmp.path() + "/lib";
+  const auto base = std::string("'") + FL_CLI + "' --db '" + db + "' --materials '" + tmp.path() + "/none'";
+  const auto r = run_command(base + " --min-coverage 0 library --out '" + out + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto lib = records(test::run_command("cat '" + out + "/library.csv'").out);
+  ASSERT_EQ(lib.size(), 2u);  // Good and Red; Glass is a dielectric, Bad cannot be read
+  EXPECT_EQ(lib[1].at("material"), "main/M/nk/Red");
+  EXPECT_NE(lib[1].at("flags").find("extrapolated"), std::string::npos);
+  EXPECT_NE(lib[1].at("uncovered").find("360-695 nm"), std::string::npos) << lib[1].at("uncovered");
+  const auto skipped = records(test::run_command("cat '" + out + "/skipped.csv'").out);
+  ASSERT_EQ(skipped.size(), 2u);
+  EXPECT_EQ(skipped[0].at("page"), "main/G/nk/Glass");
+  EXPECT_EQ(skipped[0].at("reason_class"), "class dielectric");
+  EXPECT_EQ(skipped[1].at("page"), "main/M/nk/Bad");
+  EXPECT_NE(skipped[1].at("reason").find("Bad.yml:4: n = -1 is not physical"), std::string::npos);
+  for (const char* f : {"library.md", "library.json", "library.mtlx", "models.csv", "gallery.md", "README.md", "spread.md"})
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+  const auto gallery = test::run_command("cat '" + out + "/gallery.md'").out;
+  EXPECT_NE(gallery.find("**Extrapolated**: n and k data does not cover 360-695 nm"), std::string::npos);
+  // Progress when stderr is not a terminal: periodic lines, not a live counter.
+  EXPECT_NE(r.err.find("library: fitting 2/2"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\r'), std::string::npos);
+
+  // (-q: the progress lines that precede it are not part of the error.)
+  const auto strict = run_command(base + " -q library --strict --out '" + tmp.path() + "/strict'");
+  EXPECT_EQ(strict.status, 2);
+  EXPECT_EQ(lines(strict.err), 1) << strict.err;
+  EXPECT_NE(strict.err.find("Bad.yml:4: n = -1 is not physical"), std::string::npos) << strict.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/strict"));
+  // By default the library keeps pages covering the visible range: Red is skipped, with its coverage.
+  const auto def = run_command(base + " -q library --out '" + tmp.path() + "/def'");
+  ASSERT_EQ(def.status, 0) << def.err;
+  EXPECT_EQ(records(test::run_command("cat '" + tmp.path() + "/def/library.csv'").out).size(), 1u);
+}
+
+// main/Zn/nk/Querry has RGB η ≈ 13.7: the fit box no longer pins it, and the fit ends no worse than
+// the derived parameters it starts from.
+TEST(MaterialsCli, FittedRgbEtaKappaOfZincQuerryIsNoWorseThanDerived) {
+  const auto r = run_command(cli() + " -q table models main/Zn/nk/Querry");
+  ASSERT_EQ(r.status, 0) << r.err;
+  double derived = -1, fitted = -1;
+  std::string flags;
+  for (const auto& row : records(r.out))
+    if (row.at("model") == "fresnel_rgb") {
+      (row.at("parameters") == "derived" ? derived : fitted) = std::stod(row.at("rms_de00"));
+      if (row.at("parameters") == "fitted") flags = row.at("fit_flags");
+    }
+  ASSERT_GT(derived, 0);
+  EXPECT_LE(fitted, derived);
+  EXPECT_EQ(flags.find("at_bound"), std::string::npos) << flags;
+}
+
+// Every model's derived parameters are one of its fit's starts, so no fitted error may exceed the
+// derived one (to the table's 3 decimals), over the whole catalog.
+TEST(MaterialsCli, NoFitPublishesWorseThanItsDerivedStart) {
+  const auto r = run_command(cli() + " -q table models");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::map<std::string, double> derived;
+  int checked = 0;
+  for (const auto& row : records(r.out)) {
+    const std::string key = row.at("material") + "|" + row.at("model");
+    if (row.at("parameters") == "derived") derived[key] = std::stod(row.at("rms_de00"));
+    else {
+      EXPECT_LE(std::stod(row.at("rms_de00")), derived.at(key) + 5e-4) << key;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 28 * 7);
+}
+
+}  // namespace
+}  // namespace fl
