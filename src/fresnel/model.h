@@ -21,6 +21,12 @@ struct ParamRange {
 
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
+// The fit box of a reflectance parameter (F0, F82, F90). A reflectance in a working space leaves
+// [0, 1] by its gamut excess (gold's F0_r is 1.041 in linear Rec.709; a saturated metal's channel
+// dips below 0 in a narrow gamut), never by half: the box holds every real page and keeps a fit
+// from wandering.
+inline constexpr ParamRange kReflectanceFit{-0.5, 1.5};
+
 // What a parameter stands for; reflectances are the ones reported when outside [0, 1]; extinction
 // coefficients are held at 0 when a fit's material is lossless (fit.h).
 enum class ParamKind { Reflectance, Index, Extinction, Exponent, Coefficient };

@@ -3,7 +3,6 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <tuple>
 #include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -335,9 +334,13 @@ SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, cons
   std::vector<double> n, k;
   const auto n_runs = sample_quantity(n_src, grid, n, out.n_measured);
   const auto k_runs = sample_quantity(k_src, grid, k, out.k_measured);
-  for (const auto& [what, src, measured] : {std::tuple{"n", &n_src, &out.n_measured}, {"k", &k_src, &out.k_measured}})
-    if (!src->blocks.empty() && std::find(measured->begin(), measured->end(), true) == measured->end())
-      throw InputError(oc.file, 0, fmt::format("{} data does not cover any of {:g}-{:g} nm", what, grid.start_nm, grid.end_nm()));
+  // Without any n in the range there is nothing to compute. A single n inside it (one row at the
+  // sodium D line) is an index held constant; k known only outside it (a glass's k tabulated in the
+  // infrared) is held like any uncovered stretch; the coverage says so.
+  if (std::none_of(n_src.blocks.begin(), n_src.blocks.end(), [&](const DispersionBlock* b) {
+        return b->max_nm >= grid.start_nm && b->min_nm <= grid.end_nm();
+      }))
+    throw InputError(oc.file, 0, fmt::format("n data does not cover any of {:g}-{:g} nm", grid.start_nm, grid.end_nm()));
   auto describe = [](const char* what, const std::vector<std::string>& runs) {
     return runs.empty() ? std::string() : fmt::format("{} data does not cover {} nm", what, fmt::join(runs, " and "));
   };

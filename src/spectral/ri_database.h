@@ -30,8 +30,9 @@ struct SampledIor {
 };
 
 // n and k on the grid. Outside the data's range the nearest value is used and a warning names
-// the uncovered range; a quantity whose data misses the grid entirely is an InputError. Without k
-// data, k = 0. `label` names the material in messages.
+// the uncovered range; n data that misses the grid entirely is an InputError (k data that does is
+// held at its nearest value, like any uncovered stretch). Without k data, k = 0. `label` names the
+// material in messages.
 SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, const std::string& label);
 
 }  // namespace fl::spectral

@@ -36,8 +36,8 @@ struct F82 {
   static constexpr const char* kName = "f82";
   static constexpr const char* kLabel = "Hoffman 2019 F82 (F0, F82)";
   static constexpr std::array<ParamSpec, 2> kChannelParams{{
-      {"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}},
-      {"f82", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}},
+      {"f0", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}},
+      {"f82", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}},
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;

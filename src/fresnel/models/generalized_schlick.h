@@ -24,11 +24,13 @@ namespace models {
 struct GeneralizedSchlick {
   static constexpr const char* kName = "generalized_schlick";
   static constexpr const char* kLabel = "Generalized Schlick (F0, F90, p)";
-  // p is searched where the curves stay monotone enough to be meaningful.
+  // p reaches 30 for metals whose curve dips before grazing (main/Mo/nk/Werner, main/W/nk/Werner):
+  // searched up to 100, where (1 − cosθ)^p stays below 1e-4 up to 85°.
+  static constexpr ParamRange kExponentFit{0.1, 100.0};
   static constexpr std::array<ParamSpec, 3> kChannelParams{{
-      {"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}},
-      {"f90", "reflectance", ParamKind::Reflectance, {0.0, 1.5}, {-kUnbounded, kUnbounded}},
-      {"p", "exponent", ParamKind::Exponent, {0.5, 30.0}, {0.01, kUnbounded}},
+      {"f0", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}},
+      {"f90", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}},
+      {"p", "exponent", ParamKind::Exponent, kExponentFit, {0.01, kUnbounded}},
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = true;
@@ -46,7 +48,7 @@ struct GeneralizedSchlick {
     for (int c = 0; c < 3; ++c) {
       const double t = (d.f82[c] - d.f0[c]) / (1.0 - d.f0[c]);
       const double pc = t > 0.0 && t < 1.0 ? std::log(t) / std::log(1.0 - kCosTheta82) : 5.0;
-      p.insert(p.end(), {d.f0[c], 1.0, std::clamp(pc, 0.5, 30.0)});
+      p.insert(p.end(), {d.f0[c], 1.0, std::clamp(pc, kExponentFit.lo, kExponentFit.hi)});
     }
     return p;
   }

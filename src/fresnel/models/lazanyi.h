@@ -26,7 +26,7 @@ struct Lazanyi {
   static constexpr const char* kName = "lazanyi";
   static constexpr const char* kLabel = "Lazanyi 2005 (F0, a, alpha)";
   static constexpr std::array<ParamSpec, 3> kChannelParams{{
-      {"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}},
+      {"f0", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}},
       {"a", "coefficient", ParamKind::Coefficient, {-10.0, 30.0}, {-kUnbounded, kUnbounded}},
       {"alpha", "exponent", ParamKind::Exponent, {1.0, 20.0}, {0.01, kUnbounded}},
   }};

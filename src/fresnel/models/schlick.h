@@ -22,7 +22,7 @@ struct Schlick {
   static constexpr const char* kName = "schlick";
   static constexpr const char* kLabel = "Schlick";
   static constexpr std::array<ParamSpec, 1> kChannelParams{
-      {{"f0", "reflectance", ParamKind::Reflectance, {0.0, 1.0}, {-kUnbounded, kUnbounded}}}};
+      {{"f0", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}}}};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
 
