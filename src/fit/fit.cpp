@@ -167,9 +167,10 @@ FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<
       have = true;
     }
   }
-  // Worse than the best start (beyond rounding between the two cost evaluations, 1e-9 relative),
-  // e.g. a start outside the fit box, or no usable solve: the start itself is returned.
-  if (!have || best.cost > ranked.front().first * (1.0 + 1e-9)) {
+  // Worse than the best start beyond rounding between the two cost evaluations (1e-9 relative,
+  // and 1e-12 absolute: an RMS ΔE2000 near 1e-7 over 91 angles), e.g. a start outside the fit box,
+  // or no usable solve: the start itself is returned.
+  if (!have || best.cost > ranked.front().first * (1.0 + 1e-9) + 1e-12) {
     best.parameters = starts[ranked.front().second];
     best.cost = best.initial_cost = ranked.front().first;
     best.iterations = 0;
