@@ -260,7 +260,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
   const std::string machine = machine_line();
   // bench/model_costs.csv: what `table speed` and `plan` read.
   std::string csv =
-      "# Fresnel Lab model costs (issue 6), written by bench_speed --fl_write (scripts/bench.sh); read by\n"
+      "# Fresnel Lab model costs, written by bench_speed --fl_write (scripts/bench.sh); read by\n"
       "# `table speed` and `plan`. ns per evaluation = one RGB value at one angle, over 4096 angles, median\n"
       "# CPU time of the repetitions.\n";
   csv += "# machine: " + machine + "\n";
@@ -303,7 +303,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
   md += "| step | ms |\n|---|---|\n";
   for (const auto& [name, res] : r)
     if (name.rfind("tables/", 0) == 0) md += fmt::format("| {} | {} |\n", name.substr(7), num(res.median_seconds() * 1e3, 2));
-  md += "\n## Acceptance (issue 6)\n\n";
+  md += "\n## Targets\n\n";
   md += fmt::format("- ΔE2000: ours (fast path) {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 2×).\n", num(f, 1),
                     num(l, 1), num(l / f, 2));
   md += fmt::format("- Batched Schlick in float: {} ns per evaluation (target < 1 ns).\n",
