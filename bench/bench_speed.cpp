@@ -293,7 +293,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
   md += fmt::format("| Fresnel Lab `color::ciede2000<double>` (template, differentiable) | {} | {}× |\n", num(t, 1),
                     num(l / t, 2));
   md += fmt::format("| Little CMS `cmsCIE2000DeltaE` | {} | 1.00× |\n", num(l, 1));
-  md += "\nAgreement: tests/test_lcms_agreement.cpp checks both of ours against Little CMS within 1e-9 on the 34 "
+  md += "\nAgreement: tests/color/test_lcms_agreement.cpp checks both of ours against Little CMS within 1e-9 on the 34 "
         "pairs of Sharma, Wu & Dalal 2005, and the fast path against the template within 1e-12.\n";
   md += "\n## Spectral ground truth (gold)\n\n| what | time |\n|---|---|\n";
   md += fmt::format("| one RGB value at one angle | {} µs |\n", num(ns("ground_truth/rgb_one_angle") / 1e3, 2));
