@@ -41,21 +41,22 @@ constexpr double kQuadratureTolerance = 3e-4;
 // The mirror limit at α = 1e-4: Λ ∝ α² tan²θ, and the lobe's spread shifts the mean v·h by
 // O(α² log 1/α) (GGX slopes have heavy tails): ~1e-6 for n·v ≥ 0.15.
 constexpr double kMirrorTolerance = 1e-5;
-// A fitted LTC integrates to one, by quadrature over its frame's hemisphere (measured 4e-16).
+// A fitted LTC integrates to one, by quadrature over its support, a hemisphere (measured 2e-15).
 constexpr double kLtcUnitIntegralTolerance = 1e-9;
 // A fitted LTC lobe against the GGX lobe, relative L2 error by quadrature, over ltc_code's published
-// fit of the same cell. The error itself is large towards grazing (0.29 at n·v = 0.27, α = 0.33,
-// for ltc_code's fit as for ours): the three-parameter LTC family cannot follow the GGX lobe there;
-// what can be asked of a fit is to do as well as the reference (measured ratio ≤ 1.012).
+// fit of the same cell. The error itself is large towards grazing (0.29 for ltc_code's fit at
+// n·v = 0.27, α = 0.33, 0.19 for ours): an LTC cannot follow the GGX lobe there; what can be asked of
+// a fit is to do as well as the reference. Neither fit minimizes this error; where both are near
+// the same optimum (normal incidence, α = 1) ours is up to 1.2 % above (measured ratio ≤ 1.012).
 constexpr double kLobeAgainstLtcCodeRatio = 1.02;
 // ltc_code's n_D (float, stratified samples) against the quadrature: per cell and on average.
 constexpr double kLtcCodeNormTolerance = 1.5e-2;
 constexpr double kLtcCodeNormMeanTolerance = 2e-3;
 // The ltc_1 texture's lobe against the fit's density: the same function, only rounding.
 constexpr double kTextureDensityTolerance = 1e-9;
-// The fit error the table reports (sample estimate) against the same error by quadrature
-// (measured ≤ 1e-3).
-constexpr double kFitErrorEstimateTolerance = 2e-3;
+// The held-out error the table reports (256 + 256 fresh directions) against the same error by
+// quadrature, relative (measured ≤ 6 %).
+constexpr double kFitErrorEstimateTolerance = 0.1;
 // The horizon-clipped sphere form factor against a quadrature over the cap.
 constexpr double kFormFactorTolerance = 1e-4;
 
@@ -290,6 +291,23 @@ double integrate_sphere(const std::function<double(const brdf::Vec3&)>& f, doubl
   return test::integrate_sphere([&](double x, double y, double z) { return f({x, y, z}); }, theta_end);
 }
 
+// Relative L3 distance (E₃/B₃)^⅓ between ρ cos and an approximation of it, over the sphere in polar
+// coordinates about a frame's Z.
+double relative_l3(const brdf::Vec3& v, double alpha, const fit::LtcFrame& frame,
+                   const std::function<double(const brdf::Vec3&)>& approx) {
+  auto in_frame = [&](const std::function<double(const brdf::Vec3&)>& f) {
+    return test::integrate_sphere(
+        [&](double x, double y, double z) {
+          return f({x * frame.x.x + y * frame.y.x + z * frame.z.x, x * frame.x.y + y * frame.y.y + z * frame.z.y,
+                    x * frame.x.z + y * frame.y.z + z * frame.z.z});
+        },
+        kPi, alpha);
+  };
+  const double e3 = in_frame([&](const brdf::Vec3& w) { return std::pow(std::abs(ref::lobe_cos(v, w, alpha) - approx(w)), 3); });
+  const double b3 = in_frame([&](const brdf::Vec3& w) { return std::pow(ref::lobe_cos(v, w, alpha), 3); });
+  return std::cbrt(e3 / b3);
+}
+
 // Relative L2 distance between ρ cos and an approximation of it, over the sphere.
 double relative_l2(const brdf::Vec3& v, double alpha, const std::function<double(const brdf::Vec3&)>& approx) {
   const double err2 = integrate_sphere(
@@ -308,8 +326,9 @@ double relative_l2(const brdf::Vec3& v, double alpha, const std::function<double
 }
 
 // ltc_grid(8) samples the same axes as ltc_code's 64 × 64 table at every ninth cell (i/7 = 9i/63),
-// so both fits can be judged on one metric: the relative L2 error against the GGX lobe by
-// quadrature. Our fit minimizes an L2 error, ltc_code's an L3-style one, so ours may not be worse.
+// so both fits can be judged on a metric neither minimizes: the relative L2 error against the GGX
+// lobe by quadrature (both minimize Heitz's L3 error). The held-out error the table reports (256 + 256
+// fresh directions) against the relative L3 error of the same LTC by quadrature.
 TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
   constexpr int size = 8, kLtcCodeStride = 9;
   const auto& lc = ltc_code();
@@ -323,25 +342,29 @@ TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
       const auto& mo = t.moments[k];
       EXPECT_TRUE(c.fit.usable) << i << "," << j;
       const auto frame = i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(mo.average_dir);
-      // The normalized LTC: polar coordinates about the frame's Z (it vanishes for z < 0 there).
-      const double unit = integrate_sphere(
-          [&](const brdf::Vec3& w) { return fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, w.x, w.y, w.z); },
-          kPi / 2);
+      // The normalized LTC over its support, the hemisphere ω·(−m31, 0, m11) > 0 of its frame.
+      const double axis = std::hypot(c.params.m31, c.params.m11);
+      const double unit = test::integrate_hemisphere_about(
+          -c.params.m31 / axis, c.params.m11 / axis,
+          [&](double x, double y, double z) { return fit::ltc_density(c.params, x, y, z); });
       EXPECT_NEAR(unit, 1.0, kLtcUnitIntegralTolerance) << i << "," << j;
 
       const brdf::Vec3 v = brdf::view_from_nov(t.grid.nov[i]);
       const double alpha = t.grid.alpha[j];
       const double ours = relative_l2(v, alpha, [&](const brdf::Vec3& w) {
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
-        return mo.n_d * fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, f.x, f.y, f.z);
+        return mo.n_d * fit::ltc_density(c.params, f.x, f.y, f.z);
       });
       const int lk = ltc_code_index(kLtcCodeStride * i, kLtcCodeStride * j);
       const double theirs = relative_l2(
           v, alpha, [&](const brdf::Vec3& w) { return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk], w); });
-      std::printf("n.v %.3f alpha %.3f: relative L2 ours %.4f (estimate %.4f), ltc_code %.4f\n", t.grid.nov[i], alpha,
-                  ours, c.fit_error, theirs);
+      const double l3 = relative_l3(v, alpha, frame, [&](const brdf::Vec3& w) {
+        return mo.n_d * ref::ltc_from_inverse(c.m_inv.m, w);
+      });
+      std::printf("n.v %.3f alpha %.3f: relative L2 ours %.4f, ltc_code %.4f; relative L3 %.4f (held-out estimate %.4f)\n",
+                  t.grid.nov[i], alpha, ours, theirs, l3, c.fit_error);
       EXPECT_LT(ours, theirs * kLobeAgainstLtcCodeRatio) << i << "," << j;
-      EXPECT_NEAR(c.fit_error, ours, kFitErrorEstimateTolerance) << i << "," << j;
+      EXPECT_NEAR(c.fit_error, l3, kFitErrorEstimateTolerance * l3) << i << "," << j;
       ++checked;
     }
   EXPECT_EQ(checked, 16);
@@ -370,7 +393,7 @@ TEST(Ltc, TextureEntriesReproduceTheFittedLobe) {
         const double theta = (b + 0.5) * kPi / 12, phi = (a + 0.5) * kPi / 6;
         const brdf::Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
-        const double fitted = fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, f.x, f.y, f.z);
+        const double fitted = fit::ltc_density(c.params, f.x, f.y, f.z);
         EXPECT_NEAR(ref::ltc_from_inverse(shader_minv, w), fitted, kTextureDensityTolerance * std::max(1.0, fitted))
             << "cell " << k << " direction " << a << "," << b;
       }
