@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/lut/ltc_reference.h"
 #include "analysis/lut/lut.h"
 #include "brdf/ggx.h"
 #include "fit/ltc_fit.h"
@@ -212,53 +213,12 @@ TEST(Lut, DISABLED_FullTablesAgreeWithQuadrature) {
 
 // ---- ltc_code's published fit (Heitz, Dupuy, Hill & Neubelt 2016; shared/testdata/ltc_code).
 
-// fit/results/ltc.inc: 64 × 64 cells at index a + 64·t (a: roughness a/63, t: x = t/63 with
-// n·v = 1 − x², the ltc_grid(64) axes), each a glm mat3 (column-major) and the norm n_D.
-struct LtcCodeTable {
-  std::vector<std::array<double, 9>> m_inv;  // row-major here
-  std::vector<double> magnitude;
-  bool loaded = false;
-};
-
-std::vector<double> numbers_after(const std::string& text, const std::string& name, size_t count) {
-  std::vector<double> out;
-  size_t p = text.find(name);
-  if (p == std::string::npos) return out;
-  p = text.find('{', p);
-  const char* c = text.c_str() + p;
-  while (out.size() < count && *c) {
-    if (std::isdigit(static_cast<unsigned char>(*c)) || *c == '-' || *c == '.') {
-      char* end = nullptr;
-      out.push_back(std::strtod(c, &end));
-      c = end;
-    } else {
-      ++c;
-    }
-  }
-  return out;
-}
-
-const LtcCodeTable& ltc_code() {
-  static const LtcCodeTable t = [] {
-    LtcCodeTable r;
-    std::ifstream in(std::string(FL_SHARED_TESTDATA) + "/ltc_code/ltc.inc");
-    const std::string text(std::istreambuf_iterator<char>(in), {});
-    constexpr size_t kCells = 64 * 64;
-    const auto minv = numbers_after(text, "tabMinv[size*size]", 9 * kCells);
-    r.magnitude = numbers_after(text, "tabMagnitude[size*size]", kCells);
-    if (minv.size() != 9 * kCells || r.magnitude.size() != kCells) return r;
-    for (size_t k = 0; k < kCells; ++k) {
-      std::array<double, 9> m{};
-      for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) m[3 * row + col] = minv[9 * k + 3 * col + row];
-      r.m_inv.push_back(m);
-    }
-    r.loaded = true;
-    return r;
-  }();
+// fit/results/ltc.inc read by analysis/lut/ltc_reference.h (its reader is tested in test_ltc_reference.cpp),
+// in ltc_grid(64)'s cell order.
+const LtcReferenceTable& ltc_code() {
+  static const LtcReferenceTable t = read_ltc_code_table(std::string(FL_SHARED_TESTDATA) + "/ltc_code/ltc.inc");
   return t;
 }
-int ltc_code_index(int t_nov, int a_roughness) { return a_roughness + 64 * t_nov; }
 
 // ltc_code estimated n_D in float with stratified GGX-NDF samples (32 × 32 per cell): its values
 // scatter about the quadrature here by up to ~1e-2 with alternating sign (measured 1.15e-2 max,
@@ -267,13 +227,12 @@ int ltc_code_index(int t_nov, int a_roughness) { return a_roughness + 64 * t_nov
 // where ltc_code's values sit 0.06 below, is left out; the quadrature and the table agree there.
 TEST(Lut, NormMatchesLtcCode) {
   const auto& lc = ltc_code();
-  ASSERT_TRUE(lc.loaded) << "missing shared/testdata/ltc_code/ltc.inc";
   const auto grid = ltc_grid(64);
   double worst = 0, sum = 0;
   int cells = 0;
   for (int t = 0; t < 63; t += 7)
     for (int a = 7; a < 64; a += 7) {
-      const double diff = reference_moments(grid.nov[t], grid.alpha[a]).n_d - lc.magnitude[ltc_code_index(t, a)];
+      const double diff = reference_moments(grid.nov[t], grid.alpha[a]).n_d - lc.magnitude[grid.index(t, a)];
       worst = std::max(worst, std::abs(diff));
       sum += diff;
       ++cells;
@@ -332,7 +291,7 @@ double relative_l2(const brdf::Vec3& v, double alpha, const std::function<double
 TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
   constexpr int size = 8, kLtcCodeStride = 9;
   const auto& lc = ltc_code();
-  ASSERT_TRUE(lc.loaded) << "missing shared/testdata/ltc_code/ltc.inc";
+  const auto grid64 = ltc_grid(64);
   const auto t = fit_ltc_table(size, options(2048));
   int checked = 0;
   for (int j = size / 2; j < size; ++j)
@@ -355,9 +314,9 @@ TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
         return mo.n_d * fit::ltc_density(c.params, f.x, f.y, f.z);
       });
-      const int lk = ltc_code_index(kLtcCodeStride * i, kLtcCodeStride * j);
+      const int lk = grid64.index(kLtcCodeStride * i, kLtcCodeStride * j);
       const double theirs = relative_l2(
-          v, alpha, [&](const brdf::Vec3& w) { return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk], w); });
+          v, alpha, [&](const brdf::Vec3& w) { return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk].m, w); });
       const double l3 = relative_l3(v, alpha, frame, [&](const brdf::Vec3& w) {
         return mo.n_d * ref::ltc_from_inverse(c.m_inv.m, w);
       });
