@@ -258,8 +258,6 @@ LtcProblem make_ltc_problem(double nov, double alpha, double magnitude, const br
 
 double ltc_objective(const LtcProblem& problem, const LtcParams& p) { return 0.5 * sum_squared_residuals(problem, p); }
 
-double ltc_fit_error(const LtcProblem& problem, const LtcParams& p) { return std::cbrt(sum_squared_residuals(problem, p)); }
-
 LtcParams extrapolate_ltc_start(const LtcParams& prev, const LtcParams& prev2) {
   const LtcParams e{2.0 * prev.m11 - prev2.m11, 2.0 * prev.m22 - prev2.m22, 2.0 * prev.m13 - prev2.m13,
                     2.0 * prev.m31 - prev2.m31};

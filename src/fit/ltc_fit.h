@@ -112,10 +112,9 @@ constexpr int kLtcDefaultSampleSqrt = 16;
 LtcProblem make_ltc_problem(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
                             const LtcParams& proposal, int sample_sqrt = kLtcDefaultSampleSqrt);
 
-// ½ Σ r² over the problem's residuals (the Ceres cost of the same parameters).
+// ½ Σ r² over the problem's residuals (the Ceres cost of the same parameters): half the in-sample
+// E₃ / B₃.
 double ltc_objective(const LtcProblem& problem, const LtcParams& p);
-// The in-sample relative L3 error (Σ r²)^⅓ of the problem's directions.
-double ltc_fit_error(const LtcProblem& problem, const LtcParams& p);
 
 // One solve on a problem's fixed directions from `start`; with `isotropic`, m13 and m31 are held at
 // their start values (the lobe at normal incidence is rotationally symmetric).
