@@ -22,10 +22,18 @@ std::vector<Table> ltc_comparison_tables(const LtcComparison& c) {
     return fmt::format("({}, {}) to ({}, {})", i, j, i + (along_nov ? 1 : 0),
                        j + (along_nov ? 0 : 1));
   };
-  for (const auto& j : c.jumps)
+  std::string above;
+  for (const auto& j : c.jumps) {
     jumps.rows.push_back(
         {j.entry, j.max, where(j.i_nov, j.j_roughness, j.along_nov), j.reference_max,
          where(j.reference_i_nov, j.reference_j_roughness, j.reference_along_nov)});
+    if (j.max > j.reference_max)
+      above += fmt::format("{}{} ({:.4f} against {:.4f})", above.empty() ? "" : ", ", j.entry,
+                           j.max, j.reference_max);
+  }
+  jumps.reading = above.empty()
+                      ? "No entry steps further between neighbouring cells than in ltc_code's table."
+                      : "Entries whose largest step exceeds ltc_code's largest: " + above + ".";
   Table mid;
   mid.name = "ltc-midpoints";
   mid.title = "Held-out relative L3 error of bilinear lookups half-way between neighbouring cells";
