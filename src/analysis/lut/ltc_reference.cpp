@@ -105,7 +105,7 @@ struct Band {
   std::function<bool(const JudgedPoint&)> in;
 };
 std::vector<Band> bands() {
-  return {{"all cells", [](const JudgedPoint&) { return true; }},
+  return {{"all", [](const JudgedPoint&) { return true; }},
           {"alpha < 0.1", [](const JudgedPoint& p) { return p.alpha < 0.1; }},
           {"0.1 <= alpha <= 0.5",
            [](const JudgedPoint& p) { return p.alpha >= 0.1 && p.alpha <= 0.5; }},
