@@ -20,9 +20,12 @@ std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) 
 
 std::string setting_note(const Context& ctx) {
   const auto& s = ctx.settings();
+  const std::string space =
+      ctx.spaces().is_builtin() ? s.space
+                                : fmt::format("{} (OCIO config {}; {})", s.space, s.ocio_config, ctx.space().white_source);
   return fmt::format("Working space {}, illuminant {}, {} adaptation, CIE 1931 2° observer, {:g}-{:g} nm at {:g} nm, "
                      "{} angles over 0-90°, outside medium η = {:g}.",
-                     s.space, s.illuminant, s.adaptation, ctx.grid().start_nm, ctx.grid().end_nm(),
+                     space, s.illuminant, s.adaptation, ctx.grid().start_nm, ctx.grid().end_nm(),
                      ctx.grid().step_nm, s.angles, s.eta_outside);
 }
 
