@@ -18,6 +18,9 @@ struct RgbSpace {
   std::string reference_illuminant;
   // Where the white came from, for report headers ("built-in", or how an OCIO space's was found).
   std::string white_source = "built-in";
+  // The built-in space this one is (its own name, or the one an OCIO space's matrix equals; empty
+  // for others).
+  std::string builtin_equivalent;
 };
 
 // RGB → XYZ matrix from primaries and white chromaticities (SMPTE RP 177).
