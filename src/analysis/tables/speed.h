@@ -66,10 +66,10 @@ struct SpeedRow {
   fresnel::Model model;
   bool fitted = false;
   double ns_per_eval = 0;
-  GpuCost gpu;  // the model's function under punctual lights
   double median_rms_de00 = 0, max_rms_de00 = 0;
   bool pareto = false;      // no other row is at least as cheap (CPU ns) and at least as accurate, and better in one
-  bool pareto_gpu = false;  // the same with the GPU instruction count as the cost
+  GpuCost gpu{};            // the model's function under punctual lights
+  bool pareto_gpu = false;  // as `pareto`, with the GPU instruction count as the cost
 };
 // Rows in model_specs() order, derived before fitted. Error over every studied material (the
 // catalog's metals and dielectrics); Pareto fronts on (ns_per_eval, median_rms_de00) and

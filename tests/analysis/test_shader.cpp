@@ -1,0 +1,176 @@
+// Shader code (analysis/shader): every model × lighting × language compiles with glslangValidator
+// (Debian glslang-tools; HLSL through its HLSL front end) and its SPIR-V validates with spirv-val
+// (spirv-tools); the GLSL computes what the C++ kernels compute: with constant inputs,
+// `spirv-opt -O` folds the whole function into one constant (its folder evaluates the arithmetic
+// and the GLSL.std.450 instructions in float), which is compared with the C++ model, an
+// implementation written separately. The committed GPU costs match what the tools count now.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "analysis/lut/rendered.h"
+#include "analysis/shader/shader.h"
+#include "spectral/errors.h"
+#include "fresnel/model_set.h"
+#include "test_util.h"
+
+namespace fl::analysis {
+namespace {
+
+using fresnel::ModelSpec;
+
+// Float shader code against the double C++ kernels: float's 24 bits, a few more lost in the
+// conductor equations' cancellations near grazing incidence.
+constexpr double kFoldTolerance = 5e-5;
+
+bool have_tools() {
+  return test::run_command("command -v glslangValidator >/dev/null && command -v spirv-val >/dev/null && command -v spirv-opt >/dev/null && "
+                           "command -v spirv-dis >/dev/null").status == 0;
+}
+
+struct Compiled {
+  bool ok = false;
+  std::string log;
+  std::string optimized;  // spirv-dis of spirv-opt -O
+};
+
+// Compiles `source` (GLSL compute, or HLSL with entry point main), validates, optimizes, validates.
+Compiled compile(const std::string& source, bool hlsl) {
+  test::TempDir dir;
+  const std::string src = dir.file(hlsl ? "s.hlsl" : "s.comp", source);
+  const std::string spv = dir.path() + "/s.spv", opt = dir.path() + "/o.spv";
+  const std::string front = hlsl ? "glslangValidator -D -V -S comp -e main " : "glslangValidator -V ";
+  const std::string log = dir.path() + "/glslang.log";
+  const auto r = test::run_command("(" + front + "'" + src + "' -o '" + spv + "' > '" + log + "' || (cat '" + log +
+                                   "'; false)) && spirv-val '" + spv + "' && spirv-opt -O '" +
+                                   spv + "' -o '" + opt + "' && spirv-val '" + opt + "' && spirv-dis '" + opt + "'");
+  return {r.status == 0, r.out + r.err, r.out};
+}
+
+std::string vec3_literal(const std::vector<double>& p, int per, int k, bool hlsl) {
+  std::ostringstream s;
+  s.precision(9);
+  s << (hlsl ? "float3(" : "vec3(") << p[k] << ", " << p[per + k] << ", " << p[2 * per + k] << ")";
+  return s.str();
+}
+
+// The model's parameters as literal arguments, in the function's order.
+std::string argument_literals(const ModelSpec& s, const std::vector<double>& p, bool hlsl) {
+  std::string out;
+  const int per = s.per_channel();
+  for (int k = 0; k < per; ++k) out += ", " + vec3_literal(p, per, k, hlsl);
+  for (size_t k = 0; k < s.shared_params.size(); ++k) {
+    std::ostringstream v;
+    v.precision(9);
+    v << std::showpoint << p[3 * per + k];
+    out += ", " + v.str();
+  }
+  return out;
+}
+
+// A compute shader storing `call` (an expression of the emitted functions) to a buffer.
+std::string glsl_program(const std::string& code, const std::string& call, bool with_texture) {
+  return "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 1) buffer Outputs { vec3 rgb; } o;\n" +
+         std::string(with_texture ? "layout(binding = 2) uniform sampler2D lut;\n" : "") + code +
+         "\nvoid main() { o.rgb = " + call + "; }\n";
+}
+
+TEST(Shader, EveryModelLightingAndLanguageCompilesAndValidates) {
+  ASSERT_TRUE(have_tools()) << "glslangValidator / spirv-tools missing: scripts/setup.sh installs glslang-tools, spirv-tools";
+  int compiled = 0;
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto p = fresnel::example_params(spec.model);
+    for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area}) {
+      const std::string fn = shader_function_name(spec.model, l);
+      for (bool hlsl : {false, true}) {
+        const auto code = shader_code(spec.model, {l}, hlsl ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl);
+        const std::string lookup = l == Lighting::Punctual ? "" : hlsl ? "lut, lut_sampler, 0.4, " : "lut, 0.4, ";
+        const std::string call = fn + "(" + lookup + "0.6" + argument_literals(spec, p, hlsl) + ")";
+        const std::string program =
+            hlsl ? "RWStructuredBuffer<float3> o : register(u1);\nTexture2D<float4> lut : register(t2);\n"
+                   "SamplerState lut_sampler : register(s3);\n" + code + "\n[numthreads(1, 1, 1)] void main() { o[0] = " + call + "; }\n"
+                 : glsl_program(code, call, l != Lighting::Punctual);
+        const auto c = compile(program, hlsl);
+        EXPECT_TRUE(c.ok) << spec.name << " " << lighting_name(l) << (hlsl ? " HLSL" : " GLSL") << "\n" << c.log << "\n" << program;
+        compiled += c.ok;
+      }
+      // The cost harness is what scripts/gpu_costs.sh counts: it compiles too.
+      const auto h = compile(shader_cost_harness(spec.model, l), false);
+      EXPECT_TRUE(h.ok) << spec.name << " harness\n" << h.log;
+    }
+  }
+  EXPECT_EQ(compiled, 7 * 3 * 2);
+}
+
+// The folded constant stored by main: %main's OpStore of an OpConstantComposite of three floats.
+bool folded_rgb(const std::string& dis, color::Rgb& out) {
+  std::smatch m;
+  const std::string body = dis.substr(dis.find("%main = OpFunction"));
+  if (!std::regex_search(body, m, std::regex(R"(OpStore %\S+ (%\S+))"))) return false;
+  const std::string id = m[1];
+  auto constant = [&](const std::string& cid, double& v) {
+    std::smatch c;
+    if (!std::regex_search(dis, c, std::regex(cid + R"( = OpConstant %float (\S+))"))) return false;
+    v = std::stod(c[1]);
+    return true;
+  };
+  if (!std::regex_search(dis, m, std::regex(id + R"( = OpConstantComposite %v3float (%\S+) (%\S+) (%\S+))"))) return false;
+  const std::string ids[3] = {m[1], m[2], m[3]};
+  for (int k = 0; k < 3; ++k)
+    if (!constant(ids[k], out[k])) return false;
+  return true;
+}
+
+void expect_folds_to(const std::string& code, const std::string& call, const color::Rgb& want, const std::string& what) {
+  const auto c = compile(glsl_program(code, call, false), false);
+  ASSERT_TRUE(c.ok) << what << "\n" << c.log;
+  color::Rgb got{};
+  ASSERT_TRUE(folded_rgb(c.optimized, got)) << what << ": not folded to a constant\n" << c.optimized;
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], kFoldTolerance) << what << " channel " << k;
+}
+
+TEST(Shader, GlslComputesWhatTheKernelsCompute) {
+  ASSERT_TRUE(have_tools());
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto p = fresnel::example_params(spec.model);
+    const std::string args = argument_literals(spec, p, false);
+    const auto punctual = shader_code(spec.model, {Lighting::Punctual}, ShaderLanguage::Glsl);
+    for (double c : {0.05, 0.3, 0.8, 1.0}) {
+      std::ostringstream cs;
+      cs << std::showpoint << c;
+      expect_folds_to(punctual, "fresnel_" + std::string(spec.name) + "(" + cs.str() + args + ")",
+                      spec.evaluate(c, p.data(), false), std::string(spec.name) + " at cos " + cs.str());
+    }
+    // The table combinations, from texels given as constants, against the rendered-error engine.
+    ShadingPoint point;
+    point.nov = 0.35;
+    point.dfg = {0.61, 0.12, 0.037};
+    point.ltc = {0.73, 0.12, 0.037, {0, 0, 1}};
+    const auto both = shader_code(spec.model, {Lighting::Ibl, Lighting::Area}, ShaderLanguage::Glsl);
+    expect_folds_to(both, "fresnel_" + std::string(spec.name) + "_dfg(vec3(0.61, 0.12, 0.037), 0.35" + args + ")",
+                    engine_shading(spec.model, p, Lighting::Ibl, point), std::string(spec.name) + " dfg");
+    expect_folds_to(both, "fresnel_" + std::string(spec.name) + "_ltc(vec3(0.73, 0.12, 0.037), 0.35" + args + ")",
+                    engine_shading(spec.model, p, Lighting::Area, point), std::string(spec.name) + " ltc");
+  }
+}
+
+TEST(Shader, CommittedGpuCostsMatchWhatTheToolsCountNow) {
+  ASSERT_TRUE(have_tools());
+  const auto r = test::run_command("'" FL_SOURCE_DIR "/scripts/gpu_costs.sh' --check '" FL_BUILD_DIR "'");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+}
+
+TEST(Shader, NamesAndBadRequests) {
+  EXPECT_EQ(shader_function_name(fresnel::model_of<fresnel::models::F82>, Lighting::Ibl), "fresnel_f82_ibl");
+  EXPECT_THROW(shader_language_from_name("metal"), fl::InputError);
+  EXPECT_THROW(lighting_from_name("sun"), fl::InputError);
+  EXPECT_THROW(shader_text({"f82", "hlsl", "ibl", true}), fl::InputError);
+  EXPECT_THROW(shader_text({"warp", "glsl", "ibl", false}), fl::InputError);
+}
+
+}  // namespace
+}  // namespace fl::analysis
