@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -132,6 +135,41 @@ TEST(Plan, NdotVApproximationIsMeasuredNotHidden) {
   ASSERT_NE(rgb, rendered.end());
   EXPECT_LT(rgb->punctual_rms, 0.05);  // the curve is the truth's
   EXPECT_GT(rgb->ibl.rms, 5.0);        // the lobe at grazing is not F(n·v) × lobe
+}
+
+// Every scene in examples/ under its lighting: each chosen model (per material and scene-wide) is
+// served by the tables the plan lists, or shaded by its declared n·v approximation, whose
+// rendered error is the one the plan reports (a finite number, compared with the budget).
+TEST(Plan, ExampleScenesAreServedByTheirTablesOrNameTheirApproximation) {
+  std::vector<std::string> scenes;
+  for (const auto& e : std::filesystem::directory_iterator(FL_EXAMPLES_DIR))
+    if (e.path().extension() == ".yaml") scenes.push_back(e.path().string());
+  std::sort(scenes.begin(), scenes.end());
+  ASSERT_GE(scenes.size(), 4u);
+  bool lit[3] = {false, false, false};
+  const fl::analysis::Context ctx(settings());
+  for (const auto& path : scenes) {
+    const auto scene = fl::analysis::read_scene(path);
+    const auto materials = fl::analysis::load_scene_materials(ctx, scene);
+    const auto studies = fl::analysis::study_materials(ctx, materials, {});
+    const auto plan = fl::analysis::make_plan(scene, ctx, studies, committed_costs());
+    for (Lighting l : scene.lightings()) lit[static_cast<int>(l)] = true;
+    std::vector<fl::analysis::PlanChoice> chosen = plan.materials;
+    for (const auto& m : chosen) expect_served(scene, m.model, plan.luts);
+    for (const auto& m : plan.scene_choice.materials) expect_served(scene, m.model, plan.scene_luts);
+    chosen.insert(chosen.end(), plan.scene_choice.materials.begin(), plan.scene_choice.materials.end());
+    for (const auto& m : chosen) {
+      for (Lighting l : scene.lightings()) {
+        const auto& s = fl::analysis::lighting_support(m.model, l);
+        if (l != Lighting::Punctual && !s.fresnel_pre_integrated) EXPECT_EQ(std::string(s.evaluated_at), "n·v") << path;
+      }
+      EXPECT_TRUE(std::isfinite(m.error)) << path << " " << m.material;
+      EXPECT_EQ(m.meets_budget, m.error <= scene.max_de00) << path << " " << m.material;
+    }
+    std::printf("%s: scene-wide %s, %zu failing\n", path.c_str(), fl::fresnel::model_spec(plan.scene_choice.model).name,
+                plan.scene_choice.failing.size());
+  }
+  EXPECT_TRUE(lit[0] && lit[1] && lit[2]) << "examples/ covers punctual, ibl and area";
 }
 
 // ---- Hand-made (cost, error) tables.

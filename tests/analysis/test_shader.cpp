@@ -38,16 +38,16 @@ struct Compiled {
   std::string optimized;  // spirv-dis of spirv-opt -O
 };
 
-// Compiles `source` (GLSL compute, or HLSL with entry point main), validates, optimizes, validates.
-Compiled compile(const std::string& source, bool hlsl) {
+// Compiles `source` (GLSL compute, or HLSL with entry point main) and validates it; with
+// `optimize`, also runs spirv-opt -O, validates again and returns the disassembly.
+Compiled compile(const std::string& source, bool hlsl, bool optimize) {
   test::TempDir dir;
   const std::string src = dir.file(hlsl ? "s.hlsl" : "s.comp", source);
-  const std::string spv = dir.path() + "/s.spv", opt = dir.path() + "/o.spv";
+  const std::string spv = dir.path() + "/s.spv", opt = dir.path() + "/o.spv", log = dir.path() + "/glslang.log";
   const std::string front = hlsl ? "glslangValidator -D -V -S comp -e main " : "glslangValidator -V ";
-  const std::string log = dir.path() + "/glslang.log";
-  const auto r = test::run_command("(" + front + "'" + src + "' -o '" + spv + "' > '" + log + "' || (cat '" + log +
-                                   "'; false)) && spirv-val '" + spv + "' && spirv-opt -O '" +
-                                   spv + "' -o '" + opt + "' && spirv-val '" + opt + "' && spirv-dis '" + opt + "'");
+  std::string cmd = "(" + front + "'" + src + "' -o '" + spv + "' > '" + log + "' || (cat '" + log + "'; false)) && spirv-val '" + spv + "'";
+  if (optimize) cmd += " && spirv-opt -O '" + spv + "' -o '" + opt + "' && spirv-val '" + opt + "' && spirv-dis '" + opt + "'";
+  const auto r = test::run_command(cmd);
   return {r.status == 0, r.out + r.err, r.out};
 }
 
@@ -72,11 +72,13 @@ std::string argument_literals(const ModelSpec& s, const std::vector<double>& p, 
   return out;
 }
 
-// A compute shader storing `call` (an expression of the emitted functions) to a buffer.
-std::string glsl_program(const std::string& code, const std::string& call, bool with_texture) {
-  return "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 1) buffer Outputs { vec3 rgb; } o;\n" +
-         std::string(with_texture ? "layout(binding = 2) uniform sampler2D lut;\n" : "") + code +
-         "\nvoid main() { o.rgb = " + call + "; }\n";
+// A compute shader storing each of `calls` (expressions of the emitted functions) to o.rgb[k].
+std::string glsl_program(const std::string& code, const std::vector<std::string>& calls, bool with_texture) {
+  std::string out = "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 1) buffer Outputs { vec3 rgb[" +
+                    std::to_string(calls.size()) + "]; } o;\n" +
+                    (with_texture ? "layout(binding = 2) uniform sampler2D lut;\n" : "") + code + "\nvoid main() {\n";
+  for (size_t k = 0; k < calls.size(); ++k) out += "  o.rgb[" + std::to_string(k) + "] = " + calls[k] + ";\n";
+  return out + "}\n";
 }
 
 TEST(Shader, EveryModelLightingAndLanguageCompilesAndValidates) {
@@ -93,68 +95,77 @@ TEST(Shader, EveryModelLightingAndLanguageCompilesAndValidates) {
         const std::string program =
             hlsl ? "RWStructuredBuffer<float3> o : register(u1);\nTexture2D<float4> lut : register(t2);\n"
                    "SamplerState lut_sampler : register(s3);\n" + code + "\n[numthreads(1, 1, 1)] void main() { o[0] = " + call + "; }\n"
-                 : glsl_program(code, call, l != Lighting::Punctual);
-        const auto c = compile(program, hlsl);
+                 : glsl_program(code, {call}, l != Lighting::Punctual);
+        const auto c = compile(program, hlsl, false);
         EXPECT_TRUE(c.ok) << spec.name << " " << lighting_name(l) << (hlsl ? " HLSL" : " GLSL") << "\n" << c.log << "\n" << program;
         compiled += c.ok;
       }
-      // The cost harness is what scripts/gpu_costs.sh counts: it compiles too.
-      const auto h = compile(shader_cost_harness(spec.model, l), false);
-      EXPECT_TRUE(h.ok) << spec.name << " harness\n" << h.log;
     }
   }
   EXPECT_EQ(compiled, 7 * 3 * 2);
 }
 
-// The folded constant stored by main: %main's OpStore of an OpConstantComposite of three floats.
-bool folded_rgb(const std::string& dis, color::Rgb& out) {
-  std::smatch m;
-  const std::string body = dis.substr(dis.find("%main = OpFunction"));
-  if (!std::regex_search(body, m, std::regex(R"(OpStore %\S+ (%\S+))"))) return false;
-  const std::string id = m[1];
+// The folded constants main stores, in store order: each OpStore's value is an
+// OpConstantComposite of three OpConstant floats.
+bool folded_rgb(const std::string& dis, std::vector<color::Rgb>& out) {
+  const size_t main_at = dis.find("%main = OpFunction");
+  if (main_at == std::string::npos) return false;
+  const std::string body = dis.substr(main_at);
   auto constant = [&](const std::string& cid, double& v) {
     std::smatch c;
     if (!std::regex_search(dis, c, std::regex(cid + R"( = OpConstant %float (\S+))"))) return false;
     v = std::stod(c[1]);
     return true;
   };
-  if (!std::regex_search(dis, m, std::regex(id + R"( = OpConstantComposite %v3float (%\S+) (%\S+) (%\S+))"))) return false;
-  const std::string ids[3] = {m[1], m[2], m[3]};
-  for (int k = 0; k < 3; ++k)
-    if (!constant(ids[k], out[k])) return false;
+  const std::regex store(R"(OpStore %\S+ (%\S+))");
+  for (auto it = std::sregex_iterator(body.begin(), body.end(), store); it != std::sregex_iterator(); ++it) {
+    std::smatch m;
+    const std::string id = (*it)[1];
+    if (!std::regex_search(dis, m, std::regex(id + R"( = OpConstantComposite %v3float (%\S+) (%\S+) (%\S+))"))) return false;
+    color::Rgb rgb{};
+    for (int k = 0; k < 3; ++k)
+      if (!constant(m[k + 1], rgb[k])) return false;
+    out.push_back(rgb);
+  }
   return true;
 }
 
-void expect_folds_to(const std::string& code, const std::string& call, const color::Rgb& want, const std::string& what) {
-  const auto c = compile(glsl_program(code, call, false), false);
-  ASSERT_TRUE(c.ok) << what << "\n" << c.log;
-  color::Rgb got{};
-  ASSERT_TRUE(folded_rgb(c.optimized, got)) << what << ": not folded to a constant\n" << c.optimized;
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], kFoldTolerance) << what << " channel " << k;
+std::string literal(double x) {
+  std::ostringstream s;
+  s.precision(9);
+  s << std::showpoint << x;
+  return s.str();
 }
 
+// Per model, one program with the model at four angles and the two table combinations from texels
+// given as constants; against the C++ kernel and the rendered-error engine.
 TEST(Shader, GlslComputesWhatTheKernelsCompute) {
   ASSERT_TRUE(have_tools());
+  ShadingPoint point;
+  point.nov = 0.35;
+  point.dfg = {0.61, 0.12, 0.037};
+  point.ltc = {0.73, 0.12, 0.037, {0, 0, 1}};
   for (const auto& spec : fresnel::model_specs()) {
     const auto p = fresnel::example_params(spec.model);
-    const std::string args = argument_literals(spec, p, false);
-    const auto punctual = shader_code(spec.model, {Lighting::Punctual}, ShaderLanguage::Glsl);
+    const std::string args = argument_literals(spec, p, false), fn = "fresnel_" + std::string(spec.name);
+    std::vector<std::string> calls;
+    std::vector<color::Rgb> want;
     for (double c : {0.05, 0.3, 0.8, 1.0}) {
-      std::ostringstream cs;
-      cs << std::showpoint << c;
-      expect_folds_to(punctual, "fresnel_" + std::string(spec.name) + "(" + cs.str() + args + ")",
-                      spec.evaluate(c, p.data(), false), std::string(spec.name) + " at cos " + cs.str());
+      calls.push_back(fn + "(" + literal(c) + args + ")");
+      want.push_back(spec.evaluate(c, p.data(), false));
     }
-    // The table combinations, from texels given as constants, against the rendered-error engine.
-    ShadingPoint point;
-    point.nov = 0.35;
-    point.dfg = {0.61, 0.12, 0.037};
-    point.ltc = {0.73, 0.12, 0.037, {0, 0, 1}};
-    const auto both = shader_code(spec.model, {Lighting::Ibl, Lighting::Area}, ShaderLanguage::Glsl);
-    expect_folds_to(both, "fresnel_" + std::string(spec.name) + "_dfg(vec3(0.61, 0.12, 0.037), 0.35" + args + ")",
-                    engine_shading(spec.model, p, Lighting::Ibl, point), std::string(spec.name) + " dfg");
-    expect_folds_to(both, "fresnel_" + std::string(spec.name) + "_ltc(vec3(0.73, 0.12, 0.037), 0.35" + args + ")",
-                    engine_shading(spec.model, p, Lighting::Area, point), std::string(spec.name) + " ltc");
+    calls.push_back(fn + "_dfg(vec3(0.61, 0.12, 0.037), 0.35" + args + ")");
+    want.push_back(engine_shading(spec.model, p, Lighting::Ibl, point));
+    calls.push_back(fn + "_ltc(vec3(0.73, 0.12, 0.037), 0.35" + args + ")");
+    want.push_back(engine_shading(spec.model, p, Lighting::Area, point));
+    const auto code = shader_code(spec.model, {Lighting::Punctual, Lighting::Ibl, Lighting::Area}, ShaderLanguage::Glsl);
+    const auto c = compile(glsl_program(code, calls, false), false, true);
+    ASSERT_TRUE(c.ok) << spec.name << "\n" << c.log;
+    std::vector<color::Rgb> got;
+    ASSERT_TRUE(folded_rgb(c.optimized, got)) << spec.name << ": not folded to constants\n" << c.optimized;
+    ASSERT_EQ(got.size(), want.size()) << spec.name;
+    for (size_t k = 0; k < want.size(); ++k)
+      for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(got[k][ch], want[k][ch], kFoldTolerance) << spec.name << ": " << calls[k];
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "fresnel/average.h"
 #include "fresnel/model_set.h"
 #include "spectral/errors.h"
 #include "util/median.h"
@@ -197,6 +198,21 @@ std::string flag_list(const std::vector<std::pair<std::string, double>>& values,
 
 }  // namespace
 
+namespace {
+
+// The F82 model's hemispherical average from the spectral F0 and F82: OpenPBR's F82-tint average
+// albedo, for Kulla–Conty energy compensation.
+color::Rgb f82_average(const fresnel::DerivedParameters& d) {
+  std::vector<double> p;
+  for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], d.f82[c]});
+  return fresnel::hemispherical_average(fresnel::model_of<fresnel::models::F82>, p);
+}
+constexpr const char* kF82AverageNote =
+    "f_avg (Markdown and JSON only): the F82 model's hemispherical average 2∫F(μ)μ dμ = F0 + (1 − F0)/21 − a/126 "
+    "from F0 and F82 (OpenPBR's F82-tint average albedo), for Kulla–Conty multiple-scattering compensation.";
+
+}  // namespace
+
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
   t.name = "presets";
@@ -204,6 +220,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   t.columns = {{"material"}, {"class"}, {"space"}};
   for (const char* q : {"f0", "f82", "g", "eta", "kappa"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
+  for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("f_avg_{}", c), 6, false});
   t.columns.push_back({"out_of_range", 0, false});
   int flagged = 0;
   for (const auto& s : studies) {
@@ -217,6 +234,8 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       for (int c = 0; c < 3; ++c) row.push_back((*v)[c]);
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c]);
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c + 1]);
+    const auto f_avg = f82_average(d);
+    for (int c = 0; c < 3; ++c) row.push_back(f_avg[c]);
     const char* ch[] = {"r", "g", "b"};
     for (int c = 0; c < 3; ++c) {
       unit.push_back({fmt::format("f0_{}", ch[c]), d.f0[c]});
@@ -231,6 +250,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
              "F0, F82: the spectral procedure at 0° and at arccos(1/7) ≈ 81.79°.",
              "g: Gulbrandsen's edge tint from (F0, Refl. η), unclamped.",
              "eta, kappa: RGB η, κ fitted with Ceres to minimize the RMS ΔE2000 against ground truth.",
+             kF82AverageNote,
              fmt::format("Values outside [0, 1] (F0, F82, g) are kept and listed in out_of_range: {} values.", flagged)};
   return t;
 }
@@ -242,6 +262,7 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   t.columns = {{"material"}};
   for (const char* q : {"base_color", "specular_color"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
+  for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("f_avg_{}", c), 6, false});
   t.columns.push_back({"out_of_range"});
   int flagged = 0;
   for (const auto& s : studies) {
@@ -249,6 +270,8 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     std::vector<Cell> row{s.material->material.name};
     for (int c = 0; c < 3; ++c) row.push_back(d.f0[c]);
     for (int c = 0; c < 3; ++c) row.push_back(d.f82_tint[c]);
+    const auto f_avg = f82_average(d);
+    for (int c = 0; c < 3; ++c) row.push_back(f_avg[c]);
     const char* ch[] = {"r", "g", "b"};
     std::vector<std::pair<std::string, double>> unit;
     for (int c = 0; c < 3; ++c) {
@@ -260,7 +283,8 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   }
   t.reading = "OpenPBR's F82-tint form: base_color is F0, specular_color the ratio of the true F82 to Schlick's value "
               "at arccos(1/7); a tint above 1 means the true curve is brighter there than Schlick's.";
-  t.notes = {setting_note(ctx), fmt::format("Values outside [0, 1] are kept and listed in out_of_range: {} values.", flagged)};
+  t.notes = {setting_note(ctx), kF82AverageNote,
+             fmt::format("Values outside [0, 1] are kept and listed in out_of_range: {} values.", flagged)};
   return t;
 }
 
