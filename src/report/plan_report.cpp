@@ -98,8 +98,10 @@ std::string plan_json(const analysis::Plan& p) {
                       {"materials", std::move(scene_materials)},
                       {"luts", luts_json(p.scene_luts)}}}};
   return write_json(doc, [](const std::string& key) {
-    if (key == "max_de00" || key == "rms_de00" || key == "punctual" || key == "ibl" || key == "area") return kErrorDecimals;
-    if (key == "cpu_ns_per_eval" || key == "roughness") return kCostDecimals;
+    if (key == "max_de00" || key == "rms_de00" || key == "punctual" || key == "ibl" || key == "area" ||
+        key == "roughness")
+      return kErrorDecimals;
+    if (key == "cpu_ns_per_eval") return kCostDecimals;
     return kParamDecimals;  // the members of "params", f_avg
   });
 }
