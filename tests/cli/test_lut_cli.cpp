@@ -115,7 +115,7 @@ TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
     const std::array<double, 2> e{std::stod(cells[5]), std::stod(cells[8])};
     if (cells[1] == "schlick") schlick[cells[0] + "/" + cells[2]] = e;
     if (cells[1] == "f82") f82[cells[0] + "/" + cells[2]] = e;
-    EXPECT_EQ(cells[4], cells[1] == "schlick" || cells[1] == "f82" ? "tables" : "F(n·v) x lobe") << line;
+    EXPECT_EQ(cells[4], cells[1] == "schlick" || cells[1] == "f82" ? "tables" : "F(n·v) × lobe") << line;
   }
   EXPECT_EQ(metals.size(), 14u);  // the catalog's metals
   EXPECT_EQ(models.size(), 7u);   // every model

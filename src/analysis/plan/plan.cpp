@@ -1,6 +1,7 @@
 #include "analysis/plan/plan.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <set>

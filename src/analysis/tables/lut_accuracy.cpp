@@ -35,7 +35,7 @@ namespace {
 
 std::string approximation(Model m, Lighting l) {
   const auto& s = lighting_support(m, l);
-  return s.fresnel_pre_integrated ? "tables" : fmt::format("F({}) x lobe", s.evaluated_at);
+  return s.fresnel_pre_integrated ? "tables" : fmt::format("F({}) × lobe", s.evaluated_at);
 }
 
 const RenderedCandidate* find(const std::vector<RenderedCandidate>& cs, Model m, bool fitted) {
@@ -77,7 +77,7 @@ std::vector<std::string> accuracy_notes(const Context& ctx) {
       fmt::format("Engine: the {0}² tables as `lut` writes them, read bilinearly (DFG at (n·v, roughness) on texel "
                   "centres; LTC moments at (roughness, √(1 − n·v)) on endpoints). `tables`: the Fresnel term is "
                   "pre-integrated, a·n + b·f + c·l with F = a + b(1 − μ)⁵ + cμ(1 − μ)⁶ (Schlick: F0·dfg1 + dfg2; "
-                  "F82: … − a·dfg_f82, unclamped); `F(n·v) x lobe`: the model at n·v times the lobe's Fresnel-free "
+                  "F82: … − a·dfg_f82, unclamped); `F(n·v) × lobe`: the model at n·v times the lobe's Fresnel-free "
                   "integral (dfg1 + dfg2, n_D), the stated approximation for models no shared table holds.",
                   kEngineLutSize),
       "curve_rms_de00: the curve's RMS ΔE2000 over the angles, what punctual lights render. rms and max: over the "
