@@ -18,6 +18,7 @@ PACKAGES=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev libxml2-utils
   liblcms2-dev libcairo2-dev fonts-dejavu-core
   clang libclang-rt-14-dev
+  glslang-tools spirv-tools
   nodejs npm
 )
 

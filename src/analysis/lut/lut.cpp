@@ -77,12 +77,15 @@ DfgTexel integrate_dfg(double nov, double alpha, int samples) {
   check_samples(samples);
   DfgTexel t;
   for_each_lobe_sample(nov, alpha, samples, [&](const LobeSample& s) {
-    const double fc = pow5(1.0 - s.voh);
+    const double m = 1.0 - s.voh;
+    const double fc = pow5(m);
     t.dfg1 += (1.0 - fc) * s.weight;
     t.dfg2 += fc * s.weight;
+    t.dfg_f82 += s.voh * fc * m * s.weight;
   });
   t.dfg1 /= samples;
   t.dfg2 /= samples;
+  t.dfg_f82 /= samples;
   return t;
 }
 

@@ -48,10 +48,11 @@ double ltc_nov_at(double x);
 double ltc_alpha_at(double roughness);
 
 // Channels 1 and 2 of Filament's DFG table ("Physically Based Rendering in Filament", "Pre-integration
-// for multiscattering"),
-// with Fc = (1 − v·h)⁵: dfg1 = ∫ (1 − Fc) ρ cos dl, dfg2 = ∫ Fc ρ cos dl.
+// for multiscattering"), with Fc = (1 − v·h)⁵: dfg1 = ∫ (1 − Fc) ρ cos dl, dfg2 = ∫ Fc ρ cos dl; and
+// the F82 channel dfg_f82 = ∫ μ(1 − μ)⁶ ρ cos dl (μ = v·h), from the same samples, so that
+// Hoffman's F82 model F = Schlick − a·μ(1 − μ)⁶ integrates to F0·dfg1 + dfg2 − a·dfg_f82.
 struct DfgTexel {
-  double dfg1 = 0, dfg2 = 0;
+  double dfg1 = 0, dfg2 = 0, dfg_f82 = 0;
 };
 // Hill's LTC moments and the F82 moment: n_D = ∫ ρ cos, f_D = ∫ (1 − v·h)⁵ ρ cos,
 // l_D = ∫ (v·h)(1 − v·h)⁶ ρ cos, so that Hoffman's F82 model integrates to R0 n_D + (1 − R0) f_D − a l_D.
