@@ -6,6 +6,7 @@
 
 #include "analysis/render/render.h"
 #include "analysis/study/study.h"
+#include "report/html.h"
 #include "report/writer.h"
 
 namespace fl::report {
@@ -42,6 +43,26 @@ void check_render_request(const RenderRequest& request);
 // one scale), the animated flip FILE.flip.gif (truth, then each model, each after the truth
 // again) and the contact sheet FILE.sheet.png.
 Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m, const RenderRequest& request);
+
+// The flip every gallery card of `reproduce` shows: figures/flip-KEY.png per material, the ground
+// truth and then Schlick, F82 and Gulbrandsen (derived parameters) side by side, each a sphere of
+// kFlipSizePx pixels at roughness kFlipRoughness under the analytic environment (rendered in one pass
+// per material, materials in parallel).
+constexpr int kFlipSizePx = 97;
+constexpr double kFlipRoughness = 0.3;
+constexpr int kFlipSamples = 32;
+struct FlipFiles {
+  Files files;
+  std::vector<Flip> flips;  // one per study, in order
+};
+FlipFiles reproduce_flips(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies);
+
+// A gallery card per study: name, class, page, ground-truth strip and F0/F82 swatches, flags (data
+// extrapolated, presets outside [0, 1] from `presets`' out_of_range column, the F82 model's output
+// clamp), the RMS ΔE2000 of Schlick, F82 and Gulbrandsen and the best fitted model; `figures` and
+// `flips` (either may be empty) add the figure links and the flip.
+std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
+                                          const analysis::Table& presets, bool figures, const std::vector<Flip>& flips);
 
 // figures/strip-KEY.png and figures/curves-KEY.png per material (derived parameters), rendered in
 // parallel, and their Markdown gallery as figures.md.
