@@ -36,10 +36,10 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected) {
   plot->require_subcommand(1);
   add_plot_subcommand(*plot, g, selected, "strip",
                       "stacked colour strips over 0°–90° and 80°–90°: ground truth and each model (sRGB via OCIO)",
-                      "all", "output file (.png)");
+                      "all", "output file (.png, .svg or .pdf)");
   add_plot_subcommand(*plot, g, selected, "curves",
                       "R, G, B reflectance against angle (truth and models) and ΔE2000 against angle",
-                      "schlick,f82,gulbrandsen", "output file (.png or .svg)");
+                      "schlick,f82,gulbrandsen", "output file (.png, .svg or .pdf)");
 }
 
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {

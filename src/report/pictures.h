@@ -18,7 +18,7 @@ struct PlotRequest {
   std::string figure;  // strip | curves
   std::string material, models, params = "derived", out;
 };
-// InputError for an output type (.png; .svg also for curves), parameter set or model list that
+// InputError for an output type (.png, .svg or .pdf), parameter set or model list that
 // does not exist, checked before any work.
 void check_plot_request(const PlotRequest& request);
 // The figure of `m` with the request's models and parameter set, as request.out.

@@ -19,7 +19,7 @@
 namespace fl::analysis {
 
 // Quasi-Monte Carlo points per table cell. At 64×64 the DFG and moment tables stay within 2.6e-4
-// of an independent quadrature (tests/test_lut.cpp, FullTablesAgreeWithQuadrature).
+// of an independent quadrature (tests/analysis/test_lut.cpp, FullTablesAgreeWithQuadrature).
 constexpr int kLutSamples = 8192;
 // Heitz's fitLTC.cpp clamps α from below so the lobe stays finite at roughness 0.
 constexpr double kLtcMinAlpha = 1e-4;

@@ -1,5 +1,5 @@
 #pragma once
-// The colorimetric setting of a run (SPEC §1) and the ground-truth machinery built on it.
+// The colorimetric setting of a run (docs/conventions.md, "Colorimetry") and the ground-truth machinery built on it.
 #include <string>
 #include <vector>
 
