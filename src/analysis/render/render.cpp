@@ -55,6 +55,10 @@ struct KeyLightStrategy {
     return to_world({sin_l * std::cos(phi), sin_l * std::sin(phi), cos_l}, kt, kb, env.key_direction);
   }
   double pdf(const Vec3& d) const { return can_sample() && brdf::dot(d, env.key_direction) >= cos_delta ? cone_pdf : 0.0; }
+  void lookup(const Vec3& d, color::Rgb& radiance_out, double& pdf_out) const {
+    radiance_out = radiance(d);
+    pdf_out = pdf(d);
+  }
 
   const Environment& env;
   double cos_delta, cone_pdf;
@@ -67,10 +71,32 @@ void accumulate(const std::vector<const FresnelTable*>& tables, double weight, c
   for (size_t i = 0; i < tables.size(); ++i) out[i] = out[i] + weight * mul(tables[i]->at(voh), radiance);
 }
 
-// shade_specular for one lighting strategy S (radiance, can_sample, sample, pdf).
+// The lighting strategy's directions for Hammersley point i of `samples`: the same world directions
+// serve every shading point, so they are drawn once per render. pdf 0: no direction.
+struct LightSample {
+  Vec3 dir;
+  double pdf = 0;
+  color::Rgb radiance;
+};
+
 template <class S>
-void shade_with(const S& light, const std::vector<const FresnelTable*>& tables, const Vec3& n, const Vec3& v,
-                double alpha, int samples, color::Rgb* out) {
+std::vector<LightSample> light_samples(const S& light, int samples) {
+  std::vector<LightSample> out(static_cast<size_t>(samples));
+  if (!light.can_sample()) return out;
+  const auto n = static_cast<std::uint32_t>(samples);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const auto p = brdf::hammersley(i, n);
+    auto& ls = out[i];
+    ls.dir = light.sample(p.u1, p.u2, ls.pdf);
+    if (ls.pdf > 0.0) ls.radiance = light.radiance(ls.dir);
+  }
+  return out;
+}
+
+// shade_specular for one lighting strategy S (radiance, lookup, can_sample, sample, pdf).
+template <class S>
+void shade_with(const S& light, const std::vector<LightSample>& drawn, const std::vector<const FresnelTable*>& tables,
+                const Vec3& n, const Vec3& v, double alpha, color::Rgb* out) {
   std::fill(out, out + tables.size(), color::Rgb{});
   const double nov = std::max(1e-4, brdf::dot(n, v));  // grazing: keep the Smith terms finite
   if (alpha < kMirrorAlpha) {
@@ -80,7 +106,7 @@ void shade_with(const S& light, const std::vector<const FresnelTable*>& tables, 
   Vec3 t, b;
   basis(n, t, b);
   const Vec3 v_local = brdf::normalize(Vec3{brdf::dot(v, t), brdf::dot(v, b), nov});
-  const auto n_samples = static_cast<std::uint32_t>(samples);
+  const auto n_samples = static_cast<std::uint32_t>(drawn.size());
   for (std::uint32_t i = 0; i < n_samples; ++i) {
     const auto p = brdf::hammersley(i, n_samples);
     // Strategy A: the GGX visible normals; f·cos/pdf_A = F(v·h) · G₂/G₁ (brdf::ggx_vndf_weight).
@@ -89,22 +115,23 @@ void shade_with(const S& light, const std::vector<const FresnelTable*>& tables, 
     if (l.z > 0.0) {
       const Vec3 lw = to_world(l, t, b, n);
       const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, h.z, alpha);
-      const double w = pdf_a / (pdf_a + light.pdf(lw));
-      accumulate(tables, w * brdf::ggx_vndf_weight(v_local.z, l.z, alpha), light.radiance(lw), brdf::dot(v_local, h), out);
+      color::Rgb radiance;
+      double pdf_b = 0;
+      light.lookup(lw, radiance, pdf_b);
+      const double w = pdf_a / (pdf_a + pdf_b);
+      accumulate(tables, w * brdf::ggx_vndf_weight(v_local.z, l.z, alpha), radiance, brdf::dot(v_local, h), out);
     }
     // Strategy B: the lighting's own directions; f·cos/pdf_B = D V F (n·l) / pdf_B.
-    if (!light.can_sample()) continue;
-    double pdf_b = 0;
-    const Vec3 lw = light.sample(p.u1, p.u2, pdf_b);
-    const Vec3 lb{brdf::dot(lw, t), brdf::dot(lw, b), brdf::dot(lw, n)};
-    if (!(pdf_b > 0.0) || lb.z <= 0.0) continue;
+    const LightSample& ls = drawn[i];
+    if (!(ls.pdf > 0.0)) continue;
+    const Vec3 lb{brdf::dot(ls.dir, t), brdf::dot(ls.dir, b), brdf::dot(ls.dir, n)};
+    if (lb.z <= 0.0) continue;
     const Vec3 hb = brdf::normalize(Vec3{v_local.x + lb.x, v_local.y + lb.y, v_local.z + lb.z});
     const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, hb.z, alpha);
-    const double w = pdf_b / (pdf_a + pdf_b);
-    accumulate(tables, w * brdf::ggx_lobe_cos(v_local, lb, alpha) / pdf_b, light.radiance(lw), brdf::dot(v_local, hb),
-               out);
+    const double w = ls.pdf / (pdf_a + ls.pdf);
+    accumulate(tables, w * brdf::ggx_lobe_cos(v_local, lb, alpha) / ls.pdf, ls.radiance, brdf::dot(v_local, hb), out);
   }
-  for (size_t k = 0; k < tables.size(); ++k) out[k] = (1.0 / samples) * out[k];
+  for (size_t k = 0; k < tables.size(); ++k) out[k] = (1.0 / static_cast<double>(n_samples)) * out[k];
 }
 
 // Calls f with the lighting's sampling strategy.
@@ -116,14 +143,15 @@ auto with_strategy(const Lighting& light, const F& f) {
 
 // One pixel of every image: its colour (premultiplied by coverage) per table, and its coverage.
 template <class S>
-double render_pixel(const S& light, const std::vector<const FresnelTable*>& tables, const RenderSettings& s, double X,
-                    double Y, double scale, std::vector<color::Rgb>& c, std::vector<color::Rgb>& sub) {
+double render_pixel(const S& light, const std::vector<LightSample>& drawn, const std::vector<const FresnelTable*>& tables,
+                    const RenderSettings& s, double X, double Y, double scale, std::vector<color::Rgb>& c,
+                    std::vector<color::Rgb>& sub) {
   const double alpha = s.roughness * s.roughness;
   const Vec3 v{0.0, 0.0, 1.0};
   const auto shade_at = [&](double px, double py, color::Rgb* out) {
     const double r2 = px * px + py * py;
     if (r2 >= 1.0) return false;
-    shade_with(light, tables, {px, py, std::sqrt(1.0 - r2)}, v, alpha, s.samples, out);
+    shade_with(light, drawn, tables, {px, py, std::sqrt(1.0 - r2)}, v, alpha, out);
     return true;
   };
   std::fill(c.begin(), c.end(), color::Rgb{});
@@ -163,6 +191,7 @@ std::vector<SphereImage> render_with(const S& light, const std::vector<const Fre
     img.alpha.assign(count, 0.0f);
   }
   const double scale = 2.0 * kHalfFrame / s.size_px;  // scene units per pixel
+  const auto drawn = light_samples(light, s.samples);
   parallel_for(
       static_cast<size_t>(s.size_px),
       [&](size_t row) {
@@ -171,7 +200,7 @@ std::vector<SphereImage> render_with(const S& light, const std::vector<const Fre
         for (int x = 0; x < s.size_px; ++x) {
           double X = 0, Y = 0;
           pixel_centre(x, y, s.size_px, s.size_px, X, Y);
-          const double cover = render_pixel(light, tables, s, X, Y, scale, c, sub);
+          const double cover = render_pixel(light, drawn, tables, s, X, Y, scale, c, sub);
           const size_t k = static_cast<size_t>(y) * s.size_px + x;
           for (size_t i = 0; i < tables.size(); ++i) {
             images[i].rgb[3 * k] = static_cast<float>(c[i].r);
@@ -252,6 +281,17 @@ color::Rgb EnvironmentMap::texel(int x, int y) const {
 color::Rgb EnvironmentMap::radiance(const Vec3& dir) const {
   double u = 0, v = 0;
   direction_to_uv(dir, u, v);
+  return radiance_uv(u, v);
+}
+
+void EnvironmentMap::lookup(const Vec3& dir, color::Rgb& radiance, double& pdf) const {
+  double u = 0, v = 0;
+  direction_to_uv(dir, u, v);
+  radiance = radiance_uv(u, v);
+  pdf = pdf_uv(u, v, std::sqrt(std::max(0.0, 1.0 - dir.y * dir.y)));
+}
+
+color::Rgb EnvironmentMap::radiance_uv(double u, double v) const {
   const int w = image_.width, h = image_.height;
   const double fx = u * w - 0.5, fy = v * h - 0.5;
   const double x0 = std::floor(fx), y0 = std::floor(fy);
@@ -278,13 +318,15 @@ Vec3 EnvironmentMap::sample(double u1, double u2, double& pdf) const {
 }
 
 double EnvironmentMap::pdf(const Vec3& dir) const {
-  if (!can_sample()) return 0.0;
   double u = 0, v = 0;
   direction_to_uv(dir, u, v);
+  return pdf_uv(u, v, std::sqrt(std::max(0.0, 1.0 - dir.y * dir.y)));
+}
+
+double EnvironmentMap::pdf_uv(double u, double v, double sin_theta) const {
+  if (!can_sample() || sin_theta <= 0.0) return 0.0;
   const int w = image_.width, h = image_.height;
   const int x = std::min(w - 1, static_cast<int>(u * w)), y = std::min(h - 1, static_cast<int>(v * h));
-  const double sin_theta = std::sqrt(std::max(0.0, 1.0 - dir.y * dir.y));
-  if (sin_theta <= 0.0) return 0.0;
   // Density in (u, v) is weight · w·h / Σ weight; dω = 2π² sin θ du dv.
   return weight_[static_cast<size_t>(y) * w + x] / total_ * w * h / (2.0 * kPi * kPi * sin_theta);
 }
@@ -315,7 +357,7 @@ FresnelTable model_fresnel_table(fresnel::Model model, const std::vector<double>
 void shade_specular(const Lighting& light, const std::vector<const FresnelTable*>& fresnel, const Vec3& n,
                     const Vec3& v, double alpha, int samples, color::Rgb* out) {
   with_strategy(light, [&](const auto& s) {
-    shade_with(s, fresnel, n, v, alpha, samples, out);
+    shade_with(s, light_samples(s, samples), fresnel, n, v, alpha, out);
     return 0;
   });
 }

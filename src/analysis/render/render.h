@@ -70,6 +70,8 @@ class EnvironmentMap {
   // A direction drawn with density pdf(direction) per steradian from two uniform numbers in [0, 1).
   brdf::Vec3 sample(double u1, double u2, double& pdf) const;
   double pdf(const brdf::Vec3& dir) const;
+  // radiance(dir) and pdf(dir) together (one direction → (u, v) conversion).
+  void lookup(const brdf::Vec3& dir, color::Rgb& radiance, double& pdf) const;
 
   const LatLongImage& image() const { return image_; }
   double rotation_deg() const { return rotation_deg_; }
@@ -79,6 +81,8 @@ class EnvironmentMap {
 
  private:
   color::Rgb texel(int x, int y) const;
+  color::Rgb radiance_uv(double u, double v) const;
+  double pdf_uv(double u, double v, double sin_theta) const;
   LatLongImage image_;
   double rotation_deg_ = 0;
   std::vector<double> row_cdf_;     // height + 1 entries, 0 … 1
