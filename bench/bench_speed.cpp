@@ -260,7 +260,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
   const std::string machine = machine_line();
   // bench/model_costs.csv: what `table speed` and `plan` read.
   std::string csv =
-      "# Fresnel Lab model costs (issue 6), written by bench_speed --fl_write (scripts/bench.sh); read by\n"
+      "# Fresnel Lab model costs, written by bench_speed --fl_write (scripts/bench.sh); read by\n"
       "# `table speed` and `plan`. ns per evaluation = one RGB value at one angle, over 4096 angles, median\n"
       "# CPU time of the repetitions.\n";
   csv += "# machine: " + machine + "\n";
@@ -293,7 +293,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
   md += fmt::format("| Fresnel Lab `color::ciede2000<double>` (template, differentiable) | {} | {}× |\n", num(t, 1),
                     num(l / t, 2));
   md += fmt::format("| Little CMS `cmsCIE2000DeltaE` | {} | 1.00× |\n", num(l, 1));
-  md += "\nAgreement: tests/test_lcms_agreement.cpp checks both of ours against Little CMS within 1e-9 on the 34 "
+  md += "\nAgreement: tests/color/test_lcms_agreement.cpp checks both of ours against Little CMS within 1e-9 on the 34 "
         "pairs of Sharma, Wu & Dalal 2005, and the fast path against the template within 1e-12.\n";
   md += "\n## Spectral ground truth (gold)\n\n| what | time |\n|---|---|\n";
   md += fmt::format("| one RGB value at one angle | {} µs |\n", num(ns("ground_truth/rgb_one_angle") / 1e3, 2));
@@ -303,7 +303,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
   md += "| step | ms |\n|---|---|\n";
   for (const auto& [name, res] : r)
     if (name.rfind("tables/", 0) == 0) md += fmt::format("| {} | {} |\n", name.substr(7), num(res.median_seconds() * 1e3, 2));
-  md += "\n## Acceptance (issue 6)\n\n";
+  md += "\n## Targets\n\n";
   md += fmt::format("- ΔE2000: ours (fast path) {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 2×).\n", num(f, 1),
                     num(l, 1), num(l / f, 2));
   md += fmt::format("- Batched Schlick in float: {} ns per evaluation (target < 1 ns).\n",

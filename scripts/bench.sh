@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 6: runs the Google Benchmark programs and writes reports/bench.md (machine noted) and
+# Runs the Google Benchmark programs and writes reports/bench.md (machine noted) and
 # bench/model_costs.csv (the per-model costs `table speed` and `plan` read; commit both).
 #   scripts/bench.sh [BUILD_DIR]        default build dir: build
 # Extra Google Benchmark flags can go in $BENCH_FLAGS (e.g. --benchmark_filter=de2000).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CI step 2 (issue 8): the whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer
+# CI step 2: the whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 # (FRESNEL_LAB_SANITIZE=ON, build-asan/). Any report fails the run: UBSan does not recover
 # (-fno-sanitize-recover=undefined), ASan and LeakSanitizer exit non-zero, and the CLI tests see
 # the sanitized fresnel-lab's stderr and exit status.

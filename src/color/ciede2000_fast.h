@@ -1,6 +1,6 @@
 #pragma once
 // A double-only CIEDE2000 for bulk use (error tables, benchmarks). Same result as the templated
-// color::ciede2000 (lab.h) within 1e-12 (tests/test_lcms_agreement.cpp); the template stays the
+// color::ciede2000 (lab.h) within 1e-12 (tests/color/test_lcms_agreement.cpp); the template stays the
 // one Ceres differentiates.
 #include "color/types.h"
 

@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "spectral/errors.h"
 
 namespace fl::color {
@@ -12,6 +15,18 @@ Mat3 rgb_to_xyz_from_primaries(Chromaticity r, Chromaticity g, Chromaticity b, C
   const Mat3 p{{xr.X, xg.X, xb.X, xr.Y, xg.Y, xb.Y, xr.Z, xg.Z, xb.Z}};
   const auto s = p.inverse().apply<double>({xw.X, xw.Y, xw.Z});
   return p * Mat3::diagonal(s[0], s[1], s[2]);
+}
+
+SpaceChromaticities chromaticities_of(const RgbSpace& s) {
+  const auto column = [&](int c) { return xy_from_xyz({s.rgb_to_xyz(0, c), s.rgb_to_xyz(1, c), s.rgb_to_xyz(2, c)}); };
+  return {column(0), column(1), column(2), xy_from_xyz(s.rgb_to_xyz * Rgb{1, 1, 1})};
+}
+
+double chromaticity_distance(const SpaceChromaticities& a, const SpaceChromaticities& b) {
+  double d = 0;
+  const Chromaticity pa[] = {a.red, a.green, a.blue, a.white}, pb[] = {b.red, b.green, b.blue, b.white};
+  for (int i = 0; i < 4; ++i) d = std::max({d, std::abs(pa[i].x - pb[i].x), std::abs(pa[i].y - pb[i].y)});
+  return d;
 }
 
 const std::vector<std::string>& builtin_space_names() {
@@ -24,6 +39,8 @@ RgbSpace builtin_space(const std::string& name) {
   const Chromaticity aces_white{0.32168, 0.33767}, d65{0.3127, 0.3290};
   auto make = [&](const char* desc, Chromaticity r, Chromaticity g, Chromaticity b, Chromaticity w) {
     RgbSpace s;
+    s.reference_illuminant = w.x == aces_white.x ? "D60" : "D65";
+    s.builtin_equivalent = name;
     s.name = name;
     s.description = desc;
     s.rgb_to_xyz = rgb_to_xyz_from_primaries(r, g, b, w);

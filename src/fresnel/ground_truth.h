@@ -1,5 +1,6 @@
 #pragma once
-// Spectral ground truth and the spectral procedures that derive RGB parameters (SPEC §2–3).
+// Spectral ground truth and the spectral procedures that derive RGB parameters (docs/conventions.md,
+// "Fresnel definitions" and "Deriving RGB parameters").
 #include <array>
 #include <vector>
 

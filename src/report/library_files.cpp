@@ -130,7 +130,8 @@ Files library_files(const analysis::Context& ctx, const analysis::Library& lib, 
   models.name = "library_models";
   files.emplace_back("models.csv", to_csv(models));
   files.emplace_back("models.json", to_json(models));
-  files.emplace_back("library.mtlx", presets_materialx(ctx, lib.studies));
+  files.emplace_back("library.mtlx", presets_materialx(ctx, lib.studies, MaterialxShader::GeneralizedSchlick));
+  files.emplace_back("library_openpbr.mtlx", presets_materialx(ctx, lib.studies, MaterialxShader::OpenPbrSurface));
   files.emplace_back("skipped.csv", to_csv(analysis::skipped_table(lib.set.skipped)));
   const auto spread = analysis::spread_table(ctx, lib.studies);
   files.emplace_back("spread.csv", to_csv(spread));

@@ -22,15 +22,14 @@ MaterialClass classify(const OpticalConstants& oc) {
   // Sampled on the whole visible grid so that a range error names 360-830 nm.
   const SpectralGrid g = SpectralGrid::visible(5.0);
   const auto s = sample_ior(oc, g, oc.file);
-  double eps = 0;
+  double k = 0;
   int count = 0;
   for (int i = 0; i < g.count; ++i) {
     if (g.lambda_nm(i) < 400.0 || g.lambda_nm(i) > 700.0) continue;
-    const auto z = s.ior.ior[i];
-    eps += z.real() * z.real() - z.imag() * z.imag();
+    k += s.ior.ior[i].imag();
     ++count;
   }
-  return eps / count < 0.0 ? MaterialClass::Metal : MaterialClass::Dielectric;
+  return k / count > kMetalMinK ? MaterialClass::Metal : MaterialClass::Dielectric;
 }
 
 namespace {

@@ -48,9 +48,12 @@ Material resolve_material(const std::string& spec, const DataPaths& paths);
 // A database page (main/Au/nk/Johnson): its file under DATABASE/data/, class from the data.
 Material read_database_page(const std::string& page, const DataPaths& paths);
 
-// Metal or dielectric from the data: a metal when the mean of ε′ = n² − k² over 400–700 nm (5 nm
-// steps) is negative, the real permittivity of a conductor below its plasma frequency; k alone
-// would call caesium (n ≈ 0.3, k ≈ 1.3 at 550 nm) or a thin absorbing film the wrong thing.
+// Metal or dielectric from the data: a metal when the mean k over 400–700 nm (5 nm steps) exceeds
+// kMetalMinK. Light entering such a material is absorbed within λ/(4πk) < λ/6 ≈ 0.1 µm: it shows
+// only its surface reflection, what shading models call a metal. Caesium (mean k 0.67–0.95 on its
+// pages; k at 550 nm just below 1) and tungsten (n > k, so ε′ = n² − k² > 0) are metals; silicon
+// (0.08) and glasses are not.
+inline constexpr double kMetalMinK = 0.5;
 MaterialClass classify(const OpticalConstants& oc);
 
 // A material argument after glob expansion: `spec` is a catalog name, page or file as written, or

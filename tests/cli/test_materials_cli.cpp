@@ -158,9 +158,10 @@ TEST(MaterialsCli, ScenesTakePageGlobs) {
   EXPECT_NE(r.out.find("main/Ti/nk/Rakic-LD"), std::string::npos);
 }
 
-// The class comes from the data: caesium (n ≈ 0.3, k ≈ 1.3 at 550 nm) is a metal, silicon is not.
+// The class comes from the data: caesium (mean k 0.67-0.95) and tungsten (n > k) are metals, silicon
+// (k 0.08) is not.
 TEST(MaterialsCli, PagesListsBookClassCoverageAndReference) {
-  const auto r = run_command(cli() + " -q pages 'main/Cs/nk/*' main/Si/nk/Aspnes main/Au/nk/Ordal 'main/AgBr/n2/*'");
+  const auto r = run_command(cli() + " -q pages 'main/Cs/nk/*' main/Si/nk/Aspnes main/W/nk/Werner-DFT main/Au/nk/Ordal 'main/AgBr/n2/*'");
   ASSERT_EQ(r.status, 0) << r.err;
   std::map<std::string, std::map<std::string, std::string>> by_page;
   for (const auto& row : records(r.out)) by_page[row.at("page")] = row;
@@ -169,6 +170,7 @@ TEST(MaterialsCli, PagesListsBookClassCoverageAndReference) {
   EXPECT_EQ(by_page["main/Cs/nk/Smith"].at("book"), "Cs");
   EXPECT_EQ(by_page["main/Cs/nk/Smith"].at("status"), "ok");
   EXPECT_EQ(by_page["main/Si/nk/Aspnes"].at("class"), "dielectric");
+  EXPECT_EQ(by_page["main/W/nk/Werner-DFT"].at("class"), "metal");
   EXPECT_EQ(by_page["main/Au/nk/Ordal"].at("book_name"), "Au (Gold)");
   EXPECT_EQ(by_page["main/Au/nk/Ordal"].at("extrapolated"), "yes");
   EXPECT_NE(by_page["main/Au/nk/Ordal"].at("reference").find("Ordal"), std::string::npos);

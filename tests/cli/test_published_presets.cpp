@@ -1,7 +1,7 @@
 // The tool's metal presets against published ones computed by others from the same database pages:
 // physicallybased.info's f0 and f82tint (OpenPBR's specular_color) and the OpenPBR repository's
-// example materials (shared/testdata/peer_presets, README there). Run through the CLI: `presets
-// --openpbr` on the 30 database pages prints F0 and the F82 tint.
+// example materials (shared/testdata/peer_presets, README there). Run through the CLI: a catalog of
+// the 30 pages is written to a temporary folder and `presets --openpbr` prints F0 and the F82 tint.
 //
 // Clean columns (per the README): f0 and f82tint in acescg (D60), f0 in lin_rec709 (D65) except
 // Cesium's. lin_rec709's f82tint is not listed as clean or as biased; it is checked too.
@@ -28,6 +28,25 @@ constexpr double kPublishedTolerance = 1e-3;
 constexpr double kBiasTolerance = 2e-3;
 
 const std::string kPresets = std::string(FL_SHARED_TESTDATA) + "/peer_presets";
+
+// Rows of CSV text, split on commas (quoted fields keep theirs).
+std::vector<std::vector<std::string>> read_csv_text(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::string cell;
+    bool quoted = false;
+    for (const char ch : line) {
+      if (ch == '"') quoted = !quoted;
+      else if (ch == ',' && !quoted) cells.push_back(cell), cell.clear();
+      else cell += ch;
+    }
+    cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
 
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
   std::ifstream in(path);
@@ -60,17 +79,15 @@ struct Preset {
   Rgb f0, f82tint;
 };
 
-// Runs `presets --openpbr` on the database pages physicallybased.info used, named directly.
+// Runs `presets --openpbr` on a catalog of the pages physicallybased.info used.
 std::map<std::string, Preset> run_presets(const std::string& options) {
+  test::TempDir dir;
   const auto pages = read_csv(kPresets + "/physicallybased_pages.csv");
-  std::map<std::string, std::string> metal_of;
-  std::string args;
-  for (size_t i = 1; i < pages.size(); ++i) {
-    metal_of[pages[i][1]] = pages[i][0];
-    args += " '" + pages[i][1] + "'";
-  }
-  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB + "' " + options +
-                                   " presets --openpbr --format csv" + args);
+  for (size_t i = 1; i < pages.size(); ++i)
+    dir.file("catalog/" + std::to_string(i) + ".yml", "name: " + pages[i][0] + "\nclass: metal\norder: " +
+                                                           std::to_string(i) + "\nsource: \"" + pages[i][1] + "\"\n");
+  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB + "' --materials '" +
+                                   dir.path() + "/catalog' " + options + " presets --openpbr --format csv");
   EXPECT_EQ(r.status, 0) << r.err;
   std::map<std::string, Preset> out;
   std::stringstream ss(r.out);
@@ -83,9 +100,7 @@ std::map<std::string, Preset> run_presets(const std::string& options) {
     std::stringstream ls(line);
     for (std::string x; std::getline(ls, x, ',');) c.push_back(x);
     if (c.size() < 7) continue;
-    EXPECT_TRUE(metal_of.count(c[0])) << c[0];
-    out[metal_of[c[0]]] = {{std::stod(c[1]), std::stod(c[2]), std::stod(c[3])},
-                           {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}};
+    out[c[0]] = {{std::stod(c[1]), std::stod(c[2]), std::stod(c[3])}, {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}};
   }
   EXPECT_EQ(out.size(), pages.size() - 1);
   return out;
@@ -103,7 +118,7 @@ void expect_near_rgb(const Rgb& ours, const Rgb& theirs, const std::string& what
 
 TEST(PublishedPresets, AcescgF0AndF82TintMatchPhysicallyBased) {
   const auto pub = published();
-  const auto& ours = our_presets("--space acescg --illuminant D60");
+  const auto& ours = our_presets("--space acescg");
   int checked = 0;
   for (const auto& [metal, p] : ours) {
     ASSERT_TRUE(pub.count(metal + "|acescg|f0")) << metal;
@@ -115,7 +130,7 @@ TEST(PublishedPresets, AcescgF0AndF82TintMatchPhysicallyBased) {
 }
 
 TEST(PublishedPresets, AcescgMatchesTheOpenPbrExamples) {
-  const auto& ours = our_presets("--space acescg --illuminant D60");
+  const auto& ours = our_presets("--space acescg");
   const auto rows = read_csv(kPresets + "/openpbr_examples.csv");
   int checked = 0;
   for (size_t i = 1; i < rows.size(); ++i) {
@@ -133,11 +148,10 @@ TEST(PublishedPresets, AcescgMatchesTheOpenPbrExamples) {
   EXPECT_EQ(checked, 30);
 }
 
-// Linear Rec.709 is a D65 space: the comparison needs --illuminant D65 (the tool's default
-// illuminant stays D60 whatever the space).
+// Linear Rec.709 is a D65 space, and the illuminant follows the working space: no --illuminant.
 TEST(PublishedPresets, Rec709F0AndF82TintMatchPhysicallyBasedUnderD65) {
   const auto pub = published();
-  const auto& ours = our_presets("--space lin_rec709 --illuminant D65");
+  const auto& ours = our_presets("--space lin_rec709");
   int checked = 0;
   for (const auto& [metal, p] : ours) {
     if (metal == "Cesium") {
@@ -149,6 +163,41 @@ TEST(PublishedPresets, Rec709F0AndF82TintMatchPhysicallyBasedUnderD65) {
       expect_near_rgb(p.f0, pub.at(metal + "|lin_rec709|f0"), metal + " lin_rec709 f0");
     }
     expect_near_rgb(p.f82tint, pub.at(metal + "|lin_rec709|f82tint"), metal + " lin_rec709 f82tint");
+    ++checked;
+  }
+  EXPECT_EQ(checked, 30);
+}
+
+// The same 30 pages named directly (`presets PAGE...`, no catalog): F0 and F82 from the presets
+// table, the F82 tint formed here by its definition, F82 / Schlick(F0) at μ̄ = 1/7 with
+// Schlick(F0) = F0 + (1 − F0)(6/7)⁵. Independent of the class each page gets from its data.
+TEST(PublishedPresets, DatabasePagesNamedDirectlyMatchPhysicallyBasedInAcescg) {
+  const auto pub = published();
+  const auto pages = read_csv(kPresets + "/physicallybased_pages.csv");
+  std::map<std::string, std::string> metal_of;
+  std::string args;
+  for (size_t i = 1; i < pages.size(); ++i) {
+    metal_of[pages[i][1]] = pages[i][0];
+    args += " '" + pages[i][1] + "'";
+  }
+  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB +
+                                   "' --space acescg --illuminant D60 presets --format csv" + args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = read_csv_text(r.out);
+  ASSERT_GE(rows.size(), 1u);
+  EXPECT_EQ(rows[0][3], "f0_r");
+  EXPECT_EQ(rows[0][6], "f82_r");
+  const double schlick_weight = std::pow(6.0 / 7.0, 5);
+  int checked = 0;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const std::string metal = metal_of.at(rows[i][0]);
+    Rgb f0, tint;
+    for (int c = 0; c < 3; ++c) {
+      f0[c] = std::stod(rows[i][3 + c]);
+      tint[c] = std::stod(rows[i][6 + c]) / (f0[c] + (1.0 - f0[c]) * schlick_weight);
+    }
+    expect_near_rgb(f0, pub.at(metal + "|acescg|f0"), metal + " acescg f0 (page)");
+    expect_near_rgb(tint, pub.at(metal + "|acescg|f82tint"), metal + " acescg f82tint (page)");
     ++checked;
   }
   EXPECT_EQ(checked, 30);

@@ -52,7 +52,7 @@ Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
   t.reading = fmt::format("{} pages: {} read, {} that cannot be read (status says why).", rows.size(),
                           set.materials.size(), set.skipped.size());
   t.notes = {setting_note(ctx),
-             "class: metal when the mean of n² − k² over 400-700 nm is negative (a conductor's real permittivity), "
+             "class: metal when the mean k over 400-700 nm exceeds 0.5 (light entering is absorbed within 0.1 µm), "
              "dielectric otherwise.",
              coverage_note([&] {
                std::vector<const LoadedMaterial*> all;

@@ -24,7 +24,7 @@ struct MaterialStudy {
   std::vector<color::Rgb> truth;
   fresnel::DerivedParameters derived;
   std::vector<ModelResult> models;  // registry order
-  // The talk's method table beyond what `models` holds.
+  // The talk's method table (docs/conventions.md) beyond what `models` holds.
   CurveError ps_eta_kappa, refl_f0_ps_eta;
   int g_clamped_ps = 0, g_clamped_refl = 0;  // channels whose g left [0, 1]
   bool lossless = false;  // k ≤ fit::kLosslessMaxK over the grid: fits hold κ at 0

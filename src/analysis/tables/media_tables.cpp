@@ -331,7 +331,7 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
       "grazing. For metals neither adjustment knows η and κ separately; compare both columns before trusting one.",
       own_max);
   t.notes = {"symmetric: √F0′ = (√F0 − √F0E)/(1 − √F0·√F0E) with √F0E = (η_E − 1)/(η_E + 1), per channel, from the "
-             "F0 in air.",
+             "F0 in air (docs/conventions.md, external media).",
              "metal_variant: treats the metal as real index 1 with κ² = 4F0/(1 − F0): F0′ = ((1 − η_E)²(1 − F0) + 4F0) / "
              "((1 + η_E)²(1 − F0) + 4F0). The talk's own asymmetric variant could not be recovered from the sources "
              "available here; this one is derived and measured instead.",

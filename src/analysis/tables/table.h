@@ -9,7 +9,7 @@ namespace fl::analysis {
 struct Column {
   std::string name;
   int precision = 4;  // decimals for numeric cells
-  bool in_csv = true;  // false: Markdown/JSON only (the CSV keeps SPEC §6's exact columns)
+  bool in_csv = true;  // false: Markdown/JSON only (the CSV keeps the stable columns of docs/conventions.md)
 };
 
 using Cell = std::variant<std::string, double, long long>;
