@@ -73,6 +73,24 @@ TEST(MaterialsCli, EveryModelsErrorForOneFileInOneRun) {
   EXPECT_EQ(lines(r.out), 1 + 7 * 2);  // header, every model × {derived, fitted}
 }
 
+// Every input format through `curve`, in one run: a table, refractiveindex.info's CSV download, a
+// SOPRA file (nm) and a .spd pair, all holding the same gold-like data, give the same first row.
+TEST(MaterialsCli, EveryInputFormatThroughTheCli) {
+  test::TempDir tmp;
+  const auto table = tmp.file("t.tsv", "wl [um]\tn\tk\n0.35\t1.5\t1.9\n0.85\t0.2\t5.4\n");
+  const auto download = tmp.file("d.csv", "wl,n\n0.35,1.5\n0.85,0.2\nwl,k\n0.35,1.9\n0.85,5.4\n");
+  const auto sopra = tmp.file("s.nk", "4 350 850 1\n1.5 1.9\n0.2 5.4\n");
+  tmp.file("p.eta.spd", "350 1.5\n850 0.2\n");
+  const auto spd = tmp.file("p.k.spd", "350 1.9\n850 5.4\n");
+  const auto r = run_command(cli() + " -q curve '" + table + "' '" + download + "' '" + sopra + "' '" + spd + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = records(r.out);
+  ASSERT_EQ(rows.size(), 4u * 91);
+  for (size_t m = 1; m < 4; ++m)
+    for (const char* c : {"truth_r", "truth_g", "truth_b"}) EXPECT_EQ(rows[91 * m].at(c), rows[0].at(c)) << m << c;
+  EXPECT_EQ(rows[91 * 3].at("material"), "p");
+}
+
 TEST(MaterialsCli, GlobsExpandToSortedPagesAndAGlobMatchingNothingIsAnError) {
   const auto r = run_command(cli() + " -q table schlick 'main/Ti/nk/Rakic-*'");
   ASSERT_EQ(r.status, 0) << r.err;
