@@ -110,8 +110,9 @@ std::string readme(const analysis::Context& ctx, const analysis::Library& lib, c
   for (const auto& [flag, n] : flag_counts(t)) md += fmt::format("| {} | {} |\n", flag, n);
   md += "\n" + to_markdown(analysis::skip_reasons_table(lib.set.skipped), 2);
   md += "\n## Files\n\n- [library.csv](library.csv), [library.md](library.md), [library.json](library.json): one row "
-        "per page (presets, every model's RMS ΔE2000, flags)\n- [models.csv](models.csv), [models.json](models.json): "
-        "every model's derived and fitted parameters and errors per page\n- [library.mtlx](library.mtlx): MaterialX\n"
+        "per page (presets, every model's RMS ΔE2000, flags)\n- [models.csv](models.csv): "
+        "every model's derived and fitted parameters and errors per page\n- [library.mtlx](library.mtlx), [library_openpbr.mtlx](library_openpbr.mtlx): MaterialX "
+        "(generalized_schlick_bsdf; open_pbr_surface)\n"
         "- [skipped.csv](skipped.csv): every page left out, with its reason\n- [spread.md](spread.md), "
         "[spread.csv](spread.csv): the spread between pages of the same metal\n";
   if (gallery) md += "- [gallery.md](gallery.md): a colour strip per page\n";
@@ -129,7 +130,6 @@ Files library_files(const analysis::Context& ctx, const analysis::Library& lib, 
   auto models = analysis::models_table(ctx, lib.studies);
   models.name = "library_models";
   files.emplace_back("models.csv", to_csv(models));
-  files.emplace_back("models.json", to_json(models));
   files.emplace_back("library.mtlx", presets_materialx(ctx, lib.studies, MaterialxShader::GeneralizedSchlick));
   files.emplace_back("library_openpbr.mtlx", presets_materialx(ctx, lib.studies, MaterialxShader::OpenPbrSurface));
   files.emplace_back("skipped.csv", to_csv(analysis::skipped_table(lib.set.skipped)));

@@ -100,6 +100,9 @@ Files reproduce_files(analysis::TableInputs& in, bool figures, const std::functi
   log(fmt::format("reproduce: index.html ({} bytes, {:.2f} s)", files.back().second.size(), seconds_since(t0)));
   index += "| index.html | the HTML report: the gallery and every table, sortable and filterable | "
            "[index.html](index.html) |\n";
+  index += "\nThe preset library of the whole database (every conductor page covering the visible range, with flags "
+           "and a gallery) is not part of reproduce: `fresnel-lab library --out DIR` writes it, and reports/library/ "
+           "holds one run.\n";
   files.emplace_back("README.md", index + "\n" + settings_line(ctx) + "\n");
   return files;
 }

@@ -145,7 +145,9 @@ std::string reason_class(const std::string& reason) {
   r = r.substr(0, r.find(" ("));
   std::string out;
   for (size_t i = 0; i < r.size(); ++i) {
-    const bool digit = std::isdigit(static_cast<unsigned char>(r[i]));
+    // A number starts with a digit (or a sign before one) that does not end a word ("n2" stays).
+    const bool digit = std::isdigit(static_cast<unsigned char>(r[i])) &&
+                       (i == 0 || !std::isalpha(static_cast<unsigned char>(r[i - 1])));
     const bool sign = (r[i] == '-' || r[i] == '+') && i + 1 < r.size() && std::isdigit(static_cast<unsigned char>(r[i + 1])) &&
                       (i == 0 || !std::isalnum(static_cast<unsigned char>(r[i - 1])));
     if (!digit && !sign) {

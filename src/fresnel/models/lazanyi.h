@@ -28,7 +28,8 @@ struct Lazanyi {
   static constexpr std::array<ParamSpec, 3> kChannelParams{{
       {"f0", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}},
       {"a", "coefficient", ParamKind::Coefficient, {-10.0, 30.0}, {-kUnbounded, kUnbounded}},
-      {"alpha", "exponent", ParamKind::Exponent, {1.0, 20.0}, {0.01, kUnbounded}},
+      // α ends below 1 for some crystals (main/MoO3/nk/Vos: 0.83 in blue).
+      {"alpha", "exponent", ParamKind::Exponent, {0.1, 20.0}, {0.01, kUnbounded}},
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = true;
