@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "brdf/sheen.h"
 #include "color/lab.h"
 #include "fresnel/models.h"
 #include "spectral/errors.h"
@@ -72,13 +73,32 @@ DfgTexel integrate_dfg(double nov, double alpha, int samples) {
   check_samples(samples);
   DfgTexel t;
   for_each_lobe_sample(nov, alpha, samples, [&](const LobeSample& s) {
-    const double fc = pow5(1.0 - s.voh);
+    const double m = 1.0 - s.voh, fc = pow5(m);
     t.dfg1 += (1.0 - fc) * s.weight;
     t.dfg2 += fc * s.weight;
+    t.dfg_f82 += s.voh * fc * m * s.weight;
   });
   t.dfg1 /= samples;
   t.dfg2 /= samples;
+  t.dfg_f82 /= samples;
   return t;
+}
+
+double integrate_sheen_dfg(double nov, double alpha, int samples) {
+  check_samples(samples);
+  const brdf::Vec3 v = brdf::view_from_nov(nov);
+  double sum = 0;
+  for (int k = 0; k < samples; ++k) {
+    const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
+    const double phi = 2.0 * kPi * u.u1, cos_h = 1.0 - u.u2, sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
+    const brdf::Vec3 h{sin_h * std::cos(phi), sin_h * std::sin(phi), cos_h};
+    const double voh = brdf::dot(v, h);
+    const brdf::Vec3 l = brdf::reflect(v, h);
+    if (voh <= 0.0 || l.z <= 0.0) continue;
+    // f (n·l) dω_l = D V (n·l) 4 (v·h) dω_h, and dω_h / pdf = 2π.
+    sum += brdf::charlie_ndf(cos_h, alpha) * brdf::neubelt_visibility(v.z, l.z) * l.z * 4.0 * voh;
+  }
+  return sum * 2.0 * kPi / samples;
 }
 
 GgxMoments integrate_moments(double nov, double alpha, int samples) {
@@ -145,6 +165,11 @@ LtcCell fit_ltc_cell(const LutGrid& g, const GgxMoments& mo, int i, int j, const
 DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
   return {grid, integrate_grid<DfgTexel>(grid, options, integrate_dfg, done)};
+}
+
+std::vector<double> sheen_dfg_table(const LutGrid& grid, const LutOptions& options) {
+  ProgressCounter done(options.progress, grid.size * grid.size);
+  return integrate_grid<double>(grid, options, integrate_sheen_dfg, done);
 }
 
 MomentsTable moments_table(const LutGrid& grid, const LutOptions& options) {

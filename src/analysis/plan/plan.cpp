@@ -92,8 +92,8 @@ struct LutSource {
 const std::vector<LutSource>& lut_sources() {
   namespace ch = fresnel::lut_channel;
   static const std::vector<LutSource> sources{
-      {"dfg", "ibl", {{ch::kDfgScale, {"dfg1"}}, {ch::kDfgBias, {"dfg2"}}}, "fresnel-lab lut dfg --out dfg.exr"},
-      {"dfg_f82", "ibl", {{ch::kDfgF82, {"dfg_f82"}}}, "not written by fresnel-lab lut yet"},
+      {"dfg", "ibl", {{ch::kDfgScale, {"dfg1"}}, {ch::kDfgBias, {"dfg2"}}}, "fresnel-lab lut dfg --out dfg.exr (R, G)"},
+      {"dfg_f82", "ibl", {{ch::kDfgF82, {"dfg_f82"}}}, "fresnel-lab lut dfg --out dfg.exr (B)"},
       {"ltc_matrix", "area", {{ch::kLtcMatrix, {"inv_m00", "inv_m20", "inv_m02", "inv_m22"}}},
        "fresnel-lab lut ltc --out ltc.exr (ltc_1.exr)"},
       {"ltc_moments", "area", {{ch::kLtcNorm, {"n_d"}}, {ch::kLtcSchlick, {"f_d"}}},
