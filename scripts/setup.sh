@@ -4,7 +4,7 @@
 # tests/validators/package-lock.json), builds (Release, build/), and regenerates reports/ with
 # `reproduce`.
 #   scripts/setup.sh              install + build + reproduce
-#   scripts/setup.sh --deps-only  install the packages only (what CI calls)
+#   scripts/setup.sh --deps-only  install the packages (and the browser test's npm packages) only (what CI calls)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,9 +16,10 @@ PACKAGES=(
   libyaml-cpp-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev
   colord-data
   googletest libgtest-dev libgmock-dev libbenchmark-dev libxml2-utils
-  liblcms2-dev libcairo2-dev fonts-dejavu-core
+  liblcms2-dev libcairo2-dev fonts-dejavu-core libgif-dev
   clang libclang-rt-14-dev
-  nodejs npm
+  glslang-tools spirv-tools
+  chromium nodejs npm
 )
 
 missing=()
@@ -42,6 +43,13 @@ if ! cmp -s "$validators/package-lock.json" "$validators/node_modules/.fresnel-l
   echo "setup: npm ci in $validators" >&2
   (cd "$validators" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
   cp "$validators/package-lock.json" "$validators/node_modules/.fresnel-lab-lock"
+fi
+# The browser test's driver, puppeteer-core, at the versions tests/browser/package-lock.json pins;
+# reinstalled only when the lock file changes.
+if ! cmp -s tests/browser/package-lock.json tests/browser/node_modules/.fresnel-lab-lock 2>/dev/null; then
+  echo "setup: npm ci in tests/browser" >&2
+  (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  cp tests/browser/package-lock.json tests/browser/node_modules/.fresnel-lab-lock
 fi
 [ "${1:-}" = "--deps-only" ] && exit 0
 

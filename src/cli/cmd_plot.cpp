@@ -45,13 +45,25 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected) {
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand(
       "render",
-      "a GGX sphere under an analytic sky and key light: FILE.exr and FILE.png; with a model also FILE.truth.png "
-      "and the ΔE2000 heat map FILE.de2000.png");
+      "a GGX sphere under an analytic sky and key light or a latitude-longitude EXR environment: FILE.exr and "
+      "FILE.png; with a model also FILE.truth.png and the ΔE2000 heat map FILE.de2000.png; with --compare the truth "
+      "and every model, heat maps, an animated flip (FILE.flip.gif) and a contact sheet (FILE.sheet.png)");
   auto r = std::make_shared<report::RenderRequest>();
   sub->add_option("MATERIAL", r->material, "catalog name, database page (main/Au/nk/Johnson) or file")->required();
   sub->add_option("--model", r->model, "truth (spectral ground truth) or a model: " + analysis::model_names())
       ->capture_default_str();
+  auto* compare = sub->add_option("--compare", r->compare,
+                                  "comma-separated models (or all) rendered against the truth in one pass");
+  sub->get_option("--model")->excludes(compare);
   sub->add_option("--params", r->params, "derived or fitted model parameters")->capture_default_str();
+  sub->add_option("--env", r->env, "a latitude-longitude OpenEXR environment (default: the analytic sky)");
+  sub->add_option("--env-space", r->env_space,
+                  "the environment's colour space (default: its chromaticities attribute, else lin_rec709)");
+  sub->add_option("--env-rotate", r->env_rotate_deg, "environment rotation about the vertical axis, degrees")
+      ->capture_default_str();
+  sub->add_option("--env-exposure", r->env_exposure_ev,
+                  "stops above the environment's normalization (mean luminance 1: a white diffuse ball reads 1)")
+      ->capture_default_str();
   sub->add_option("--roughness", r->settings.roughness, "GGX perceptual roughness (0: perfect mirror)")
       ->capture_default_str();
   sub->add_option("--size", r->settings.size_px, "image width and height in pixels (odd: a pixel at the centre)")

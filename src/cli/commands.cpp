@@ -16,6 +16,7 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_plot.cpp
 void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_speed.cpp
 void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_plan.cpp
+void add_shader_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_shader.cpp
 
 namespace {
 
@@ -151,6 +152,7 @@ const std::vector<Command>& commands() {
       {"render", add_render},
       {"speed", add_speed_command},
       {"plan", add_plan_command},
+      {"shader", add_shader_command},
   };
   return table;
 }

@@ -116,6 +116,17 @@ std::vector<std::string> SpaceLibrary::names() const {
   return out;
 }
 
+std::string SpaceLibrary::space_with_chromaticities(const SpaceChromaticities& c, double tolerance) const {
+  for (const auto& n : names()) {
+    try {
+      if (chromaticity_distance(chromaticities_of(space(n)), c) <= tolerance) return n;
+    } catch (const InputError&) {
+      // not a linear space: it cannot be the one
+    }
+  }
+  return {};
+}
+
 Mat3 SpaceLibrary::conversion(const std::string& from, const std::string& to) const {
   const std::string what = fmt::format("conversion {} -> {}", from, to);
   try {

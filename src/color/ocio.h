@@ -50,6 +50,9 @@ class SpaceLibrary {
   // RGB in `from` → RGB in `to`. Throws InputError if the conversion is not a pure matrix.
   Mat3 conversion(const std::string& from, const std::string& to) const;
   std::vector<std::string> names() const;
+  // The first of names() whose primaries and white are within `tolerance` (in x and y) of `c`;
+  // empty if none (spaces that are not linear matrices are skipped).
+  std::string space_with_chromaticities(const SpaceChromaticities& c, double tolerance) const;
   bool is_builtin() const { return config_path_.empty(); }
   const std::string& config_path() const { return config_path_; }
 

@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "spectral/errors.h"
 
 namespace fl::color {
@@ -12,6 +15,18 @@ Mat3 rgb_to_xyz_from_primaries(Chromaticity r, Chromaticity g, Chromaticity b, C
   const Mat3 p{{xr.X, xg.X, xb.X, xr.Y, xg.Y, xb.Y, xr.Z, xg.Z, xb.Z}};
   const auto s = p.inverse().apply<double>({xw.X, xw.Y, xw.Z});
   return p * Mat3::diagonal(s[0], s[1], s[2]);
+}
+
+SpaceChromaticities chromaticities_of(const RgbSpace& s) {
+  const auto column = [&](int c) { return xy_from_xyz({s.rgb_to_xyz(0, c), s.rgb_to_xyz(1, c), s.rgb_to_xyz(2, c)}); };
+  return {column(0), column(1), column(2), xy_from_xyz(s.rgb_to_xyz * Rgb{1, 1, 1})};
+}
+
+double chromaticity_distance(const SpaceChromaticities& a, const SpaceChromaticities& b) {
+  double d = 0;
+  const Chromaticity pa[] = {a.red, a.green, a.blue, a.white}, pb[] = {b.red, b.green, b.blue, b.white};
+  for (int i = 0; i < 4; ++i) d = std::max({d, std::abs(pa[i].x - pb[i].x), std::abs(pa[i].y - pb[i].y)});
+  return d;
 }
 
 const std::vector<std::string>& builtin_space_names() {

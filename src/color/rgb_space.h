@@ -26,6 +26,15 @@ struct RgbSpace {
 // RGB → XYZ matrix from primaries and white chromaticities (SMPTE RP 177).
 Mat3 rgb_to_xyz_from_primaries(Chromaticity r, Chromaticity g, Chromaticity b, Chromaticity white);
 
+// The chromaticities of a space's primaries (the columns of its RGB → XYZ matrix) and of its white
+// (the image of RGB (1, 1, 1)), as an OpenEXR chromaticities attribute states them.
+struct SpaceChromaticities {
+  Chromaticity red, green, blue, white;
+};
+SpaceChromaticities chromaticities_of(const RgbSpace& space);
+// Largest difference in x or y between two sets of chromaticities.
+double chromaticity_distance(const SpaceChromaticities& a, const SpaceChromaticities& b);
+
 // acescg, lin_rec709, aces2065-1, lin_rec2020, lin_p3d65. Throws InputError for others.
 RgbSpace builtin_space(const std::string& name);
 const std::vector<std::string>& builtin_space_names();

@@ -246,6 +246,24 @@ std::string encode(const Drawing& d, FileType type) {
   return type == FileType::Svg ? renumber_svg_ids(out) : out;
 }
 
+Image8 rasterize(const Drawing& d) {
+  if (d.width <= 0 || d.height <= 0) throw std::logic_error("rasterize: a drawing needs a positive size");
+  const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height), cairo_surface_destroy);
+  paint_drawing(s.get(), d, FileType::Png);
+  cairo_surface_flush(s.get());
+  check(cairo_surface_status(s.get()));
+  Image8 img(d.width, d.height);
+  const unsigned char* data = cairo_image_surface_get_data(s.get());
+  const int stride = cairo_image_surface_get_stride(s.get());
+  for (int y = 0; y < d.height; ++y) {
+    const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
+    for (int x = 0; x < d.width; ++x)
+      img.set(x, y, {static_cast<std::uint8_t>(row[x] >> 16), static_cast<std::uint8_t>(row[x] >> 8),
+                     static_cast<std::uint8_t>(row[x])});
+  }
+  return img;
+}
+
 double text_width_px(const std::string& utf8, double size_px) {
   const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1), cairo_surface_destroy);
   const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(s.get()), cairo_destroy);

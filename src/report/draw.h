@@ -76,6 +76,10 @@ FileType file_type(const std::string& path);
 // date. The same Drawing gives the same bytes. Throws InputError when the label font cannot be loaded.
 std::string encode(const Drawing& d, FileType type);
 
+// The drawing's pixels as PNG output paints them (for frames of an animation, or a picture inside
+// another drawing).
+Image8 rasterize(const Drawing& d);
+
 // The advance width of `utf8` in the label font as PNG output sets it (hinted metrics), for layout.
 double text_width_px(const std::string& utf8, double size_px);
 

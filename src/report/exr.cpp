@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfChromaticitiesAttribute.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -53,6 +55,9 @@ std::string encode_exr(const ExrImage& image) {
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const auto& [name, value] : image.string_attributes) header.insert(name, Imf::StringAttribute(value));
     for (const auto& [name, value] : image.float_attributes) header.insert(name, Imf::FloatAttribute(value));
+    if (const auto& c = image.chromaticities)
+      Imf::addChromaticities(header, Imf::Chromaticities({(*c)[0], (*c)[1]}, {(*c)[2], (*c)[3]}, {(*c)[4], (*c)[5]},
+                                                         {(*c)[6], (*c)[7]}));
     Imf::FrameBuffer fb;
     const size_t x_stride = sizeof(float) * nc;
     const size_t y_stride = x_stride * image.width;
@@ -87,6 +92,11 @@ ExrImage read_exr(const std::string& path) {
         image.string_attributes.emplace_back(it.name(), s->value());
       else if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&it.attribute()))
         image.float_attributes.emplace_back(it.name(), f->value());
+    }
+    if (Imf::hasChromaticities(header)) {
+      const auto& c = Imf::chromaticities(header);
+      image.chromaticities = std::array<float, 8>{c.red.x,  c.red.y,  c.green.x, c.green.y,
+                                                  c.blue.x, c.blue.y, c.white.x, c.white.y};
     }
     const size_t nc = image.channels.size();
     image.pixels.assign(static_cast<size_t>(image.width) * image.height * nc, 0.0f);

@@ -1,6 +1,8 @@
 #pragma once
 // Float EXR images for lookup tables (OpenEXR stays inside exr.cpp).
 #include <cstdint>
+#include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +17,9 @@ struct ExrImage {
   std::vector<float> pixels;
   std::vector<std::pair<std::string, std::string>> string_attributes;
   std::vector<std::pair<std::string, float>> float_attributes;
+  // The standard chromaticities attribute: red x, y, green x, y, blue x, y, white x, y (absent:
+  // OpenEXR's default, Rec.709 primaries with a D65 white).
+  std::optional<std::array<float, 8>> chromaticities;
 };
 
 // The EXR file (ZIP-compressed float channels, the attributes in the header) as bytes, for
@@ -28,8 +33,8 @@ void write_exr_atomic(const std::string& path, const ExrImage& image);
 // half-float tables such as Filament's RGB16F DFG texture.
 std::uint16_t half_bits(float v);
 
-// Reads every channel of a file written by write_exr_atomic (float pixels and the string and
-// float attributes), for tests and tools.
+// Reads every channel of an EXR file as float pixels (any pixel type, scanline or tiled), with the
+// string and float attributes and the chromaticities. Throws InputError naming the file.
 ExrImage read_exr(const std::string& path);
 
 }  // namespace fl::report

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "report/plot.h"
 
@@ -208,6 +209,7 @@ Rgb8 inferno(double t) {
 namespace {
 
 // Heat map layout (pixels): title band, then the image with the colour bar to its right.
+constexpr Rgb8 kNoSurface{235, 235, 235};
 constexpr int kHeatTop = kHeatmapImageTop, kHeatBarGap = 16, kHeatBarW = 18, kHeatRight = 110, kHeatMinBar = 120;
 
 void add_colour_bar(Drawing& dr, const ColourBar& bar, double scale, double de_max) {
@@ -234,25 +236,104 @@ ColourBar heatmap_colour_bar(int width, int height) {
   return {width + kHeatBarGap, kHeatTop + 16, kHeatBarW, std::max(height - 32, kHeatMinBar)};
 }
 
-Drawing heatmap_drawing(const std::vector<double>& de, int width, int height, const std::string& title) {
+double heatmap_scale(const std::vector<double>& de) {
   double de_max = 0;
   for (double v : de)
     if (std::isfinite(v)) de_max = std::max(de_max, v);
-  const double scale = nice_ceiling(std::max(1.0, de_max));
+  return nice_ceiling(std::max(1.0, de_max));
+}
+
+Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale) {
+  Image8 map(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const double v = de[static_cast<size_t>(y) * width + x];
+      map.set(x, y, std::isfinite(v) ? inferno(v / scale) : kNoSurface);
+    }
+  return map;
+}
+
+Drawing heatmap_drawing(const std::vector<double>& de, int width, int height, const std::string& title, double scale) {
+  double de_max = 0;
+  for (double v : de)
+    if (std::isfinite(v)) de_max = std::max(de_max, v);
+  if (!(scale > 0)) scale = heatmap_scale(de);
   const ColourBar bar = heatmap_colour_bar(width, height);
   Drawing dr;
   dr.width = std::max(width + kHeatRight, static_cast<int>(std::ceil(8 + text_width_px(title, 13) + 8)));
   dr.height = std::max(kHeatTop + height, bar.y + bar.height + 24) + 8;
   dr.add(Text{8, 22, title, 13, kInk});
-  Image8 map(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const double v = de[static_cast<size_t>(y) * width + x];
-      map.set(x, y, std::isfinite(v) ? inferno(v / scale) : Rgb8{235, 235, 235});
-    }
-  dr.add(Picture{0, kHeatTop, std::move(map)});
+  dr.add(Picture{0, kHeatTop, heatmap_image(de, width, height, scale)});
   add_colour_bar(dr, bar, scale, de_max);
   return dr;
+}
+
+namespace {
+
+// Contact sheet layout (pixels): title band, then one row per model with a label line above
+// its tiles, tiles kSheetGap apart, the shared colour bar at the right.
+constexpr int kSheetMargin = 16, kSheetTitle = 30, kSheetNoteLine = 18, kSheetNotes = 2, kSheetGap = 12, kSheetLabel = 22, kSheetRowGap = 18, kSheetBar = 110;
+
+void add_sheet_row(Drawing& dr, const ContactSheet& s, size_t r, double scale) {
+  const auto& row = s.rows[r];
+  const int size = s.truth.width, top = sheet_row_top(s, r);
+  const std::string labels[3] = {"ground truth (spectral)", row.label,
+                                 fmt::format("ΔE2000: mean {:.2f}, max {:.2f}", row.mean_de2000, row.max_de2000)};
+  for (int c = 0; c < 3; ++c) {
+    const Point p = sheet_tile(s, r, c);
+    dr.add(Text{p.x, double(top + 15), labels[c], 12, c == 2 ? kGreyInk : kInk});
+  }
+  dr.add(Picture{int(sheet_tile(s, r, 0).x), int(sheet_tile(s, r, 0).y), s.truth});
+  dr.add(Picture{int(sheet_tile(s, r, 1).x), int(sheet_tile(s, r, 1).y), row.render});
+  dr.add(Picture{int(sheet_tile(s, r, 2).x), int(sheet_tile(s, r, 2).y), heatmap_image(row.de2000, size, size, scale)});
+}
+
+}  // namespace
+
+int sheet_row_top(const ContactSheet& s, size_t row) {
+  const int notes = static_cast<int>(std::max<size_t>(s.notes.size(), kSheetNotes));
+  return kSheetTitle + 10 + notes * kSheetNoteLine + 8 + static_cast<int>(row) * (kSheetLabel + s.truth.height + kSheetRowGap);
+}
+
+Point sheet_tile(const ContactSheet& s, size_t row, int column) {
+  return {double(kSheetMargin + column * (s.truth.width + kSheetGap)), double(sheet_row_top(s, row) + kSheetLabel)};
+}
+
+Drawing contact_sheet_drawing(const ContactSheet& s) {
+  if (s.rows.empty() || s.truth.width <= 0) throw std::invalid_argument("contact_sheet_drawing: no rows");
+  std::vector<double> all;
+  double de_max = 0;
+  for (const auto& row : s.rows) {
+    all.insert(all.end(), row.de2000.begin(), row.de2000.end());
+    de_max = std::max(de_max, row.max_de2000);
+  }
+  const double scale = heatmap_scale(all);
+  const int size = s.truth.width;
+  Drawing dr;
+  double text_w = text_width_px(s.title, 17);
+  for (const auto& line : s.notes) text_w = std::max(text_w, text_width_px(line, 12));
+  dr.width = std::max(kSheetMargin + 3 * (size + kSheetGap) + kSheetBar, static_cast<int>(std::ceil(2 * kSheetMargin + text_w)));
+  dr.height = sheet_row_top(s, s.rows.size()) + 8;
+  dr.add(Text{double(kSheetMargin), double(kSheetTitle), s.title, 17, kInk});
+  for (size_t i = 0; i < s.notes.size(); ++i)
+    dr.add(Text{double(kSheetMargin), double(kSheetTitle + 22 + kSheetNoteLine * i), s.notes[i], 12, kGreyInk});
+  for (size_t r = 0; r < s.rows.size(); ++r) add_sheet_row(dr, s, r, scale);
+  const Point last = sheet_tile(s, 0, 2);
+  const ColourBar bar{int(last.x) + size + kHeatBarGap, int(last.y) + 16, kHeatBarW,
+                      std::max(sheet_row_top(s, s.rows.size()) - kSheetRowGap - int(last.y) - 48, kHeatMinBar / 2)};
+  add_colour_bar(dr, bar, scale, de_max);
+  return dr;
+}
+
+Image8 flip_frame(const Image8& render, const std::string& label) {
+  constexpr int kBand = 26;
+  Drawing dr;
+  dr.width = render.width;
+  dr.height = render.height + kBand;
+  dr.background = {24, 24, 24};
+  dr.add(Picture{0, 0, render});
+  dr.add(Text{render.width / 2.0, render.height + 18.0, label, 13, {235, 235, 235}, Align::Center});
+  return rasterize(dr);
 }
 
 }  // namespace fl::report

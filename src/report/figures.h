@@ -21,8 +21,37 @@ Point strip_cell(const analysis::StripData& d, size_t row, size_t span, int samp
 Drawing curves_drawing(const analysis::CurveData& d);
 
 // ΔE2000 per pixel (row-major, NaN: no surface) as a heat map on the inferno ramp, with a colour
-// bar from 0 to the nice ceiling of the largest ΔE (at least 1), its ticks labelled.
-Drawing heatmap_drawing(const std::vector<double>& de, int width, int height, const std::string& title);
+// bar from 0 to `scale` (0: heatmap_scale(de)), its ticks labelled.
+Drawing heatmap_drawing(const std::vector<double>& de, int width, int height, const std::string& title,
+                        double scale = 0);
+// The nice ceiling of the largest finite ΔE (at least 1).
+double heatmap_scale(const std::vector<double>& de);
+// The map's pixels: inferno(ΔE / scale), light grey where there is no surface.
+Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale);
+
+// A flip comparison on one page: per model a row of three square tiles — the ground truth render,
+// the model's render and its ΔE2000 heat map — with one colour bar for every row (the scale is
+// heatmap_scale over all rows, so rows compare).
+struct ContactSheetRow {
+  std::string label;  // the model (and its parameter set)
+  Image8 render;      // display codes, the truth's size
+  std::vector<double> de2000;
+  double mean_de2000 = 0, max_de2000 = 0;
+};
+struct ContactSheet {
+  std::string title;
+  std::vector<std::string> notes;  // lines under the title
+  Image8 truth;  // square
+  std::vector<ContactSheetRow> rows;
+};
+Drawing contact_sheet_drawing(const ContactSheet& sheet);
+// Where the sheet paints a tile (column 0 truth, 1 model, 2 heat map): its top-left pixel, and the
+// top of a row's band (its label line).
+Point sheet_tile(const ContactSheet& sheet, size_t row, int column);
+int sheet_row_top(const ContactSheet& sheet, size_t row);
+
+// One frame of a flip animation: the render above a dark band naming what it shows.
+Image8 flip_frame(const Image8& render, const std::string& label);
 
 // The map's pixels are drawn unscaled with their top-left corner at (0, kHeatmapImageTop); the
 // colour bar's top pixel row shows the scale's top, its bottom row 0.

@@ -212,17 +212,17 @@ std::string ltc_csv(const analysis::LtcTable& t) {
   tab.name = "ltc";
   tab.columns = {col("nov"),        col("perceptual_roughness"), col("alpha"),   col("inv_m00"),
                  col("inv_m20"),    col("inv_m02"),              col("inv_m22"), col("m11"),
-                 col("m22"),        col("m13"),                  col("n_d"),     col("f_d"),
-                 col("l_d"),        col("sphere_z"),             col("sphere_len"), col("sphere_form_factor"),
-                 col("fit_error"),  {"iterations", 0},           {"termination"}};
+                 col("m22"),        col("m13"),                  col("m31"),     col("n_d"),
+                 col("f_d"),        col("l_d"),                  col("sphere_z"), col("sphere_len"),
+                 col("sphere_form_factor"), col("heldout_error"), {"iterations", 0}, {"termination"}};
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const int k = g.index(i, j);
       const auto& c = t.cells[k];
       const auto& m = t.moments[k];
       tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], c.inv_packed[0], c.inv_packed[1],
-                          c.inv_packed[2], c.inv_packed[3], c.params.m11, c.params.m22, c.params.m13, m.n_d, m.f_d,
-                          m.l_d, 2.0 * j / (n - 1) - 1.0, static_cast<double>(i) / (n - 1), sphere_at(t, i, j),
+                          c.inv_packed[2], c.inv_packed[3], c.params.m11, c.params.m22, c.params.m13, c.params.m31,
+                          m.n_d, m.f_d, m.l_d, 2.0 * j / (n - 1) - 1.0, static_cast<double>(i) / (n - 1), sphere_at(t, i, j),
                           c.fit_error, static_cast<long long>(c.fit.iterations), c.fit.termination});
     }
   return to_csv(tab);
@@ -255,7 +255,7 @@ std::string ltc_fit_message(const analysis::LtcTable& t) {
     sum += c.fit_error;
     max = std::max(max, c.fit_error);
   }
-  return fmt::format("lut ltc: fit error (relative L2) mean {:.4f}, max {:.4f} over {} cells",
+  return fmt::format("lut ltc: held-out error (relative L3) mean {:.4f}, max {:.4f} over {} cells",
                      sum / static_cast<double>(t.cells.size()), max, t.cells.size());
 }
 

@@ -93,4 +93,94 @@ Files reproduce_figures(const analysis::Context& ctx, const std::vector<analysis
   return files;
 }
 
+FlipFiles reproduce_flips(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies) {
+  const std::vector<fresnel::Model> models = parse_models("schlick,f82,gulbrandsen");
+  analysis::RenderSettings rs;
+  rs.size_px = kFlipSizePx;
+  rs.roughness = kFlipRoughness;
+  rs.samples = kFlipSamples;
+  const analysis::Lighting light = analysis::default_environment();
+  const size_t n = studies.size();
+  std::vector<std::string> sprites(n);
+  parallel_for(n, [&](size_t i) {
+    std::vector<analysis::FresnelTable> tables{
+        analysis::truth_fresnel_table(ctx, studies[i].material->ior, ctx.settings().eta_outside)};
+    for (const auto m : models) tables.push_back(analysis::model_fresnel_table(m, analysis::model_params(studies[i], m, "derived")));
+    std::vector<const analysis::FresnelTable*> ptrs;
+    for (const auto& t : tables) ptrs.push_back(&t);
+    const auto images = analysis::render_spheres(light, ptrs, rs);
+    Image8 sprite(kFlipSizePx * static_cast<int>(images.size()), kFlipSizePx);
+    for (size_t f = 0; f < images.size(); ++f) {
+      const Image8 frame(kFlipSizePx, kFlipSizePx, analysis::sphere_display(ctx, images[f]));
+      for (int y = 0; y < kFlipSizePx; ++y)
+        for (int x = 0; x < kFlipSizePx; ++x) sprite.set(static_cast<int>(f) * kFlipSizePx + x, y, frame.at(x, y));
+    }
+    sprites[i] = encode_png(sprite);
+  });
+  FlipFiles out;
+  std::vector<std::string> labels{"ground truth (spectral)"};
+  for (const auto m : models) labels.push_back(fresnel::model_spec(m).name);
+  for (size_t i = 0; i < n; ++i) {
+    const std::string path = "figures/flip-" + studies[i].material->material.key + ".png";
+    out.files.emplace_back(path, std::move(sprites[i]));
+    out.flips.push_back({path, kFlipSizePx, labels});
+  }
+  return out;
+}
+
+namespace {
+
+std::vector<std::string> card_flags(const analysis::MaterialStudy& st, const std::string& out_of_range) {
+  std::vector<std::string> flags;
+  if (!st.material->warnings.empty()) flags.push_back("extrapolated");
+  if (!out_of_range.empty()) flags.push_back("outside [0, 1]: " + out_of_range);
+  if (st.result(fresnel::model_from_name("f82").model).derived_clamps) flags.push_back("F82 output clamped");
+  return flags;
+}
+
+std::vector<std::pair<std::string, std::string>> card_facts(const analysis::MaterialStudy& st) {
+  std::string derived;
+  for (const auto m : parse_models("schlick,f82,gulbrandsen"))
+    derived += fmt::format("{}{} {:.3f}", derived.empty() ? "" : " · ", fresnel::model_spec(m).name,
+                           st.result(m).derived_error.rms);
+  const analysis::ModelResult* best = &st.models.front();
+  for (const auto& r : st.models)
+    if (r.fitted_error.rms < best->fitted_error.rms) best = &r;
+  return {{"RMS ΔE2000", derived},
+          {"best fitted", fmt::format("{} {:.3f}", fresnel::model_spec(best->model).name, best->fitted_error.rms)}};
+}
+
+Rgb8 rgb8(const std::uint8_t* p) { return {p[0], p[1], p[2]}; }
+
+}  // namespace
+
+std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
+                                          const analysis::Table& presets, bool figures, const std::vector<Flip>& flips) {
+  std::vector<GalleryEntry> out;
+  for (size_t i = 0; i < studies.size(); ++i) {
+    const auto& st = studies[i];
+    const auto& mat = st.material->material;
+    const auto sw = analysis::material_swatches(ctx, st.material->ior);
+    GalleryEntry e;
+    e.key = mat.key;
+    e.name = mat.name;
+    e.material_class = spectral::to_string(mat.material_class);
+    e.source = mat.source;
+    for (size_t k = 0; k + 2 < sw.strip.size(); k += 3) e.strip.push_back(rgb8(&sw.strip[k]));
+    e.f0 = rgb8(sw.f0.data());
+    e.f82 = rgb8(sw.f82.data());
+    std::string out_of_range;
+    for (const auto& row : presets.rows)
+      if (std::get<std::string>(row[0]) == mat.name) out_of_range = std::get<std::string>(row.back());
+    e.flags = card_flags(st, out_of_range);
+    e.facts = card_facts(st);
+    if (figures)
+      e.figures = {{mat.name + " colour strips", "figures/strip-" + mat.key + ".png"},
+                   {mat.name + " curves", "figures/curves-" + mat.key + ".png"}};
+    if (i < flips.size()) e.flip = flips[i];
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
 }  // namespace fl::report

@@ -1,5 +1,6 @@
 #include "analysis/render/figure_data.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -90,6 +91,24 @@ std::vector<std::uint8_t> display_encode(const Context& ctx, const std::vector<f
   std::vector<std::uint8_t> out(rgb.size());
   for (size_t i = 0; i < rgb.size(); ++i) out[i] = static_cast<std::uint8_t>(std::lround(255.0f * rgb[i]));
   return out;
+}
+
+MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior, int samples) {
+  std::vector<float> working;
+  const double eta_e = ctx.settings().eta_outside;
+  const auto push = [&](double cos_theta) {
+    const color::Rgb v = ground_truth_rgb(ctx, ior, cos_theta, eta_e);
+    working.insert(working.end(), {static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b)});
+  };
+  for (int i = 0; i < samples; ++i) push(i + 1 == samples ? 0.0 : std::cos(90.0 * kDegToRad * i / (samples - 1)));
+  push(1.0);
+  push(1.0 / 7.0);
+  const auto codes = display_encode(ctx, working);
+  MaterialSwatches sw;
+  sw.strip.assign(codes.begin(), codes.begin() + 3 * samples);
+  std::copy(codes.end() - 6, codes.end() - 3, sw.f0.begin());
+  std::copy(codes.end() - 3, codes.end(), sw.f82.begin());
+  return sw;
 }
 
 std::vector<std::uint8_t> sphere_display(const Context& ctx, const SphereImage& img) {

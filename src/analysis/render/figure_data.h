@@ -3,6 +3,7 @@
 // and model curves with their ΔE2000, colour-strip samples, and display codes for sphere renders.
 // Display codes: working-space RGB → linear Rec.709 with the SpaceLibrary's (OCIO) matrix, then
 // sRGB display-encoded by OCIO (SpaceLibrary::encode_srgb_display), as 8-bit codes round(255·v).
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -73,6 +74,14 @@ StripData strip_data(const Context& ctx, const FigureRequest& in,
 
 // Working-space RGB (3 floats per pixel) → 8-bit sRGB display codes, through OCIO.
 std::vector<std::uint8_t> display_encode(const Context& ctx, const std::vector<float>& working_rgb);
+
+// What a gallery card shows of a material: the ground truth's display codes at `samples` angles
+// θ_i = 90°·i/(samples − 1) (a colour strip), and at 0° (F0) and θ = arccos(1/7) ≈ 81.79° (F82).
+struct MaterialSwatches {
+  std::vector<std::uint8_t> strip;  // 3 codes per angle
+  std::array<std::uint8_t, 3> f0{}, f82{};
+};
+MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior, int samples = 19);
 
 // A render composited over a dark grey background and display-encoded (3 codes per pixel, the
 // render's layout).

@@ -15,7 +15,8 @@ namespace {
 
 using brdf::Vec3;
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegToRad = kPi / 180.0;
 // Half the image width in scene units: the unit sphere fills 1/1.1 of the frame.
 constexpr double kHalfFrame = 1.1;
 
@@ -37,6 +38,182 @@ Vec3 to_world(const Vec3& l, const Vec3& t, const Vec3& b, const Vec3& n) {
   return {l.x * t.x + l.y * b.x + l.z * n.x, l.x * t.y + l.y * b.y + l.z * n.y, l.x * t.z + l.y * b.z + l.z * n.z};
 }
 
+// The analytic environment as a light-sampling strategy: directions uniform in the key light's
+// cone, pdf 1 / (2π(1 − cos δ)).
+struct KeyLightStrategy {
+  explicit KeyLightStrategy(const Environment& e)
+      : env(e), cos_delta(std::cos(e.key_half_angle_deg * kDegToRad)), cone_pdf(1.0 / (2.0 * kPi * (1.0 - cos_delta))) {
+    basis(env.key_direction, kt, kb);
+  }
+  color::Rgb radiance(const Vec3& d) const { return environment_radiance(env, d); }
+  bool can_sample() const { return env.key_half_angle_deg > 0.0; }
+  Vec3 sample(double u1, double u2, double& pdf) const {
+    const double cos_l = 1.0 - u1 * (1.0 - cos_delta);
+    const double sin_l = std::sqrt(std::max(0.0, 1.0 - cos_l * cos_l));
+    const double phi = 2.0 * kPi * u2;
+    pdf = cone_pdf;
+    return to_world({sin_l * std::cos(phi), sin_l * std::sin(phi), cos_l}, kt, kb, env.key_direction);
+  }
+  double pdf(const Vec3& d) const { return can_sample() && brdf::dot(d, env.key_direction) >= cos_delta ? cone_pdf : 0.0; }
+  void lookup(const Vec3& d, color::Rgb& radiance_out, double& pdf_out) const {
+    radiance_out = radiance(d);
+    pdf_out = pdf(d);
+  }
+
+  const Environment& env;
+  double cos_delta, cone_pdf;
+  Vec3 kt, kb;
+};
+
+// Σ over the tables: out[i] += weight · F_i(v·h) · L.
+void accumulate(const std::vector<const FresnelTable*>& tables, double weight, const color::Rgb& radiance, double voh,
+                color::Rgb* out) {
+  for (size_t i = 0; i < tables.size(); ++i) out[i] = out[i] + weight * mul(tables[i]->at(voh), radiance);
+}
+
+// The lighting strategy's directions for Hammersley point i of `samples`: the same world directions
+// serve every shading point, so they are drawn once per render. pdf 0: no direction.
+struct LightSample {
+  Vec3 dir;
+  double pdf = 0;
+  color::Rgb radiance;
+};
+
+template <class S>
+std::vector<LightSample> light_samples(const S& light, int samples) {
+  std::vector<LightSample> out(static_cast<size_t>(samples));
+  if (!light.can_sample()) return out;
+  const auto n = static_cast<std::uint32_t>(samples);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const auto p = brdf::hammersley(i, n);
+    auto& ls = out[i];
+    ls.dir = light.sample(p.u1, p.u2, ls.pdf);
+    if (ls.pdf > 0.0) ls.radiance = light.radiance(ls.dir);
+  }
+  return out;
+}
+
+// shade_specular for one lighting strategy S (radiance, lookup, can_sample, sample, pdf).
+template <class S>
+void shade_with(const S& light, const std::vector<LightSample>& drawn, const std::vector<const FresnelTable*>& tables,
+                const Vec3& n, const Vec3& v, double alpha, color::Rgb* out) {
+  std::fill(out, out + tables.size(), color::Rgb{});
+  const double nov = std::max(1e-4, brdf::dot(n, v));  // grazing: keep the Smith terms finite
+  if (alpha < kMirrorAlpha) {
+    accumulate(tables, 1.0, light.radiance(brdf::reflect(v, n)), nov, out);
+    return;
+  }
+  Vec3 t, b;
+  basis(n, t, b);
+  const Vec3 v_local = brdf::normalize(Vec3{brdf::dot(v, t), brdf::dot(v, b), nov});
+  const auto n_samples = static_cast<std::uint32_t>(drawn.size());
+  for (std::uint32_t i = 0; i < n_samples; ++i) {
+    const auto p = brdf::hammersley(i, n_samples);
+    // Strategy A: the GGX visible normals; f·cos/pdf_A = F(v·h) · G₂/G₁ (brdf::ggx_vndf_weight).
+    const Vec3 h = brdf::sample_ggx_vndf(v_local, alpha, p.u1, p.u2);
+    const Vec3 l = brdf::reflect(v_local, h);
+    if (l.z > 0.0) {
+      const Vec3 lw = to_world(l, t, b, n);
+      const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, h.z, alpha);
+      color::Rgb radiance;
+      double pdf_b = 0;
+      light.lookup(lw, radiance, pdf_b);
+      const double w = pdf_a / (pdf_a + pdf_b);
+      accumulate(tables, w * brdf::ggx_vndf_weight(v_local.z, l.z, alpha), radiance, brdf::dot(v_local, h), out);
+    }
+    // Strategy B: the lighting's own directions; f·cos/pdf_B = D V F (n·l) / pdf_B.
+    const LightSample& ls = drawn[i];
+    if (!(ls.pdf > 0.0)) continue;
+    const Vec3 lb{brdf::dot(ls.dir, t), brdf::dot(ls.dir, b), brdf::dot(ls.dir, n)};
+    if (lb.z <= 0.0) continue;
+    const Vec3 hb = brdf::normalize(Vec3{v_local.x + lb.x, v_local.y + lb.y, v_local.z + lb.z});
+    const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, hb.z, alpha);
+    const double w = ls.pdf / (pdf_a + ls.pdf);
+    accumulate(tables, w * brdf::ggx_lobe_cos(v_local, lb, alpha) / ls.pdf, ls.radiance, brdf::dot(v_local, hb), out);
+  }
+  for (size_t k = 0; k < tables.size(); ++k) out[k] = (1.0 / static_cast<double>(n_samples)) * out[k];
+}
+
+// Calls f with the lighting's sampling strategy.
+template <class F>
+auto with_strategy(const Lighting& light, const F& f) {
+  if (const auto* env = std::get_if<Environment>(&light)) return f(KeyLightStrategy(*env));
+  return f(std::get<EnvironmentMap>(light));
+}
+
+// One pixel of every image: its colour (premultiplied by coverage) per table, and its coverage.
+template <class S>
+double render_pixel(const S& light, const std::vector<LightSample>& drawn, const std::vector<const FresnelTable*>& tables,
+                    const RenderSettings& s, double X, double Y, double scale, std::vector<color::Rgb>& c,
+                    std::vector<color::Rgb>& sub) {
+  const double alpha = s.roughness * s.roughness;
+  const Vec3 v{0.0, 0.0, 1.0};
+  const auto shade_at = [&](double px, double py, color::Rgb* out) {
+    const double r2 = px * px + py * py;
+    if (r2 >= 1.0) return false;
+    shade_with(light, drawn, tables, {px, py, std::sqrt(1.0 - r2)}, v, alpha, out);
+    return true;
+  };
+  std::fill(c.begin(), c.end(), color::Rgb{});
+  const double r = std::hypot(X, Y);
+  if (r < 1.0 - scale) {  // the whole pixel is on the sphere
+    shade_at(X, Y, c.data());
+    return 1.0;
+  }
+  if (r >= 1.0 + scale) return 0.0;
+  constexpr int kSub = 4;  // silhouette: 4×4 sub-samples
+  double cover = 0.0;
+  for (int j = 0; j < kSub; ++j)
+    for (int i = 0; i < kSub; ++i) {
+      if (!shade_at(X + ((i + 0.5) / kSub - 0.5) * scale, Y - ((j + 0.5) / kSub - 0.5) * scale, sub.data())) continue;
+      for (size_t k = 0; k < c.size(); ++k) c[k] = c[k] + sub[k];
+      cover += 1.0;
+    }
+  for (auto& v_k : c) v_k = (1.0 / (kSub * kSub)) * v_k;  // premultiplied by coverage
+  return cover / (kSub * kSub);
+}
+
+// The image-plane point of pixel (x, y)'s centre, in scene units.
+void pixel_centre(int x, int y, int width, int height, double& X, double& Y) {
+  const double scale = 2.0 * kHalfFrame / width;
+  X = (x + 0.5 - 0.5 * width) * scale;
+  Y = (0.5 * height - y - 0.5) * scale;
+}
+
+template <class S>
+std::vector<SphereImage> render_with(const S& light, const std::vector<const FresnelTable*>& tables,
+                                     const RenderSettings& s) {
+  const size_t count = static_cast<size_t>(s.size_px) * s.size_px;
+  std::vector<SphereImage> images(tables.size());
+  for (auto& img : images) {
+    img.width = img.height = s.size_px;
+    img.rgb.assign(3 * count, 0.0f);
+    img.alpha.assign(count, 0.0f);
+  }
+  const double scale = 2.0 * kHalfFrame / s.size_px;  // scene units per pixel
+  const auto drawn = light_samples(light, s.samples);
+  parallel_for(
+      static_cast<size_t>(s.size_px),
+      [&](size_t row) {
+        std::vector<color::Rgb> c(tables.size()), sub(tables.size());
+        const int y = static_cast<int>(row);
+        for (int x = 0; x < s.size_px; ++x) {
+          double X = 0, Y = 0;
+          pixel_centre(x, y, s.size_px, s.size_px, X, Y);
+          const double cover = render_pixel(light, drawn, tables, s, X, Y, scale, c, sub);
+          const size_t k = static_cast<size_t>(y) * s.size_px + x;
+          for (size_t i = 0; i < tables.size(); ++i) {
+            images[i].rgb[3 * k] = static_cast<float>(c[i].r);
+            images[i].rgb[3 * k + 1] = static_cast<float>(c[i].g);
+            images[i].rgb[3 * k + 2] = static_cast<float>(c[i].b);
+            images[i].alpha[k] = static_cast<float>(cover);
+          }
+        }
+      },
+      s.threads);
+  return images;
+}
+
 }  // namespace
 
 Environment default_environment() {
@@ -55,6 +232,103 @@ color::Rgb environment_radiance(const Environment& env, const Vec3& dir) {
   if (dir.y >= 0.0) return lerp(env.horizon, env.zenith, std::sqrt(std::min(1.0, dir.y)));
   const double t = std::min(1.0, -dir.y / std::sin(7.0 * kDegToRad));
   return lerp(0.5 * env.horizon, env.ground, t);
+}
+
+EnvironmentMap::EnvironmentMap(LatLongImage image, const color::Rgb& luminance, double rotation_deg)
+    : image_(std::move(image)), rotation_deg_(rotation_deg) {
+  const int w = image_.width, h = image_.height;
+  if (w < 1 || h < 1 || image_.rgb.size() != 3 * static_cast<size_t>(w) * h)
+    throw std::invalid_argument("EnvironmentMap: image size and pixel count disagree");
+  weight_.resize(static_cast<size_t>(w) * h);
+  row_cdf_.assign(static_cast<size_t>(h) + 1, 0.0);
+  column_cdf_.assign(static_cast<size_t>(w + 1) * h, 0.0);
+  for (int y = 0; y < h; ++y) {
+    const double sin_theta = std::sin(kPi * (y + 0.5) / h);
+    double* cdf = &column_cdf_[static_cast<size_t>(y) * (w + 1)];
+    for (int x = 0; x < w; ++x) {
+      const float* p = &image_.rgb[3 * (static_cast<size_t>(y) * w + x)];
+      const double lum = std::max(0.0, luminance.r * p[0] + luminance.g * p[1] + luminance.b * p[2]);
+      weight_[static_cast<size_t>(y) * w + x] = std::isfinite(lum) ? lum * sin_theta : 0.0;
+      cdf[x + 1] = cdf[x] + weight_[static_cast<size_t>(y) * w + x];
+    }
+    row_cdf_[y + 1] = row_cdf_[y] + cdf[w];
+    if (cdf[w] > 0)
+      for (int x = 1; x <= w; ++x) cdf[x] /= cdf[w];
+  }
+  total_ = row_cdf_[h];
+  if (total_ > 0)
+    for (auto& c : row_cdf_) c /= total_;
+}
+
+void EnvironmentMap::direction_to_uv(const Vec3& d, double& u, double& v) const {
+  const double longitude = std::atan2(d.x, d.z);
+  u = 0.5 - (longitude - rotation_deg_ * kDegToRad) / (2.0 * kPi);
+  u -= std::floor(u);
+  v = std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi;
+}
+
+Vec3 EnvironmentMap::uv_to_direction(double u, double v) const {
+  const double longitude = kPi * (1.0 - 2.0 * u) + rotation_deg_ * kDegToRad;
+  const double theta = kPi * v;
+  return {std::sin(theta) * std::sin(longitude), std::cos(theta), std::sin(theta) * std::cos(longitude)};
+}
+
+color::Rgb EnvironmentMap::texel(int x, int y) const {
+  const float* p = &image_.rgb[3 * (static_cast<size_t>(y) * image_.width + x)];
+  return {p[0], p[1], p[2]};
+}
+
+color::Rgb EnvironmentMap::radiance(const Vec3& dir) const {
+  double u = 0, v = 0;
+  direction_to_uv(dir, u, v);
+  return radiance_uv(u, v);
+}
+
+void EnvironmentMap::lookup(const Vec3& dir, color::Rgb& radiance, double& pdf) const {
+  double u = 0, v = 0;
+  direction_to_uv(dir, u, v);
+  radiance = radiance_uv(u, v);
+  pdf = pdf_uv(u, v, std::sqrt(std::max(0.0, 1.0 - dir.y * dir.y)));
+}
+
+color::Rgb EnvironmentMap::radiance_uv(double u, double v) const {
+  const int w = image_.width, h = image_.height;
+  const double fx = u * w - 0.5, fy = v * h - 0.5;
+  const double x0 = std::floor(fx), y0 = std::floor(fy);
+  const double tx = fx - x0, ty = fy - y0;
+  const auto wrap = [w](double x) { return static_cast<int>(((static_cast<long long>(x) % w) + w) % w); };
+  const auto clamp_row = [h](double y) { return static_cast<int>(std::clamp(y, 0.0, h - 1.0)); };
+  const int xa = wrap(x0), xb = wrap(x0 + 1), ya = clamp_row(y0), yb = clamp_row(y0 + 1);
+  return lerp(lerp(texel(xa, ya), texel(xb, ya), tx), lerp(texel(xa, yb), texel(xb, yb), tx), ty);
+}
+
+Vec3 EnvironmentMap::sample(double u1, double u2, double& pdf) const {
+  pdf = 0;
+  if (!can_sample()) return {0, 0, 1};
+  const int w = image_.width, h = image_.height;
+  const int y = std::clamp(static_cast<int>(std::upper_bound(row_cdf_.begin(), row_cdf_.end(), u2) - row_cdf_.begin()) - 1, 0, h - 1);
+  const double* cdf = &column_cdf_[static_cast<size_t>(y) * (w + 1)];
+  const int x = std::clamp(static_cast<int>(std::upper_bound(cdf, cdf + w + 1, u1) - cdf) - 1, 0, w - 1);
+  const double dv = (u2 - row_cdf_[y]) / std::max(1e-300, row_cdf_[y + 1] - row_cdf_[y]);
+  const double du = (u1 - cdf[x]) / std::max(1e-300, cdf[x + 1] - cdf[x]);
+  const double u = (x + std::clamp(du, 0.0, 1.0)) / w, v = (y + std::clamp(dv, 0.0, 1.0)) / h;
+  const Vec3 d = uv_to_direction(u, v);
+  pdf = this->pdf(d);
+  return d;
+}
+
+double EnvironmentMap::pdf(const Vec3& dir) const {
+  double u = 0, v = 0;
+  direction_to_uv(dir, u, v);
+  return pdf_uv(u, v, std::sqrt(std::max(0.0, 1.0 - dir.y * dir.y)));
+}
+
+double EnvironmentMap::pdf_uv(double u, double v, double sin_theta) const {
+  if (!can_sample() || sin_theta <= 0.0) return 0.0;
+  const int w = image_.width, h = image_.height;
+  const int x = std::min(w - 1, static_cast<int>(u * w)), y = std::min(h - 1, static_cast<int>(v * h));
+  // Density in (u, v) is weight · w·h / Σ weight; dω = 2π² sin θ du dv.
+  return weight_[static_cast<size_t>(y) * w + x] / total_ * w * h / (2.0 * kPi * kPi * sin_theta);
 }
 
 color::Rgb FresnelTable::at(double cos_theta) const {
@@ -80,125 +354,97 @@ FresnelTable model_fresnel_table(fresnel::Model model, const std::vector<double>
   return tabulate_fresnel([&](double c) { return fresnel::model_spec(model).evaluate(c, params.data(), false); });
 }
 
-color::Rgb shade_specular(const Environment& env, const FresnelTable& fresnel, const Vec3& n, const Vec3& v,
+void shade_specular(const Lighting& light, const std::vector<const FresnelTable*>& fresnel, const Vec3& n,
+                    const Vec3& v, double alpha, int samples, color::Rgb* out) {
+  with_strategy(light, [&](const auto& s) {
+    shade_with(s, light_samples(s, samples), fresnel, n, v, alpha, out);
+    return 0;
+  });
+}
+
+color::Rgb shade_specular(const Lighting& light, const FresnelTable& fresnel, const Vec3& n, const Vec3& v,
                           double alpha, int samples) {
-  const double nov = std::max(1e-4, brdf::dot(n, v));  // grazing: keep the Smith terms finite
-  if (alpha < kMirrorAlpha) {
-    const Vec3 r = brdf::reflect(v, n);
-    return mul(fresnel.at(nov), environment_radiance(env, r));
-  }
-  Vec3 t, b;
-  basis(n, t, b);
-  const Vec3 v_local = brdf::normalize(Vec3{brdf::dot(v, t), brdf::dot(v, b), nov});
-  // Key-light cone: uniform in solid angle, pdf 1 / (2π(1 − cos δ)).
-  const double cos_delta = std::cos(env.key_half_angle_deg * kDegToRad);
-  const double cone_pdf = 1.0 / (2.0 * std::numbers::pi * (1.0 - cos_delta));
-  Vec3 kt, kb;
-  basis(env.key_direction, kt, kb);
-  const auto in_cone = [&](const Vec3& l_world) { return brdf::dot(l_world, env.key_direction) >= cos_delta; };
-
-  color::Rgb sum{};
-  const auto n_samples = static_cast<std::uint32_t>(samples);
-  for (std::uint32_t i = 0; i < n_samples; ++i) {
-    const auto p = brdf::hammersley(i, n_samples);
-    // Strategy A: the GGX visible normals; f·cos/pdf_A = F(v·h) · G₂/G₁ (brdf::ggx_vndf_weight).
-    {
-      const Vec3 h = brdf::sample_ggx_vndf(v_local, alpha, p.u1, p.u2);
-      const Vec3 l = brdf::reflect(v_local, h);
-      if (l.z > 0.0) {
-        const Vec3 lw = to_world(l, t, b, n);
-        const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, h.z, alpha);
-        const double pdf_b = in_cone(lw) ? cone_pdf : 0.0;
-        const double w = pdf_a / (pdf_a + pdf_b);
-        const double weight = w * brdf::ggx_vndf_weight(v_local.z, l.z, alpha);
-        const auto f = fresnel.at(brdf::dot(v_local, h));
-        sum = sum + weight * mul(f, environment_radiance(env, lw));
-      }
-    }
-    // Strategy B: the key light's cone; f·cos/pdf_B = D V F (n·l) / pdf_B.
-    {
-      const double cos_l = 1.0 - p.u1 * (1.0 - cos_delta);
-      const double sin_l = std::sqrt(std::max(0.0, 1.0 - cos_l * cos_l));
-      const double phi = 2.0 * std::numbers::pi * p.u2;
-      const Vec3 lw = to_world({sin_l * std::cos(phi), sin_l * std::sin(phi), cos_l}, kt, kb, env.key_direction);
-      const Vec3 l{brdf::dot(lw, t), brdf::dot(lw, b), brdf::dot(lw, n)};
-      if (l.z > 0.0) {
-        const Vec3 h = brdf::normalize(Vec3{v_local.x + l.x, v_local.y + l.y, v_local.z + l.z});
-        const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, h.z, alpha);
-        const double w = cone_pdf / (pdf_a + cone_pdf);
-        const double lobe = brdf::ggx_lobe_cos(v_local, l, alpha);
-        const auto f = fresnel.at(brdf::dot(v_local, h));
-        sum = sum + (w * lobe / cone_pdf) * mul(f, env.key_radiance);
-      }
-    }
-  }
-  return (1.0 / samples) * sum;
+  color::Rgb out;
+  shade_specular(light, {&fresnel}, n, v, alpha, samples, &out);
+  return out;
 }
 
-SphereImage render_sphere(const Environment& env, const FresnelTable& fresnel, const RenderSettings& s) {
+std::vector<SphereImage> render_spheres(const Lighting& light, const std::vector<const FresnelTable*>& fresnel,
+                                        const RenderSettings& s) {
   if (s.size_px < 1) throw std::invalid_argument("render_sphere: size must be positive");
-  SphereImage img;
-  img.width = img.height = s.size_px;
-  const size_t count = static_cast<size_t>(s.size_px) * s.size_px;
-  img.rgb.assign(3 * count, 0.0f);
-  img.alpha.assign(count, 0.0f);
-  const double alpha = s.roughness * s.roughness;
-  const double scale = 2.0 * kHalfFrame / s.size_px;  // scene units per pixel
-  const Vec3 v{0.0, 0.0, 1.0};
-  // Shading at a point of the image plane, nullopt-like (false) off the sphere.
-  const auto shade_at = [&](double X, double Y, color::Rgb& out) {
-    const double r2 = X * X + Y * Y;
-    if (r2 >= 1.0) return false;
-    out = shade_specular(env, fresnel, {X, Y, std::sqrt(1.0 - r2)}, v, alpha, s.samples);
-    return true;
-  };
-  const auto render_row = [&](int y) {
-    for (int x = 0; x < s.size_px; ++x) {
-      const double X = (x + 0.5 - 0.5 * s.size_px) * scale;
-      const double Y = (0.5 * s.size_px - y - 0.5) * scale;
-      const double r = std::hypot(X, Y);
-      color::Rgb c{};
-      double cover = 0.0;
-      if (r < 1.0 - scale) {  // the whole pixel is on the sphere
-        shade_at(X, Y, c);
-        cover = 1.0;
-      } else if (r < 1.0 + scale) {  // silhouette: 4×4 sub-samples
-        constexpr int kSub = 4;
-        for (int j = 0; j < kSub; ++j)
-          for (int i = 0; i < kSub; ++i) {
-            color::Rgb sc;
-            if (shade_at(X + ((i + 0.5) / kSub - 0.5) * scale, Y - ((j + 0.5) / kSub - 0.5) * scale, sc)) {
-              c = c + sc;
-              cover += 1.0;
-            }
-          }
-        c = (1.0 / (kSub * kSub)) * c;  // premultiplied by coverage
-        cover /= kSub * kSub;
-      }
-      const size_t k = static_cast<size_t>(y) * s.size_px + x;
-      img.rgb[3 * k] = static_cast<float>(c.r);
-      img.rgb[3 * k + 1] = static_cast<float>(c.g);
-      img.rgb[3 * k + 2] = static_cast<float>(c.b);
-      img.alpha[k] = static_cast<float>(cover);
-    }
-  };
-  parallel_for(static_cast<size_t>(s.size_px), [&](size_t y) { render_row(static_cast<int>(y)); }, s.threads);
-  return img;
+  return with_strategy(light, [&](const auto& strategy) { return render_with(strategy, fresnel, s); });
 }
 
-MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const fresnel::ModelSpec* model,
-                               const std::string& kind, const RenderSettings& settings) {
-  const auto env = default_environment();
-  MaterialRender r;
-  r.truth = render_sphere(env, truth_fresnel_table(ctx, m.ior, ctx.settings().eta_outside), settings);
-  if (!model) {
-    r.shown = r.truth;
-    return r;
+SphereImage render_sphere(const Lighting& light, const FresnelTable& fresnel, const RenderSettings& s) {
+  return std::move(render_spheres(light, {&fresnel}, s).front());
+}
+
+EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std::string& space, double rotation_deg,
+                               double exposure_ev, double& scale) {
+  const color::Mat3 m = ctx.spaces().conversion(space, ctx.settings().space);
+  const auto& to_xyz = ctx.space().rgb_to_xyz;
+  const color::Rgb luminance{to_xyz(1, 0), to_xyz(1, 1), to_xyz(1, 2)};
+  double weighted = 0, solid_angle = 0;
+  for (size_t k = 0; 3 * k + 2 < image.rgb.size(); ++k) {
+    const auto o = m.apply<double>({image.rgb[3 * k], image.rgb[3 * k + 1], image.rgb[3 * k + 2]});
+    for (int c = 0; c < 3; ++c) image.rgb[3 * k + c] = static_cast<float>(o[c]);
+    const double sin_theta = std::sin(kPi * (static_cast<double>(k / image.width) + 0.5) / image.height);
+    weighted += sin_theta * (luminance.r * o[0] + luminance.g * o[1] + luminance.b * o[2]);
+    solid_angle += sin_theta;
   }
-  const std::vector<LoadedMaterial> one{m};
-  r.params = model_params(study_one(ctx, one, kind), model->model, kind);
-  r.shown = render_sphere(env, model_fresnel_table(model->model, r.params), settings);
-  r.de2000 = de2000_image(ctx, r.truth, r.shown);
+  scale = weighted > 0 ? std::exp2(exposure_ev) * solid_angle / weighted : 1.0;
+  for (auto& v : image.rgb) v = static_cast<float>(v * scale);
+  return EnvironmentMap(std::move(image), luminance, rotation_deg);
+}
+
+HeatmapStats heatmap_stats(const std::vector<double>& de, int width, int height) {
+  HeatmapStats st;
+  const size_t bands = st.band_upper_deg.size();
+  std::vector<double> sum(bands, 0.0);
+  std::vector<long long> count(bands, 0);
+  double total = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const double e = de[static_cast<size_t>(y) * width + x];
+      if (!std::isfinite(e)) continue;
+      double X = 0, Y = 0;
+      pixel_centre(x, y, width, height, X, Y);
+      const double theta_deg = std::acos(std::sqrt(std::max(0.0, 1.0 - X * X - Y * Y))) / kDegToRad;
+      size_t b = 0;
+      while (b + 1 < bands && theta_deg >= st.band_upper_deg[b]) ++b;
+      sum[b] += e, ++count[b], total += e, ++st.pixels;
+      st.max = std::max(st.max, e);
+    }
+  st.mean = st.pixels ? total / static_cast<double>(st.pixels) : 0.0;
+  for (size_t b = 0; b < bands; ++b) st.band_mean.push_back(count[b] ? sum[b] / static_cast<double>(count[b]) : std::nan(""));
+  return st;
+}
+
+MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const Lighting& light,
+                               const std::vector<fresnel::Model>& models, const std::string& kind,
+                               const RenderSettings& settings) {
+  const FresnelTable truth = truth_fresnel_table(ctx, m.ior, ctx.settings().eta_outside);
+  std::vector<std::vector<double>> params;
+  std::vector<FresnelTable> tables;
+  if (!models.empty()) {
+    const std::vector<LoadedMaterial> one{m};
+    const auto st = study_one(ctx, one, kind);
+    for (const auto model : models) {
+      params.push_back(model_params(st, model, kind));
+      tables.push_back(model_fresnel_table(model, params.back()));
+    }
+  }
+  std::vector<const FresnelTable*> all{&truth};
+  for (const auto& t : tables) all.push_back(&t);
+  auto images = render_spheres(light, all, settings);
+  MaterialRender r;
+  r.truth = std::move(images[0]);
+  for (size_t i = 0; i < models.size(); ++i) {
+    ModelRender mr{models[i], params[i], std::move(images[i + 1]), {}, {}};
+    mr.de2000 = de2000_image(ctx, r.truth, mr.image);
+    mr.stats = heatmap_stats(mr.de2000, mr.image.width, mr.image.height);
+    r.models.push_back(std::move(mr));
+  }
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "analysis/tables/shading_presets.h"
+#include "fresnel/average.h"
 #include "fresnel/model_set.h"
 #include "spectral/errors.h"
 #include "util/median.h"
@@ -193,6 +194,29 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
   return t;
 }
 
+namespace {
+
+// The F82 model's hemispherical average from the spectral F0 and F82: OpenPBR's F82-tint average
+// albedo, for Kulla–Conty energy compensation.
+color::Rgb f82_average(const fresnel::DerivedParameters& d) {
+  std::vector<double> p;
+  for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], d.f82[c]});
+  return fresnel::hemispherical_average(fresnel::model_of<fresnel::models::F82>, p);
+}
+constexpr const char* kF82AverageNote =
+    "f_avg (Markdown and JSON only): the F82 model's hemispherical average 2∫F(μ)μ dμ = F0 + (1 − F0)/21 − a/126 "
+    "from the spectral F0 and F82 (OpenPBR's F82-tint average albedo), for Kulla–Conty multiple-scattering "
+    "compensation.";
+void add_f_avg_columns(Table& t) {
+  for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("f_avg_{}", c), 6, false});
+}
+void add_f_avg(std::vector<Cell>& row, const fresnel::DerivedParameters& d) {
+  const auto f_avg = f82_average(d);
+  for (int c = 0; c < 3; ++c) row.push_back(f_avg[c]);
+}
+
+}  // namespace
+
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
   t.name = "presets";
@@ -200,6 +224,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   t.columns = {{"material"}, {"class"}, {"space"}};
   for (const char* q : {"f0", "f82", "g", "eta", "kappa"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
+  add_f_avg_columns(t);
   t.columns.push_back({"out_of_range"});
   int flagged = 0;
   for (const auto& s : studies) {
@@ -212,6 +237,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       for (int c = 0; c < 3; ++c) row.push_back((*v)[c]);
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c]);
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c + 1]);
+    add_f_avg(row, d);
     NamedValues unit;
     add_channels(unit, "f0", d.f0);
     add_channels(unit, "f82", d.f82);
@@ -226,7 +252,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
              "F0, F82: the spectral procedure at 0° and at arccos(1/7) ≈ 81.79°.",
              "g: Gulbrandsen's edge tint from (F0, Refl. η), unclamped.",
              "eta, kappa: RGB η, κ fitted with Ceres to minimize the RMS ΔE2000 against ground truth.",
-             out_of_range_note(flagged)};
+             kF82AverageNote, out_of_range_note(flagged)};
   return t;
 }
 
@@ -238,7 +264,9 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   for (const char* q : {"base_color", "specular_color"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
   t.columns.insert(t.columns.end(), {{"base_weight", 0}, {"base_metalness", 0}, {"specular_ior", 6},
-                                     {"transmission_weight", 0}, {"out_of_range"}});
+                                     {"transmission_weight", 0}});
+  add_f_avg_columns(t);
+  t.columns.push_back({"out_of_range"});
   int flagged = 0;
   for (const auto& s : studies) {
     const auto o = open_pbr_parameters(shading_preset(ctx, s));
@@ -246,6 +274,7 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     for (int c = 0; c < 3; ++c) row.push_back(o.base_color[c]);
     for (int c = 0; c < 3; ++c) row.push_back(o.specular_color[c]);
     row.insert(row.end(), {o.base_weight, o.base_metalness, o.specular_ior, o.transmission_weight});
+    add_f_avg(row, s.derived);
     NamedValues unit;
     add_channels(unit, "base_color", o.base_color);
     add_channels(unit, "specular_color", o.specular_color);
@@ -259,7 +288,7 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
               "Schlick's). Dielectrics: base_metalness 0, specular_ior = the index whose normal-incidence reflectance "
               "is F0's luminance, transmission_weight 1 when clear (κ ≤ 1e-4 over the visible), base_weight 0 when "
               "opaque; their base_color and a metal's specular_ior are unused and keep OpenPBR's defaults.";
-  t.notes = {setting_note(ctx), out_of_range_note(flagged)};
+  t.notes = {setting_note(ctx), kF82AverageNote, out_of_range_note(flagged)};
   return t;
 }
 

@@ -1,0 +1,144 @@
+// The HTML report as a reader uses it, in headless Chromium (Debian's /usr/bin/chromium, driven by
+// puppeteer-core): the page loads with no console errors, failed requests or network access; a
+// table sorts when its header is clicked; the gallery search narrows the cards; a flip toggles a
+// sphere between the truth and a model. Saves a screenshot.
+//   node report.test.mjs --html DIR/index.html --screenshot FILE.png [--chromium PATH]
+import { existsSync } from 'node:fs';
+import { pathToFileURL } from 'node:url';
+import puppeteer from 'puppeteer-core';
+
+function option(name, fallback) {
+  const i = process.argv.indexOf(name);
+  return i > 0 && i + 1 < process.argv.length ? process.argv[i + 1] : fallback;
+}
+
+const html = option('--html');
+const screenshot = option('--screenshot');
+const chromium = option('--chromium', process.env.CHROMIUM || '/usr/bin/chromium');
+let failures = 0, passes = 0;
+
+function check(ok, what) {
+  console.log(`${ok ? 'ok' : 'FAILED'}: ${what}`);
+  if (ok) ++passes; else ++failures;
+}
+
+// The values of one column of a table, as the page holds them (data-v, else the text).
+async function column(page, tableId, header) {
+  return page.$$eval(`#${tableId} tbody tr`, (rows, header) => {
+    const ths = Array.from(rows[0].closest('table').tHead.rows[0].cells);
+    const i = ths.findIndex((th) => th.textContent.replace(/[\u25B2\u25BC]/g, '').trim() === header);
+    return rows.map((r) => {
+      const v = r.cells[i].getAttribute('data-v');
+      return v === null ? r.cells[i].textContent : v === '' ? null : Number(v);
+    });
+  }, header);
+}
+
+function sorted(values, dir) {
+  const nums = values.filter((v) => v !== null);
+  for (let i = 1; i < nums.length; ++i) if (dir * (nums[i] - nums[i - 1]) < 0) return false;
+  return values.slice(nums.length).every((v) => v === null);  // n/a last
+}
+
+async function tableSorts(page) {
+  await page.click('#t-schlick > summary');
+  const header = await page.$('#table-schlick thead th:nth-child(4)');
+  const name = await header.evaluate((th) => th.textContent.trim());
+  const before = await column(page, 'table-schlick', name);
+  await header.click();
+  const asc = await column(page, 'table-schlick', name);
+  check(asc.length === before.length && asc.length > 1 && sorted(asc, 1) && !sorted(before, 1),
+        `the schlick table sorts ascending by ${name} on a header click (${asc.length} rows, ${asc[0]} first)`);
+  await header.click();
+  const desc = await column(page, 'table-schlick', name);
+  check(sorted(desc, -1) && desc[0] === asc[asc.length - 1],
+        `a second click sorts it descending (${desc[0]} first)`);
+  const state = await header.evaluate((th) => th.getAttribute('aria-sort'));
+  check(state === 'descending', `the header shows the order (aria-sort=${state})`);
+}
+
+async function galleryFilters(page) {
+  const visible = () => page.$$eval('.card', (cards) => cards.filter((c) => !c.hidden).length);
+  const total = await visible();
+  await page.type('#gallery-filter', 'gold');
+  const narrowed = await visible();
+  const names = await page.$$eval('.card', (cards) => cards.filter((c) => !c.hidden).map((c) => c.querySelector('h3').firstChild.textContent));
+  const count = await page.$eval('#gallery-count', (e) => e.textContent);
+  check(total > 1 && narrowed >= 1 && narrowed < total && names.includes('Gold'),
+        `the gallery search "gold" narrows ${total} cards to ${narrowed} (${names.join(', ')}; "${count}")`);
+}
+
+async function flipToggles(page) {
+  const flip = '#m-gold .flip';
+  const state = () => page.$eval(flip, (f) => ({
+    frame: f.getAttribute('data-frame'),
+    position: f.querySelector('.flip-img').style.backgroundPosition,
+    label: f.querySelector('.flip-label').textContent,
+  }));
+  const start = await state();
+  await page.click(`${flip} .flip-img`);
+  const flipped = await state();
+  check(start.frame === '0' && flipped.frame !== '0' && flipped.position !== start.position,
+        `a click flips the gold sphere from "${start.label}" (${start.position}) to "${flipped.label}" (${flipped.position})`);
+  await page.click(`${flip} .flip-img`);
+  const back = await state();
+  check(back.frame === '0' && back.position === start.position, `a second click flips it back to "${back.label}"`);
+  await page.click(`${flip} button[data-frame="2"]`);
+  const chosen = await state();
+  check(chosen.frame === '2', `choosing a model shows it ("${chosen.label}")`);
+  const loaded = await page.$eval(`${flip} .flip-img`, (e) => new Promise((resolve) => {
+    const img = new Image();
+    img.onload = () => resolve(img.naturalWidth);
+    img.onerror = () => resolve(0);
+    img.src = e.style.backgroundImage.replace(/^url\(["']?/, '').replace(/["']?\)$/, '');
+  }));
+  check(loaded > 0, `the flip's image loads (${loaded} px wide)`);
+}
+
+async function main() {
+  if (!html || !existsSync(html)) throw new Error(`no report at ${html} (pass --html DIR/index.html)`);
+  if (!existsSync(chromium)) throw new Error(`no Chromium at ${chromium}: scripts/setup.sh installs Debian's chromium`);
+  const browser = await puppeteer.launch({
+    executablePath: chromium,
+    headless: true,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-dev-shm-usage', '--no-first-run'],
+  });
+  try {
+    const page = await browser.newPage();
+    await page.setViewport({ width: 1280, height: 1000 });
+    const errors = [];
+    page.on('console', (m) => { if (m.type() === 'error') errors.push(`console: ${m.text()}`); });
+    page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
+    page.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
+    await page.setRequestInterception(true);
+    page.on('request', (r) => {
+      if (r.url().startsWith('file:') || r.url().startsWith('data:')) return r.continue();
+      errors.push(`network request: ${r.url()}`);
+      return r.abort();
+    });
+    await page.goto(pathToFileURL(html).href, { waitUntil: 'load' });
+    const title = await page.title();
+    check(errors.length === 0 && title.length > 0, `"${title}" loads with no console errors, failed or network requests` +
+          (errors.length ? `: ${errors.join('; ')}` : ''));
+    await tableSorts(page);
+    await galleryFilters(page);
+    await flipToggles(page);
+    check(errors.length === 0, `no errors while using the page${errors.length ? `: ${errors.join('; ')}` : ''}`);
+    if (screenshot) {
+      await page.evaluate(() => window.scrollTo(0, 0));
+      await page.screenshot({ path: screenshot });
+      console.log(`screenshot: ${screenshot}`);
+    }
+  } finally {
+    await browser.close();
+  }
+}
+
+main().then(() => {
+  console.log(`${passes} passed, ${failures} failed`);
+  process.exit(failures ? 1 : 0);
+}, (e) => {
+  console.log(`FAILED: ${e.message}`);
+  console.log(`${passes} passed, ${failures + 1} failed`);
+  process.exit(1);
+});
