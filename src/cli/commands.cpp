@@ -110,6 +110,8 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
         const auto studies = analysis::study_materials(ctx, ms, {.fit = false}, study_progress(g, "deriving: "));
         fmt::print("{}", a->format == "mtlx" ? report::presets_materialx(ctx, studies, shader)
                                              : report::presets_gltf(ctx, studies));
+        if (a->format == "mtlx" && !report::materialx_space(ctx).note.empty())
+          progress(g, "presets: " + report::materialx_space(ctx).note);
         return 0;
       }
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));

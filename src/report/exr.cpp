@@ -11,6 +11,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <Imath/half.h>
 
 #include <cstring>
 
@@ -39,6 +40,8 @@ class MemoryStream : public Imf::OStream {
 };
 
 }  // namespace
+
+std::uint16_t half_bits(float v) { return Imath::half(v).bits(); }
 
 std::string encode_exr(const ExrImage& image) {
   const size_t nc = image.channels.size();

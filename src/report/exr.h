@@ -1,5 +1,6 @@
 #pragma once
 // Float EXR images for lookup tables (OpenEXR stays inside exr.cpp).
+#include <cstdint>
 #include <array>
 #include <optional>
 #include <string>
@@ -27,6 +28,10 @@ std::string encode_exr(const ExrImage& image);
 
 // encode_exr, then written with write_file_atomic (report/writer.h).
 void write_exr_atomic(const std::string& path, const ExrImage& image);
+
+// The IEEE 754 binary16 bit pattern nearest to `v` (round to nearest even; OpenEXR's half), for
+// half-float tables such as Filament's RGB16F DFG texture.
+std::uint16_t half_bits(float v);
 
 // Reads every channel of an EXR file as float pixels (any pixel type, scanline or tiled), with the
 // string and float attributes and the chromaticities. Throws InputError naming the file.

@@ -11,17 +11,23 @@
 namespace fl::report {
 namespace {
 
-void validate(const LutRequest& r) {
+constexpr int kDefaultSize = 64;
+
+// The request with its size (default_size when 0), checked.
+LutRequest sized(LutRequest r, int default_size) {
+  if (r.size == 0) r.size = default_size;
   if (r.size < 2 || r.size > 4096) throw InputError(fmt::format("--size {} out of range (2 to 4096)", r.size));
   if (r.samples < 1) throw InputError(fmt::format("--samples {} must be positive", r.samples));
   if (r.threads < 0) throw InputError(fmt::format("--threads {} must be 0 (all) or positive", r.threads));
+  return r;
 }
 
 analysis::LutOptions lut_options(const LutRequest& r, const analysis::LutProgress& progress) {
   return {r.samples, r.threads, progress};
 }
 
-analysis::Column col(const char* name) { return {name, 8}; }
+// Nine significant digits: every value a float holds, small ones included.
+analysis::Column col(const char* name) { return {name, 9, true, true}; }
 
 // Texture-axis attributes shared by every EXR written here.
 struct Axes {
@@ -62,34 +68,106 @@ Output one_file(const std::string& what, const std::string& path, std::string by
 
 // ----- dfg
 
-std::string dfg_csv(const analysis::DfgTable& t) {
+// What a DFG file says about itself: its axes, channels and the shader code that reads it.
+struct DfgText {
+  std::string axes, channels, shader;
+};
+DfgText dfg_text(DfgLayout layout, const analysis::LutGrid& g) {
+  const std::string axes = fmt::format("x = n.v, y = perceptual roughness (alpha = roughness^2), {}; rows from smooth "
+                                       "to rough (the first row is texture v = 0, GL order)",
+                                       g.convention);
+  if (layout == DfgLayout::SplitSum)
+    return {axes,
+            "R = dfg1 = integral (1 - Fc) rho cos, G = dfg2 = integral Fc rho cos, B = dfg_f82 = integral mu (1 - mu)^6 rho "
+            "cos, with Fc = (1 - mu)^5, mu = v.h, rho cos the GGX lobe with height-correlated Smith masking",
+            "vec3 dfg = textureLod(dfgLut, vec2(NoV, perceptualRoughness), 0.0).rgb; Schlick: E = f0 * dfg.r + dfg.g; "
+            "Hoffman's F82 model: E = f0 * dfg.r + dfg.g - a * dfg.b, a = (823543/46656) (f0 - f82) + (49/6) (1 - f0)"};
+  return {axes,
+          "Filament's multiscatter DFG: R = integral Fc rho cos, G = integral rho cos, B = integral D_charlie V_neubelt "
+          "cos (the sheen albedo, Estevez & Kulla 2017 NDF, Neubelt & Pettineo 2013 visibility), Fc = (1 - v.h)^5",
+          "Filament: dfg = textureLod(light_iblDFG, vec2(NoV, perceptualRoughness), 0.0).rgb; specularDFG = "
+          "mix(dfg.xxx, dfg.yyy, f0); energyCompensation = 1.0 + f0 * (1.0 / dfg.y - 1.0); sheenDFG = dfg.z"};
+}
+
+std::vector<std::string> dfg_channel_names(DfgLayout layout) {
+  if (layout == DfgLayout::SplitSum) return {"dfg1", "dfg2", "dfg_f82"};
+  return {"dfg_fc", "dfg_norm", "dfg_sheen"};
+}
+
+// Three values per texel in file order (roughness-major, like the cells).
+std::vector<double> dfg_values(DfgLayout layout, const analysis::DfgTable& t, const std::vector<double>& sheen) {
+  std::vector<double> v;
+  v.reserve(t.cells.size() * 3);
+  for (size_t k = 0; k < t.cells.size(); ++k) {
+    const auto& c = t.cells[k];
+    if (layout == DfgLayout::SplitSum)
+      v.insert(v.end(), {c.dfg1, c.dfg2, c.dfg_f82});
+    else
+      v.insert(v.end(), {c.dfg2, c.dfg1 + c.dfg2, sheen[k]});
+  }
+  return v;
+}
+
+std::string comment_lines(const DfgText& d, const char* prefix) {
+  return fmt::format("{0}axes: {1}\n{0}channels: {2}\n{0}shader: {3}\n", prefix, d.axes, d.channels, d.shader);
+}
+
+std::string dfg_csv(DfgLayout layout, const analysis::DfgTable& t, const std::vector<double>& values) {
   const auto& g = t.grid;
   analysis::Table tab;
   tab.name = "dfg";
-  tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha"), col("dfg1"), col("dfg2"), col("dfg_f82")};
+  tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha")};
+  for (const auto& name : dfg_channel_names(layout)) tab.columns.push_back(col(name.c_str()));
   for (int j = 0; j < g.size; ++j)
     for (int i = 0; i < g.size; ++i) {
-      const auto& c = t.cells[g.index(i, j)];
-      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], c.dfg1, c.dfg2, c.dfg_f82});
+      const size_t k = static_cast<size_t>(g.index(i, j)) * 3;
+      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], values[k], values[k + 1], values[k + 2]});
     }
-  return to_csv(tab);
+  return comment_lines(dfg_text(layout, g), "# ") + to_csv(tab);
 }
 
-ExrImage dfg_texture(const analysis::DfgTable& t) {
+ExrImage dfg_texture(DfgLayout layout, const analysis::DfgTable& t, const std::vector<double>& values) {
   const auto& g = t.grid;
   const Axes axes{"nov", g.nov.front(), g.nov.back(), kRoughnessAxis, g.perceptual_roughness.front(),
                   g.perceptual_roughness.back()};
-  auto img = texture("dfg", g.size, {"R", "G", "B"}, axes, g.convention,
-                     "R = dfg1 = integral (1 - Fc) rho cos, G = dfg2 = integral Fc rho cos, Fc = (1 - <v,h>)^5, "
-                     "B = dfg_f82 = integral <v,h> (1 - <v,h>)^6 rho cos");
-  for (int j = 0; j < g.size; ++j)
-    for (int i = 0; i < g.size; ++i) {
-      const auto& c = t.cells[g.index(i, j)];
-      img.pixels.push_back(static_cast<float>(c.dfg1));
-      img.pixels.push_back(static_cast<float>(c.dfg2));
-      img.pixels.push_back(static_cast<float>(c.dfg_f82));
-    }
+  const DfgText text = dfg_text(layout, g);
+  auto img = texture(layout == DfgLayout::SplitSum ? "dfg" : "dfg_filament", g.size, {"R", "G", "B"}, axes,
+                     g.convention, text.channels);
+  img.string_attributes.emplace_back("fresnelLab:shader", text.shader);
+  for (double v : values) img.pixels.push_back(static_cast<float>(v));
   return img;
+}
+
+// The C++ array body: `per_line` texels per line, each value printed by `value`.
+template <class Print>
+std::string array_body(size_t texels, int per_line, Print value) {
+  std::string s;
+  for (size_t k = 0; k < texels; ++k) {
+    if (k % per_line == 0) s += k ? "\n   " : "   ";
+    for (int c = 0; c < 3; ++c) s += " " + value(3 * k + c) + ",";
+  }
+  return s + "\n";
+}
+
+std::string filament_inc(const analysis::DfgTable& t, const std::vector<float>& values) {
+  std::string s = fmt::format("// generated by `fresnel-lab lut dfg --layout filament --size {}`: Filament's DFG LUT as "
+                              "an RGB16F texture, in GL order (half-float bit patterns, 3 per texel)\n",
+                              t.grid.size);
+  s += comment_lines(dfg_text(DfgLayout::Filament, t.grid), "// ");
+  return s + array_body(values.size() / 3, 4, [&](size_t k) { return fmt::format("0x{:04x}", half_bits(values[k])); });
+}
+
+std::string filament_header(const analysis::DfgTable& t, const std::vector<float>& values) {
+  const int n = t.grid.size;
+  std::string s = fmt::format("// Generated by `fresnel-lab lut dfg --layout filament --size {}`: Filament's DFG LUT, "
+                              "RGB16F, GL order; texel (j * size + i) * 3, half-float bit patterns.\n",
+                              n);
+  s += comment_lines(dfg_text(DfgLayout::Filament, t.grid), "// ");
+  s += fmt::format("#pragma once\n\n#include <cstdint>\n\nnamespace fresnel_lab {{\n\nconstexpr int kDfgLutSize = {0};\n"
+                   "constexpr std::uint16_t kDfgLut[{0} * {0} * 3] = {{\n",
+                   n);
+  s += array_body(values.size() / 3, 4, [&](size_t k) { return fmt::format("0x{:04x}", half_bits(values[k])); });
+  return s + "};\n\n}  // namespace fresnel_lab\n";
 }
 
 // ----- ltc-moments
@@ -183,47 +261,60 @@ std::string ltc_fit_message(const analysis::LtcTable& t) {
 
 }  // namespace
 
+DfgLayout dfg_layout_from_name(const std::string& name) {
+  if (name == "split-sum") return DfgLayout::SplitSum;
+  if (name == "filament") return DfgLayout::Filament;
+  throw InputError(fmt::format("--layout must be split-sum or filament, not '{}'", name));
+}
+
 std::string dfg_header(const analysis::DfgTable& t) {
   const auto& g = t.grid;
-  std::string s = fmt::format(
-      "// Generated by `fresnel-lab lut dfg --size {}`: Filament's DFG table for the GGX lobe with\n"
-      "// height-correlated Smith visibility. Per texel (i, j), three floats: dfg1 = integral of (1 - Fc) rho cos,\n"
-      "// dfg2 = integral of Fc rho cos, Fc = (1 - <v,h>)^5, dfg_f82 = integral of <v,h> (1 - <v,h>)^6 rho cos.\n"
-      "// Texel index (j * size + i) * 3.\n"
-      "// Grid: {}.\n"
-      "#pragma once\n\nnamespace fresnel_lab {{\n\nconstexpr int kDfgLutSize = {};\n"
-      "constexpr float kDfgLut[{} * {} * 3] = {{\n",
-      g.size, g.convention, g.size, g.size, g.size);
-  for (int j = 0; j < g.size; ++j) {
-    s += "   ";
-    for (int i = 0; i < g.size; ++i) {
-      const auto& c = t.cells[g.index(i, j)];
-      s += fmt::format(" {:.9e}f, {:.9e}f, {:.9e}f,", static_cast<float>(c.dfg1), static_cast<float>(c.dfg2),
-                       static_cast<float>(c.dfg_f82));
-    }
-    s += "\n";
-  }
-  s += "};\n\n}  // namespace fresnel_lab\n";
-  return s;
+  std::string s = fmt::format("// Generated by `fresnel-lab lut dfg --size {}`: the split-sum DFG table; texel (j * size + "
+                              "i) * 3.\n",
+                              g.size);
+  s += comment_lines(dfg_text(DfgLayout::SplitSum, g), "// ");
+  s += fmt::format("#pragma once\n\nnamespace fresnel_lab {{\n\nconstexpr int kDfgLutSize = {0};\n"
+                   "constexpr float kDfgLut[{0} * {0} * 3] = {{\n",
+                   g.size);
+  const auto values = dfg_values(DfgLayout::SplitSum, t, {});
+  s += array_body(values.size() / 3, static_cast<int>(g.size),
+                  [&](size_t k) { return fmt::format("{:.9e}f", static_cast<float>(values[k])); });
+  return s + "};\n\n}  // namespace fresnel_lab\n";
 }
 
-Output dfg_lut(const LutRequest& r, const analysis::LutProgress& progress) {
-  validate(r);
-  const std::string ext = output_extension(r.out, {".exr", ".csv", ".h"});
-  const auto t = analysis::dfg_table(analysis::dfg_grid(r.size), lut_options(r, progress));
-  const std::string bytes = ext == ".csv" ? dfg_csv(t) : ext == ".h" ? dfg_header(t) : encode_exr(dfg_texture(t));
-  return one_file("lut dfg", r.out, bytes);
+std::vector<float> filament_dfg_values(const analysis::DfgTable& t, const std::vector<double>& sheen) {
+  const auto v = dfg_values(DfgLayout::Filament, t, sheen);
+  return std::vector<float>(v.begin(), v.end());
 }
 
-Output moments_lut(const LutRequest& r, const analysis::LutProgress& progress) {
-  validate(r);
+Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+  const DfgLayout layout = dfg_layout_from_name(request.layout);
+  const LutRequest r = sized(request, layout == DfgLayout::Filament ? kFilamentDfgSize : kDefaultSize);
+  const std::string ext = layout == DfgLayout::Filament ? output_extension(r.out, {".exr", ".csv", ".h", ".inc"})
+                                                        : output_extension(r.out, {".exr", ".csv", ".h"});
+  const auto grid = analysis::dfg_grid(r.size);
+  const auto opts = lut_options(r, progress);
+  const auto t = analysis::dfg_table(grid, opts);
+  const auto sheen = layout == DfgLayout::Filament ? analysis::sheen_dfg_table(grid, opts) : std::vector<double>{};
+  const auto values = dfg_values(layout, t, sheen);
+  std::string bytes;
+  if (ext == ".csv") bytes = dfg_csv(layout, t, values);
+  else if (ext == ".exr") bytes = encode_exr(dfg_texture(layout, t, values));
+  else if (layout == DfgLayout::SplitSum) bytes = dfg_header(t);
+  else if (ext == ".inc") bytes = filament_inc(t, filament_dfg_values(t, sheen));
+  else bytes = filament_header(t, filament_dfg_values(t, sheen));
+  return one_file(fmt::format("lut dfg ({})", r.layout), r.out, bytes);
+}
+
+Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+  const LutRequest r = sized(request, kDefaultSize);
   const std::string ext = output_extension(r.out, {".exr", ".csv"});
   const auto t = analysis::moments_table(analysis::ltc_grid(r.size), lut_options(r, progress));
   return one_file("lut ltc-moments", r.out, ext == ".csv" ? moments_csv(t) : encode_exr(moments_texture(t)));
 }
 
-Output ltc_lut(const LutRequest& r, const analysis::LutProgress& progress) {
-  validate(r);
+Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+  const LutRequest r = sized(request, kDefaultSize);
   const std::string ext = output_extension(r.out, {".exr", ".csv"});
   const auto t = analysis::fit_ltc_table(r.size, lut_options(r, progress));
   Output o;

@@ -39,11 +39,12 @@ std::string format_number(double v, int precision) {
 
 namespace {
 
-std::string cell_text(const analysis::Cell& c, int precision, const char* non_finite) {
+std::string cell_text(const analysis::Cell& c, const analysis::Column& col, const char* non_finite) {
   if (const auto* s = std::get_if<std::string>(&c)) return *s;
   if (const auto* i = std::get_if<long long>(&c)) return std::to_string(*i);
   const double v = std::get<double>(c);
-  return std::isfinite(v) ? format_number(v, precision) : non_finite;
+  if (!std::isfinite(v)) return non_finite;
+  return col.significant ? fmt::format("{:.{}g}", v == 0.0 ? 0.0 : v, col.precision) : format_number(v, col.precision);
 }
 
 std::string csv_quote(const std::string& s) {
@@ -71,7 +72,7 @@ std::string to_csv(const analysis::Table& t) {
     first = true;
     for (size_t c = 0; c < row.size(); ++c) {
       if (!t.columns[c].in_csv) continue;
-      out += (first ? "" : ",") + csv_quote(cell_text(row[c], t.columns[c].precision, ""));
+      out += (first ? "" : ",") + csv_quote(cell_text(row[c], t.columns[c], ""));
       first = false;
     }
     out += '\n';
@@ -93,7 +94,7 @@ std::string to_markdown(const analysis::Table& t, int level) {
   for (const auto& row : t.rows) {
     out += "|";
     for (size_t c = 0; c < row.size(); ++c) {
-      std::string s = cell_text(row[c], t.columns[c].precision, "n/a");
+      std::string s = cell_text(row[c], t.columns[c], "n/a");
       for (size_t p = s.find('|'); p != std::string::npos; p = s.find('|', p + 2)) s.replace(p, 1, "\\|");
       out += " " + s + " |";
     }

@@ -33,8 +33,11 @@ TEST(LutCli, WritesTablesDeterministically) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
   const auto csv = slurp(tmp.path() + "/a.csv");
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "nov,perceptual_roughness,alpha,dfg1,dfg2,dfg_f82");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 17);
+  // Three comment lines (axes, channels, shader formula), the header, 16 rows.
+  const auto header = csv.find("\nnov,");
+  ASSERT_NE(header, std::string::npos);
+  EXPECT_EQ(csv.substr(header + 1, csv.find('\n', header + 1) - header - 1), "nov,perceptual_roughness,alpha,dfg1,dfg2,dfg_f82");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 20);
   r = test::run_command(lut + "dfg --size 4 --samples 256 --threads 1 --out '" + tmp.path() + "/b.csv'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(slurp(tmp.path() + "/b.csv"), csv);
@@ -42,6 +45,9 @@ TEST(LutCli, WritesTablesDeterministically) {
   r = test::run_command(lut + "dfg --size 4 --samples 256 --out '" + tmp.path() + "/dfg.h'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(slurp(tmp.path() + "/dfg.h").find("constexpr float kDfgLut[4 * 4 * 3]"), std::string::npos);
+  r = test::run_command(lut + "dfg --layout filament --size 4 --samples 256 --out '" + tmp.path() + "/f.h'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(slurp(tmp.path() + "/f.h").find("constexpr std::uint16_t kDfgLut[4 * 4 * 3]"), std::string::npos);
 
   // The DFG texture holds each channel where the layout (analysis/lut/lut_layout.h) says, which the
   // shaders and plans read: texel (0, 0) against the integrator at the first grid point.
@@ -80,6 +86,7 @@ TEST(LutCli, BadInputExitsTwoAndWritesNothing) {
   test::TempDir tmp;
   const std::string lut = std::string("'") + FL_CLI + "' lut ";
   for (const std::string args : {"dfg --size 1 --out x.csv", "dfg --size 4 --out x.txt", "ltc-moments --size 4 --out x.h",
+                                 "dfg --size 4 --out x.inc", "dfg --layout unreal --size 4 --out x.csv",
                                  "ltc --size 4 --samples 0 --out x.exr", "dfg --size 4", "frob --out x.csv"}) {
     const auto r = test::run_command("cd '" + tmp.path() + "' && " + lut + args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "brdf/sheen.h"
 #include "color/lab.h"
 #include "fresnel/models.h"
 #include "spectral/errors.h"
@@ -89,6 +90,23 @@ DfgTexel integrate_dfg(double nov, double alpha, int samples) {
   return t;
 }
 
+double integrate_sheen_dfg(double nov, double alpha, int samples) {
+  check_samples(samples);
+  const brdf::Vec3 v = brdf::view_from_nov(nov);
+  double sum = 0;
+  for (int k = 0; k < samples; ++k) {
+    const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
+    const double phi = 2.0 * kPi * u.u1, cos_h = 1.0 - u.u2, sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
+    const brdf::Vec3 h{sin_h * std::cos(phi), sin_h * std::sin(phi), cos_h};
+    const double voh = brdf::dot(v, h);
+    const brdf::Vec3 l = brdf::reflect(v, h);
+    if (voh <= 0.0 || l.z <= 0.0) continue;
+    // f (n·l) dω_l = D V (n·l) 4 (v·h) dω_h, and dω_h / pdf = 2π.
+    sum += brdf::charlie_ndf(cos_h, alpha) * brdf::neubelt_visibility(v.z, l.z) * l.z * 4.0 * voh;
+  }
+  return sum * 2.0 * kPi / samples;
+}
+
 GgxMoments integrate_moments(double nov, double alpha, int samples) {
   check_samples(samples);
   GgxMoments m;
@@ -158,6 +176,11 @@ std::array<double, 4> ltc_texture_entries(const fit::LtcMatrix& m_inv) {
 DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
   return {grid, integrate_grid<DfgTexel>(grid, options, integrate_dfg, done)};
+}
+
+std::vector<double> sheen_dfg_table(const LutGrid& grid, const LutOptions& options) {
+  ProgressCounter done(options.progress, grid.size * grid.size);
+  return integrate_grid<double>(grid, options, integrate_sheen_dfg, done);
 }
 
 MomentsTable moments_table(const LutGrid& grid, const LutOptions& options) {

@@ -47,10 +47,11 @@ LutGrid ltc_grid(int size);
 double ltc_nov_at(double x);
 double ltc_alpha_at(double roughness);
 
-// Channels 1 and 2 of Filament's DFG table ("Physically Based Rendering in Filament", "Pre-integration
-// for multiscattering"), with Fc = (1 − v·h)⁵: dfg1 = ∫ (1 − Fc) ρ cos dl, dfg2 = ∫ Fc ρ cos dl; and
-// the F82 channel dfg_f82 = ∫ μ(1 − μ)⁶ ρ cos dl (μ = v·h), from the same samples, so that
-// Hoffman's F82 model F = Schlick − a·μ(1 − μ)⁶ integrates to F0·dfg1 + dfg2 − a·dfg_f82.
+// The split-sum DFG integrals (Karis 2013; "Physically Based Rendering in Filament", "Pre-integration
+// for multiscattering"), with Fc = (1 − v·h)⁵: the scale dfg1 = ∫ (1 − Fc) ρ cos dl, the bias
+// dfg2 = ∫ Fc ρ cos dl, and the F82 term dfg_f82 = ∫ μ(1 − μ)⁶ ρ cos dl (μ = v·h), so that Schlick
+// integrates to F0·dfg1 + dfg2 and Hoffman's F82 model to F0·dfg1 + dfg2 − a·dfg_f82. Filament's
+// multiscatter table holds dfg2 and dfg1 + dfg2 (= ∫ ρ cos).
 struct DfgTexel {
   double dfg1 = 0, dfg2 = 0, dfg_f82 = 0;
 };
@@ -82,6 +83,10 @@ void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
 }
 
 DfgTexel integrate_dfg(double nov, double alpha, int samples = kLutSamples);
+// The directional albedo of Filament's sheen lobe (brdf/sheen.h), ∫ D_charlie V_neubelt (n·l) dl, the B
+// channel of Filament's DFG table. Half vectors are drawn uniformly over the hemisphere (Hammersley
+// points, density 1/(2π)), as Filament's own generator does: the Charlie lobe is broad.
+double integrate_sheen_dfg(double nov, double alpha, int samples = kLutSamples);
 GgxMoments integrate_moments(double nov, double alpha, int samples = kLutSamples);
 
 // Progress of a long computation: cells done of total (called from worker threads, one at a time).
@@ -101,6 +106,8 @@ struct MomentsTable {
   std::vector<GgxMoments> cells;
 };
 DfgTable dfg_table(const LutGrid& grid, const LutOptions& options = {});
+// integrate_sheen_dfg over the grid, stored like the cells of a DfgTable.
+std::vector<double> sheen_dfg_table(const LutGrid& grid, const LutOptions& options = {});
 MomentsTable moments_table(const LutGrid& grid, const LutOptions& options = {});
 
 // Snyder 1996, "Area Light Sources for Real-Time Graphics" (as tabulated by Heitz & Hill's

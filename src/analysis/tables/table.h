@@ -8,8 +8,9 @@ namespace fl::analysis {
 
 struct Column {
   std::string name;
-  int precision = 4;  // decimals for numeric cells
-  bool in_csv = true;  // false: Markdown/JSON only (the CSV keeps the stable columns of docs/conventions.md)
+  int precision = 4;         // decimals for numeric cells (significant digits if `significant`)
+  bool in_csv = true;        // false: Markdown/JSON only (the CSV keeps the stable columns of docs/conventions.md)
+  bool significant = false;  // CSV and Markdown print `precision` significant digits (%g)
 };
 
 using Cell = std::variant<std::string, double, long long>;
