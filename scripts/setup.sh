@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Fresnel Lab setup for a fresh Debian 12 machine: installs every package the build, tests and
-# benchmarks need, builds (Release, build/), and regenerates reports/ with `reproduce`.
+# benchmarks need (Debian packages, and the npm packages of the export validators pinned by
+# tests/validators/package-lock.json), builds (Release, build/), and regenerates reports/ with
+# `reproduce`.
 #   scripts/setup.sh              install + build + reproduce
 #   scripts/setup.sh --deps-only  install the packages (and the browser test's npm packages) only (what CI calls)
 set -euo pipefail
@@ -16,13 +18,14 @@ PACKAGES=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev libxml2-utils
   liblcms2-dev libcairo2-dev fonts-dejavu-core libgif-dev
   clang libclang-rt-14-dev
+  glslang-tools spirv-tools
   chromium nodejs npm
 )
 
 missing=()
 for p in "${PACKAGES[@]}"; do
-  # A Node.js build that bundles npm (and conflicts with Debian's npm package) serves as well.
-  [ "$p" = npm ] && command -v npm >/dev/null && continue
+  # A Node.js that already brings npm (e.g. from nodesource) serves as well as Debian's two packages.
+  if [ "$p" = nodejs ] || [ "$p" = npm ]; then command -v node >/dev/null && command -v npm >/dev/null && continue; fi
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
@@ -33,10 +36,19 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
+# The validators' npm packages (MaterialX 1.39 as WebAssembly, the Khronos glTF validator), exactly as
+# locked; installed again only when the lock file changes.
+validators=tests/validators
+if ! cmp -s "$validators/package-lock.json" "$validators/node_modules/.fresnel-lab-lock"; then
+  echo "setup: npm ci in $validators" >&2
+  (cd "$validators" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  cp "$validators/package-lock.json" "$validators/node_modules/.fresnel-lab-lock"
+fi
 # The browser test's driver, puppeteer-core, at the versions tests/browser/package-lock.json pins;
 # reinstalled only when the lock file changes.
 if ! cmp -s tests/browser/package-lock.json tests/browser/node_modules/.fresnel-lab-lock 2>/dev/null; then
-  (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error)
+  echo "setup: npm ci in tests/browser" >&2
+  (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
   cp tests/browser/package-lock.json tests/browser/node_modules/.fresnel-lab-lock
 fi
 [ "${1:-}" = "--deps-only" ] && exit 0

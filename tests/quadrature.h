@@ -105,4 +105,14 @@ inline double integrate_sphere(const std::function<double(double, double, double
       theta_end, alpha, {}, g_theta);
 }
 
+// ∫ f(ω) dω over the hemisphere ω·axis ≥ 0 (axis a unit vector in the xz-plane), in polar coordinates
+// about the axis, so a density whose support is that hemisphere has its edge on a panel boundary.
+inline double integrate_hemisphere_about(double axis_x, double axis_z,
+                                         const std::function<double(double, double, double)>& f, double alpha = 0.05) {
+  // The frame (X, Y, A) with X = Y × A: a point (x, y, z) of it is x X + y Y + z A.
+  return integrate_sphere(
+      [&](double x, double y, double z) { return f(x * axis_z + z * axis_x, y, -x * axis_x + z * axis_z); },
+      std::numbers::pi / 2, alpha);
+}
+
 }  // namespace fl::test

@@ -85,12 +85,17 @@ int run(int argc, char** argv) {
   app.add_option("--materials", s.paths.materials, "material catalog folder")->capture_default_str();
   app.add_option("--space", s.space, "working space: acescg, lin_rec709, aces2065-1, lin_rec2020, lin_p3d65 (or a space of --ocio-config)")
       ->capture_default_str();
-  app.add_option("--illuminant", s.illuminant, "D50, D55, D60, D65, D75, A, E, or Dnnnn (daylight at nnnn K)")->capture_default_str();
+  app.add_option("--illuminant", s.illuminant,
+                 "D50, D55, D60, D65, D75, A, E, or Dnnnn (daylight at nnnn K); default: the working space's reference "
+                 "white (D60 for acescg and aces2065-1, D65 for lin_rec709, lin_rec2020, lin_p3d65)");
   app.add_option("--angles", s.angles, "incidence-angle samples over [0°, 90°]")->capture_default_str();
   app.add_option("--adaptation", s.adaptation, "chromatic adaptation: bradford, cat02, none")->capture_default_str();
   app.add_option("--step-nm", s.step_nm, "spectral step, 5 or 1 nm (360-830 nm)")->capture_default_str();
   app.add_option("--ocio-config", s.ocio_config, "an OpenColorIO config whose colour-space names --space takes (default $OCIO; empty: built-in spaces)");
   app.add_option("--ocio-xyz", s.ocio_xyz, "the config's CIE XYZ D65 space (default: role cie_xyz_d65_interchange)");
+  app.add_option("--ocio-white", s.ocio_white,
+                 "white of the --space colour space of the config: ACES or an illuminant name (default: the built-in "
+                 "space whose matrix it has, else D65)");
   app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
 
   Runner selected;

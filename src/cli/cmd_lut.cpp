@@ -47,8 +47,9 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* lut = app.add_subcommand("lut", "pre-integrated GGX lookup tables: dfg | ltc-moments | ltc");
   lut->require_subcommand(1);
   add_lut_subcommand(*lut, g, selected, "dfg",
-                     "Filament's DFG table over (n·v, perceptual roughness): dfg1 = ∫(1−Fc)ρ cos, dfg2 = ∫Fc ρ cos",
-                     "output file: .exr (R = dfg1, G = dfg2), .csv or .h (C++ header)", report::dfg_lut);
+                     "Filament's DFG table over (n·v, perceptual roughness): dfg1 = ∫(1−Fc)ρ cos, dfg2 = ∫Fc ρ cos, "
+                     "dfg_f82 = ∫(v·h)(1−v·h)^6 ρ cos",
+                     "output file: .exr (R = dfg1, G = dfg2, B = dfg_f82), .csv or .h (C++ header)", report::dfg_lut);
   add_lut_subcommand(*lut, g, selected, "ltc-moments",
                      "LTC moments on the LTC grid: n_D = ∫ρ cos, f_D = ∫(1−v·h)^5 ρ cos, l_D = ∫(v·h)(1−v·h)^6 ρ cos",
                      "output file: .exr (RGB = n_D, f_D, l_D) or .csv", report::moments_lut);

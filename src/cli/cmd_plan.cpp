@@ -1,5 +1,5 @@
-// `plan SCENE.yaml`: the cheapest Fresnel model per scene material within a ΔE2000 budget, and the
-// lookup tables the chosen models need under the scene's lighting.
+// `plan SCENE.yaml`: the cheapest Fresnel model per scene material within a ΔE2000 budget as
+// rendered under the scene's lighting, one shader for the scene, and the lookup tables they need.
 #include <fmt/format.h>
 
 #include <memory>
@@ -15,20 +15,27 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand(
       "plan", "per scene material the cheapest Fresnel model within a ΔE2000 budget, and the lookup tables it needs");
   struct Args {
-    std::string scene, format = "md", costs;
+    std::string scene, format = "md", costs, gpu_costs, lang = "glsl";
+    bool shader = false;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("SCENE", a->scene,
-                  "scene YAML: materials (list), max_de00 (default 1.0), space, lighting (punctual, ibl, area)")
+                  "scene YAML: materials (list; an entry may be {name, roughness}), max_de00 (default 1.0), space, "
+                  "lighting (punctual, ibl, area), roughness")
       ->required();
   sub->add_option("--format", a->format, "json or md")->capture_default_str();
   sub->add_option("--costs", a->costs, "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
+  sub->add_option("--gpu-costs", a->gpu_costs,
+                  "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the committed bench/gpu_costs.csv)");
+  sub->add_flag("--shader", a->shader, "print the scene-wide model's shader code instead of the plan");
+  sub->add_option("--lang", a->lang, "with --shader: glsl or hlsl")->capture_default_str();
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
       if (a->format != "json" && a->format != "md")
         throw InputError(fmt::format("--format must be json or md, not '{}'", a->format));
+      const auto lang = analysis::shader_language_from_name(a->lang);
       const auto scene = analysis::read_scene(a->scene);
-      const auto costs = analysis::load_model_costs(a->costs);
+      const analysis::PlanCosts costs{analysis::load_model_costs(a->costs), analysis::load_gpu_costs(a->gpu_costs)};
       GlobalOptions run = g;
       if (!scene.space.empty()) run.settings.space = scene.space;
       const auto ctx = [&] {
@@ -43,7 +50,8 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       print_warnings(g, ms);
       const auto studies = analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
       const auto p = analysis::make_plan(scene, ctx, studies, costs);
-      fmt::print("{}", a->format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs.source));
+      if (a->shader) fmt::print("{}", report::plan_shader(p, lang));
+      else fmt::print("{}", a->format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs));
       return 0;
     };
   });

@@ -15,12 +15,14 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand(
       "speed", "every Fresnel model's cost per evaluation against its ΔE2000 error (table speed), with a plot");
   struct Args {
-    std::string format = "csv", costs, plot;
+    std::string format = "csv", costs, gpu_costs, plot;
     bool measure = false;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--format", a->format, "csv, md or json")->capture_default_str();
   sub->add_option("--costs", a->costs, "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
+  sub->add_option("--gpu-costs", a->gpu_costs,
+                  "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the committed bench/gpu_costs.csv)");
   sub->add_flag("--measure", a->measure, "time the batched kernels now instead of reading the costs file (not reproducible)");
   sub->add_option("--plot", a->plot, "also write the error-against-cost plot to this file (.png, .svg or .pdf)");
   sub->callback([&g, &selected, a] {
@@ -32,9 +34,10 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      const auto t = analysis::speed_table(ctx, in.studies(), costs);
+      const auto gpu = analysis::load_gpu_costs(a->gpu_costs);
+      const auto t = analysis::speed_table(ctx, in.studies(), costs, gpu);
       if (!a->plot.empty()) {
-        report::write_speed_plot(a->plot, analysis::speed_rows(in.studies(), costs));
+        report::write_speed_plot(a->plot, analysis::speed_rows(in.studies(), costs, gpu));
         progress(g, "speed: wrote " + a->plot);
       }
       fmt::print("{}", report::render(t, f));

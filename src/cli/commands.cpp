@@ -3,6 +3,7 @@
 #include "analysis/tables/table_registry.h"
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
+#include "report/gltf.h"
 #include "report/materialx.h"
 #include "report/reproduce.h"
 #include "report/writer.h"
@@ -15,6 +16,7 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_plot.cpp
 void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_speed.cpp
 void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_plan.cpp
+void add_shader_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_shader.cpp
 
 namespace {
 
@@ -79,23 +81,35 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
 
 void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand("presets", "F0, F82, g, eta, kappa per catalog material in the working space");
-  auto format = std::make_shared<std::string>("csv");
-  auto openpbr = std::make_shared<bool>(false);
-  sub->add_option("--format", *format, "csv, md, json, or mtlx (a MaterialX document)")->capture_default_str();
-  sub->add_flag("--openpbr", *openpbr, "the OpenPBR form: base_color = F0, specular_color = F82 tint");
-  sub->callback([&g, &selected, format, openpbr] {
-    selected = [&g, format, openpbr] {
-      if (*format != "mtlx") report::format_from_name(*format);  // validate before the work
+  struct Args {
+    std::string format = "csv", shader;
+    bool openpbr = false;
+  };
+  auto a = std::make_shared<Args>();
+  sub->add_option("--format", a->format, "csv, md, json, mtlx (a MaterialX document) or gltf (glTF 2.0 materials)")
+      ->capture_default_str();
+  sub->add_flag("--openpbr", a->openpbr, "the OpenPBR Surface form (with mtlx: open_pbr_surface)");
+  sub->add_option("--shader", a->shader,
+                  "mtlx: generalized_schlick (default), open_pbr_surface or standard_surface");
+  sub->callback([&g, &selected, a] {
+    selected = [&g, a] {
+      const bool document = a->format == "mtlx" || a->format == "gltf";
+      if (!document) report::format_from_name(a->format);  // validate before the work
+      const auto shader = report::materialx_shader_from_name(
+          !a->shader.empty() ? a->shader : a->openpbr ? "open_pbr_surface" : "generalized_schlick");
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      if (*format == "mtlx") {
-        fmt::print("{}", report::presets_materialx(ctx, in.studies()));
+      if (document) {
+        // Documents use the derived parameters only: no fits.
+        const auto studies = analysis::study_materials(ctx, ms, {.fit = false}, study_progress(g, "deriving: "));
+        fmt::print("{}", a->format == "mtlx" ? report::presets_materialx(ctx, studies, shader)
+                                             : report::presets_gltf(ctx, studies));
         return 0;
       }
-      const auto t = *openpbr ? analysis::openpbr_table(ctx, in.studies()) : analysis::presets_table(ctx, in.studies());
-      fmt::print("{}", report::render(t, report::format_from_name(*format)));
+      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
+      const auto t = a->openpbr ? analysis::openpbr_table(ctx, in.studies()) : analysis::presets_table(ctx, in.studies());
+      fmt::print("{}", report::render(t, report::format_from_name(a->format)));
       return 0;
     };
   });
@@ -136,6 +150,7 @@ const std::vector<Command>& commands() {
       {"render", add_render},
       {"speed", add_speed_command},
       {"plan", add_plan_command},
+      {"shader", add_shader_command},
   };
   return table;
 }

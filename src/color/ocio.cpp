@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "color/colorimetry.h"
 #include "spectral/errors.h"
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -144,18 +145,48 @@ Mat3 SpaceLibrary::conversion(const std::string& from, const std::string& to) co
   }
 }
 
-RgbSpace SpaceLibrary::space(const std::string& name) const {
+std::optional<std::string> SpaceLibrary::matching_builtin(const Mat3& rgb_to_xyz_d65) {
+  const auto raw = OCIO::Config::CreateRaw();
+  for (const auto& b : builtin_space_names()) {
+    const Mat3 m = processor_matrix(raw->getProcessor(builtin_to_xyz_d65(b, OCIO::TRANSFORM_DIR_FORWARD)), b);
+    double diff = 0;
+    for (int i = 0; i < 9; ++i) diff = std::max(diff, std::abs(m.m[i] - rgb_to_xyz_d65.m[i]));
+    if (diff <= kBuiltinMatchTolerance) return b;
+  }
+  return std::nullopt;
+}
+
+Mat3 SpaceLibrary::conversion_to_builtin(const std::string& from, const std::string& builtin) const {
+  if (is_builtin()) return conversion(from, builtin);
+  const auto raw = OCIO::Config::CreateRaw();
+  const Mat3 from_xyz = processor_matrix(raw->getProcessor(builtin_to_xyz_d65(builtin, OCIO::TRANSFORM_DIR_INVERSE)),
+                                         "CIE XYZ D65 -> " + builtin);
+  return from_xyz * conversion(from, impl_->xyz_space);
+}
+
+RgbSpace SpaceLibrary::space(const std::string& name, const std::optional<SpaceWhite>& white) const {
   if (is_builtin()) return builtin_space(name);
+  const Mat3 to_xyz_d65 = conversion(name, impl_->xyz_space);
   RgbSpace s;
+  const auto builtin = white ? std::nullopt : matching_builtin(to_xyz_d65);
+  if (builtin) {
+    s = builtin_space(*builtin);
+    s.white_source = fmt::format("white {} of built-in {}, whose matrix the config's equals", s.reference_illuminant,
+                                 *builtin);
+  } else {
+    const Xyz d65 = to_xyz_d65 * Rgb{1, 1, 1};
+    s.white = white ? white->white : d65;
+    s.rgb_to_xyz = adaptation_matrix(Adaptation::Bradford, d65, s.white) * to_xyz_d65;
+    s.reference_illuminant = white ? white->illuminant : "D65";
+    s.white_source = white ? white->source : "white D65 of the config's CIE XYZ D65 space";
+  }
   s.name = name;
   s.description = fmt::format("'{}' from OCIO config {}", name, config_path_);
-  s.rgb_to_xyz = conversion(name, impl_->xyz_space);
   try {
     s.xyz_to_rgb = s.rgb_to_xyz.inverse();
   } catch (const std::domain_error&) {
     throw InputError(config_path_, 0, fmt::format("colour space '{}' has a singular matrix", name));
   }
-  s.white = s.rgb_to_xyz * Rgb{1, 1, 1};
   return s;
 }
 

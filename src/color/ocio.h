@@ -3,12 +3,27 @@
 // plain matrices (computed by OCIO in double precision from its built-in transforms or a user
 // config) and RgbSpace values.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "color/rgb_space.h"
 
 namespace fl::color {
+
+// A white for a config space, given by the user (the config's matrices are adapted to D65 and do not
+// carry the space's own white): its XYZ (Y = 1), the illuminant it is the white of, and a phrase
+// naming where it came from.
+struct SpaceWhite {
+  Xyz white;
+  std::string illuminant;
+  std::string source;
+};
+
+// Matrices from different configs that agree this closely are the same space: distinct gamuts in
+// use differ by 1e-2 or more per entry, while OCIO's built-ins and matrices written from published
+// primaries agree to about 1e-6.
+inline constexpr double kBuiltinMatchTolerance = 1e-4;
 
 class SpaceLibrary {
  public:
@@ -20,8 +35,18 @@ class SpaceLibrary {
   // space (default: the role cie_xyz_d65_interchange, else a space called CIE-XYZ-D65).
   static SpaceLibrary from_config(const std::string& config_path, const std::string& xyz_space = "");
 
-  // The space's native matrices and white, as OCIO sees it (linear spaces only).
-  RgbSpace space(const std::string& name) const;
+  // The space's native matrices, white and reference illuminant (linear spaces only). A config's
+  // conversion to its CIE XYZ D65 space includes the adaptation of the space's white to D65, so the
+  // white is found in this order: `white` if given (the matrix is then Bradford-adapted from D65
+  // back to it); the built-in space whose matrix to XYZ D65 the config's equals (kBuiltinMatchTolerance
+  // per entry), whose primaries, white and illuminant it takes; otherwise D65, the white of the
+  // config's XYZ space.
+  RgbSpace space(const std::string& name, const std::optional<SpaceWhite>& white = std::nullopt) const;
+  // The built-in space whose RGB → CIE XYZ D65 matrix (through OCIO's built-in transforms) equals
+  // `rgb_to_xyz_d65` within kBuiltinMatchTolerance per entry.
+  static std::optional<std::string> matching_builtin(const Mat3& rgb_to_xyz_d65);
+  // RGB in a space of this library → RGB in one of our built-in spaces (through CIE XYZ D65).
+  Mat3 conversion_to_builtin(const std::string& from, const std::string& builtin) const;
   // RGB in `from` → RGB in `to`. Throws InputError if the conversion is not a pure matrix.
   Mat3 conversion(const std::string& from, const std::string& to) const;
   std::vector<std::string> names() const;

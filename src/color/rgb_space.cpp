@@ -39,6 +39,8 @@ RgbSpace builtin_space(const std::string& name) {
   const Chromaticity aces_white{0.32168, 0.33767}, d65{0.3127, 0.3290};
   auto make = [&](const char* desc, Chromaticity r, Chromaticity g, Chromaticity b, Chromaticity w) {
     RgbSpace s;
+    s.reference_illuminant = w.x == aces_white.x ? "D60" : "D65";
+    s.builtin_equivalent = name;
     s.name = name;
     s.description = desc;
     s.rgb_to_xyz = rgb_to_xyz_from_primaries(r, g, b, w);

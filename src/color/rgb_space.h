@@ -13,6 +13,14 @@ struct RgbSpace {
   Mat3 rgb_to_xyz;         // native: RGB (1,1,1) ↦ the space's white with Y = 1
   Mat3 xyz_to_rgb;
   Xyz white;               // Y = 1
+  // The space's reference white illuminant (the spectrum whose white the space's white is): D60 for
+  // the ACES spaces, D65 for Rec.709, Rec.2020 and P3-D65.
+  std::string reference_illuminant;
+  // Where the white came from, for report headers ("built-in", or how an OCIO space's was found).
+  std::string white_source = "built-in";
+  // The built-in space this one is (its own name, or the one an OCIO space's matrix equals; empty
+  // for others).
+  std::string builtin_equivalent;
 };
 
 // RGB → XYZ matrix from primaries and white chromaticities (SMPTE RP 177).

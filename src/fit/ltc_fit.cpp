@@ -2,7 +2,11 @@
 
 #include <ceres/ceres.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <limits>
+#include <stdexcept>
 
 namespace fl::fit {
 
@@ -12,11 +16,19 @@ LtcFrame ltc_frame_from_average_direction(const brdf::Vec3& average_dir) {
 }
 
 LtcMatrix ltc_matrix(const LtcFrame& f, const LtcParams& p) {
-  // [X Y Z] · [[m11, 0, m13], [0, m22, 0], [0, 0, 1]]: columns m11·X, m22·Y, m13·X + Z.
-  const brdf::Vec3 c0{p.m11 * f.x.x, p.m11 * f.x.y, p.m11 * f.x.z};
+  // [X Y Z] · [[m11, 0, m13], [0, m22, 0], [m31, 0, 1]]: columns m11·X + m31·Z, m22·Y, m13·X + Z.
+  const brdf::Vec3 c0{p.m11 * f.x.x + p.m31 * f.z.x, p.m11 * f.x.y + p.m31 * f.z.y, p.m11 * f.x.z + p.m31 * f.z.z};
   const brdf::Vec3 c1{p.m22 * f.y.x, p.m22 * f.y.y, p.m22 * f.y.z};
   const brdf::Vec3 c2{p.m13 * f.x.x + f.z.x, p.m13 * f.x.y + f.z.y, p.m13 * f.x.z + f.z.z};
   return {{c0.x, c1.x, c2.x, c0.y, c1.y, c2.y, c0.z, c1.z, c2.z}};
+}
+
+double ltc_density(const LtcParams& p, double x, double y, double z) {
+  const double beta = p.m11 - p.m13 * p.m31;
+  const double ox = (x - p.m13 * z) / beta, oy = y / p.m22, oz = (p.m11 * z - p.m31 * x) / beta;
+  if (oz <= 0.0) return 0.0;
+  const double len2 = ox * ox + oy * oy + oz * oz;
+  return oz / (std::numbers::pi * p.m22 * beta * len2 * len2);
 }
 
 LtcMatrix inverse(const LtcMatrix& a) {
@@ -30,93 +42,298 @@ LtcMatrix inverse(const LtcMatrix& a) {
            c02 * inv_det, (m[1] * m[6] - m[0] * m[7]) * inv_det, (m[0] * m[4] - m[1] * m[3]) * inv_det}};
 }
 
-LtcProblem make_ltc_problem(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
-                            int sample_sqrt) {
-  LtcProblem pr;
-  pr.nov = nov;
-  pr.alpha = alpha;
-  pr.magnitude = magnitude;
-  pr.frame = ltc_frame_from_average_direction(average_dir);
-  const brdf::Vec3 v = brdf::view_from_nov(nov);
-  const int k = std::max(1, sample_sqrt);
-  const double count = 2.0 * k * k;
-  constexpr double kUniformSpherePdf = 1.0 / (4.0 * std::numbers::pi);
-  auto add = [&](const brdf::Vec3& l) {
-    const brdf::Vec3 sum{v.x + l.x, v.y + l.y, v.z + l.z};
-    double p_vndf = 0.0;
-    if (brdf::dot(sum, sum) > 0.0) {
-      const brdf::Vec3 h = brdf::normalize(sum);
-      if (h.z > 0.0) p_vndf = brdf::ggx_vndf_reflection_pdf(v.z, h.z, alpha);
-    }
-    const double q = 0.5 * p_vndf + 0.5 * kUniformSpherePdf;
-    pr.samples.push_back({brdf::dot(l, pr.frame.x), brdf::dot(l, pr.frame.y), brdf::dot(l, pr.frame.z),
-                          brdf::ggx_lobe_cos(v, l, alpha), 1.0 / std::sqrt(q * count)});
-  };
-  pr.samples.reserve(static_cast<size_t>(count));
-  for (int j = 0; j < k; ++j)
-    for (int i = 0; i < k; ++i) {
-      const double u1 = (i + 0.5) / k, u2 = (j + 0.5) / k;
-      add(brdf::reflect(v, brdf::sample_ggx_vndf(v, alpha, u1, u2)));
-      const double z = 1.0 - 2.0 * u1, r = std::sqrt(std::max(0.0, 1.0 - z * z));
-      const double phi = 2.0 * std::numbers::pi * u2;
-      add({r * std::cos(phi), r * std::sin(phi), z});
-    }
-  return pr;
+LtcLobe ltc_lobe(const LtcMatrix& m) {
+  LtcLobe lobe{m, inverse(m), 1.0};
+  const auto& a = lobe.m_inv.m;
+  lobe.abs_det_m_inv = std::abs(a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                                a[2] * (a[3] * a[7] - a[4] * a[6]));
+  return lobe;
+}
+
+double ltc_lobe_density(const LtcLobe& lobe, const brdf::Vec3& w) {
+  const auto& a = lobe.m_inv.m;
+  const double ox = a[0] * w.x + a[1] * w.y + a[2] * w.z;
+  const double oy = a[3] * w.x + a[4] * w.y + a[5] * w.z;
+  const double oz = a[6] * w.x + a[7] * w.y + a[8] * w.z;
+  if (oz <= 0.0) return 0.0;
+  const double len2 = ox * ox + oy * oy + oz * oz;
+  return oz * lobe.abs_det_m_inv / (std::numbers::pi * len2 * len2);
+}
+
+brdf::Vec3 sample_ltc_lobe(const LtcLobe& lobe, double u1, double u2) {
+  const double cos_t = std::sqrt(u1), sin_t = std::sqrt(std::max(0.0, 1.0 - u1));
+  const double phi = 2.0 * std::numbers::pi * u2;
+  const brdf::Vec3 o{sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t};
+  const auto& m = lobe.m.m;
+  return brdf::normalize(brdf::Vec3{m[0] * o.x + m[1] * o.y + m[2] * o.z, m[3] * o.x + m[4] * o.y + m[5] * o.z,
+                                    m[6] * o.x + m[7] * o.y + m[8] * o.z});
+}
+
+double ggx_vndf_direction_pdf(const brdf::Vec3& v, const brdf::Vec3& l, double alpha) {
+  const brdf::Vec3 sum{v.x + l.x, v.y + l.y, v.z + l.z};
+  if (v.z <= 0.0 || brdf::dot(sum, sum) <= 0.0) return 0.0;
+  const brdf::Vec3 h = brdf::normalize(sum);
+  return h.z > 0.0 ? brdf::ggx_vndf_reflection_pdf(v.z, h.z, alpha) : 0.0;
 }
 
 namespace {
 
-double sum_squared_residuals(const LtcProblem& pr, const LtcParams& p) {
-  double s = 0.0;
-  for (const auto& smp : pr.samples) {
-    const double r = (smp.target - pr.magnitude * ltc_density(p.m11, p.m22, p.m13, smp.x, smp.y, smp.z)) * smp.weight;
-    s += r * r;
-  }
-  return s;
+std::vector<brdf::Point2> stratified_midpoints(int k) {
+  std::vector<brdf::Point2> pts;
+  pts.reserve(static_cast<size_t>(k) * k);
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < k; ++i) pts.push_back({(i + 0.5) / k, (j + 0.5) / k});
+  return pts;
 }
 
-// Residual k = (ρ cos(ω_k) − n_D D_LTC(ω_k)) · w_k, so ½ Σ r² estimates ½ ∫ (ρ cos − n_D D_LTC)² dω.
-struct LtcCost {
-  const LtcProblem* problem;
+std::vector<brdf::Point2> hammersley_points(int n) {
+  std::vector<brdf::Point2> pts;
+  pts.reserve(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k)
+    pts.push_back(brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(n)));
+  return pts;
+}
 
-  template <class T>
-  bool operator()(const T* const p, T* residuals) const {
-    const auto& samples = problem->samples;
-    for (size_t k = 0; k < samples.size(); ++k) {
-      const auto& s = samples[k];
-      residuals[k] = (s.target - problem->magnitude * ltc_density(p[0], p[1], p[2], s.x, s.y, s.z)) * s.weight;
+// The GGX half of a direction set: l = reflect(v, h) for h drawn from the visible normals at each
+// point, with the lobe value and the VNDF density there.
+struct GgxDirection {
+  brdf::Vec3 l;
+  double target = 0, pdf = 0;
+};
+std::vector<GgxDirection> ggx_directions(const brdf::Vec3& v, double alpha, const std::vector<brdf::Point2>& pts) {
+  std::vector<GgxDirection> out;
+  out.reserve(pts.size());
+  for (const auto& u : pts) {
+    const brdf::Vec3 l = brdf::reflect(v, brdf::sample_ggx_vndf(v, alpha, u.u1, u.u2));
+    out.push_back({l, brdf::ggx_lobe_cos(v, l, alpha), ggx_vndf_direction_pdf(v, l, alpha)});
+  }
+  return out;
+}
+
+// The balance-heuristic sum over both halves of a direction set for each lobe.
+std::vector<LtcL3Error> l3_errors(const brdf::Vec3& v, double alpha, double magnitude,
+                                  const std::vector<GgxDirection>& ggx, const std::vector<brdf::Point2>& pts,
+                                  const std::vector<LtcLobe>& lobes) {
+  std::vector<LtcL3Error> out(lobes.size());
+  const double n = static_cast<double>(pts.size());
+  for (size_t c = 0; c < lobes.size(); ++c) {
+    auto add = [&](double b, double p_vndf, double d_ltc) {
+      const double q = p_vndf + d_ltc;
+      if (!(q > 0.0)) return;
+      const double d = std::abs(b - magnitude * d_ltc);
+      out[c].error += d * d * d / (n * q);
+      out[c].lobe += b * b * b / (n * q);
+    };
+    for (const auto& g : ggx) add(g.target, g.pdf, ltc_lobe_density(lobes[c], g.l));
+    for (const auto& u : pts) {
+      const brdf::Vec3 l = sample_ltc_lobe(lobes[c], u.u1, u.u2);
+      add(brdf::ggx_lobe_cos(v, l, alpha), ggx_vndf_direction_pdf(v, l, alpha), ltc_lobe_density(lobes[c], l));
     }
+  }
+  return out;
+}
+
+// The fitting directions of a cell: the GGX half (fixed) and the half drawn from the proposal.
+LtcProblem assemble_problem(double nov, double alpha, double magnitude, const LtcFrame& frame,
+                            const std::vector<GgxDirection>& ggx, const std::vector<brdf::Point2>& pts,
+                            const LtcParams& proposal) {
+  LtcProblem pr{nov, alpha, magnitude, frame, proposal, {}};
+  const brdf::Vec3 v = brdf::view_from_nov(nov);
+  const double count = static_cast<double>(pts.size());
+  double lobe3 = 0.0;  // Σ target³ w², the estimate of B₃
+  auto add = [&](const brdf::Vec3& l, double target, double p_vndf) {
+    const LtcSample s{brdf::dot(l, frame.x), brdf::dot(l, frame.y), brdf::dot(l, frame.z), target, 0.0};
+    const double q = p_vndf + ltc_density(proposal, s.x, s.y, s.z);
+    if (!(q > 0.0)) return;
+    pr.samples.push_back({s.x, s.y, s.z, target, 1.0 / std::sqrt(count * q)});
+    lobe3 += target * target * target / (count * q);
+  };
+  pr.samples.reserve(2 * pts.size());
+  for (const auto& g : ggx) add(g.l, g.target, g.pdf);
+  const LtcLobe lobe = ltc_lobe(ltc_matrix(frame, proposal));
+  for (const auto& u : pts) {
+    const brdf::Vec3 l = sample_ltc_lobe(lobe, u.u1, u.u2);
+    add(l, brdf::ggx_lobe_cos(v, l, alpha), ggx_vndf_direction_pdf(v, l, alpha));
+  }
+  const double scale = lobe3 > 0.0 ? 1.0 / std::sqrt(lobe3) : 1.0;
+  for (auto& smp : pr.samples) smp.weight *= scale;
+  return pr;
+}
+
+// Residual k = d √|d| w with d = target − n_D D_LTC, and its derivatives in θ = (m11, m22, m13, m31).
+// With u = x − m13 z, t = m11 z − m31 x, β = m11 − m13 m31, o = (u/β, y/m22, t/β), L = ‖o‖²:
+// D = t / (π m22 β² L²), so ∂ln D = ∂t/t − ∂m22/m22 − 2 ∂β/β − 2 ∂L/L with
+// ∂L = 2 (o_x ∂u + o_z ∂t)/β − 2 (o_x² + o_z²) ∂β/β − 2 o_y² ∂m22/m22, where (∂u, ∂t, ∂β, ∂m22) is
+// (0, z, 1, 0) for m11, (0, 0, 0, 1) for m22, (−z, 0, −m31, 0) for m13 and (0, −x, −m13, 0) for m31;
+// and ∂r/∂D = −1.5 √|d| w n_D.
+double ltc_residual(const LtcProblem& pr, const LtcSample& s, const double* p, double* jacobian_row) {
+  const double inv_beta = 1.0 / (p[0] - p[2] * p[3]), inv_m22 = 1.0 / p[1];
+  const double ox = (s.x - p[2] * s.z) * inv_beta, oy = s.y * inv_m22, oz = (p[0] * s.z - p[3] * s.x) * inv_beta;
+  const double inv_len2 = 1.0 / (ox * ox + oy * oy + oz * oz);
+  const double dens = oz > 0.0 ? oz * inv_beta * inv_m22 * inv_len2 * inv_len2 / std::numbers::pi : 0.0;
+  const double d = s.target - pr.magnitude * dens;
+  const double root = std::sqrt(std::abs(d));
+  if (jacobian_row) {
+    if (dens == 0.0) {
+      std::fill(jacobian_row, jacobian_row + 4, 0.0);
+    } else {
+      const double g = -1.5 * root * s.weight * pr.magnitude * dens;
+      const double inv_t = inv_beta / oz, s2 = 2.0 * (ox * ox + oz * oz) * inv_beta, two_l = 2.0 * inv_len2;
+      jacobian_row[0] = g * (s.z * inv_t - 2.0 * inv_beta - two_l * (2.0 * oz * s.z * inv_beta - s2));
+      jacobian_row[1] = g * inv_m22 * (2.0 * two_l * oy * oy - 1.0);
+      jacobian_row[2] = g * (2.0 * p[3] * inv_beta - two_l * (s2 * p[3] - 2.0 * ox * s.z * inv_beta));
+      jacobian_row[3] = g * (-s.x * inv_t + 2.0 * p[2] * inv_beta - two_l * (s2 * p[2] - 2.0 * oz * s.x * inv_beta));
+    }
+  }
+  return d * root * s.weight;
+}
+
+double sum_squared_residuals(const LtcProblem& pr, const LtcParams& p) {
+  const double q[4] = {p.m11, p.m22, p.m13, p.m31};
+  double sum = 0.0;
+  for (const auto& s : pr.samples) {
+    const double r = ltc_residual(pr, s, q, nullptr);
+    sum += r * r;
+  }
+  return sum;
+}
+
+// ½ Σ r² estimates ½ ∫ |ρ cos − n_D D_LTC|³ dω / B₃; the Jacobian is analytic (ltc_residual).
+// A step that would make A singular or flip it (β ≤ 0) is rejected as invalid.
+class LtcCost final : public ceres::CostFunction {
+ public:
+  explicit LtcCost(const LtcProblem& problem) : problem_(problem) {
+    set_num_residuals(static_cast<int>(problem.samples.size()));
+    mutable_parameter_block_sizes()->push_back(4);
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const double* p = parameters[0];
+    if (!(p[0] - p[2] * p[3] > kLtcMinScale * p[0])) return false;
+    double* jac = jacobians ? jacobians[0] : nullptr;
+    const size_t n = problem_.samples.size();
+    for (size_t k = 0; k < n; ++k) residuals[k] = ltc_residual(problem_, problem_.samples[k], p, jac ? jac + 4 * k : nullptr);
     return true;
   }
 
-  static ceres::CostFunction* Create(const LtcProblem& problem) {
-    return new ceres::AutoDiffCostFunction<LtcCost, ceres::DYNAMIC, 3>(new LtcCost{&problem},
-                                                                         static_cast<int>(problem.samples.size()));
-  }
+ private:
+  const LtcProblem& problem_;
 };
+
+LtcParams clamp_to_bounds(const LtcParams& p) {
+  return {std::clamp(p.m11, kLtcMinScale, kLtcMaxScale), std::clamp(p.m22, kLtcMinScale, kLtcMaxScale),
+          std::clamp(p.m13, -kLtcMaxSkew, kLtcMaxSkew), std::clamp(p.m31, -kLtcMaxSkew, kLtcMaxSkew)};
+}
+
+// The largest parameter change, relative to the lobe's scale.
+double relative_change(const LtcParams& a, const LtcParams& b) {
+  return std::max({std::abs(b.m11 - a.m11) / a.m11, std::abs(b.m22 - a.m22) / a.m22,
+                   std::abs(b.m13 - a.m13) / std::max(a.m11, std::abs(a.m13)),
+                   std::abs(b.m31 - a.m31) / std::max(a.m11, std::abs(a.m31))});
+}
+
+LtcParams params_of(const FitResult& r) {
+  if (r.parameters.size() != 4) throw std::runtime_error("LTC solver returned no parameters");
+  return clamp_to_bounds({r.parameters[0], r.parameters[1], r.parameters[2], r.parameters[3]});
+}
 
 }  // namespace
 
+std::vector<LtcL3Error> ltc_l3_errors(double nov, double alpha, double magnitude, const std::vector<LtcLobe>& lobes,
+                                      int samples) {
+  const brdf::Vec3 v = brdf::view_from_nov(nov);
+  const auto pts = hammersley_points(std::max(1, samples));
+  return l3_errors(v, alpha, magnitude, ggx_directions(v, alpha, pts), pts, lobes);
+}
+
+LtcL3Error ltc_l3_error(double nov, double alpha, double magnitude, const LtcLobe& lobe, int samples) {
+  return ltc_l3_errors(nov, alpha, magnitude, {lobe}, samples)[0];
+}
+
+LtcProblem make_ltc_problem(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
+                            const LtcParams& proposal, int sample_sqrt) {
+  const auto pts = stratified_midpoints(std::max(1, sample_sqrt));
+  return assemble_problem(nov, alpha, magnitude, ltc_frame_from_average_direction(average_dir),
+                          ggx_directions(brdf::view_from_nov(nov), alpha, pts), pts, proposal);
+}
+
 double ltc_objective(const LtcProblem& problem, const LtcParams& p) { return 0.5 * sum_squared_residuals(problem, p); }
 
-double ltc_fit_error(const LtcProblem& problem, const LtcParams& p) {
-  double norm = 0.0;
-  for (const auto& s : problem.samples) norm += (s.target * s.weight) * (s.target * s.weight);
-  return norm > 0.0 ? std::sqrt(sum_squared_residuals(problem, p) / norm) : 0.0;
+LtcParams extrapolate_ltc_start(const LtcParams& prev, const LtcParams& prev2) {
+  const LtcParams e{2.0 * prev.m11 - prev2.m11, 2.0 * prev.m22 - prev2.m22, 2.0 * prev.m13 - prev2.m13,
+                    2.0 * prev.m31 - prev2.m31};
+  const bool valid = e.m11 > kLtcMinScale && e.m22 > kLtcMinScale && e.m11 - e.m13 * e.m31 > kLtcMinScale * e.m11;
+  return valid ? clamp_to_bounds(e) : prev;
+}
+
+namespace {
+
+// Rounds of the solver from one start (fit_ltc_cell).
+struct Rounds {
+  LtcParams params;
+  FitResult fit;
+  int rounds = 0;
+};
+Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& frame, const std::vector<GgxDirection>& ggx,
+                  const std::vector<brdf::Point2>& pts, const LtcParams& start, bool isotropic, const LtcSolver& solver) {
+  Rounds out{start, {}, 0};
+  while (out.rounds < kLtcMaxRounds) {
+    const auto problem = assemble_problem(nov, alpha, magnitude, frame, ggx, pts, out.params);
+    out.fit = solver(problem, out.params, isotropic);
+    const LtcParams q = params_of(out.fit);
+    ++out.rounds;
+    const bool settled = relative_change(out.params, q) <= kLtcRoundTolerance;
+    out.params = q;
+    if (settled) break;
+  }
+  return out;
+}
+
+}  // namespace
+
+LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
+                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver, int sample_sqrt) {
+  if (starts.empty()) throw std::invalid_argument("fit_ltc_cell needs a start");
+  const brdf::Vec3 v = brdf::view_from_nov(nov);
+  const LtcFrame frame = ltc_frame_from_average_direction(average_dir);
+  const auto pts = stratified_midpoints(std::max(1, sample_sqrt));
+  const auto ggx = ggx_directions(v, alpha, pts);
+  const auto heldout_pts = hammersley_points(kLtcHeldOutSamples);
+  const auto heldout_ggx = ggx_directions(v, alpha, heldout_pts);
+  auto heldout = [&](const LtcParams& x) {
+    return l3_errors(v, alpha, magnitude, heldout_ggx, heldout_pts, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
+  };
+  LtcCellFit out;
+  LtcParams best_start;
+  out.start_heldout_error = std::numeric_limits<double>::infinity();
+  for (const auto& s : starts) {
+    const LtcParams c = clamp_to_bounds(s);
+    const double e = heldout(c);
+    if (e < out.start_heldout_error) best_start = c, out.start_heldout_error = e;
+  }
+  out.heldout_error = std::numeric_limits<double>::infinity();
+  for (const auto& s : starts) {
+    const auto r = fit_rounds(nov, alpha, magnitude, frame, ggx, pts, clamp_to_bounds(s), isotropic, solver);
+    const double e = heldout(r.params);
+    ++out.fits;
+    if (e < out.heldout_error) out.params = r.params, out.fit = r.fit, out.rounds = r.rounds, out.heldout_error = e;
+    const bool rejected = out.heldout_error > out.start_heldout_error * (1.0 + kLtcHeldOutMargin);
+    if (r.rounds < kLtcRetryRounds && !rejected) break;
+  }
+  out.kept_start = out.heldout_error > out.start_heldout_error * (1.0 + kLtcHeldOutMargin);
+  if (out.kept_start) out.params = best_start, out.heldout_error = out.start_heldout_error;
+  return out;
 }
 
 FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool isotropic) {
-  double p[3] = {std::clamp(start.m11, kLtcMinScale, kLtcMaxScale), std::clamp(start.m22, kLtcMinScale, kLtcMaxScale),
-                 std::clamp(start.m13, -kLtcMaxSkew, kLtcMaxSkew)};
+  const LtcParams s0 = clamp_to_bounds(start);
+  double p[4] = {s0.m11, s0.m22, s0.m13, s0.m31};
   ceres::Problem pr;
-  pr.AddResidualBlock(LtcCost::Create(problem), nullptr, p);
-  for (int i : {0, 1}) {
-    pr.SetParameterLowerBound(p, i, kLtcMinScale);
-    pr.SetParameterUpperBound(p, i, kLtcMaxScale);
+  pr.AddResidualBlock(new LtcCost(problem), nullptr, p);
+  for (int i = 0; i < 4; ++i) {
+    pr.SetParameterLowerBound(p, i, i < 2 ? kLtcMinScale : -kLtcMaxSkew);
+    pr.SetParameterUpperBound(p, i, i < 2 ? kLtcMaxScale : kLtcMaxSkew);
   }
-  pr.SetParameterLowerBound(p, 2, -kLtcMaxSkew);
-  pr.SetParameterUpperBound(p, 2, kLtcMaxSkew);
-  if (isotropic) pr.SetManifold(p, new ceres::SubsetManifold(3, {2}));
+  if (isotropic) pr.SetManifold(p, new ceres::SubsetManifold(4, {2, 3}));
 
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
@@ -124,14 +341,14 @@ FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool 
   options.num_threads = 1;
   options.logging_type = ceres::SILENT;
   options.minimizer_progress_to_stdout = false;
-  options.function_tolerance = 1e-10;
+  options.function_tolerance = 1e-7;
   options.gradient_tolerance = 1e-14;
-  options.parameter_tolerance = 1e-10;
+  options.parameter_tolerance = 1e-6;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &pr, &summary);
 
   FitResult r;
-  r.parameters = {p[0], p[1], p[2]};
+  r.parameters = {p[0], p[1], p[2], p[3]};
   r.cost = summary.final_cost;
   r.initial_cost = summary.initial_cost;
   r.iterations = static_cast<int>(summary.iterations.size());
@@ -139,6 +356,41 @@ FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool 
   r.usable = summary.IsSolutionUsable();
   r.starts = 1;
   return r;
+}
+
+GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p) {
+  const LtcCost cost(problem);
+  const double q[4] = {p.m11, p.m22, p.m13, p.m31};
+  const double* blocks[] = {q};
+  const size_t n = problem.samples.size();
+  std::vector<double> r(n), jac(4 * n);
+  double* jacobians[] = {jac.data()};
+  GradientCheck out;
+  if (!cost.Evaluate(blocks, r.data(), jacobians)) {
+    out.report = "the cost function rejected the parameters";
+    return out;
+  }
+  // Central differences of Σ r² with steps of 1e-5 of each parameter's scale, Richardson-extrapolated.
+  const double scale[4] = {p.m11, p.m22, std::max(p.m11, std::abs(p.m13)), std::max(p.m11, std::abs(p.m31))};
+  double analytic[4] = {0, 0, 0, 0}, numeric[4], largest = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    for (size_t k = 0; k < n; ++k) analytic[c] += 2.0 * r[k] * jac[4 * k + c];
+    auto diff = [&](double h) {
+      double a[4] = {q[0], q[1], q[2], q[3]}, b[4] = {q[0], q[1], q[2], q[3]};
+      a[c] += h, b[c] -= h;
+      return (sum_squared_residuals(problem, {a[0], a[1], a[2], a[3]}) -
+              sum_squared_residuals(problem, {b[0], b[1], b[2], b[3]})) / (2.0 * h);
+    };
+    const double h = 1e-5 * scale[c];
+    numeric[c] = (4.0 * diff(h) - diff(2.0 * h)) / 3.0;
+    largest = std::max({largest, std::abs(analytic[c]), std::abs(numeric[c])});
+  }
+  for (int c = 0; c < 4; ++c) {
+    out.max_relative_error = std::max(out.max_relative_error, std::abs(analytic[c] - numeric[c]) / std::max(largest, 1e-300));
+    out.report += fmt::format("d/dθ{}: analytic {:.10g}, numeric {:.10g}\n", c, analytic[c], numeric[c]);
+  }
+  out.ok = true;
+  return out;
 }
 
 }  // namespace fl::fit

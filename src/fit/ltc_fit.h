@@ -4,6 +4,7 @@
 // Cosines"). Ceres stays inside ltc_fit.cpp; callers see LtcProblem, LtcParams and FitResult.
 #include <array>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <vector>
 
@@ -13,12 +14,17 @@
 namespace fl::fit {
 
 // The free entries of the isotropic LTC matrix in its frame (X, Y, Z):
-// M = [X Y Z] · A, A = [[m11, 0, m13], [0, m22, 0], [0, 0, 1]] (row-major), as in Heitz's fitLTC.cpp.
+// M = [X Y Z] · A, A = [[m11, 0, m13], [0, m22, 0], [m31, 0, 1]] (row-major). Heitz's fitLTC.cpp fits
+// m11, m22, m13 with the frame's Z on the lobe's average direction; m31 tilts the LTC's frame in the
+// plane of incidence away from that direction. M is then any matrix of the form
+// [[a, 0, b], [0, c, 0], [d, 0, e]] up to scale, the four entries the LTC texture stores, so the fit
+// chooses from every LTC the texture can hold.
 struct LtcParams {
-  double m11 = 1.0, m22 = 1.0, m13 = 0.0;
+  double m11 = 1.0, m22 = 1.0, m13 = 0.0, m31 = 0.0;
 };
 
-// Bounds of the fit: A stays invertible (m11, m22 > 0) and the lobe stays representable.
+// Bounds of the fit: A stays invertible (m11, m22 > 0, and the fit keeps det = m22 (m11 − m13 m31) > 0)
+// and the lobe stays representable.
 constexpr double kLtcMinScale = 1e-7;
 constexpr double kLtcMaxScale = 1e3;
 constexpr double kLtcMaxSkew = 1e3;
@@ -32,16 +38,10 @@ LtcFrame ltc_frame_from_average_direction(const brdf::Vec3& average_dir);
 
 // Heitz et al. 2016, eq. 3: the LTC density D(ω) = D_o(ω_o) ∂ω_o/∂ω with ω_o = M⁻¹ω/‖M⁻¹ω‖,
 // D_o(ω_o) = max(0, z_o)/π (the clamped cosine, unit integral) and ∂ω_o/∂ω = |M⁻¹| / ‖M⁻¹ω‖³.
-// In frame coordinates (x, y, z) of a unit ω: M⁻¹ω = ((x − m13 z)/m11, y/m22, z), |M⁻¹| = 1/(m11 m22),
-// so D(ω) = max(0, z) / (π m11 m22 ‖M⁻¹ω‖⁴).
-template <class T>
-T ltc_density(const T& m11, const T& m22, const T& m13, double x, double y, double z) {
-  if (z <= 0.0) return T(0.0);
-  const T ox = (x - m13 * z) / m11;
-  const T oy = y / m22;
-  const T len2 = ox * ox + oy * oy + z * z;
-  return z / (std::numbers::pi * m11 * m22 * len2 * len2);
-}
+// In frame coordinates (x, y, z) of a unit ω, with β = m11 − m13 m31 the determinant of A's xz-block:
+// M⁻¹ω = ((x − m13 z)/β, y/m22, (m11 z − m31 x)/β) and |M⁻¹| = 1/(m22 β), so
+// D(ω) = max(0, (M⁻¹ω)_z) / (π m22 β ‖M⁻¹ω‖⁴).
+double ltc_density(const LtcParams& p, double x, double y, double z);
 
 // The full matrix M (row-major, world coordinates) and its inverse.
 struct LtcMatrix {
@@ -51,37 +51,111 @@ struct LtcMatrix {
 LtcMatrix ltc_matrix(const LtcFrame& frame, const LtcParams& p);
 LtcMatrix inverse(const LtcMatrix& a);
 
+// An LTC in world coordinates given by any invertible M (a fitted cell's ltc_matrix, or a published
+// table's matrix). M's scale cancels: the density depends on the direction of M⁻¹ω only.
+struct LtcLobe {
+  LtcMatrix m, m_inv;
+  double abs_det_m_inv = 1;
+};
+LtcLobe ltc_lobe(const LtcMatrix& m);
+// Heitz et al. 2016, eq. 3 with D_o = max(0, z_o)/π: D(ω) = max(0, (M⁻¹ω)_z) |M⁻¹| / (π ‖M⁻¹ω‖⁴).
+double ltc_lobe_density(const LtcLobe& lobe, const brdf::Vec3& w);
+// ω = M ω_o / ‖M ω_o‖ with ω_o drawn from the clamped cosine (cos θ_o = √u1, φ_o = 2π u2); its
+// density is ltc_lobe_density.
+brdf::Vec3 sample_ltc_lobe(const LtcLobe& lobe, double u1, double u2);
+
+// The density of l = reflect(v, h) with h drawn from the GGX visible normals of v
+// (brdf::ggx_vndf_reflection_pdf at h = normalize(v + l)); zero where h is below the surface.
+double ggx_vndf_direction_pdf(const brdf::Vec3& v, const brdf::Vec3& l, double alpha);
+
+// The error of an LTC against the GGX lobe it stands for, Heitz et al. 2016's fitting error
+// (ltc_code fit/fitLTC.cpp, computeError): E₃ = ∫ |ρ cos − n_D D_LTC|³ dω over the sphere, estimated by
+// multiple importance sampling of `samples` GGX visible-normal directions and `samples` LTC
+// directions with the balance heuristic, each direction contributing f / (samples·(p_vndf + p_ltc)).
+// The directions come from the Hammersley set of `samples` points, not from the stratified midpoints
+// a fit uses, so the estimate is held out. B₃ = ∫ (ρ cos)³ dω by the same directions;
+// relative() = (E₃ / B₃)^⅓ is scale-free, comparable across cells.
+struct LtcL3Error {
+  double error = 0, lobe = 0;
+  double relative() const { return lobe > 0.0 ? std::cbrt(error / lobe) : 0.0; }
+};
+LtcL3Error ltc_l3_error(double nov, double alpha, double magnitude, const LtcLobe& lobe, int samples);
+// The same for several LTCs of one cell; the GGX directions are shared.
+std::vector<LtcL3Error> ltc_l3_errors(double nov, double alpha, double magnitude, const std::vector<LtcLobe>& lobes,
+                                      int samples);
+
 // One fixed direction of the fit, in LTC frame coordinates, with the lobe value there.
 struct LtcSample {
   double x = 0, y = 0, z = 0;
   double target = 0;  // ρ·cos of the GGX lobe (no Fresnel)
-  double weight = 0;  // 1/√(q·count), q the mixture density the direction was drawn from
+  double weight = 0;  // 1/√(n (p_vndf + p_proposal) B₃): the MIS weight, normalized by the lobe's L3 norm
 };
 
-// What one cell's fit needs. The objective is the L2 error ∫ (ρ cos − n_D·D_LTC)² dω, estimated
-// with fixed directions drawn half from the GGX visible-normal distribution and half uniformly on
-// the sphere (multiple importance sampling with the balance heuristic, q = ½ p_vndf + ½/(4π)).
-// Heitz's reference minimizes an L3 error with Nelder–Mead; an L2 error makes it a least-squares
-// problem that Ceres solves directly.
+// What one cell's fit needs. The objective is Heitz et al. 2016's L3 error ∫ |ρ cos − n_D·D_LTC|³ dω
+// relative to B₃ = ∫ (ρ cos)³ dω, estimated with n = sample_sqrt² fixed directions drawn from the GGX
+// visible normals and n drawn from a proposal LTC (multiple importance sampling, balance heuristic:
+// each direction weighs 1/(n (p_vndf + p_proposal))). Sampling the LTC itself, as Heitz's fitLTC.cpp
+// does, puts directions wherever the LTC has mass, so a lobe cannot hide between the directions.
+// Residual k = d_k √|d_k| · w_k with d_k = ρ cos(ω_k) − n_D D_LTC(ω_k): ½ Σ r² = ½ E₃ / B₃, a least-squares
+// problem for Ceres. It is sharpest near the proposal.
 struct LtcProblem {
   double nov = 1, alpha = 1;
   double magnitude = 1;  // n_D: the LTC is scaled to the lobe's integral
   LtcFrame frame;
+  LtcParams proposal;
   std::vector<LtcSample> samples;
 };
-// sample_sqrt² directions from each strategy (stratified midpoints (i + ½)/k).
-constexpr int kLtcDefaultSampleSqrt = 24;
+// sample_sqrt² directions from each strategy (stratified midpoints (i + ½)/k). The estimate is unbiased
+// for every LTC whose support the proposal or the visible normals cover (the proposal's hemisphere
+// tilts with m31, so fit_ltc_cell redraws the proposal at the fit).
+constexpr int kLtcDefaultSampleSqrt = 16;
 LtcProblem make_ltc_problem(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
-                            int sample_sqrt = kLtcDefaultSampleSqrt);
+                            const LtcParams& proposal, int sample_sqrt = kLtcDefaultSampleSqrt);
 
-// ½ Σ r² over the problem's residuals (the Ceres cost of the same parameters).
+// ½ Σ r² over the problem's residuals (the Ceres cost of the same parameters): half the in-sample
+// E₃ / B₃.
 double ltc_objective(const LtcProblem& problem, const LtcParams& p);
-// Relative L2 error of the fitted lobe: √(Σ r² / Σ (target·weight)²).
-double ltc_fit_error(const LtcProblem& problem, const LtcParams& p);
 
-// Fits one cell with Ceres (Levenberg–Marquardt, bounds above) from `start`. With `isotropic`, m13
-// is held at its start value (the lobe at normal incidence is rotationally symmetric).
-// FitResult::parameters = {m11, m22, m13}.
+// One solve on a problem's fixed directions from `start`; with `isotropic`, m13 and m31 are held at
+// their start values (the lobe at normal incidence is rotationally symmetric).
+// FitResult::parameters = {m11, m22, m13, m31}.
+using LtcSolver = std::function<FitResult(const LtcProblem&, const LtcParams& start, bool isotropic)>;
+// Ceres, Levenberg–Marquardt within the bounds above.
 FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool isotropic);
+// The fit's analytic Jacobian at `p` through the gradient it gives, 2 Jᵀr = ∇ Σ r², against central
+// differences of Σ r² (the residuals d √|d| are not twice differentiable where d = 0, so differences of
+// single residuals are inaccurate there; Σ |d|³ is). max_relative_error is relative to the largest
+// gradient component; the report lists both gradients.
+GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p);
+
+// The start for a cell from the two cells before it along a row: the linear extrapolation
+// 2·prev − prev2, or prev where that is not a valid LTC (m11, m22 or m11 − m13 m31 not positive).
+LtcParams extrapolate_ltc_start(const LtcParams& prev, const LtcParams& prev2);
+
+// A cell's fit. From a start, rounds of `solver`, each on the fixed GGX directions and directions
+// drawn from the previous round's LTC (the first from the start's), until no parameter moves by more
+// than kLtcRoundTolerance (at most kLtcMaxRounds). The starts (the continuation of the neighbouring
+// cells first) are fitted in order; the next is tried only when a fit needed kLtcRetryRounds rounds or
+// more (its optimum was far from its start, where the first proposals sample it poorly) or was rejected.
+// The held-out check, on kLtcHeldOutSamples fresh directions (the Hammersley set of ltc_l3_errors):
+// the fit with the lowest held-out error is kept unless it is worse than the best start by more than
+// kLtcHeldOutMargin, and then the cell keeps that start.
+constexpr int kLtcMaxRounds = 8;
+constexpr int kLtcRetryRounds = 3;
+constexpr double kLtcRoundTolerance = 1e-2;
+constexpr int kLtcHeldOutSamples = 256;
+// The held-out estimates share their GGX directions; below this their difference is sampling noise.
+constexpr double kLtcHeldOutMargin = 0.01;
+struct LtcCellFit {
+  LtcParams params;
+  FitResult fit;            // of the kept fit's last round
+  int rounds = 0;           // of the kept fit
+  int fits = 0;             // starts fitted
+  bool kept_start = false;  // the held-out check rejected every fit
+  double heldout_error = 0, start_heldout_error = 0;  // ltc_l3_error(...).relative() of the result and the best start
+};
+LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
+                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver = fit_ltc_ceres,
+                        int sample_sqrt = kLtcDefaultSampleSqrt);
 
 }  // namespace fl::fit

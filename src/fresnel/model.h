@@ -36,17 +36,18 @@ struct ParamSpec {
 // reads (named as the `lut` command writes them) and whether the Fresnel term itself is
 // pre-integrated into them. When it is not, the engine evaluates the model once per pixel at
 // `evaluated_at` (e.g. n·v) and scales the lobe's Fresnel-free integral: a stated approximation
-// whose rendered error is measured, not hidden.
+// whose rendered error is measured, not hidden. Punctual lights read no table and evaluate the
+// model exactly at each light's half vector (v·h).
 struct LightingSupport {
   std::span<const char* const> channels;
   bool fresnel_pre_integrated = false;
   const char* evaluated_at = "";
 };
 
-// Under image-based lighting (split-sum DFG table) and under LTC area lights (LTC matrix and the
-// GGX lobe's Fresnel moments). Punctual lights evaluate every model exactly, with no table.
+// Under punctual lights (no table), image-based lighting (split-sum DFG table) and LTC area lights
+// (LTC matrix and the GGX lobe's Fresnel moments).
 struct PreIntegration {
-  LightingSupport ibl, area;
+  LightingSupport punctual, ibl, area;
 };
 
 // The channels the lookup tables provide. dfg1, dfg2: the split-sum scale and bias, ∫(1 − Fc)ρ cos
@@ -66,9 +67,40 @@ inline constexpr const char* kLobeIbl[] = {kDfgScale, kDfgBias};
 inline constexpr const char* kLobeArea[] = {kLtcMatrix, kLtcNorm};
 }  // namespace lut_channel
 
+// Punctual lights: the model itself at each light's v·h, no table.
+inline constexpr LightingSupport kPunctualAtVdotH{{}, false, "v·h"};
+
 // For a model no shared table can pre-integrate: F(n·v) times the lobe's Fresnel-free integral.
-inline constexpr PreIntegration kEvaluatedAtNdotV{{lut_channel::kLobeIbl, false, "n·v"},
+inline constexpr PreIntegration kEvaluatedAtNdotV{kPunctualAtVdotH,
+                                                  {lut_channel::kLobeIbl, false, "n·v"},
                                                   {lut_channel::kLobeArea, false, "n·v"}};
+
+// A pre-integrable model's Fresnel term per channel as a combination of the tables' terms:
+// F(μ) = a + b·(1 − μ)⁵ + c·μ(1 − μ)⁶, so that the lobe integrates to a·n_D + b·f_D + c·l_D
+// (under the split sum: a·(dfg1 + dfg2) + b·dfg2 + c·dfg_f82).
+struct TableTerms {
+  double a = 0, b = 0, c = 0;
+};
+
+// A model's shader code, written in GLSL; the emitter (analysis/shader) translates it to HLSL
+// by renaming types and intrinsics (vecN → floatN, mix → lerp), so it keeps to the subset both
+// languages share: no single-argument vector constructors, no vector ternaries.
+struct ShaderHelper {
+  const char* name;    // the function it defines, emitted once per program
+  const char* source;  // the complete GLSL function
+};
+struct ShaderCode {
+  // Functions the bodies call (fresnel/exact_shader.h, or the unit's own).
+  std::span<const ShaderHelper* const> helpers;
+  // Body of vec3 fresnel_<name>(float cos_theta, <each per-channel parameter as vec3>,
+  // <each shared parameter as float>).
+  const char* body = "";
+  // Pre-integrated models only: bodies that combine the tables' channels, given as floats named
+  // like the channels (dfg1, dfg2, dfg_f82; n_d, f_d, l_d), into the lobe's Fresnel-weighted
+  // integral, with the same parameters in scope.
+  const char* dfg_body = nullptr;
+  const char* ltc_body = nullptr;
+};
 
 // A model's handle: its position in the registry. Compare, copy, and look up its spec.
 class Model {
@@ -90,6 +122,7 @@ struct ModelSpec {
   std::vector<ParamSpec> channel_params;
   std::vector<ParamSpec> shared_params;
   PreIntegration pre_integration;
+  ShaderCode shader;
   bool can_leave_unit_range;  // the curve can leave [0, 1] for some parameters (reported, not clamped)
   bool has_output_clamp;      // the kernel clamps its output; evaluate(..., unclamped) skips that
 
@@ -98,6 +131,11 @@ struct ModelSpec {
   color::RgbT<float> (*evaluate_float)(float cos_theta, const float* params);
   void (*batch_float)(const float* params, const float* cos_theta, std::size_t n, float* out);
   void (*batch_double)(const double* params, const double* cos_theta, std::size_t n, double* out);
+  // Pre-integrable models: channel c's table terms (nullptr for the others).
+  TableTerms (*table_terms)(const double* params, int channel);
+  // The closed form of the hemispherical average 2∫F(μ)μ dμ of channel c, where the unit has one
+  // (nullptr: fresnel/average.h integrates the kernel).
+  double (*closed_form_average)(const double* params, int channel);
 
   int per_channel() const { return static_cast<int>(channel_params.size()); }
   int param_count() const { return 3 * per_channel() + static_cast<int>(shared_params.size()); }

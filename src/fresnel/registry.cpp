@@ -24,6 +24,40 @@ struct Unclamped : Unit {
 };
 
 template <class Unit>
+constexpr bool kHasTableTerms = requires(const double* p) { Unit::table_terms(p, p); };
+template <class Unit>
+constexpr bool kHasAverage = requires(const double* p) { Unit::average(p, p); };
+
+// Channel c's parameters and the shared ones, from the flat layout.
+template <class Unit>
+const double* channel_params(const double* params, int c) {
+  return params + c * static_cast<int>(Unit::kChannelParams.size());
+}
+template <class Unit>
+const double* shared_params(const double* params) {
+  return params + 3 * static_cast<int>(Unit::kChannelParams.size());
+}
+template <class Unit>
+TableTerms table_terms_flat(const double* params, int c) {
+  return Unit::table_terms(channel_params<Unit>(params, c), shared_params<Unit>(params));
+}
+template <class Unit>
+double average_flat(const double* params, int c) {
+  return Unit::average(channel_params<Unit>(params, c), shared_params<Unit>(params));
+}
+
+template <class Unit>
+constexpr TableTerms (*table_terms_of())(const double*, int) {
+  if constexpr (kHasTableTerms<Unit>) return &table_terms_flat<Unit>;
+  else return nullptr;
+}
+template <class Unit>
+constexpr double (*average_of())(const double*, int) {
+  if constexpr (kHasAverage<Unit>) return &average_flat<Unit>;
+  else return nullptr;
+}
+
+template <class Unit>
 color::Rgb evaluate_flat(double cos_theta, const double* params, bool unclamped) {
   if (unclamped) return evaluate_unit<Unclamped<Unit>>(cos_theta, params);
   return evaluate_unit<Unit>(cos_theta, params);
@@ -37,12 +71,15 @@ ModelSpec make_spec() {
           {Unit::kChannelParams.begin(), Unit::kChannelParams.end()},
           {Unit::kSharedParams.begin(), Unit::kSharedParams.end()},
           Unit::kPreIntegration,
+          Unit::kShader,
           Unit::kCanLeaveUnitRange,
           kHasOutputClamp<Unit>,
           &evaluate_flat<Unit>,
           &evaluate_unit<Unit, float>,
           &detail::batch_channels<Unit, float>,
-          &detail::batch_channels<Unit, double>};
+          &detail::batch_channels<Unit, double>,
+          table_terms_of<Unit>(),
+          average_of<Unit>()};
 }
 
 template <class... Units>

@@ -17,7 +17,7 @@ struct LutRequest {
 
 // Each checks the request first (InputError for a size, sample count, thread count or output type
 // out of range), then computes the table.
-// DFG: out.exr (R = dfg1, G = dfg2), out.csv or out.h (a C++ header).
+// DFG: out.exr (R = dfg1, G = dfg2, B = dfg_f82), out.csv or out.h (a C++ header).
 Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // LTC moments: out.exr (RGB = n_D, f_D, l_D) or out.csv.
 Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
@@ -25,7 +25,7 @@ Output moments_lut(const LutRequest& request, const analysis::LutProgress& progr
 // factor) and FILE.csv; out.csv gives the CSV only.
 Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 
-// The C++ header of a DFG table: constexpr float kDfgLut[size * size * 2].
+// The C++ header of a DFG table: constexpr float kDfgLut[size * size * 3].
 std::string dfg_header(const analysis::DfgTable& table);
 
 }  // namespace fl::report

@@ -1,13 +1,17 @@
 #pragma once
-// `plan`'s output: the chosen model per scene material and the lookup tables, as JSON or Markdown.
+// `plan`'s output: the per-material choices, the scene-wide shader choice and the lookup tables, as
+// JSON or Markdown; and the scene's shader code.
 #include <string>
 
 #include "analysis/plan/plan.h"
+#include "analysis/shader/shader.h"
 
 namespace fl::report {
 
 std::string plan_json(const analysis::Plan& plan);
-// `cost_source` names where the costs came from (ModelCosts::source).
-std::string plan_markdown(const analysis::Plan& plan, const std::string& cost_source);
+// `costs` names where the costs came from.
+std::string plan_markdown(const analysis::Plan& plan, const analysis::PlanCosts& costs);
+// The scene-wide model's shader code for the scene's lightings, headed by what it serves.
+std::string plan_shader(const analysis::Plan& plan, analysis::ShaderLanguage lang);
 
 }  // namespace fl::report

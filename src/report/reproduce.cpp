@@ -74,9 +74,14 @@ Files reproduce_files(analysis::TableInputs& in, bool figures, const std::functi
                       "\n\n| table | what it shows | files |\n|---|---|---|\n";
   auto tables = add_tables(in, files, index, log);
   files.emplace_back("presets.json", to_json(analysis::presets_table(ctx, in.studies())));
-  files.emplace_back("presets.mtlx", presets_materialx(ctx, in.studies()));
-  index += "| presets (JSON, MaterialX) | the presets as JSON, and a MaterialX document with one "
-           "generalized_schlick_bsdf per material | [presets.json](presets.json), [presets.mtlx](presets.mtlx) |\n";
+  files.emplace_back("presets.mtlx", presets_materialx(ctx, in.studies(), MaterialxShader::GeneralizedSchlick));
+  files.emplace_back("presets_open_pbr.mtlx", presets_materialx(ctx, in.studies(), MaterialxShader::OpenPbrSurface));
+  files.emplace_back("presets_standard_surface.mtlx",
+                     presets_materialx(ctx, in.studies(), MaterialxShader::StandardSurface));
+  index += "| presets (JSON, MaterialX) | the presets as JSON, and MaterialX documents: one generalized_schlick_bsdf, "
+           "open_pbr_surface or standard_surface per material | [presets.json](presets.json), "
+           "[presets.mtlx](presets.mtlx), [presets_open_pbr.mtlx](presets_open_pbr.mtlx), "
+           "[presets_standard_surface.mtlx](presets_standard_surface.mtlx) |\n";
   std::vector<Flip> flips;
   if (figures) {
     const auto t0 = std::chrono::steady_clock::now();

@@ -16,6 +16,42 @@ std::string scalar_text(const std::string& path, const YAML::Node& n, const std:
   return n.Scalar();
 }
 
+// A roughness or a list of them, each in (0, 1].
+std::vector<double> roughness_list(const std::string& path, const YAML::Node& v, int line) {
+  std::vector<YAML::Node> items;
+  if (v.IsScalar()) items.push_back(v);
+  else if (v.IsSequence())
+    for (const auto& x : v) items.push_back(x);
+  if (items.empty()) throw InputError(path, line, "'roughness' must be a number or a list of numbers in (0, 1]");
+  std::vector<double> out;
+  for (const auto& x : items) {
+    double r = 0;
+    if (!x.IsScalar() || !parse_finite(x.Scalar(), r) || !(r > 0.0 && r <= 1.0))
+      throw InputError(path, line_of(x), fmt::format("'roughness' must be a perceptual roughness in (0, 1], not '{}'",
+                                                     x.IsScalar() ? x.Scalar() : std::string("a list or map")));
+    out.push_back(r);
+  }
+  return out;
+}
+
+// A material: a name, or a map {name, roughness}.
+SceneFileMaterial scene_material(const std::string& path, const YAML::Node& m) {
+  if (!m.IsMap()) {
+    const std::string spec = scalar_text(path, m, "each material");
+    if (spec.empty()) throw InputError(path, line_of(m), "empty material name");
+    return {spec, line_of(m), {}};
+  }
+  SceneFileMaterial out{"", line_of(m), {}};
+  for (const auto& kv : m) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+    if (key == "name") out.spec = scalar_text(path, kv.second, "a material's 'name'");
+    else if (key == "roughness") out.roughness = roughness_list(path, kv.second, line_of(kv.first));
+    else throw InputError(path, line_of(kv.first), fmt::format("unknown material key '{}' (expected name, roughness)", key));
+  }
+  if (out.spec.empty()) throw InputError(path, out.line, "a material given as a map needs a 'name'");
+  return out;
+}
+
 }  // namespace
 
 SceneFile read_scene_file(const std::string& path) {
@@ -33,11 +69,7 @@ SceneFile read_scene_file(const std::string& path) {
       have_materials = true;
       if (!v.IsSequence() || v.size() == 0)
         throw InputError(path, line, "'materials' must be a non-empty list of material names, database pages or files");
-      for (const auto& m : v) {
-        const std::string spec = scalar_text(path, m, "each material");
-        if (spec.empty()) throw InputError(path, line_of(m), "empty material name");
-        s.materials.push_back({spec, line_of(m)});
-      }
+      for (const auto& m : v) s.materials.push_back(scene_material(path, m));
     } else if (key == "max_de00") {
       double x = 0;
       if (!v.IsScalar() || !parse_finite(v.Scalar(), x) || !(x > 0.0))
@@ -61,8 +93,11 @@ SceneFile read_scene_file(const std::string& path) {
         else if (l == "area") s.area = true;
         else throw InputError(path, line_of(x), fmt::format("unknown lighting '{}' (expected punctual, ibl or area)", l));
       }
+    } else if (key == "roughness") {
+      s.roughness = roughness_list(path, v, line);
     } else {
-      throw InputError(path, line, fmt::format("unknown key '{}' (expected materials, max_de00, space, lighting)", key));
+      throw InputError(path, line,
+                       fmt::format("unknown key '{}' (expected materials, max_de00, space, lighting, roughness)", key));
     }
   }
   if (!have_materials) throw InputError(path, 1, "missing 'materials' (a list of material names, database pages or files)");

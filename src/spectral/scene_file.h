@@ -1,9 +1,12 @@
 #pragma once
 // Scene files for `plan`, read as written (the defaults are analysis/plan.h's). A YAML map:
-//   materials: [gold, main/Cu/nk/Johnson, my_glass.yml]   # catalog names, database pages or files
+//   materials: [gold, main/Cu/nk/Johnson, my_glass.yml]   # catalog names, database pages or files,
+//                                                        # or {name: gold, roughness: 0.3 | [0.2, 0.5]}
 //   max_de00: 1.0                                        # optional RMS ΔE2000 budget
 //   space: acescg                                        # optional working space
 //   lighting: [punctual, ibl, area]                      # optional, any of these (or one of them)
+//   roughness: [0.2, 0.6]                                # optional, every material's default
+// Roughness is perceptual (α = roughness²), in (0, 1].
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +16,7 @@ namespace fl::spectral {
 struct SceneFileMaterial {
   std::string spec;  // as written
   int line = 0;      // 1-based line in the scene file
+  std::vector<double> roughness;  // empty: not given
 };
 
 struct SceneFile {
@@ -22,11 +26,12 @@ struct SceneFile {
   std::string space;                        // empty: not given
   int space_line = 0;
   bool punctual = false, ibl = false, area = false;  // the lighting listed
+  std::vector<double> roughness;                     // empty: not given
 };
 
 // InputError naming the file and line for a missing file, a directory, an empty file, invalid
-// YAML, an unknown key, an empty or non-string material list, an unknown lighting, or a budget
-// that is not a positive number.
+// YAML, an unknown key, an empty or non-string material list, an unknown lighting, a budget
+// that is not a positive number, or a roughness outside (0, 1].
 SceneFile read_scene_file(const std::string& path);
 
 }  // namespace fl::spectral

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/lut/ltc_reference.h"
 #include "analysis/lut/lut.h"
 #include "brdf/ggx.h"
 #include "fit/ltc_fit.h"
@@ -41,21 +42,22 @@ constexpr double kQuadratureTolerance = 3e-4;
 // The mirror limit at α = 1e-4: Λ ∝ α² tan²θ, and the lobe's spread shifts the mean v·h by
 // O(α² log 1/α) (GGX slopes have heavy tails): ~1e-6 for n·v ≥ 0.15.
 constexpr double kMirrorTolerance = 1e-5;
-// A fitted LTC integrates to one, by quadrature over its frame's hemisphere (measured 4e-16).
+// A fitted LTC integrates to one, by quadrature over its support, a hemisphere (measured 2e-15).
 constexpr double kLtcUnitIntegralTolerance = 1e-9;
 // A fitted LTC lobe against the GGX lobe, relative L2 error by quadrature, over ltc_code's published
-// fit of the same cell. The error itself is large towards grazing (0.29 at n·v = 0.27, α = 0.33,
-// for ltc_code's fit as for ours): the three-parameter LTC family cannot follow the GGX lobe there;
-// what can be asked of a fit is to do as well as the reference (measured ratio ≤ 1.012).
+// fit of the same cell. The error itself is large towards grazing (0.29 for ltc_code's fit at
+// n·v = 0.27, α = 0.33, 0.19 for ours): an LTC cannot follow the GGX lobe there; what can be asked of
+// a fit is to do as well as the reference. Neither fit minimizes this error; where both are near
+// the same optimum (normal incidence, α = 1) ours is up to 1.2 % above (measured ratio ≤ 1.012).
 constexpr double kLobeAgainstLtcCodeRatio = 1.02;
 // ltc_code's n_D (float, stratified samples) against the quadrature: per cell and on average.
 constexpr double kLtcCodeNormTolerance = 1.5e-2;
 constexpr double kLtcCodeNormMeanTolerance = 2e-3;
 // The ltc_1 texture's lobe against the fit's density: the same function, only rounding.
 constexpr double kTextureDensityTolerance = 1e-9;
-// The fit error the table reports (sample estimate) against the same error by quadrature
-// (measured ≤ 1e-3).
-constexpr double kFitErrorEstimateTolerance = 2e-3;
+// The held-out error the table reports (256 + 256 fresh directions) against the same error by
+// quadrature, relative (measured ≤ 6 %).
+constexpr double kFitErrorEstimateTolerance = 0.1;
 // The horizon-clipped sphere form factor against a quadrature over the cap.
 constexpr double kFormFactorTolerance = 1e-4;
 
@@ -124,6 +126,7 @@ TEST(Lut, MirrorLimit) {
     const auto mo = integrate_moments(nov, kAlpha);
     EXPECT_NEAR(dfg.dfg1, 1 - m5, kMirrorTolerance) << nov;
     EXPECT_NEAR(dfg.dfg2, m5, kMirrorTolerance) << nov;
+    EXPECT_NEAR(dfg.dfg_f82, nov * m5 * m, kMirrorTolerance) << nov;
     EXPECT_NEAR(mo.n_d, 1.0, kMirrorTolerance) << nov;
     EXPECT_NEAR(mo.f_d, m5, kMirrorTolerance) << nov;
     EXPECT_NEAR(mo.l_d, nov * m5 * m, kMirrorTolerance) << nov;
@@ -167,9 +170,10 @@ TEST(Lut, ResultsDoNotDependOnThreads) {
 // Max |table − quadrature| over every cell of both grids; also run at 64×64 by hand with
 // --gtest_also_run_disabled_tests (FullTables).
 struct MaxDiff {
-  double dfg1 = 0, dfg2 = 0, n_d = 0, f_d = 0, l_d = 0;
+  double dfg1 = 0, dfg2 = 0, dfg_f82 = 0, n_d = 0, f_d = 0, l_d = 0;
 };
-MaxDiff compare_with_quadrature(int size, int samples) {
+// The DFG table only, at every cell of a size × size grid.
+MaxDiff compare_dfg_with_quadrature(int size, int samples) {
   MaxDiff m;
   const auto dfg = dfg_table(dfg_grid(size), options(samples));
   for (int j = 0; j < size; ++j)
@@ -178,7 +182,12 @@ MaxDiff compare_with_quadrature(int size, int samples) {
       const auto& c = dfg.cells[dfg.grid.index(i, j)];
       m.dfg1 = std::max(m.dfg1, std::abs(c.dfg1 - ref.dfg1));
       m.dfg2 = std::max(m.dfg2, std::abs(c.dfg2 - ref.dfg2));
+      m.dfg_f82 = std::max(m.dfg_f82, std::abs(c.dfg_f82 - ref.l_d));
     }
+  return m;
+}
+MaxDiff compare_with_quadrature(int size, int samples) {
+  MaxDiff m = compare_dfg_with_quadrature(size, samples);
   const auto mom = moments_table(ltc_grid(size), options(samples));
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i) {
@@ -197,9 +206,19 @@ TEST(Lut, TablesAgreeWithQuadrature) {
               m.dfg2, m.n_d, m.f_d, m.l_d);
   EXPECT_LT(m.dfg1, kQuadratureTolerance);
   EXPECT_LT(m.dfg2, kQuadratureTolerance);
+  EXPECT_LT(m.dfg_f82, kQuadratureTolerance);
   EXPECT_LT(m.n_d, kQuadratureTolerance);
   EXPECT_LT(m.f_d, kQuadratureTolerance);
   EXPECT_LT(m.l_d, kQuadratureTolerance);
+}
+
+// The DFG F82 channel ∫ μ(1 − μ)⁶ ρ cos over the full 64² table `lut dfg` writes by default, as
+// `lut dfg` computes it (kLutSamples per texel), against the quadrature.
+TEST(Lut, DfgF82ChannelAgreesWithQuadratureOnTheFull64Grid) {
+  constexpr double kDfgF82Tolerance = 2e-3;
+  const auto m = compare_dfg_with_quadrature(64, kLutSamples);
+  std::printf("max |dfg_f82 - quadrature| at 64x64: %.3g (dfg1 %.3g, dfg2 %.3g)\n", m.dfg_f82, m.dfg1, m.dfg2);
+  EXPECT_LT(m.dfg_f82, kDfgF82Tolerance);
 }
 
 TEST(Lut, DISABLED_FullTablesAgreeWithQuadrature) {
@@ -211,53 +230,12 @@ TEST(Lut, DISABLED_FullTablesAgreeWithQuadrature) {
 
 // ---- ltc_code's published fit (Heitz, Dupuy, Hill & Neubelt 2016; shared/testdata/ltc_code).
 
-// fit/results/ltc.inc: 64 × 64 cells at index a + 64·t (a: roughness a/63, t: x = t/63 with
-// n·v = 1 − x², the ltc_grid(64) axes), each a glm mat3 (column-major) and the norm n_D.
-struct LtcCodeTable {
-  std::vector<std::array<double, 9>> m_inv;  // row-major here
-  std::vector<double> magnitude;
-  bool loaded = false;
-};
-
-std::vector<double> numbers_after(const std::string& text, const std::string& name, size_t count) {
-  std::vector<double> out;
-  size_t p = text.find(name);
-  if (p == std::string::npos) return out;
-  p = text.find('{', p);
-  const char* c = text.c_str() + p;
-  while (out.size() < count && *c) {
-    if (std::isdigit(static_cast<unsigned char>(*c)) || *c == '-' || *c == '.') {
-      char* end = nullptr;
-      out.push_back(std::strtod(c, &end));
-      c = end;
-    } else {
-      ++c;
-    }
-  }
-  return out;
-}
-
-const LtcCodeTable& ltc_code() {
-  static const LtcCodeTable t = [] {
-    LtcCodeTable r;
-    std::ifstream in(std::string(FL_SHARED_TESTDATA) + "/ltc_code/ltc.inc");
-    const std::string text(std::istreambuf_iterator<char>(in), {});
-    constexpr size_t kCells = 64 * 64;
-    const auto minv = numbers_after(text, "tabMinv[size*size]", 9 * kCells);
-    r.magnitude = numbers_after(text, "tabMagnitude[size*size]", kCells);
-    if (minv.size() != 9 * kCells || r.magnitude.size() != kCells) return r;
-    for (size_t k = 0; k < kCells; ++k) {
-      std::array<double, 9> m{};
-      for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) m[3 * row + col] = minv[9 * k + 3 * col + row];
-      r.m_inv.push_back(m);
-    }
-    r.loaded = true;
-    return r;
-  }();
+// fit/results/ltc.inc read by analysis/lut/ltc_reference.h (its reader is tested in test_ltc_reference.cpp),
+// in ltc_grid(64)'s cell order.
+const LtcReferenceTable& ltc_code() {
+  static const LtcReferenceTable t = read_ltc_code_table(std::string(FL_SHARED_TESTDATA) + "/ltc_code/ltc.inc");
   return t;
 }
-int ltc_code_index(int t_nov, int a_roughness) { return a_roughness + 64 * t_nov; }
 
 // ltc_code estimated n_D in float with stratified GGX-NDF samples (32 × 32 per cell): its values
 // scatter about the quadrature here by up to ~1e-2 with alternating sign (measured 1.15e-2 max,
@@ -266,13 +244,12 @@ int ltc_code_index(int t_nov, int a_roughness) { return a_roughness + 64 * t_nov
 // where ltc_code's values sit 0.06 below, is left out; the quadrature and the table agree there.
 TEST(Lut, NormMatchesLtcCode) {
   const auto& lc = ltc_code();
-  ASSERT_TRUE(lc.loaded) << "missing shared/testdata/ltc_code/ltc.inc";
   const auto grid = ltc_grid(64);
   double worst = 0, sum = 0;
   int cells = 0;
   for (int t = 0; t < 63; t += 7)
     for (int a = 7; a < 64; a += 7) {
-      const double diff = reference_moments(grid.nov[t], grid.alpha[a]).n_d - lc.magnitude[ltc_code_index(t, a)];
+      const double diff = reference_moments(grid.nov[t], grid.alpha[a]).n_d - lc.magnitude[grid.index(t, a)];
       worst = std::max(worst, std::abs(diff));
       sum += diff;
       ++cells;
@@ -288,6 +265,23 @@ TEST(Lut, NormMatchesLtcCode) {
 // ∫ f over the sphere in the LTC frame's polar coordinates (θ from Z), panels in θ.
 double integrate_sphere(const std::function<double(const brdf::Vec3&)>& f, double theta_end) {
   return test::integrate_sphere([&](double x, double y, double z) { return f({x, y, z}); }, theta_end);
+}
+
+// Relative L3 distance (E₃/B₃)^⅓ between ρ cos and an approximation of it, over the sphere in polar
+// coordinates about a frame's Z.
+double relative_l3(const brdf::Vec3& v, double alpha, const fit::LtcFrame& frame,
+                   const std::function<double(const brdf::Vec3&)>& approx) {
+  auto in_frame = [&](const std::function<double(const brdf::Vec3&)>& f) {
+    return test::integrate_sphere(
+        [&](double x, double y, double z) {
+          return f({x * frame.x.x + y * frame.y.x + z * frame.z.x, x * frame.x.y + y * frame.y.y + z * frame.z.y,
+                    x * frame.x.z + y * frame.y.z + z * frame.z.z});
+        },
+        kPi, alpha);
+  };
+  const double e3 = in_frame([&](const brdf::Vec3& w) { return std::pow(std::abs(ref::lobe_cos(v, w, alpha) - approx(w)), 3); });
+  const double b3 = in_frame([&](const brdf::Vec3& w) { return std::pow(ref::lobe_cos(v, w, alpha), 3); });
+  return std::cbrt(e3 / b3);
 }
 
 // Relative L2 distance between ρ cos and an approximation of it, over the sphere.
@@ -308,12 +302,13 @@ double relative_l2(const brdf::Vec3& v, double alpha, const std::function<double
 }
 
 // ltc_grid(8) samples the same axes as ltc_code's 64 × 64 table at every ninth cell (i/7 = 9i/63),
-// so both fits can be judged on one metric: the relative L2 error against the GGX lobe by
-// quadrature. Our fit minimizes an L2 error, ltc_code's an L3-style one, so ours may not be worse.
+// so both fits can be judged on a metric neither minimizes: the relative L2 error against the GGX
+// lobe by quadrature (both minimize Heitz's L3 error). The held-out error the table reports (256 + 256
+// fresh directions) against the relative L3 error of the same LTC by quadrature.
 TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
   constexpr int size = 8, kLtcCodeStride = 9;
   const auto& lc = ltc_code();
-  ASSERT_TRUE(lc.loaded) << "missing shared/testdata/ltc_code/ltc.inc";
+  const auto grid64 = ltc_grid(64);
   const auto t = fit_ltc_table(size, options(2048));
   int checked = 0;
   for (int j = size / 2; j < size; ++j)
@@ -323,25 +318,29 @@ TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
       const auto& mo = t.moments[k];
       EXPECT_TRUE(c.fit.usable) << i << "," << j;
       const auto frame = i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(mo.average_dir);
-      // The normalized LTC: polar coordinates about the frame's Z (it vanishes for z < 0 there).
-      const double unit = integrate_sphere(
-          [&](const brdf::Vec3& w) { return fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, w.x, w.y, w.z); },
-          kPi / 2);
+      // The normalized LTC over its support, the hemisphere ω·(−m31, 0, m11) > 0 of its frame.
+      const double axis = std::hypot(c.params.m31, c.params.m11);
+      const double unit = test::integrate_hemisphere_about(
+          -c.params.m31 / axis, c.params.m11 / axis,
+          [&](double x, double y, double z) { return fit::ltc_density(c.params, x, y, z); });
       EXPECT_NEAR(unit, 1.0, kLtcUnitIntegralTolerance) << i << "," << j;
 
       const brdf::Vec3 v = brdf::view_from_nov(t.grid.nov[i]);
       const double alpha = t.grid.alpha[j];
       const double ours = relative_l2(v, alpha, [&](const brdf::Vec3& w) {
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
-        return mo.n_d * fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, f.x, f.y, f.z);
+        return mo.n_d * fit::ltc_density(c.params, f.x, f.y, f.z);
       });
-      const int lk = ltc_code_index(kLtcCodeStride * i, kLtcCodeStride * j);
+      const int lk = grid64.index(kLtcCodeStride * i, kLtcCodeStride * j);
       const double theirs = relative_l2(
-          v, alpha, [&](const brdf::Vec3& w) { return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk], w); });
-      std::printf("n.v %.3f alpha %.3f: relative L2 ours %.4f (estimate %.4f), ltc_code %.4f\n", t.grid.nov[i], alpha,
-                  ours, c.fit_error, theirs);
+          v, alpha, [&](const brdf::Vec3& w) { return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk].m, w); });
+      const double l3 = relative_l3(v, alpha, frame, [&](const brdf::Vec3& w) {
+        return mo.n_d * ref::ltc_from_inverse(c.m_inv.m, w);
+      });
+      std::printf("n.v %.3f alpha %.3f: relative L2 ours %.4f, ltc_code %.4f; relative L3 %.4f (held-out estimate %.4f)\n",
+                  t.grid.nov[i], alpha, ours, theirs, l3, c.fit_error);
       EXPECT_LT(ours, theirs * kLobeAgainstLtcCodeRatio) << i << "," << j;
-      EXPECT_NEAR(c.fit_error, ours, kFitErrorEstimateTolerance) << i << "," << j;
+      EXPECT_NEAR(c.fit_error, l3, kFitErrorEstimateTolerance * l3) << i << "," << j;
       ++checked;
     }
   EXPECT_EQ(checked, 16);
@@ -370,7 +369,7 @@ TEST(Ltc, TextureEntriesReproduceTheFittedLobe) {
         const double theta = (b + 0.5) * kPi / 12, phi = (a + 0.5) * kPi / 6;
         const brdf::Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
-        const double fitted = fit::ltc_density(c.params.m11, c.params.m22, c.params.m13, f.x, f.y, f.z);
+        const double fitted = fit::ltc_density(c.params, f.x, f.y, f.z);
         EXPECT_NEAR(ref::ltc_from_inverse(shader_minv, w), fitted, kTextureDensityTolerance * std::max(1.0, fitted))
             << "cell " << k << " direction " << a << "," << b;
       }

@@ -2,12 +2,19 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdio>
+#include <map>
+#include <set>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "analysis/lut/lut.h"
+#include "analysis/lut/lut_layout.h"
 #include "report/exr.h"
 #include "test_util.h"
 
@@ -26,7 +33,7 @@ TEST(LutCli, WritesTablesDeterministically) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
   const auto csv = slurp(tmp.path() + "/a.csv");
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "nov,perceptual_roughness,alpha,dfg1,dfg2");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "nov,perceptual_roughness,alpha,dfg1,dfg2,dfg_f82");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 17);
   r = test::run_command(lut + "dfg --size 4 --samples 256 --threads 1 --out '" + tmp.path() + "/b.csv'");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -34,7 +41,25 @@ TEST(LutCli, WritesTablesDeterministically) {
 
   r = test::run_command(lut + "dfg --size 4 --samples 256 --out '" + tmp.path() + "/dfg.h'");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(slurp(tmp.path() + "/dfg.h").find("constexpr float kDfgLut[4 * 4 * 2]"), std::string::npos);
+  EXPECT_NE(slurp(tmp.path() + "/dfg.h").find("constexpr float kDfgLut[4 * 4 * 3]"), std::string::npos);
+
+  // The DFG texture holds each channel where the layout (analysis/lut/lut_layout.h) says, which the
+  // shaders and plans read: texel (0, 0) against the integrator at the first grid point.
+  r = test::run_command(lut + "dfg --size 4 --samples 256 --out '" + tmp.path() + "/dfg.exr'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto dfg = report::read_exr(tmp.path() + "/dfg.exr");
+  ASSERT_EQ(dfg.channels.size(), 3u);
+  const auto grid = analysis::dfg_grid(4);
+  const auto texel = analysis::integrate_dfg(grid.nov[0], grid.alpha[0], 256);
+  for (const auto& c : analysis::lut_textures()[0].channels) {
+    std::string component = c.components;
+    component[0] = static_cast<char>(std::toupper(component[0]));
+    const auto k = std::find(dfg.channels.begin(), dfg.channels.end(), component) - dfg.channels.begin();
+    ASSERT_LT(k, 3) << component;
+    const std::string name = c.channel;
+    const double want = name == "dfg1" ? texel.dfg1 : name == "dfg2" ? texel.dfg2 : texel.dfg_f82;
+    EXPECT_EQ(dfg.pixels[k], static_cast<float>(want)) << name;
+  }
 
   r = test::run_command(lut + "ltc-moments --size 4 --samples 256 --out '" + tmp.path() + "/m.csv'");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -68,27 +93,40 @@ TEST(LutCli, BadInputExitsTwoAndWritesNothing) {
   }
 }
 
-TEST(LutCli, F82MomentBeatsSchlickOnMetals) {
+// Every model × {ibl, area} for every metal; pre-integrated F82 is no worse than pre-integrated
+// Schlick for any metal, with either parameter set, under either lighting.
+TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
   const auto r = test::run_command(test::cli() + " -q table lut-accuracy");
   ASSERT_EQ(r.status, 0) << r.err;
   std::istringstream in(r.out);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "material,schlick_median_de00,schlick_max_de00,f82_median_de00,f82_max_de00");
-  std::vector<double> schlick, f82;
+  EXPECT_EQ(line, "material,model,parameters,curve_rms_de00,ibl,ibl_rms_de00,ibl_max_de00,area,area_rms_de00,area_max_de00");
+  std::map<std::string, std::array<double, 2>> schlick, f82;  // "material/parameters" → (ibl, area)
+  std::set<std::string> metals, models;
   while (std::getline(in, line)) {
     std::istringstream row(line);
     std::string cell;
     std::vector<std::string> cells;
     while (std::getline(row, cell, ',')) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 5u) << line;
-    schlick.push_back(std::stod(cells[1]));
-    f82.push_back(std::stod(cells[3]));
+    ASSERT_EQ(cells.size(), 10u) << line;
+    metals.insert(cells[0]);
+    models.insert(cells[1]);
+    const std::array<double, 2> e{std::stod(cells[5]), std::stod(cells[8])};
+    if (cells[1] == "schlick") schlick[cells[0] + "/" + cells[2]] = e;
+    if (cells[1] == "f82") f82[cells[0] + "/" + cells[2]] = e;
+    EXPECT_EQ(cells[4], cells[1] == "schlick" || cells[1] == "f82" ? "tables" : "F(n·v) × lobe") << line;
   }
-  ASSERT_EQ(schlick.size(), 14u);  // the catalog's metals
-  std::sort(schlick.begin(), schlick.end());
-  std::sort(f82.begin(), f82.end());
-  EXPECT_LT(f82[7] + f82[6], schlick[7] + schlick[6]);  // medians of 14 values
+  EXPECT_EQ(metals.size(), 14u);  // the catalog's metals
+  EXPECT_EQ(models.size(), 7u);   // every model
+  ASSERT_EQ(schlick.size(), 28u);
+  for (const auto& [key, s] : schlick) {
+    ASSERT_TRUE(f82.count(key)) << key;
+    std::printf("%-24s ibl schlick %.3f f82 %.3f | area schlick %.3f f82 %.3f\n", key.c_str(), s[0], f82[key][0], s[1],
+                f82[key][1]);
+    EXPECT_LE(f82[key][0], s[0]) << key << " (ibl)";
+    EXPECT_LE(f82[key][1], s[1]) << key << " (area)";
+  }
 }
 
 }  // namespace

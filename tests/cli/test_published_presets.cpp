@@ -99,7 +99,7 @@ void expect_near_rgb(const Rgb& ours, const Rgb& theirs, const std::string& what
 
 TEST(PublishedPresets, AcescgF0AndF82TintMatchPhysicallyBased) {
   const auto pub = published();
-  const auto& ours = our_presets("--space acescg --illuminant D60");
+  const auto& ours = our_presets("--space acescg");
   int checked = 0;
   for (const auto& [metal, p] : ours) {
     ASSERT_TRUE(pub.count(metal + "|acescg|f0")) << metal;
@@ -111,7 +111,7 @@ TEST(PublishedPresets, AcescgF0AndF82TintMatchPhysicallyBased) {
 }
 
 TEST(PublishedPresets, AcescgMatchesTheOpenPbrExamples) {
-  const auto& ours = our_presets("--space acescg --illuminant D60");
+  const auto& ours = our_presets("--space acescg");
   const auto rows = read_csv(kPresets + "/openpbr_examples.csv");
   int checked = 0;
   for (size_t i = 1; i < rows.size(); ++i) {
@@ -129,11 +129,10 @@ TEST(PublishedPresets, AcescgMatchesTheOpenPbrExamples) {
   EXPECT_EQ(checked, 30);
 }
 
-// Linear Rec.709 is a D65 space: the comparison needs --illuminant D65 (the tool's default
-// illuminant stays D60 whatever the space).
+// Linear Rec.709 is a D65 space, and the illuminant follows the working space: no --illuminant.
 TEST(PublishedPresets, Rec709F0AndF82TintMatchPhysicallyBasedUnderD65) {
   const auto pub = published();
-  const auto& ours = our_presets("--space lin_rec709 --illuminant D65");
+  const auto& ours = our_presets("--space lin_rec709");
   int checked = 0;
   for (const auto& [metal, p] : ours) {
     if (metal == "Cesium") {

@@ -258,3 +258,43 @@ TEST(Registry, PreIntegrationDeclarationsAreTrue) {
 
 }  // namespace
 }  // namespace fl
+
+namespace fl {
+namespace {
+
+// Parameter sets a generic check runs on: the unit's example and the middle of its fit box.
+std::vector<std::vector<double>> probe_params(const ModelSpec& spec) {
+  std::vector<double> mid;
+  for (const auto& r : spec.bounds()) mid.push_back(0.5 * (r.lo + r.hi));
+  return {fresnel::example_params(spec.model), mid};
+}
+
+// A pre-integrated model's table terms are its formula: a + b(1 − μ)⁵ + cμ(1 − μ)⁶ against the
+// unclamped kernel at 65 angles; and every declaration has the code an engine needs for it.
+TEST(Registry, TableTermsReproduceTheKernelAndShaderCodeMatchesTheDeclarations) {
+  constexpr double kTermsTolerance = 1e-12;
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto& pi = spec.pre_integration;
+    EXPECT_TRUE(pi.punctual.channels.empty()) << spec.name;
+    EXPECT_EQ(std::string(pi.punctual.evaluated_at), "v·h") << spec.name;
+    EXPECT_FALSE(std::string(spec.shader.body).empty()) << spec.name;
+    const bool pre = pi.ibl.fresnel_pre_integrated;
+    EXPECT_EQ(spec.table_terms != nullptr, pre) << spec.name;
+    EXPECT_EQ(spec.shader.dfg_body != nullptr, pre) << spec.name;
+    EXPECT_EQ(spec.shader.ltc_body != nullptr, pre) << spec.name;
+    if (!pre) continue;
+    for (const auto& p : probe_params(spec)) {
+      for (double mu : cosines(65)) {
+        const auto f = fresnel::evaluate_curve_unclamped(spec.model, p, {mu})[0];
+        for (int c = 0; c < 3; ++c) {
+          const auto t = spec.table_terms(p.data(), c);
+          EXPECT_NEAR(t.a + t.b * std::pow(1 - mu, 5) + t.c * mu * std::pow(1 - mu, 6), f[c], kTermsTolerance)
+              << spec.name << " mu " << mu;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fl

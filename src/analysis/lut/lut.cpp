@@ -49,17 +49,22 @@ LutGrid dfg_grid(int size) {
   return g;
 }
 
+double ltc_nov_at(double x) {
+  if (x <= 0.0) return 1.0;
+  return std::cos(std::min(kLtcMaxThetaRad, std::acos(std::max(-1.0, 1.0 - x * x))));
+}
+
+double ltc_alpha_at(double roughness) { return std::max(roughness * roughness, kLtcMinAlpha); }
+
 LutGrid ltc_grid(int size) {
   check_size(size);
   LutGrid g;
   g.size = size;
   for (int i = 0; i < size; ++i) {
     const double x = static_cast<double>(i) / (size - 1);
-    const double theta = std::min(kLtcMaxThetaRad, std::acos(1.0 - x * x));
-    g.nov.push_back(i == 0 ? 1.0 : std::cos(theta));
-    const double r = static_cast<double>(i) / (size - 1);
-    g.perceptual_roughness.push_back(r);
-    g.alpha.push_back(std::max(r * r, kLtcMinAlpha));
+    g.nov.push_back(ltc_nov_at(x));
+    g.perceptual_roughness.push_back(x);
+    g.alpha.push_back(ltc_alpha_at(x));
   }
   g.convention = fmt::format(
       "endpoints (Heitz's fitLTC): nov = cos(min(acos(1 - (i/{0})^2), 1.57)), perceptual_roughness = j/{0}, "
@@ -72,12 +77,15 @@ DfgTexel integrate_dfg(double nov, double alpha, int samples) {
   check_samples(samples);
   DfgTexel t;
   for_each_lobe_sample(nov, alpha, samples, [&](const LobeSample& s) {
-    const double fc = pow5(1.0 - s.voh);
+    const double m = 1.0 - s.voh;
+    const double fc = pow5(m);
     t.dfg1 += (1.0 - fc) * s.weight;
     t.dfg2 += fc * s.weight;
+    t.dfg_f82 += s.voh * fc * m * s.weight;
   });
   t.dfg1 /= samples;
   t.dfg2 /= samples;
+  t.dfg_f82 /= samples;
   return t;
 }
 
@@ -122,25 +130,30 @@ std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options,
   return cells;
 }
 
-// Fits cell (i, j) of an LTC grid from `start`; i = 0 (normal incidence) is isotropic.
-LtcCell fit_ltc_cell(const LutGrid& g, const GgxMoments& mo, int i, int j, const fit::LtcParams& start,
-                     const LtcCellFitter& fitter, int fit_sample_sqrt) {
+// Fits cell (i, j) of an LTC grid from its starts (fit::fit_ltc_cell); i = 0 (normal incidence) is isotropic.
+LtcCell fit_table_cell(const LutGrid& g, const GgxMoments& mo, int i, int j, const std::vector<fit::LtcParams>& starts,
+                       const LtcCellFitter& fitter, int fit_sample_sqrt) {
   const bool isotropic = i == 0;
   const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
-  const auto problem = fit::make_ltc_problem(g.nov[i], g.alpha[j], mo.n_d, dir, fit_sample_sqrt);
+  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter, fit_sample_sqrt);
   LtcCell c;
-  c.fit = fitter(problem, start, isotropic);
-  if (c.fit.parameters.size() != 3) throw std::runtime_error("LTC fitter returned no parameters");
-  c.params = {c.fit.parameters[0], c.fit.parameters[1], c.fit.parameters[2]};
-  c.fit_error = fit::ltc_fit_error(problem, c.params);
-  c.m = fit::ltc_matrix(problem.frame, c.params);
+  c.fit = r.fit;
+  c.params = r.params;
+  c.fit_error = r.heldout_error;
+  c.rounds = r.rounds;
+  c.kept_start = r.kept_start;
+  c.m = fit::ltc_matrix(fit::ltc_frame_from_average_direction(dir), c.params);
   c.m_inv = fit::inverse(c.m);
-  const double s = 1.0 / c.m_inv(1, 1);
-  c.inv_packed = {c.m_inv(0, 0) * s, c.m_inv(2, 0) * s, c.m_inv(0, 2) * s, c.m_inv(2, 2) * s};
+  c.inv_packed = ltc_texture_entries(c.m_inv);
   return c;
 }
 
 }  // namespace
+
+std::array<double, 4> ltc_texture_entries(const fit::LtcMatrix& m_inv) {
+  const double s = 1.0 / m_inv(1, 1);
+  return {m_inv(0, 0) * s, m_inv(2, 0) * s, m_inv(0, 2) * s, m_inv(2, 2) * s};
+}
 
 DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
@@ -199,8 +212,8 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   t.grid = ltc_grid(size);
   const auto& g = t.grid;
   t.cells.resize(static_cast<size_t>(size) * size);
-  const auto fit_cell = [&](int i, int j, const fit::LtcParams& start) {
-    t.cells[g.index(i, j)] = fit_ltc_cell(g, t.moments[g.index(i, j)], i, j, start, fitter, fit_sample_sqrt);
+  const auto fit_cell = [&](int i, int j, const std::vector<fit::LtcParams>& starts) {
+    t.cells[g.index(i, j)] = fit_table_cell(g, t.moments[g.index(i, j)], i, j, starts, fitter, fit_sample_sqrt);
   };
   // Progress counts every cell twice: once for its moments, once for its fit.
   ProgressCounter done(options.progress, 2 * size * size);
@@ -212,9 +225,9 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
     fit::LtcParams start;
     if (j < size - 1) {
       const auto& rougher = t.cells[g.index(0, j + 1)].params;
-      start = {rougher.m11, rougher.m22, 0.0};
+      start = {rougher.m11, rougher.m22, 0.0, 0.0};
     }
-    fit_cell(0, j, start);
+    fit_cell(0, j, {start});
   }
   done.add(size);
   // Stage 3: each roughness row from normal to grazing (warm starts along the row); rows in parallel.
@@ -222,7 +235,11 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
       size,
       [&](size_t row) {
         const int j = static_cast<int>(row);
-        for (int i = 1; i < size; ++i) fit_cell(i, j, t.cells[g.index(i - 1, j)].params);
+        fit_cell(1, j, {t.cells[g.index(0, j)].params});
+        for (int i = 2; i < size; ++i) {
+          const auto& prev = t.cells[g.index(i - 1, j)].params;
+          fit_cell(i, j, {fit::extrapolate_ltc_start(prev, t.cells[g.index(i - 2, j)].params), prev});
+        }
         done.add(size - 1);
       },
       options.threads);

@@ -21,8 +21,9 @@ namespace fl::analysis {
 // Quasi-Monte Carlo points per table cell. At 64×64 the DFG and moment tables stay within 2.6e-4
 // of an independent quadrature (tests/analysis/test_lut.cpp, FullTablesAgreeWithQuadrature).
 constexpr int kLutSamples = 8192;
-// Heitz's fitLTC.cpp clamps α from below so the lobe stays finite at roughness 0.
-constexpr double kLtcMinAlpha = 1e-4;
+// Heitz's fitLTC.cpp (ltc_code, MIN_ALPHA = 0.00001) clamps α from below so the lobe stays finite
+// at roughness 0; its published table is fitted at α = max(roughness², 1e-5).
+constexpr double kLtcMinAlpha = 1e-5;
 
 // The axes of a table. Cells are stored roughness-major: cell(i_nov, j_roughness) = cells[j·size + i].
 struct LutGrid {
@@ -41,12 +42,17 @@ LutGrid dfg_grid(int size);
 // 1.57 rad), perceptual roughness j/(N − 1), α = max(roughness², kLtcMinAlpha). Shaders look up
 // uv = (roughness, √(1 − n·v))·(N − 1)/N + ½/N.
 LutGrid ltc_grid(int size);
+// ltc_grid's axes at a texture coordinate in [0, 1]: n·v at x = √(1 − n·v) (θ capped at 1.57 rad), and
+// α at perceptual roughness r.
+double ltc_nov_at(double x);
+double ltc_alpha_at(double roughness);
 
 // Channels 1 and 2 of Filament's DFG table ("Physically Based Rendering in Filament", "Pre-integration
-// for multiscattering"),
-// with Fc = (1 − v·h)⁵: dfg1 = ∫ (1 − Fc) ρ cos dl, dfg2 = ∫ Fc ρ cos dl.
+// for multiscattering"), with Fc = (1 − v·h)⁵: dfg1 = ∫ (1 − Fc) ρ cos dl, dfg2 = ∫ Fc ρ cos dl; and
+// the F82 channel dfg_f82 = ∫ μ(1 − μ)⁶ ρ cos dl (μ = v·h), from the same samples, so that
+// Hoffman's F82 model F = Schlick − a·μ(1 − μ)⁶ integrates to F0·dfg1 + dfg2 − a·dfg_f82.
 struct DfgTexel {
-  double dfg1 = 0, dfg2 = 0;
+  double dfg1 = 0, dfg2 = 0, dfg_f82 = 0;
 };
 // Hill's LTC moments and the F82 moment: n_D = ∫ ρ cos, f_D = ∫ (1 − v·h)⁵ ρ cos,
 // l_D = ∫ (v·h)(1 − v·h)⁶ ρ cos, so that Hoffman's F82 model integrates to R0 n_D + (1 − R0) f_D − a l_D.
@@ -113,8 +119,12 @@ struct LtcCell {
   // in glm's column-major indexing.
   std::array<double, 4> inv_packed{};
   fit::FitResult fit;
-  double fit_error = 0;  // relative L2 error of the fitted lobe (fit::ltc_fit_error)
+  double fit_error = 0;     // held-out relative L3 error of the cell's LTC (fit::LtcCellFit::heldout_error)
+  int rounds = 0;           // fit::LtcCellFit::rounds
+  bool kept_start = false;  // fit::LtcCellFit::kept_start
 };
+// The texture's entries of one cell: (M⁻¹₀₀, M⁻¹₂₀, M⁻¹₀₂, M⁻¹₂₂) / M⁻¹₁₁ (LtcCell::inv_packed).
+std::array<double, 4> ltc_texture_entries(const fit::LtcMatrix& m_inv);
 struct LtcTable {
   LutGrid grid;
   std::vector<GgxMoments> moments;
@@ -122,15 +132,15 @@ struct LtcTable {
   std::vector<double> sphere_form_factor;  // sphere_form_factor_table(grid.size)
 };
 
-// Fits one cell from a start; the isotropic flag holds m13 (normal incidence).
-using LtcCellFitter = std::function<fit::FitResult(const fit::LtcProblem&, const fit::LtcParams&, bool isotropic)>;
+// One solve of a cell's problem from a start; the isotropic flag holds m13 and m31 (normal incidence).
+using LtcCellFitter = fit::LtcSolver;
 
-// Fits every cell of ltc_grid(size) like Heitz's fitLTC.cpp: the normal-incidence column from rough to
-// smooth, each cell starting from the rougher one; then every roughness row from normal to grazing,
-// each cell starting from the previous one. Rows run in parallel; results do not depend on threads.
+// Fits every cell of ltc_grid(size) with fit::fit_ltc_cell, in Heitz's fitLTC.cpp order: the
+// normal-incidence column from rough to smooth, each cell starting from the rougher one; then every
+// roughness row from normal to grazing, each cell starting from the previous ones (the extrapolation
+// fit::extrapolate_ltc_start first, then the previous cell). Rows run in parallel; results do not
+// depend on threads.
 LtcTable fit_ltc_table(int size, const LutOptions& options = {}, const LtcCellFitter& fitter = fit::fit_ltc_ceres,
                        int fit_sample_sqrt = fit::kLtcDefaultSampleSqrt);
-
-
 
 }  // namespace fl::analysis

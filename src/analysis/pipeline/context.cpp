@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "color/ciede2000_fast.h"
 #include "fresnel/ground_truth.h"
@@ -18,6 +19,23 @@ const Settings& validated(const Settings& s) {
   return s;
 }
 
+// A config space's white named by --ocio-white: ACES (x = 0.32168, y = 0.33767, the white of the D60
+// illuminant's ACES use), or an illuminant's own white from its spectrum and the observer.
+std::optional<color::SpaceWhite> space_white(const Settings& s, const spectral::SpectralGrid& grid,
+                                             const spectral::Observer& observer, const std::string& colord) {
+  if (s.ocio_white.empty()) return std::nullopt;
+  if (s.ocio_config.empty()) throw InputError("--ocio-white applies to the spaces of an --ocio-config only");
+  const std::string source = "white " + s.ocio_white + " given by --ocio-white";
+  if (s.ocio_white == "ACES") return color::SpaceWhite{color::xyz_from_xy({0.32168, 0.33767}), "D60", source};
+  color::Xyz w;
+  for (const auto& v : color::xyz_weights(observer, spectral::illuminant_spd(s.ocio_white, grid, colord))) {
+    w.X += v.X;
+    w.Y += v.Y;
+    w.Z += v.Z;
+  }
+  return color::SpaceWhite{{w.X / w.Y, 1.0, w.Z / w.Y}, s.ocio_white, source};
+}
+
 }  // namespace
 
 Context::Context(const Settings& s)
@@ -25,10 +43,11 @@ Context::Context(const Settings& s)
       grid_(spectral::SpectralGrid::visible(s.step_nm)),
       spaces_(s.ocio_config.empty() ? color::SpaceLibrary::builtin()
                                     : color::SpaceLibrary::from_config(s.ocio_config, s.ocio_xyz)) {
-  space_ = spaces_.space(s.space);
   const std::string colord = s.colord_dir.empty() ? spectral::default_colord_dir() : s.colord_dir;
   const auto observer = spectral::cie1931_2deg(grid_, colord);
-  const auto illuminant = spectral::illuminant_spd(s.illuminant, grid_, colord);
+  space_ = spaces_.space(s.space, space_white(s, grid_, observer, colord));
+  if (settings_.illuminant.empty()) settings_.illuminant = space_.reference_illuminant;
+  const auto illuminant = spectral::illuminant_spd(settings_.illuminant, grid_, colord);
   const auto xyz_w = color::xyz_weights(observer, illuminant);
   illuminant_white_ = {};
   for (const auto& w : xyz_w) {

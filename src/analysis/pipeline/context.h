@@ -12,7 +12,8 @@ namespace fl::analysis {
 
 struct Settings {
   std::string space = "acescg";
-  std::string illuminant = "D60";
+  std::string illuminant;    // empty: the working space's reference white illuminant
+
   std::string adaptation = "bradford";
   int angles = 91;
   double step_nm = 5.0;
@@ -20,6 +21,7 @@ struct Settings {
   std::string colord_dir;    // empty: spectral::default_colord_dir()
   std::string ocio_config;   // empty: built-in spaces
   std::string ocio_xyz;      // the config's CIE XYZ D65 space (empty: role / default name)
+  std::string ocio_white;    // a config space's white: ACES or an illuminant name (empty: from the config)
   spectral::DataPaths paths;
 };
 
@@ -29,6 +31,7 @@ class Context {
  public:
   explicit Context(const Settings& settings);
 
+  // The settings as resolved: `illuminant` is never empty (the space's reference white by default).
   const Settings& settings() const { return settings_; }
   const spectral::SpectralGrid& grid() const { return grid_; }
   const color::RgbSpace& space() const { return space_; }

@@ -1,9 +1,13 @@
 #include "analysis/plan/plan.h"
 
 #include <algorithm>
-#include <set>
+#include <cctype>
 #include <filesystem>
+#include <map>
+#include <set>
 
+#include "fresnel/average.h"
+#include "fresnel/model_set.h"
 #include "spectral/errors.h"
 #include "spectral/scene_file.h"
 
@@ -26,11 +30,22 @@ std::string resolve_relative(const std::string& scene_path, const std::string& s
 
 }  // namespace
 
+std::vector<Lighting> Scene::lightings() const {
+  std::vector<Lighting> out;
+  if (punctual) out.push_back(Lighting::Punctual);
+  if (ibl) out.push_back(Lighting::Ibl);
+  if (area) out.push_back(Lighting::Area);
+  return out;
+}
+
 Scene read_scene(const std::string& path) {
   const auto f = spectral::read_scene_file(path);
   Scene s;
   s.path = f.path;
-  for (const auto& m : f.materials) s.materials.push_back({resolve_relative(path, m.spec), m.line});
+  s.roughness = f.roughness.empty() ? std::vector<double>(kDefaultRoughness.begin(), kDefaultRoughness.end())
+                                    : f.roughness;
+  for (const auto& m : f.materials)
+    s.materials.push_back({resolve_relative(path, m.spec), m.line, m.roughness.empty() ? s.roughness : m.roughness});
   s.max_de00 = f.max_de00.value_or(kDefaultMaxDe00);
   s.space = f.space;
   s.space_line = f.space_line;
@@ -52,86 +67,133 @@ std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, const Scene
   return out;
 }
 
-PlanChoice choose_model(const MaterialStudy& study, const ModelCosts& costs, double max_de00) {
-  std::vector<PlanChoice> candidates;
-  for (const auto& r : study.models) {
-    for (int fitted = 0; fitted < 2; ++fitted) {
-      if (fitted && (!r.fitted.usable || r.fitted.parameters.empty())) continue;
-      PlanChoice c;
-      c.material = study.material->material.name;
-      c.model = r.model;
-      c.fitted = fitted != 0;
-      c.params = fitted ? r.fitted.parameters : r.derived;
-      c.rms_de00 = fitted ? r.fitted_error.rms : r.derived_error.rms;
-      c.ns_per_eval = costs.ns_per_eval(r.model);
-      c.meets_budget = c.rms_de00 <= max_de00;
-      candidates.push_back(std::move(c));
+std::vector<PlanChoice> plan_candidates(const Scene& scene, const std::vector<RenderedCandidate>& rendered,
+                                        const std::string& material, const std::vector<double>& roughness,
+                                        const PlanCosts& costs) {
+  std::vector<PlanChoice> out;
+  for (const auto& r : rendered) {
+    PlanChoice c;
+    c.material = material;
+    c.model = r.model;
+    c.fitted = r.fitted;
+    c.params = r.params;
+    c.roughness = roughness;
+    c.punctual_rms = r.punctual_rms;
+    c.ibl_rms = r.ibl.rms;
+    c.area_rms = r.area.rms;
+    c.error = -1;
+    for (Lighting l : scene.lightings()) {
+      if (r.rms_under(l) > c.error) {
+        c.error = r.rms_under(l);
+        c.error_lighting = l;
+      }
+      c.gpu_instructions += costs.gpu.of(r.model, l).instructions;
     }
+    c.ns_per_eval = costs.cpu.ns_per_eval(r.model);
+    c.meets_budget = c.error <= scene.max_de00;
+    c.f_avg = fresnel::hemispherical_average(r.model, r.params);
+    out.push_back(std::move(c));
   }
+  return out;
+}
+
+PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de00) {
   if (candidates.empty()) throw std::logic_error("no model studied");
+  std::vector<PlanChoice> sorted = candidates;
   // stable_sort keeps model_specs() order (derived before fitted) among exact ties.
-  std::stable_sort(candidates.begin(), candidates.end(), [](const PlanChoice& a, const PlanChoice& b) {
+  std::stable_sort(sorted.begin(), sorted.end(), [](const PlanChoice& a, const PlanChoice& b) {
+    if (a.gpu_instructions != b.gpu_instructions) return a.gpu_instructions < b.gpu_instructions;
     if (a.ns_per_eval != b.ns_per_eval) return a.ns_per_eval < b.ns_per_eval;
-    return a.rms_de00 < b.rms_de00;
+    return a.error < b.error;
   });
-  for (const auto& c : candidates)
-    if (c.meets_budget) return c;
-  return *std::min_element(candidates.begin(), candidates.end(),
-                           [](const PlanChoice& a, const PlanChoice& b) { return a.rms_de00 < b.rms_de00; });
+  for (auto c : sorted)
+    if (c.error <= max_de00) {
+      c.meets_budget = true;
+      return c;
+    }
+  auto best = *std::min_element(candidates.begin(), candidates.end(),
+                                [](const PlanChoice& a, const PlanChoice& b) { return a.error < b.error; });
+  best.meets_budget = false;
+  return best;
 }
 
 namespace {
 
-// The tables `lut` writes, the model channels (fresnel::lut_channel) each holds, and how to make it.
-struct LutSource {
-  const char* name;
-  const char* lighting;
-  std::vector<std::pair<const char*, std::vector<std::string>>> channels;  // model channel → file channels
-  const char* command;
-};
-const std::vector<LutSource>& lut_sources() {
-  namespace ch = fresnel::lut_channel;
-  static const std::vector<LutSource> sources{
-      {"dfg", "ibl", {{ch::kDfgScale, {"dfg1"}}, {ch::kDfgBias, {"dfg2"}}}, "fresnel-lab lut dfg --out dfg.exr"},
-      {"dfg_f82", "ibl", {{ch::kDfgF82, {"dfg_f82"}}}, "not written by fresnel-lab lut yet"},
-      {"ltc_matrix", "area", {{ch::kLtcMatrix, {"inv_m00", "inv_m20", "inv_m02", "inv_m22"}}},
-       "fresnel-lab lut ltc --out ltc.exr (ltc_1.exr)"},
-      {"ltc_moments", "area", {{ch::kLtcNorm, {"n_d"}}, {ch::kLtcSchlick, {"f_d"}}},
-       "fresnel-lab lut ltc --out ltc.exr (ltc_2.exr R, G)"},
-      {"ltc_f82_moment", "area", {{ch::kLtcF82, {"l_d"}}}, "fresnel-lab lut ltc --out ltc.exr (ltc_2.exr B)"},
-  };
-  return sources;
+// One model for every material: per material its lower-error parameter set.
+SceneChoice scene_option(Model m, const std::vector<std::vector<PlanChoice>>& candidates, double max_de00) {
+  SceneChoice s;
+  s.model = m;
+  for (const auto& per_material : candidates) {
+    const PlanChoice* best = nullptr;
+    for (const auto& c : per_material)
+      if (c.model == m && (!best || c.error < best->error)) best = &c;
+    if (!best) throw std::logic_error("a material without a candidate of a model");
+    PlanChoice c = *best;
+    c.meets_budget = c.error <= max_de00;
+    if (!c.meets_budget) s.failing.push_back(c.material);
+    s.gpu_instructions = c.gpu_instructions;
+    s.ns_per_eval = c.ns_per_eval;
+    s.max_error = std::max(s.max_error, c.error);
+    s.materials.push_back(std::move(c));
+  }
+  return s;
 }
 
 }  // namespace
 
-std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<PlanChoice>& choices) {
-  std::set<std::string> needed;  // "lighting/channel", from every chosen model's declaration
-  for (const auto& c : choices) {
-    const auto& pi = fresnel::model_spec(c.model).pre_integration;
-    if (scene.ibl)
-      for (const char* ch : pi.ibl.channels) needed.insert(std::string("ibl/") + ch);
-    if (scene.area)
-      for (const char* ch : pi.area.channels) needed.insert(std::string("area/") + ch);
-  }
+SceneChoice choose_scene_model(const std::vector<std::vector<PlanChoice>>& candidates, double max_de00) {
+  if (candidates.empty()) throw std::logic_error("a scene without materials");
+  std::vector<SceneChoice> options;
+  for (const auto& spec : fresnel::model_specs()) options.push_back(scene_option(spec.model, candidates, max_de00));
+  auto better = [](const SceneChoice& a, const SceneChoice& b) {
+    if (a.failing.size() != b.failing.size()) return a.failing.size() < b.failing.size();
+    if (!a.failing.empty() && a.max_error != b.max_error) return a.max_error < b.max_error;
+    if (a.gpu_instructions != b.gpu_instructions) return a.gpu_instructions < b.gpu_instructions;
+    if (a.ns_per_eval != b.ns_per_eval) return a.ns_per_eval < b.ns_per_eval;
+    return a.max_error < b.max_error;
+  };
+  return *std::min_element(options.begin(), options.end(), better);
+}
+
+std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<Model>& models) {
+  std::set<std::string> needed;  // "lighting/channel", from every model's declaration
+  for (Model m : models)
+    for (Lighting l : scene.lightings())
+      for (const char* ch : lighting_support(m, l).channels) needed.insert(std::string(lighting_name(l)) + "/" + ch);
   std::vector<PlanLut> out;
-  for (const auto& src : lut_sources()) {
-    PlanLut lut{src.name, src.lighting, {}, src.command};
-    for (const auto& [model_channel, file_channels] : src.channels)
-      if (needed.count(std::string(src.lighting) + "/" + model_channel))
-        lut.channels.insert(lut.channels.end(), file_channels.begin(), file_channels.end());
+  for (const auto& t : lut_textures()) {
+    PlanLut lut{t.name, t.lighting, t.file, {}, t.command};
+    for (const auto& c : t.channels) {
+      if (!needed.count(std::string(t.lighting) + "/" + c.channel)) continue;
+      std::string where = c.components;
+      std::transform(where.begin(), where.end(), where.begin(), [](unsigned char x) { return std::toupper(x); });
+      lut.channels.push_back(where + " " + c.channel);
+    }
     if (!lut.channels.empty()) out.push_back(std::move(lut));
   }
   return out;
 }
 
 Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<MaterialStudy>& studies,
-               const ModelCosts& costs) {
+               const PlanCosts& costs) {
   Plan p;
   p.scene = scene;
   p.space = ctx.settings().space;
-  for (const auto& s : studies) p.materials.push_back(choose_model(s, costs, scene.max_de00));
-  p.luts = needed_luts(scene, p.materials);
+  std::map<std::vector<double>, std::vector<ShadingPoint>> points;  // per roughness set
+  std::vector<std::vector<PlanChoice>> candidates;
+  for (size_t k = 0; k < studies.size(); ++k) {
+    const auto& roughness = scene.materials.at(k).roughness;
+    auto it = points.find(roughness);
+    if (it == points.end()) it = points.emplace(roughness, shading_points(roughness)).first;
+    const auto rendered = rendered_candidates(ctx, studies[k], it->second);
+    candidates.push_back(plan_candidates(scene, rendered, studies[k].material->material.name, roughness, costs));
+    p.materials.push_back(choose_model(candidates.back(), scene.max_de00));
+  }
+  std::vector<Model> chosen;
+  for (const auto& m : p.materials) chosen.push_back(m.model);
+  p.luts = needed_luts(scene, chosen);
+  p.scene_choice = choose_scene_model(candidates, scene.max_de00);
+  p.scene_luts = needed_luts(scene, {p.scene_choice.model});
   return p;
 }
 

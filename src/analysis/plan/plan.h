@@ -1,15 +1,27 @@
 #pragma once
 // `plan SCENE.yaml`: for each material of a scene, the cheapest Fresnel model (derived or fitted
-// parameters) whose RMS ΔE2000 against spectral ground truth meets the scene's budget, and the
-// lookup tables the chosen models need under the scene's lighting.
+// parameters) whose error as rendered under the scene's lighting meets the scene's budget; the
+// scene-wide choice (one shader: the cheapest single model meeting every material's budget); and
+// the lookup tables (texture channels) they need.
 //
-// Scene file: spectral/scene_file.h. Defaults: max_de00 1.0, space --space, lighting punctual.
-// Relative file paths are taken relative to the scene file's folder when they exist there.
+// Error as rendered (analysis/lut/rendered.h): under `ibl` and `area` the RMS ΔE2000 over the
+// material's roughness values × the shading view angles, of what the engine computes from the
+// tables (or the model at n·v where no table pre-integrates it) against brute-force spectral
+// integration of the GGX lobe; under `punctual` the curve's RMS ΔE2000. With several lightings
+// the budget applies to the largest of their errors, and the plan names which lighting that was.
+// Cost: the GPU instruction count of the model's shader functions for the scene's lightings
+// (bench/gpu_costs.csv), then CPU ns per evaluation (bench/model_costs.csv), then the error.
+//
+// Scene file: spectral/scene_file.h. Defaults: max_de00 1.0, space --space, lighting punctual,
+// roughness kDefaultRoughness. Relative file paths are taken relative to the scene file's folder
+// when they exist there.
 #include <string>
 #include <vector>
 
-#include "analysis/tables/speed.h"
+#include "analysis/lut/lut_layout.h"
 #include "analysis/study/study.h"
+#include "analysis/tables/lut_accuracy.h"
+#include "analysis/tables/speed.h"
 
 namespace fl::analysis {
 
@@ -18,6 +30,7 @@ constexpr double kDefaultMaxDe00 = 1.0;
 struct SceneMaterial {
   std::string spec;  // as written, or resolved against the scene's folder
   int line = 0;      // 1-based line in the scene file
+  std::vector<double> roughness;  // the material's, else the scene's, else kDefaultRoughness
 };
 struct Scene {
   std::string path;
@@ -26,6 +39,8 @@ struct Scene {
   std::string space;  // empty: the run's working space
   int space_line = 0;
   bool punctual = false, ibl = false, area = false;
+  std::vector<double> roughness;  // the scene's default
+  std::vector<Lighting> lightings() const;  // punctual, ibl, area order
 };
 
 // Reads and checks a scene file (spectral::read_scene_file's InputErrors) and applies the defaults.
@@ -35,39 +50,70 @@ Scene read_scene(const std::string& path);
 // naming the scene file and the line of the material.
 std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, const Scene& scene);
 
+// The costs a plan weighs.
+struct PlanCosts {
+  ModelCosts cpu;
+  GpuCosts gpu;
+};
+
+// One (model, parameter set) for one material, with its errors and cost under the scene's lighting.
 struct PlanChoice {
   std::string material;  // display name
   fresnel::Model model{};
   bool fitted = false;
   std::vector<double> params;
-  double rms_de00 = 0;
+  std::vector<double> roughness;
+  double punctual_rms = 0, ibl_rms = 0, area_rms = 0;  // the scene's lightings only
+  double error = 0;                                    // the budgeted one: the largest
+  Lighting error_lighting = Lighting::Punctual;        // whose error that is
+  int gpu_instructions = 0;                            // summed over the scene's lightings
   double ns_per_eval = 0;
-  bool meets_budget = false;  // false: no model meets it; this is the most accurate one
+  bool meets_budget = false;  // per material: false means no model meets it; this is the most accurate
+  color::Rgb f_avg{};         // hemispherical average 2∫F μ dμ (fresnel/average.h)
 };
 
-// The cheapest (model, parameter set) with RMS ΔE2000 ≤ max_de00; ties in cost go to the lower
-// error. When none qualifies, the most accurate one, with meets_budget = false.
-PlanChoice choose_model(const MaterialStudy& study, const ModelCosts& costs, double max_de00);
+// Every candidate of one material under the scene's lighting.
+std::vector<PlanChoice> plan_candidates(const Scene& scene, const std::vector<RenderedCandidate>& rendered,
+                                        const std::string& material, const std::vector<double>& roughness,
+                                        const PlanCosts& costs);
+// The cheapest candidate with error ≤ max_de00 (ties: CPU ns, then error); when none qualifies,
+// the most accurate, with meets_budget = false.
+PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de00);
+
+// One shader for the scene: one model for every material, each material with its parameter set
+// (derived or fitted) of lower error.
+struct SceneChoice {
+  fresnel::Model model{};
+  std::vector<PlanChoice> materials;  // meets_budget per material
+  std::vector<std::string> failing;   // materials over the budget
+  int gpu_instructions = 0;
+  double ns_per_eval = 0;
+  double max_error = 0;
+};
+// The cheapest model meeting every budget (ties: CPU ns, then the largest error); if none does, the
+// one failing fewest materials (ties: the largest error, then cost).
+SceneChoice choose_scene_model(const std::vector<std::vector<PlanChoice>>& candidates, double max_de00);
 
 struct PlanLut {
-  std::string name;      // dfg | ltc_matrix | ltc_moments | ltc_f82_moment
+  std::string name;      // dfg | ltc_1 | ltc_2 (analysis/lut/lut_layout.h)
   std::string lighting;  // ibl | area
-  std::vector<std::string> channels;
-  std::string command;   // how to make it
+  std::string file;
+  std::vector<std::string> channels;  // "R dfg1", ... (the texture components holding each)
+  std::string command;                // how to make it
 };
-// The tables the chosen models need under the scene's lighting, from each model's declaration
-// (fresnel::PreIntegration): under IBL the split-sum DFG channels (plus the F82 channel for the F82
-// model); under area lights the LTC matrix and n_D, plus f_D and l_D for the models whose Fresnel
-// term they pre-integrate. Punctual lights need no table.
-std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<PlanChoice>& choices);
+// The texture channels the models need under the scene's lighting, from each model's declaration
+// (fresnel::PreIntegration). Punctual lights need no table.
+std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<fresnel::Model>& models);
 
 struct Plan {
   Scene scene;
   std::string space;
   std::vector<PlanChoice> materials;
-  std::vector<PlanLut> luts;
+  std::vector<PlanLut> luts;  // for the per-material choices
+  SceneChoice scene_choice;
+  std::vector<PlanLut> scene_luts;  // for the scene-wide model
 };
 Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<MaterialStudy>& studies,
-               const ModelCosts& costs);
+               const PlanCosts& costs);
 
 }  // namespace fl::analysis

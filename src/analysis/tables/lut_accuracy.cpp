@@ -3,134 +3,114 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
-#include <numbers>
 
-#include "analysis/lut/lut.h"
-#include "color/lab.h"
-#include "fresnel/models.h"
+#include "fresnel/model_set.h"
 #include "util/median.h"
-#include "util/parallel.h"
 
 namespace fl::analysis {
 
-namespace {
+using fresnel::Model;
 
-constexpr double kPi = std::numbers::pi;
-
-double pow5(double x) {
-  const double x2 = x * x;
-  return x2 * x2 * x;
-}
-
-constexpr std::array<double, 5> kAccuracyRoughness{0.2, 0.4, 0.6, 0.8, 1.0};
-constexpr std::array<double, 6> kAccuracyViewDeg{0.0, 30.0, 50.0, 65.0, 75.0, 85.0};
-constexpr int kAccuracySamples = 4096;
-// Ground truth RGB tabulated at cos θ = k/(K − 1) and interpolated linearly in cos θ per sample.
-constexpr int kFresnelTableSize = 513;
-
-struct RgbCurve {
-  std::vector<color::Rgb> values;
-  color::Rgb at(double cos_theta) const {
-    const double x = std::clamp(cos_theta, 0.0, 1.0) * (values.size() - 1);
-    const size_t k = std::min(static_cast<size_t>(x), values.size() - 2);
-    const double f = x - static_cast<double>(k);
-    return (1.0 - f) * values[k] + f * values[k + 1];
-  }
-};
-
-// The grid points with the lobe samples of each, shared by all metals.
-struct AccuracyPoint {
-  double roughness, view_deg;
-  std::vector<LobeSample> samples;
-  GgxMoments moments;
-};
-std::vector<AccuracyPoint> accuracy_points() {
-  std::vector<AccuracyPoint> points;
-  for (double r : kAccuracyRoughness)
-    for (double deg : kAccuracyViewDeg) {
-      AccuracyPoint p{r, deg, {}, {}};
-      const double nov = std::cos(deg * kPi / 180.0);
-      for_each_lobe_sample(nov, r * r, kAccuracySamples, [&](const LobeSample& s) { p.samples.push_back(s); });
-      p.moments = integrate_moments(nov, r * r, kAccuracySamples);
-      points.push_back(std::move(p));
+std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const MaterialStudy& study,
+                                                   const std::vector<ShadingPoint>& points) {
+  const auto truth = lobe_truth(ctx, *study.material, points);
+  std::vector<RenderedCandidate> out;
+  for (const auto& r : study.models) {
+    for (int fitted = 0; fitted < 2; ++fitted) {
+      if (fitted && (!r.fitted.usable || r.fitted.parameters.empty())) continue;
+      RenderedCandidate c;
+      c.model = r.model;
+      c.fitted = fitted != 0;
+      c.params = fitted ? r.fitted.parameters : r.derived;
+      c.punctual_rms = fitted ? r.fitted_error.rms : r.derived_error.rms;
+      c.ibl = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Ibl, points));
+      c.area = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Area, points));
+      out.push_back(std::move(c));
     }
-  return points;
-}
-
-// ΔE2000 of pre-integrated Schlick and F82 against the brute-force integral, per grid point.
-struct MetalAccuracy {
-  std::vector<double> de_schlick, de_f82;
-};
-MetalAccuracy metal_accuracy(const Context& ctx, const LoadedMaterial& m, const std::vector<AccuracyPoint>& points) {
-  const double eta_e = ctx.settings().eta_outside;
-  RgbCurve truth_curve;
-  for (int k = 0; k < kFresnelTableSize; ++k)
-    truth_curve.values.push_back(ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kFresnelTableSize - 1), eta_e));
-  const color::Rgb f0 = truth_curve.values.back();
-  const color::Rgb f82 = ground_truth_rgb(ctx, m.ior, 1.0 / 7.0, eta_e);
-  MetalAccuracy out;
-  for (const auto& p : points) {
-    color::Rgb truth{};
-    for (const auto& s : p.samples) truth = truth + s.weight * truth_curve.at(s.voh);
-    truth = (1.0 / kAccuracySamples) * truth;
-    color::Rgb schlick{}, hoffman{};
-    for (int c = 0; c < 3; ++c) {
-      const double base = f0[c] * p.moments.n_d + (1.0 - f0[c]) * p.moments.f_d;
-      schlick[c] = base;
-      hoffman[c] = base - fresnel::f82_coefficient(f0[c], f82[c]) * p.moments.l_d;
-    }
-    const auto lab_truth = ctx.rgb_to_lab(truth);
-    out.de_schlick.push_back(color::ciede2000(lab_truth, ctx.rgb_to_lab(schlick)));
-    out.de_f82.push_back(color::ciede2000(lab_truth, ctx.rgb_to_lab(hoffman)));
   }
   return out;
 }
 
+namespace {
+
+std::string approximation(Model m, Lighting l) {
+  const auto& s = lighting_support(m, l);
+  return s.fresnel_pre_integrated ? "tables" : fmt::format("F({}) × lobe", s.evaluated_at);
+}
+
+const RenderedCandidate* find(const std::vector<RenderedCandidate>& cs, Model m, bool fitted) {
+  for (const auto& c : cs)
+    if (c.model == m && c.fitted == fitted) return &c;
+  return nullptr;
+}
+
+// "F82 ≤ Schlick for k of n metals" under one lighting, derived parameter sets (spectral F0, F82).
+std::string f82_against_schlick(const std::vector<std::vector<RenderedCandidate>>& per_metal, Lighting l) {
+  int no_worse = 0;
+  std::vector<double> schlick, f82;
+  for (const auto& cs : per_metal) {
+    const auto* s = find(cs, fresnel::model_of<fresnel::models::Schlick>, false);
+    const auto* f = find(cs, fresnel::model_of<fresnel::models::F82>, false);
+    no_worse += f->under(l).rms <= s->under(l).rms;
+    schlick.push_back(s->under(l).rms);
+    f82.push_back(f->under(l).rms);
+  }
+  return fmt::format("under {}, pre-integrated F82 is no worse than pre-integrated Schlick for {} of {} metals "
+                     "(median RMS ΔE2000 {:.3f} against {:.3f})",
+                     lighting_name(l), no_worse, per_metal.size(), median(f82), median(schlick));
+}
+
 std::vector<std::string> accuracy_notes(const Context& ctx) {
   std::string roughness_list, view_list;
-  for (double r : kAccuracyRoughness) roughness_list += (roughness_list.empty() ? "" : ", ") + fmt::format("{:g}", r);
-  for (double d : kAccuracyViewDeg) view_list += (view_list.empty() ? "" : ", ") + fmt::format("{:g}°", d);
+  for (double r : kDefaultRoughness) roughness_list += (roughness_list.empty() ? "" : ", ") + fmt::format("{:g}", r);
+  for (double d : kShadingViewDeg) view_list += (view_list.empty() ? "" : ", ") + fmt::format("{:g}°", d);
   const auto& s = ctx.settings();
   return {
       fmt::format("Working space {}, illuminant {}, {} adaptation, outside medium η = {:g}.", s.space, s.illuminant,
                   s.adaptation, s.eta_outside),
-      fmt::format("Grid: perceptual roughness {} (α = roughness²) × view angle {}; per point the GGX lobe "
+      fmt::format("Shading points: perceptual roughness {} (α = roughness²) × view angle {}; per point the GGX lobe "
                   "(height-correlated Smith) is integrated with {} visible-normal samples (Hammersley).",
-                  roughness_list, view_list, kAccuracySamples),
-      "Truth: the lobe integrated with the spectral Fresnel ground truth per v·h (RGB tabulated at 513 "
-      "values of cos θ, linear interpolation). Schlick: R0·n_D + (1 − R0)·f_D; F82: R0·n_D + (1 − R0)·f_D − a·l_D "
-      "with a from Hoffman 2019 (no clamping is possible after pre-integration). R0 = F0 and F82 from the ground "
-      "truth at cos θ = 1 and 1/7; moments from the same samples as the truth, so only the Fresnel model differs.",
+                  roughness_list, view_list, kLutSamples),
+      fmt::format("Truth: the lobe integrated with the spectral Fresnel ground truth per v·h (RGB tabulated at {} "
+                  "values of cos θ, linear interpolation).",
+                  kTruthCurveSize),
+      fmt::format("Engine: the {0}² tables as `lut` writes them, read bilinearly (DFG at (n·v, roughness) on texel "
+                  "centres; LTC moments at (roughness, √(1 − n·v)) on endpoints). `tables`: the Fresnel term is "
+                  "pre-integrated, a·n + b·f + c·l with F = a + b(1 − μ)⁵ + cμ(1 − μ)⁶ (Schlick: F0·dfg1 + dfg2; "
+                  "F82: … − a·dfg_f82, unclamped); `F(n·v) × lobe`: the model at n·v times the lobe's Fresnel-free "
+                  "integral (dfg1 + dfg2, n_D), the stated approximation for models no shared table holds.",
+                  kEngineLutSize),
+      "curve_rms_de00: the curve's RMS ΔE2000 over the angles, what punctual lights render. rms and max: over the "
+      "shading points. The lobe's shape (LTC matrix, prefiltered environment) is the same for every model and not "
+      "part of these errors.",
       "Only metals are listed."};
 }
 
 }  // namespace
 
-Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& materials) {
-  const auto points = accuracy_points();
+Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
+  const auto points = shading_points({kDefaultRoughness.begin(), kDefaultRoughness.end()});
   Table t;
   t.name = "lut-accuracy";
-  t.title = "Pre-integrated Fresnel (LTC moments) against brute-force spectral integration (ΔE2000)";
-  t.columns = {{"material"}, {"schlick_median_de00", 3}, {"schlick_max_de00", 3}, {"f82_median_de00", 3},
-               {"f82_max_de00", 3}};
-  std::vector<double> all_schlick, all_f82, metal_schlick, metal_f82;
-  for (const auto& m : materials) {
-    if (m.material.material_class != spectral::MaterialClass::Metal) continue;
-    const auto [de_schlick, de_f82] = metal_accuracy(ctx, m, points);
-    all_schlick.insert(all_schlick.end(), de_schlick.begin(), de_schlick.end());
-    all_f82.insert(all_f82.end(), de_f82.begin(), de_f82.end());
-    metal_schlick.push_back(median(de_schlick));
-    metal_f82.push_back(median(de_f82));
-    t.rows.push_back({m.material.name, metal_schlick.back(), *std::max_element(de_schlick.begin(), de_schlick.end()),
-                      metal_f82.back(), *std::max_element(de_f82.begin(), de_f82.end())});
+  t.title = "Fresnel models as rendered under IBL (DFG) and area lights (LTC moments) against brute-force spectral "
+            "integration (ΔE2000)";
+  t.columns = {{"material"},         {"model"},           {"parameters"},      {"curve_rms_de00", 3},
+               {"ibl"},              {"ibl_rms_de00", 3}, {"ibl_max_de00", 3}, {"area"},
+               {"area_rms_de00", 3}, {"area_max_de00", 3}};
+  std::vector<std::vector<RenderedCandidate>> per_metal;
+  for (const auto& s : studies) {
+    if (s.material->material.material_class != spectral::MaterialClass::Metal) continue;
+    per_metal.push_back(rendered_candidates(ctx, s, points));
+    for (const auto& c : per_metal.back())
+      t.rows.push_back({s.material->material.name, std::string(fresnel::model_spec(c.model).name),
+                        std::string(c.fitted ? "fitted" : "derived"), c.punctual_rms,
+                        approximation(c.model, Lighting::Ibl), c.ibl.rms, c.ibl.max,
+                        approximation(c.model, Lighting::Area), c.area.rms, c.area.max});
   }
-  t.reading = fmt::format(
-      "Median ΔE2000 over all metals and grid points: Schlick {:.3f}, F82 {:.3f} (median of the per-metal medians: "
-      "Schlick {:.3f}, F82 {:.3f}). Schlick's error grows towards grazing views and for metals with a strong edge "
-      "tint (the max columns); the F82 moment l_D removes most of it.",
-      median(all_schlick), median(all_f82), median(metal_schlick), median(metal_f82));
+  if (!per_metal.empty())
+    t.reading = fmt::format("With the spectral F0 and F82 (derived sets): {}; {}. The models no shared table holds, "
+                            "evaluated at n·v, render with the errors listed beside their curve errors.",
+                            f82_against_schlick(per_metal, Lighting::Ibl), f82_against_schlick(per_metal, Lighting::Area));
   t.notes = accuracy_notes(ctx);
   return t;
 }

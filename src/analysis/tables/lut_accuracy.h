@@ -1,16 +1,32 @@
 #pragma once
-// The lookup tables' accuracy as rendered: pre-integrated Fresnel against brute-force spectral
-// integration of the GGX lobe.
+// The lookup tables' accuracy as rendered: every Fresnel model as an engine shades it under
+// image-based lighting (split-sum DFG table) and LTC area lights (the moments), against brute-force
+// spectral integration of the GGX lobe (analysis/lut/rendered.h).
 #include <vector>
 
-#include "analysis/pipeline/context.h"
+#include "analysis/lut/rendered.h"
+#include "analysis/study/study.h"
 #include "analysis/tables/table.h"
 
 namespace fl::analysis {
 
-// `table lut-accuracy`: per metal, pre-integrated Schlick (R0 n_D + (1 − R0) f_D) and F82
-// (… − a l_D) shading against brute-force integration of the lobe with the spectral Fresnel
-// ground truth, in ΔE2000, over a grid of roughness × view angle.
-Table lut_accuracy_table(const Context& ctx, const std::vector<LoadedMaterial>& materials);
+// One (model, parameter set) of a material with its errors: the curve's RMS ΔE2000 (what punctual
+// lights render) and the rendered ΔE2000 over the shading points under each pre-integrated lighting.
+struct RenderedCandidate {
+  fresnel::Model model{};
+  bool fitted = false;
+  std::vector<double> params;
+  double punctual_rms = 0;
+  ErrorStats ibl, area;
+  const ErrorStats& under(Lighting l) const { return l == Lighting::Ibl ? ibl : area; }
+  double rms_under(Lighting l) const { return l == Lighting::Punctual ? punctual_rms : under(l).rms; }
+};
+// Every model's derived set, and its fitted set where the fit is usable, in registry order.
+std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const MaterialStudy& study,
+                                                   const std::vector<ShadingPoint>& points);
+
+// `table lut-accuracy`: per metal, every model × {derived, fitted} under ibl and area, at the
+// default roughness set.
+Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
 }  // namespace fl::analysis

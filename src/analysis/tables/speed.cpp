@@ -71,6 +71,80 @@ ModelCosts read_model_costs(const std::string& path) {
   return out;
 }
 
+const GpuCost& GpuCosts::of(Model m, Lighting l) const {
+  for (const auto& c : costs)
+    if (c.model == m && c.lighting == l) return c;
+  throw std::logic_error("model without a GPU cost");
+}
+
+namespace {
+
+constexpr const char* kGpuHeader = "model,lighting,instructions,arithmetic,extended,texture";
+
+GpuCost parse_gpu_row(const std::string& path, int line_no, const std::vector<std::string_view>& f) {
+  if (f.size() != 6) throw InputError(path, line_no, fmt::format("expected {}", kGpuHeader));
+  GpuCost c;
+  try {
+    c.model = fresnel::model_from_name(std::string(f[0])).model;
+    c.lighting = lighting_from_name(std::string(f[1]));
+  } catch (const InputError& e) {
+    throw InputError(path, line_no, e.what());
+  }
+  int* counts[] = {&c.instructions, &c.arithmetic, &c.extended, &c.texture};
+  for (int k = 0; k < 4; ++k) {
+    double x = 0;
+    if (!spectral::parse_finite(f[2 + k], x) || x < 0 || x != static_cast<int>(x))
+      throw InputError(path, line_no, fmt::format("count '{}' must be a non-negative integer", f[2 + k]));
+    *counts[k] = static_cast<int>(x);
+  }
+  return c;
+}
+
+}  // namespace
+
+GpuCosts read_gpu_costs(const std::string& path) {
+  const std::string text = spectral::read_text_file(path);
+  GpuCosts out;
+  out.source = path;
+  bool header = false;
+  int line_no = 0;
+  for (const auto raw : spectral::split_lines(text)) {
+    ++line_no;
+    const auto line = spectral::trim(raw);
+    if (line.empty()) continue;
+    if (line.front() == '#') {
+      constexpr std::string_view kTools = "# tools:";
+      if (line.substr(0, kTools.size()) == kTools) out.tools = std::string(spectral::trim(line.substr(kTools.size())));
+      continue;
+    }
+    if (!header) {
+      if (line != kGpuHeader) throw InputError(path, line_no, fmt::format("header must be {}", kGpuHeader));
+      header = true;
+      continue;
+    }
+    const auto c = parse_gpu_row(path, line_no, spectral::split_fields(line, ","));
+    for (const auto& o : out.costs)
+      if (o.model == c.model && o.lighting == c.lighting)
+        throw InputError(path, line_no, fmt::format("'{}' under {} listed twice", fresnel::model_spec(c.model).name,
+                                                    lighting_name(c.lighting)));
+    out.costs.push_back(c);
+  }
+  if (!header) throw InputError(path, 0, fmt::format("no header line {}", kGpuHeader));
+  for (const auto& spec : fresnel::model_specs())
+    for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area})
+      if (std::none_of(out.costs.begin(), out.costs.end(), [&](const GpuCost& c) { return c.model == spec.model && c.lighting == l; }))
+        throw InputError(path, 0, fmt::format("no GPU cost for model '{}' under {}", spec.name, lighting_name(l)));
+  return out;
+}
+
+GpuCosts load_gpu_costs(const std::string& path) {
+  if (!path.empty()) return read_gpu_costs(path);
+  if (const char* env = std::getenv("FRESNEL_LAB_GPU_COSTS"); env && *env) return read_gpu_costs(env);
+  auto costs = read_gpu_costs(FRESNEL_LAB_DEFAULT_GPU_COSTS);
+  costs.source = "bench/gpu_costs.csv";
+  return costs;
+}
+
 ModelCosts load_model_costs(const std::string& path) {
   if (!path.empty()) return read_model_costs(path);
   if (const char* env = std::getenv("FRESNEL_LAB_COSTS"); env && *env) return read_model_costs(env);
@@ -108,7 +182,8 @@ ModelCosts measure_model_costs(int repeats, double min_ms) {
   return costs;
 }
 
-std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs) {
+std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
+                                 const GpuCosts& gpu) {
   std::vector<SpeedRow> rows;
   for (const auto& spec : fresnel::model_specs()) {
     for (int fitted = 0; fitted < 2; ++fitted) {
@@ -121,50 +196,66 @@ std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, cons
       row.model = spec.model;
       row.fitted = fitted != 0;
       row.ns_per_eval = costs.ns_per_eval(spec.model);
+      row.gpu = gpu.of(spec.model, Lighting::Punctual);
       row.median_rms_de00 = median(rms);
       row.max_rms_de00 = rms.empty() ? 0 : *std::max_element(rms.begin(), rms.end());
       rows.push_back(row);
     }
   }
-  for (auto& a : rows) {
-    a.pareto = std::none_of(rows.begin(), rows.end(), [&](const SpeedRow& b) {
-      const bool no_worse = b.ns_per_eval <= a.ns_per_eval && b.median_rms_de00 <= a.median_rms_de00;
-      const bool better = b.ns_per_eval < a.ns_per_eval || b.median_rms_de00 < a.median_rms_de00;
+  auto dominated = [&](const SpeedRow& a, auto cost) {
+    return std::any_of(rows.begin(), rows.end(), [&](const SpeedRow& b) {
+      const bool no_worse = cost(b) <= cost(a) && b.median_rms_de00 <= a.median_rms_de00;
+      const bool better = cost(b) < cost(a) || b.median_rms_de00 < a.median_rms_de00;
       return no_worse && better;
     });
+  };
+  for (auto& a : rows) {
+    a.pareto = !dominated(a, [](const SpeedRow& r) { return r.ns_per_eval; });
+    a.pareto_gpu = !dominated(a, [](const SpeedRow& r) { return static_cast<double>(r.gpu.instructions); });
   }
   return rows;
 }
 
-Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const ModelCosts& costs) {
+Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
+                  const GpuCosts& gpu) {
   Table t;
   t.name = "speed";
   t.title = "Cost against error: every Fresnel model, derived and fitted parameters";
-  t.columns = {{"model"}, {"parameters"}, {"ns_per_eval", 2}, {"median_rms_de00", 3}, {"max_rms_de00", 3}, {"pareto"}};
-  const auto rows = speed_rows(studies, costs);
-  std::string front;
+  t.columns = {{"model"},           {"parameters"},      {"cpu_ns_per_eval", 2}, {"gpu_instructions", 0},
+               {"gpu_arithmetic", 0}, {"gpu_extended", 0}, {"median_rms_de00", 3}, {"max_rms_de00", 3},
+               {"pareto_cpu"},        {"pareto_gpu"}};
+  const auto rows = speed_rows(studies, costs, gpu);
+  std::string front, front_gpu;
   for (const auto& r : rows) {
     const auto* name = fresnel::model_spec(r.model).name;
     t.rows.push_back({std::string(name), std::string(r.fitted ? "fitted" : "derived"), r.ns_per_eval,
-                      r.median_rms_de00, r.max_rms_de00, std::string(r.pareto ? "yes" : "no")});
-    if (r.pareto) front += fmt::format("{}{} ({})", front.empty() ? "" : ", ", name, r.fitted ? "fitted" : "derived");
+                      static_cast<long long>(r.gpu.instructions), static_cast<long long>(r.gpu.arithmetic),
+                      static_cast<long long>(r.gpu.extended), r.median_rms_de00, r.max_rms_de00,
+                      std::string(r.pareto ? "yes" : "no"), std::string(r.pareto_gpu ? "yes" : "no")});
+    const auto item = fmt::format("{} ({})", name, r.fitted ? "fitted" : "derived");
+    if (r.pareto) front += (front.empty() ? "" : ", ") + item;
+    if (r.pareto_gpu) front_gpu += (front_gpu.empty() ? "" : ", ") + item;
   }
   int metals = 0;
   for (const auto& s : studies) metals += s.material->material.material_class == spectral::MaterialClass::Metal;
   t.reading = fmt::format(
-      "The Pareto front (nothing else is both cheaper and more accurate): {}. Cost is the same for derived and "
-      "fitted parameters of a model; fitting only moves a model down the error axis.",
-      front);
+      "The Pareto front (nothing else is both cheaper and more accurate) on CPU time: {}; on GPU instructions: {}. "
+      "Cost is the same for derived and fitted parameters of a model; fitting only moves a model down the error axis.",
+      front, front_gpu);
   const auto& st = ctx.settings();
   t.notes = {
-      fmt::format("ns_per_eval: nanoseconds per evaluation (one RGB value at one angle, three channels), batched "
-                  "over 4096 angles in float, from {} (machine: {}). Regenerate with scripts/bench.sh; "
+      fmt::format("cpu_ns_per_eval: CPU nanoseconds per evaluation (one RGB value at one angle, three channels), "
+                  "batched over 4096 angles in float, from {} (machine: {}). Regenerate with scripts/bench.sh; "
                   "`fresnel-lab speed --measure` times live instead.",
                   costs.source.empty() ? "-" : costs.source, costs.machine.empty() ? "-" : costs.machine),
+      fmt::format("gpu_*: SPIR-V instructions of the model's shader function (`fresnel-lab shader MODEL`, punctual) "
+                  "after spirv-opt -O, all of them, arithmetic and extended (GLSL.std.450: pow, sqrt, exp, …), from {} "
+                  "({}); deterministic, regenerate with scripts/gpu_costs.sh.",
+                  gpu.source, gpu.tools.empty() ? "-" : gpu.tools),
       fmt::format("Error: RMS ΔE2000 over {} angles per material, then the median and max over {} catalog materials "
                   "({} metals, {} dielectrics); working space {}, illuminant {}.",
                   st.angles, studies.size(), metals, static_cast<int>(studies.size()) - metals, st.space, st.illuminant),
-      "pareto: judged on (ns_per_eval, median_rms_de00)."};
+      "pareto_cpu, pareto_gpu: judged on (cpu_ns_per_eval, median_rms_de00) and (gpu_instructions, median_rms_de00)."};
   return t;
 }
 

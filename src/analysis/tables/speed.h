@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/lut/rendered.h"
 #include "analysis/study/study.h"
 #include "analysis/tables/table.h"
 #include "fresnel/model_set.h"
@@ -40,17 +41,42 @@ ModelCosts load_model_costs(const std::string& path = "");
 ModelCosts measure_model_costs(int repeats = 5, double min_ms = 20.0);
 
 
+// GPU cost of a model's shader function under one lighting: SPIR-V instructions after
+// spirv-opt -O (scripts/gpu_costs.sh), all of them and by kind. Deterministic, so reports use it.
+struct GpuCost {
+  fresnel::Model model;
+  Lighting lighting = Lighting::Punctual;
+  int instructions = 0, arithmetic = 0, extended = 0, texture = 0;
+};
+struct GpuCosts {
+  std::string source;  // the file
+  std::string tools;   // its '# tools:' line (compiler and optimizer versions)
+  std::vector<GpuCost> costs;  // every model × lighting
+  const GpuCost& of(fresnel::Model m, Lighting l) const;
+};
+// bench/gpu_costs.csv: '#' comment lines (one '# tools: …'), the header
+// model,lighting,instructions,arithmetic,extended,texture, one row per model × lighting.
+// InputError (file:line) for anything else.
+GpuCosts read_gpu_costs(const std::string& path);
+// `path`, else $FRESNEL_LAB_GPU_COSTS, else the repository's bench/gpu_costs.csv.
+GpuCosts load_gpu_costs(const std::string& path = "");
+
 // One (model, parameter set) candidate with its error statistics over the studied materials.
 struct SpeedRow {
   fresnel::Model model;
   bool fitted = false;
   double ns_per_eval = 0;
   double median_rms_de00 = 0, max_rms_de00 = 0;
-  bool pareto = false;  // no other row is at least as cheap and at least as accurate, and better in one
+  bool pareto = false;      // no other row is at least as cheap (CPU ns) and at least as accurate, and better in one
+  GpuCost gpu{};            // the model's function under punctual lights
+  bool pareto_gpu = false;  // as `pareto`, with the GPU instruction count as the cost
 };
 // Rows in model_specs() order, derived before fitted. Error over every studied material (the
-// catalog's metals and dielectrics); Pareto front on (ns_per_eval, median_rms_de00).
-std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs);
-Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const ModelCosts& costs);
+// catalog's metals and dielectrics); Pareto fronts on (ns_per_eval, median_rms_de00) and
+// (GPU instructions, median_rms_de00).
+std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
+                                 const GpuCosts& gpu);
+Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
+                  const GpuCosts& gpu);
 
 }  // namespace fl::analysis

@@ -37,12 +37,12 @@ const std::vector<TableSpec>& table_specs() {
        [](TableInputs& in) { return internal_table(in.ctx, in.studies()); }},
       {"presets", "F0, F82, g, eta, kappa per material in the working space",
        [](TableInputs& in) { return presets_table(in.ctx, in.studies()); }},
-      {"presets_openpbr", "OpenPBR F82-tint form: base_color and specular_color per material",
+      {"presets_openpbr", "OpenPBR Surface parameters per material: metals F0 and F82 tint, dielectrics specular_ior and transmission",
        [](TableInputs& in) { return openpbr_table(in.ctx, in.studies()); }},
-      {"lut-accuracy", "pre-integrated Schlick and F82 (LTC moments) against brute-force spectral integration, metals",
-       [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.materials); }},
+      {"lut-accuracy", "every model as rendered under IBL (DFG) and area lights (LTC moments) against brute-force spectral integration, metals",
+       [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.studies()); }},
       {"speed", "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, Pareto front",
-       [](TableInputs& in) { return speed_table(in.ctx, in.studies(), load_model_costs()); }},
+       [](TableInputs& in) { return speed_table(in.ctx, in.studies(), load_model_costs(), load_gpu_costs()); }},
   };
   return specs;
 }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "analysis/tables/shading_presets.h"
+#include "fresnel/average.h"
 #include "fresnel/model_set.h"
 #include "spectral/errors.h"
 #include "util/median.h"
@@ -18,11 +20,20 @@ std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) 
 
 }  // namespace
 
+std::string out_of_range_note(int flagged) {
+  return fmt::format("out_of_range: the values below 0 or above 1 by more than {:g}, kept unclamped; {} materials "
+                     "flagged.",
+                     kOutOfRangeTolerance, flagged);
+}
+
 std::string setting_note(const Context& ctx) {
   const auto& s = ctx.settings();
+  const std::string space =
+      ctx.spaces().is_builtin() ? s.space
+                                : fmt::format("{} (OCIO config {}; {})", s.space, s.ocio_config, ctx.space().white_source);
   return fmt::format("Working space {}, illuminant {}, {} adaptation, CIE 1931 2° observer, {:g}-{:g} nm at {:g} nm, "
                      "{} angles over 0-90°, outside medium η = {:g}.",
-                     s.space, s.illuminant, s.adaptation, ctx.grid().start_nm, ctx.grid().end_nm(),
+                     space, s.illuminant, s.adaptation, ctx.grid().start_nm, ctx.grid().end_nm(),
                      ctx.grid().step_nm, s.angles, s.eta_outside);
 }
 
@@ -185,14 +196,23 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
 
 namespace {
 
-std::string flag_list(const std::vector<std::pair<std::string, double>>& values, int& count) {
-  std::string out;
-  for (const auto& [name, v] : values)
-    if (v < 0.0 || v > 1.0) {
-      out += (out.empty() ? "" : " ") + name;
-      ++count;
-    }
-  return out;
+// The F82 model's hemispherical average from the spectral F0 and F82: OpenPBR's F82-tint average
+// albedo, for Kulla–Conty energy compensation.
+color::Rgb f82_average(const fresnel::DerivedParameters& d) {
+  std::vector<double> p;
+  for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], d.f82[c]});
+  return fresnel::hemispherical_average(fresnel::model_of<fresnel::models::F82>, p);
+}
+constexpr const char* kF82AverageNote =
+    "f_avg (Markdown and JSON only): the F82 model's hemispherical average 2∫F(μ)μ dμ = F0 + (1 − F0)/21 − a/126 "
+    "from the spectral F0 and F82 (OpenPBR's F82-tint average albedo), for Kulla–Conty multiple-scattering "
+    "compensation.";
+void add_f_avg_columns(Table& t) {
+  for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("f_avg_{}", c), 6, false});
+}
+void add_f_avg(std::vector<Cell>& row, const fresnel::DerivedParameters& d) {
+  const auto f_avg = f82_average(d);
+  for (int c = 0; c < 3; ++c) row.push_back(f_avg[c]);
 }
 
 }  // namespace
@@ -204,7 +224,8 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   t.columns = {{"material"}, {"class"}, {"space"}};
   for (const char* q : {"f0", "f82", "g", "eta", "kappa"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
-  t.columns.push_back({"out_of_range", 0, false});
+  add_f_avg_columns(t);
+  t.columns.push_back({"out_of_range"});
   int flagged = 0;
   for (const auto& s : studies) {
     const auto& d = s.derived;
@@ -212,18 +233,18 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     const auto& ek = eta_kappa.fitted.parameters.empty() ? eta_kappa.derived : eta_kappa.fitted.parameters;
     std::vector<Cell> row{s.material->material.name, std::string(spectral::to_string(s.material->material.material_class)),
                           ctx.settings().space};
-    std::vector<std::pair<std::string, double>> unit;
     for (const auto* v : {&d.f0, &d.f82, &d.g_refl_eta})
       for (int c = 0; c < 3; ++c) row.push_back((*v)[c]);
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c]);
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c + 1]);
-    const char* ch[] = {"r", "g", "b"};
-    for (int c = 0; c < 3; ++c) {
-      unit.push_back({fmt::format("f0_{}", ch[c]), d.f0[c]});
-      unit.push_back({fmt::format("f82_{}", ch[c]), d.f82[c]});
-      unit.push_back({fmt::format("g_{}", ch[c]), d.g_refl_eta[c]});
-    }
-    row.push_back(flag_list(unit, flagged));
+    add_f_avg(row, d);
+    NamedValues unit;
+    add_channels(unit, "f0", d.f0);
+    add_channels(unit, "f82", d.f82);
+    add_channels(unit, "g", d.g_refl_eta);
+    const std::string flags = out_of_range_list(unit);
+    flagged += flags.empty() ? 0 : 1;
+    row.push_back(flags);
     t.rows.push_back(std::move(row));
   }
   t.reading = "Parameters for shading models, per catalog material, in the working space.";
@@ -231,36 +252,43 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
              "F0, F82: the spectral procedure at 0° and at arccos(1/7) ≈ 81.79°.",
              "g: Gulbrandsen's edge tint from (F0, Refl. η), unclamped.",
              "eta, kappa: RGB η, κ fitted with Ceres to minimize the RMS ΔE2000 against ground truth.",
-             fmt::format("Values outside [0, 1] (F0, F82, g) are kept and listed in out_of_range: {} values.", flagged)};
+             kF82AverageNote, out_of_range_note(flagged)};
   return t;
 }
 
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
   t.name = "presets_openpbr";
-  t.title = fmt::format("OpenPBR / F82-tint presets in {}", ctx.settings().space);
+  t.title = fmt::format("OpenPBR presets in {}", ctx.settings().space);
   t.columns = {{"material"}};
   for (const char* q : {"base_color", "specular_color"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
+  t.columns.insert(t.columns.end(), {{"base_weight", 0}, {"base_metalness", 0}, {"specular_ior", 6},
+                                     {"transmission_weight", 0}});
+  add_f_avg_columns(t);
   t.columns.push_back({"out_of_range"});
   int flagged = 0;
   for (const auto& s : studies) {
-    const auto& d = s.derived;
+    const auto o = open_pbr_parameters(shading_preset(ctx, s));
     std::vector<Cell> row{s.material->material.name};
-    for (int c = 0; c < 3; ++c) row.push_back(d.f0[c]);
-    for (int c = 0; c < 3; ++c) row.push_back(d.f82_tint[c]);
-    const char* ch[] = {"r", "g", "b"};
-    std::vector<std::pair<std::string, double>> unit;
-    for (int c = 0; c < 3; ++c) {
-      unit.push_back({fmt::format("base_color_{}", ch[c]), d.f0[c]});
-      unit.push_back({fmt::format("specular_color_{}", ch[c]), d.f82_tint[c]});
-    }
-    row.push_back(flag_list(unit, flagged));
+    for (int c = 0; c < 3; ++c) row.push_back(o.base_color[c]);
+    for (int c = 0; c < 3; ++c) row.push_back(o.specular_color[c]);
+    row.insert(row.end(), {o.base_weight, o.base_metalness, o.specular_ior, o.transmission_weight});
+    add_f_avg(row, s.derived);
+    NamedValues unit;
+    add_channels(unit, "base_color", o.base_color);
+    add_channels(unit, "specular_color", o.specular_color);
+    const std::string flags = out_of_range_list(unit);
+    flagged += flags.empty() ? 0 : 1;
+    row.push_back(flags);
     t.rows.push_back(std::move(row));
   }
-  t.reading = "OpenPBR's F82-tint form: base_color is F0, specular_color the ratio of the true F82 to Schlick's value "
-              "at arccos(1/7); a tint above 1 means the true curve is brighter there than Schlick's.";
-  t.notes = {setting_note(ctx), fmt::format("Values outside [0, 1] are kept and listed in out_of_range: {} values.", flagged)};
+  t.reading = "OpenPBR Surface parameters. Metals: base_metalness 1, base_color = F0, specular_color = the ratio of "
+              "the true F82 to Schlick's value at arccos(1/7) (a tint above 1: the true curve is brighter there than "
+              "Schlick's). Dielectrics: base_metalness 0, specular_ior = the index whose normal-incidence reflectance "
+              "is F0's luminance, transmission_weight 1 when clear (κ ≤ 1e-4 over the visible), base_weight 0 when "
+              "opaque; their base_color and a metal's specular_ior are unused and keep OpenPBR's defaults.";
+  t.notes = {setting_note(ctx), kF82AverageNote, out_of_range_note(flagged)};
   return t;
 }
 

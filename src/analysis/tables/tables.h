@@ -8,6 +8,8 @@ namespace fl::analysis {
 
 // The colorimetric setting in one sentence, the first note of the tables.
 std::string setting_note(const Context& ctx);
+// The out-of-range policy in one sentence, with the number of materials flagged.
+std::string out_of_range_note(int flagged);
 
 // `materials`: the catalog (key, name, class, data source, reference).
 Table catalog_table(const spectral::DataPaths& paths);
@@ -22,9 +24,10 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
 // Every material × every model × {derived, fitted}: RMS, mean, max and render-weighted RMS.
 Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
-// F0, F82, g, η, κ per material (values outside [0, 1] kept and flagged in out_of_range).
+// F0, F82, g, η, κ per material (values outside [0, 1] kept and flagged in out_of_range,
+// analysis/tables/shading_presets.h).
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
-// The OpenPBR form: base_color = F0, specular_color = F82 / Schlick(F0) at arccos(1/7).
+// OpenPBR Surface parameters per material (open_pbr_parameters).
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
 // "schlick, generalized_schlick, ...": every model's name, for option help.

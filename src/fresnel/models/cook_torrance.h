@@ -5,6 +5,7 @@
 
 #include "fresnel/derive.h"
 #include "fresnel/exact.h"
+#include "fresnel/exact_shader.h"
 #include "fresnel/model.h"
 
 namespace fl::fresnel {
@@ -34,6 +35,13 @@ struct CookTorrance {
   static constexpr bool kCanLeaveUnitRange = false;
   // The shape comes from the exact equations of a per-material index: no shared table holds it.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  // The representative index in all three lanes of the vector helper.
+  static constexpr ShaderCode kShader{kConductorHelpers, R"(  vec3 eta = vec3(eta_rep, eta_rep, eta_rep);
+  vec3 kappa = vec3(kappa_rep, kappa_rep, kappa_rep);
+  float fp = fl_fresnel_conductor(cos_theta, eta, kappa).x;
+  float fp0 = fl_fresnel_conductor(1.0, eta, kappa).x;
+  return f0 + (1.0 - f0) * max((fp - fp0) / (1.0 - fp0), 0.0);
+)"};
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T* shared) {

@@ -6,6 +6,7 @@
 
 #include "fresnel/derive.h"
 #include "fresnel/exact.h"
+#include "fresnel/exact_shader.h"
 #include "fresnel/model.h"
 #include "fresnel/models/gulbrandsen.h"
 
@@ -22,6 +23,7 @@ struct FresnelRgb {
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  static constexpr ShaderCode kShader{kConductorHelpers, "  return fl_fresnel_conductor(cos_theta, eta, kappa);\n"};
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {

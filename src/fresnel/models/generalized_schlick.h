@@ -34,6 +34,14 @@ struct GeneralizedSchlick {
   static constexpr bool kCanLeaveUnitRange = true;
   // A per-material exponent: no shared table holds it.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
+  if (m <= 0.0) return f0;
+  return f0 + (f90 - f0) * pow(vec3(m, m, m), p);
+)"};
+  // 2∫μ(1 − μ)^p dμ = 2·B(2, p + 1) = 2/((p + 1)(p + 2)).
+  static double average(const double* p, const double*) {
+    return p[0] + (p[1] - p[0]) * 2.0 / ((p[2] + 1.0) * (p[2] + 2.0));
+  }
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {

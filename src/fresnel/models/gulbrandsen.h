@@ -7,6 +7,7 @@
 #include "color/autodiff.h"
 #include "fresnel/derive.h"
 #include "fresnel/exact.h"
+#include "fresnel/exact_shader.h"
 #include "fresnel/model.h"
 
 namespace fl::fresnel {
@@ -80,6 +81,12 @@ struct Gulbrandsen {
   static constexpr bool kCanLeaveUnitRange = false;
   // Exact conductor equations of a per-channel index: no shared table holds them.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  static constexpr ShaderCode kShader{kConductorHelpers, R"(  vec3 r = clamp(f0, 1e-9, 0.99999);
+  vec3 s = sqrt(r);
+  vec3 eta = g * (1.0 - r) / (1.0 + r) + (1.0 - g) * (1.0 + s) / (1.0 - s);
+  vec3 k2 = (r * (eta + 1.0) * (eta + 1.0) - (eta - 1.0) * (eta - 1.0)) / (1.0 - r);
+  return fl_fresnel_conductor(cos_theta, eta, sqrt(max(k2, 0.0)));
+)"};
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {

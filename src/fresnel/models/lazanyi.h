@@ -34,6 +34,15 @@ struct Lazanyi {
   static constexpr bool kCanLeaveUnitRange = true;
   // A per-channel exponent α: only α = 6 (the F82 model) has a shared table.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
+  if (m <= 0.0) return f0;
+  float m2 = m * m;
+  return f0 + (1.0 - f0) * (m2 * m2 * m) - a * cos_theta * pow(vec3(m, m, m), alpha);
+)"};
+  // Schlick's 1/21, minus a·2∫μ²(1 − μ)^α dμ = a·2·B(3, α + 1) = 4a/((α + 1)(α + 2)(α + 3)).
+  static double average(const double* p, const double*) {
+    return p[0] + (1.0 - p[0]) / 21.0 - 4.0 * p[1] / ((p[2] + 1.0) * (p[2] + 2.0) * (p[2] + 3.0));
+  }
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {

@@ -29,12 +29,21 @@ struct Schlick {
   // The split-sum DFG scale and bias and the LTC Schlick moment integrate it exactly.
   static constexpr const char* kIbl[] = {lut_channel::kDfgScale, lut_channel::kDfgBias};
   static constexpr const char* kArea[] = {lut_channel::kLtcMatrix, lut_channel::kLtcNorm, lut_channel::kLtcSchlick};
-  static constexpr PreIntegration kPreIntegration{{kIbl, true, ""}, {kArea, true, ""}};
+  static constexpr PreIntegration kPreIntegration{kPunctualAtVdotH, {kIbl, true, ""}, {kArea, true, ""}};
+  static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
+  float m2 = m * m;
+  return f0 + (1.0 - f0) * (m2 * m2 * m);
+)",
+                                      "  return f0 * dfg1 + dfg2;\n",
+                                      "  return f0 * n_d + (1.0 - f0) * f_d;\n"};
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {
     return schlick(cos_theta, p[0]);
   }
+  static TableTerms table_terms(const double* p, const double*) { return {p[0], 1.0 - p[0], 0.0}; }
+  // 2∫(1 − μ)⁵μ dμ = 2·B(2, 6) = 1/21.
+  static double average(const double* p, const double*) { return p[0] + (1.0 - p[0]) / 21.0; }
   // The spectral F0.
   static std::vector<double> derive(const DerivedParameters& d) { return {d.f0.r, d.f0.g, d.f0.b}; }
   static std::vector<std::vector<double>> extra_starts(const DerivedParameters&) { return {}; }

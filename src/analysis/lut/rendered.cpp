@@ -1,0 +1,217 @@
+#include "analysis/lut/rendered.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "color/lab.h"
+#include "spectral/errors.h"
+#include "fresnel/model_set.h"
+#include "util/parallel.h"
+
+namespace fl::analysis {
+
+using fresnel::Model;
+
+const char* lighting_name(Lighting l) {
+  switch (l) {
+    case Lighting::Punctual: return "punctual";
+    case Lighting::Ibl: return "ibl";
+    case Lighting::Area: return "area";
+  }
+  return "?";
+}
+
+Lighting lighting_from_name(const std::string& name) {
+  for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area})
+    if (name == lighting_name(l)) return l;
+  throw InputError(fmt::format("unknown lighting '{}' (expected punctual, ibl or area)", name));
+}
+
+const fresnel::LightingSupport& lighting_support(Model m, Lighting l) {
+  const auto& pi = fresnel::model_spec(m).pre_integration;
+  return l == Lighting::Ibl ? pi.ibl : l == Lighting::Area ? pi.area : pi.punctual;
+}
+
+namespace {
+
+// A bilinear read of a texture: texel coordinate x along i (n·v) and y along j (roughness), clamped
+// to the edge texels; the four texels and their weights.
+struct Bilinear {
+  int i0, i1, j0, j1;
+  double fx, fy;
+};
+Bilinear bilinear(double x, double y, int size) {
+  auto axis = [size](double t, int& k0, int& k1, double& f) {
+    t = std::clamp(t, 0.0, static_cast<double>(size - 1));
+    k0 = std::min(static_cast<int>(t), size - 2);
+    k1 = k0 + 1;
+    f = t - k0;
+  };
+  Bilinear b{};
+  axis(x, b.i0, b.i1, b.fx);
+  axis(y, b.j0, b.j1, b.fy);
+  return b;
+}
+
+// Texels of one table, integrated on first use; values rounded to float as the files store them.
+template <class Cell, class Integrate>
+class TexelCache {
+ public:
+  TexelCache(const LutGrid& grid, Integrate integrate) : grid_(grid), integrate_(integrate) {}
+  const LutGrid& grid() const { return grid_; }
+  void request(int i, int j) { cells_.emplace(std::make_pair(i, j), Cell{}); }
+  void compute(int threads) {
+    std::vector<std::pair<const std::pair<int, int>, Cell>*> todo;
+    for (auto& kv : cells_) todo.push_back(&kv);
+    parallel_for(
+        todo.size(),
+        [&](size_t k) {
+          const auto [i, j] = todo[k]->first;
+          todo[k]->second = integrate_(grid_.nov[i], grid_.alpha[j]);
+        },
+        threads);
+  }
+  const Cell& at(int i, int j) const { return cells_.at({i, j}); }
+
+ private:
+  LutGrid grid_;
+  Integrate integrate_;
+  std::map<std::pair<int, int>, Cell> cells_;
+};
+
+double as_stored(double v) { return static_cast<double>(static_cast<float>(v)); }
+
+DfgTexel dfg_cell(double nov, double alpha) {
+  const auto t = integrate_dfg(nov, alpha, kLutSamples);
+  return {as_stored(t.dfg1), as_stored(t.dfg2), as_stored(t.dfg_f82)};
+}
+GgxMoments ltc_cell(double nov, double alpha) {
+  const auto m = integrate_moments(nov, alpha, kLutSamples);
+  return {as_stored(m.n_d), as_stored(m.f_d), as_stored(m.l_d), m.average_dir};
+}
+
+// Texel coordinates of a point: DFG texel centres (i + ½)/N over n·v and roughness; LTC endpoints
+// i/(N − 1) over √(1 − n·v) and roughness.
+Bilinear dfg_read(const ShadingPoint& p) {
+  const int n = kEngineLutSize;
+  return bilinear(p.nov * n - 0.5, p.roughness * n - 0.5, n);
+}
+Bilinear ltc_read(const ShadingPoint& p) {
+  const int n = kEngineLutSize;
+  return bilinear(std::sqrt(std::max(0.0, 1.0 - p.nov)) * (n - 1), p.roughness * (n - 1), n);
+}
+
+template <class Fn>
+void for_texels(const Bilinear& b, Fn fn) {
+  fn(b.i0, b.j0, (1 - b.fx) * (1 - b.fy));
+  fn(b.i1, b.j0, b.fx * (1 - b.fy));
+  fn(b.i0, b.j1, (1 - b.fx) * b.fy);
+  fn(b.i1, b.j1, b.fx * b.fy);
+}
+
+}  // namespace
+
+std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads) {
+  std::vector<ShadingPoint> points;
+  for (double r : roughness)
+    for (double deg : kShadingViewDeg) {
+      ShadingPoint p;
+      p.roughness = r;
+      p.view_deg = deg;
+      p.nov = std::cos(deg * std::numbers::pi / 180.0);
+      p.alpha = std::max(r * r, kLtcMinAlpha);
+      points.push_back(std::move(p));
+    }
+  TexelCache<DfgTexel, decltype(&dfg_cell)> dfg(dfg_grid(kEngineLutSize), &dfg_cell);
+  TexelCache<GgxMoments, decltype(&ltc_cell)> ltc(ltc_grid(kEngineLutSize), &ltc_cell);
+  for (const auto& p : points) {
+    for_texels(dfg_read(p), [&](int i, int j, double) { dfg.request(i, j); });
+    for_texels(ltc_read(p), [&](int i, int j, double) { ltc.request(i, j); });
+  }
+  dfg.compute(threads);
+  ltc.compute(threads);
+  parallel_for(
+      points.size(),
+      [&](size_t k) {
+        auto& p = points[k];
+        for_each_lobe_sample(p.nov, p.alpha, kLutSamples, [&](const LobeSample& s) { p.samples.push_back(s); });
+        for_texels(dfg_read(p), [&](int i, int j, double w) {
+          const auto& c = dfg.at(i, j);
+          p.dfg.dfg1 += w * c.dfg1;
+          p.dfg.dfg2 += w * c.dfg2;
+          p.dfg.dfg_f82 += w * c.dfg_f82;
+        });
+        for_texels(ltc_read(p), [&](int i, int j, double w) {
+          const auto& c = ltc.at(i, j);
+          p.ltc.n_d += w * c.n_d;
+          p.ltc.f_d += w * c.f_d;
+          p.ltc.l_d += w * c.l_d;
+        });
+      },
+      threads);
+  return points;
+}
+
+std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m, const std::vector<ShadingPoint>& points) {
+  const double eta_e = ctx.settings().eta_outside;
+  std::vector<color::Rgb> curve;
+  for (int k = 0; k < kTruthCurveSize; ++k)
+    curve.push_back(ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kTruthCurveSize - 1), eta_e));
+  auto at = [&](double cos_theta) {
+    const double x = std::clamp(cos_theta, 0.0, 1.0) * (kTruthCurveSize - 1);
+    const size_t k = std::min(static_cast<size_t>(x), curve.size() - 2);
+    const double f = x - static_cast<double>(k);
+    return (1.0 - f) * curve[k] + f * curve[k + 1];
+  };
+  std::vector<color::Rgb> out;
+  for (const auto& p : points) {
+    color::Rgb sum{};
+    for (const auto& s : p.samples) sum = sum + s.weight * at(s.voh);
+    out.push_back((1.0 / kLutSamples) * sum);
+  }
+  return out;
+}
+
+color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting, const ShadingPoint& p) {
+  if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
+  const auto& spec = fresnel::model_spec(m);
+  const bool ibl = lighting == Lighting::Ibl;
+  // The tables' three terms: the lobe's norm, its Schlick moment and its F82 moment.
+  const double n = ibl ? p.dfg.dfg1 + p.dfg.dfg2 : p.ltc.n_d;
+  const double f = ibl ? p.dfg.dfg2 : p.ltc.f_d;
+  const double l = ibl ? p.dfg.dfg_f82 : p.ltc.l_d;
+  if (!lighting_support(m, lighting).fresnel_pre_integrated) return n * spec.evaluate(p.nov, params.data(), false);
+  color::Rgb out{};
+  for (int c = 0; c < 3; ++c) {
+    const auto t = spec.table_terms(params.data(), c);
+    out[c] = t.a * n + t.b * f + t.c * l;
+  }
+  return out;
+}
+
+std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth, Model m,
+                                  const std::vector<double>& params, Lighting lighting,
+                                  const std::vector<ShadingPoint>& points) {
+  std::vector<double> out;
+  for (size_t k = 0; k < points.size(); ++k)
+    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine_shading(m, params, lighting, points[k]))));
+  return out;
+}
+
+ErrorStats error_stats(const std::vector<double>& de00) {
+  ErrorStats s;
+  double sum2 = 0;
+  for (double d : de00) {
+    sum2 += d * d;
+    s.max = std::max(s.max, d);
+  }
+  s.rms = de00.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(de00.size()));
+  return s;
+}
+
+}  // namespace fl::analysis

@@ -1,0 +1,63 @@
+#pragma once
+// Error as rendered: what an engine computes for a GGX lobe from a Fresnel model's parameters and
+// the lookup tables (or the model at n·v where no table pre-integrates it), against brute-force
+// integration of the lobe with the spectral Fresnel ground truth inside the integral.
+//
+// The engine reads the tables as `lut` writes them at their default size (64²), bilinearly, as a
+// shader does: the DFG texture at uv = (n·v, roughness) on its texel centres, the LTC moments at
+// (roughness, √(1 − n·v)) on Heitz's endpoints. Only the texels a point reads are integrated (the
+// same integrals as the full tables). The lobe's shape (the LTC matrix, the prefiltered
+// environment) is the same for every Fresnel model and is not part of this error: it compares the
+// Fresnel-weighted lobe integrals.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "analysis/lut/lut.h"
+#include "analysis/pipeline/context.h"
+#include "fresnel/model.h"
+
+namespace fl::analysis {
+
+enum class Lighting { Punctual, Ibl, Area };
+const char* lighting_name(Lighting l);                 // punctual | ibl | area
+Lighting lighting_from_name(const std::string& name);  // InputError for anything else
+const fresnel::LightingSupport& lighting_support(fresnel::Model m, Lighting l);
+
+// The stated default roughness set (perceptual, α = roughness²) and the view angles of every
+// shading grid.
+inline constexpr std::array<double, 5> kDefaultRoughness{0.2, 0.4, 0.6, 0.8, 1.0};
+inline constexpr std::array<double, 6> kShadingViewDeg{0.0, 30.0, 50.0, 65.0, 75.0, 85.0};
+// The tables' size as an engine ships them (`lut --size` default).
+constexpr int kEngineLutSize = 64;
+// Ground truth RGB tabulated at cos θ = k/(K − 1) and interpolated linearly in cos θ per sample.
+constexpr int kTruthCurveSize = 513;
+
+struct ShadingPoint {
+  double roughness = 0, view_deg = 0, nov = 0, alpha = 0;
+  std::vector<LobeSample> samples;  // kLutSamples visible-normal samples of the lobe at (n·v, α)
+  DfgTexel dfg;                     // the DFG texture read bilinearly here
+  GgxMoments ltc;                   // the LTC moments texture (n_D, f_D, l_D) read bilinearly here
+};
+// Every roughness × kShadingViewDeg.
+std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads = 0);
+
+// The brute-force lobe integral with the spectral ground truth per v·h, per point.
+std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m, const std::vector<ShadingPoint>& points);
+
+// What the engine computes at one point (Ibl or Area): a·n + b·f + c·l from the model's table terms
+// where it is pre-integrated, else F(n·v)·(the lobe's Fresnel-free integral).
+color::Rgb engine_shading(fresnel::Model m, const std::vector<double>& params, Lighting lighting,
+                          const ShadingPoint& p);
+
+// ΔE2000 between truth and engine at every point.
+std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth, fresnel::Model m,
+                                  const std::vector<double>& params, Lighting lighting,
+                                  const std::vector<ShadingPoint>& points);
+
+struct ErrorStats {
+  double rms = 0, max = 0;
+};
+ErrorStats error_stats(const std::vector<double>& de00);
+
+}  // namespace fl::analysis

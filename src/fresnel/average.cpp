@@ -1,0 +1,80 @@
+#include "fresnel/average.h"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "fresnel/model_set.h"
+
+namespace fl::fresnel {
+namespace {
+
+constexpr int kNodes = 20;
+// Panels uniform in s with μ = 1 − (1 − s)², which smooths the (1 − μ)^p endpoint behaviour of
+// the exponent models at μ = 1 (p down to 0.5); 32 panels of 20 nodes.
+constexpr int kPanels = 32;
+
+struct Rule {
+  std::array<double, kNodes> x{}, w{};
+};
+
+// Abramowitz & Stegun 25.4.29: the roots of P_n by Newton's method on the recurrence, weights
+// 2 / ((1 − x²) P_n'(x)²).
+Rule gauss_legendre_rule() {
+  Rule r;
+  for (int i = 0; i < kNodes; ++i) {
+    double x = std::cos(std::numbers::pi * (i + 0.75) / (kNodes + 0.5)), dp = 1.0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0, p1 = x;
+      for (int k = 2; k <= kNodes; ++k) {
+        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = kNodes * (x * p1 - p0) / (x * x - 1.0);
+      const double dx = p1 / dp;
+      x -= dx;
+      if (std::abs(dx) < 1e-16) break;
+    }
+    r.x[i] = x;
+    r.w[i] = 2.0 / ((1.0 - x * x) * dp * dp);
+  }
+  return r;
+}
+
+}  // namespace
+
+color::Rgb hemispherical_average_quadrature(Model m, const std::vector<double>& params) {
+  static const Rule rule = gauss_legendre_rule();
+  const auto& spec = model_spec(m);
+  color::Rgb sum{};
+  for (int panel = 0; panel < kPanels; ++panel) {
+    const double s0 = static_cast<double>(panel) / kPanels, half = 0.5 / kPanels;
+    for (int k = 0; k < kNodes; ++k) {
+      const double s = s0 + half * (rule.x[k] + 1.0);
+      const double mu = 1.0 - (1.0 - s) * (1.0 - s);
+      const double dmu_ds = 2.0 * (1.0 - s);
+      const auto f = spec.evaluate(mu, params.data(), false);
+      sum = sum + (2.0 * mu * dmu_ds * half * rule.w[k]) * f;
+    }
+  }
+  return sum;
+}
+
+bool average_in_closed_form(Model m, const std::vector<double>& params) {
+  const auto& spec = model_spec(m);
+  if (!spec.closed_form_average) return false;
+  std::vector<double> mu;
+  for (int i = 0; i <= 256; ++i) mu.push_back(i / 256.0);
+  return !output_clamped(m, params, mu);
+}
+
+color::Rgb hemispherical_average(Model m, const std::vector<double>& params) {
+  if (!average_in_closed_form(m, params)) return hemispherical_average_quadrature(m, params);
+  const auto& spec = model_spec(m);
+  color::Rgb out{};
+  for (int c = 0; c < 3; ++c) out[c] = spec.closed_form_average(params.data(), c);
+  return out;
+}
+
+}  // namespace fl::fresnel

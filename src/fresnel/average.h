@@ -1,0 +1,20 @@
+#pragma once
+// The hemispherical average of a Fresnel model, for Kulla–Conty multiple-scattering energy
+// compensation (Kulla & Conty 2017, "Revisiting Physically Based Shading at Imageworks"):
+// F_avg = 2∫₀¹ F(μ) μ dμ per channel, μ = cos θ.
+#include <vector>
+
+#include "color/types.h"
+#include "fresnel/model.h"
+
+namespace fl::fresnel {
+
+// The unit's closed form where it has one and the kernel's output clamp does not change the curve
+// (the closed forms integrate the formula); otherwise hemispherical_average_quadrature.
+color::Rgb hemispherical_average(Model m, const std::vector<double>& params);
+// Gauss–Legendre on panels of the kernel itself (accurate to ~1e-12 for the registry's models).
+color::Rgb hemispherical_average_quadrature(Model m, const std::vector<double>& params);
+// Whether hemispherical_average uses the unit's closed form for these parameters.
+bool average_in_closed_form(Model m, const std::vector<double>& params);
+
+}  // namespace fl::fresnel
