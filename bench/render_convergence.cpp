@@ -68,7 +68,7 @@ std::pair<double, double> difference(const std::vector<double>& a, const std::ve
 }
 
 analysis::MaterialRender timed_render(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                                      const analysis::Lighting& light, const Options& o, int samples, double& secs) {
+                                      const analysis::SphereLighting& light, const Options& o, int samples, double& secs) {
   analysis::RenderSettings rs;
   rs.size_px = o.size;
   rs.roughness = o.roughness;
@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
   fmt::print("| material | environment | samples | max | p99.9 | seconds (4 images, one pass) |\n|---|---|---|---|---|---|\n");
   for (const auto& env_name : split(o.envs)) {
     const auto env = report::load_environment(ctx, o.env_dir + "/" + env_name + ".exr", "", 0, 0);
-    const analysis::Lighting light = env.map;
+    const analysis::SphereLighting light = env.map;
     for (const auto& name : split(o.materials)) {
       const auto m = analysis::load_material(ctx, spectral::resolve_material(name, settings.paths));
       double secs = 0;

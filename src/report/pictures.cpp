@@ -99,7 +99,7 @@ FlipFiles reproduce_flips(const analysis::Context& ctx, const std::vector<analys
   rs.size_px = kFlipSizePx;
   rs.roughness = kFlipRoughness;
   rs.samples = kFlipSamples;
-  const analysis::Lighting light = analysis::default_environment();
+  const analysis::SphereLighting light = analysis::default_environment();
   const size_t n = studies.size();
   std::vector<std::string> sprites(n);
   parallel_for(n, [&](size_t i) {

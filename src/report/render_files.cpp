@@ -46,7 +46,7 @@ std::string parameter_text(fresnel::Model model, const std::vector<double>& para
 
 // The lighting and the sentence describing it (messages and EXR attributes).
 struct Scene {
-  analysis::Lighting light;
+  analysis::SphereLighting light;
   std::string lighting;
   std::vector<std::string> warnings;
 };

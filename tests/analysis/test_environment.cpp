@@ -131,7 +131,7 @@ double quadrature(const EnvironmentMap& map, const Vec3& v, double alpha) {
 
 TEST(Environment, ImportanceSampledShadingMatchesQuadrature) {
   const analysis::FresnelTable one = analysis::tabulate_fresnel([](double) { return color::Rgb{1, 1, 1}; }, 2);
-  const analysis::Lighting light = EnvironmentMap(test_sky(64, 32), kLuminance, 30.0);
+  const analysis::SphereLighting light = EnvironmentMap(test_sky(64, 32), kLuminance, 30.0);
   const auto& map = std::get<EnvironmentMap>(light);
   for (const double roughness : {0.25, 0.5})
     for (const Vec3 v : {Vec3{0, 0, 1}, brdf::normalize(Vec3{0.4, -0.3, 1.0})}) {
@@ -141,7 +141,7 @@ TEST(Environment, ImportanceSampledShadingMatchesQuadrature) {
       EXPECT_NEAR(shaded, ref, kShadingRelTol * ref) << "roughness " << roughness;
     }
   // A constant map is a white furnace: the lobe's directional albedo, below 1.
-  const analysis::Lighting white = EnvironmentMap(image(32, 16, [](int, int) { return color::Rgb{1, 1, 1}; }), kLuminance);
+  const analysis::SphereLighting white = EnvironmentMap(image(32, 16, [](int, int) { return color::Rgb{1, 1, 1}; }), kLuminance);
   const double albedo = analysis::shade_specular(white, one, {0, 0, 1}, {0, 0, 1}, 0.09, kShadingSamples).r;
   EXPECT_NEAR(albedo, quadrature(std::get<EnvironmentMap>(white), {0, 0, 1}, 0.09), kShadingRelTol);
   EXPECT_LT(albedo, 1.0);
@@ -151,7 +151,7 @@ TEST(Environment, MirrorSphereShowsPlusXOnItsRight) {
   // Bright only near longitude +π/2 on the horizon (u = 1/4): a mirror sphere shows it where the
   // normal halves the view (+z) and +x, at image point (sin 45°, 0).
   const int w = 64, h = 32;
-  const analysis::Lighting light = EnvironmentMap(image(w, h, [&](int x, int y) {
+  const analysis::SphereLighting light = EnvironmentMap(image(w, h, [&](int x, int y) {
     const bool spot = std::abs(x + 0.5 - w / 4.0) < 1.0 && std::abs(y + 0.5 - h / 2.0) < 1.0;
     return spot ? color::Rgb{10, 10, 10} : color::Rgb{0, 0, 0};
   }), kLuminance);

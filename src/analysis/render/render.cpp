@@ -136,7 +136,7 @@ void shade_with(const S& light, const std::vector<LightSample>& drawn, const std
 
 // Calls f with the lighting's sampling strategy.
 template <class F>
-auto with_strategy(const Lighting& light, const F& f) {
+auto with_strategy(const SphereLighting& light, const F& f) {
   if (const auto* env = std::get_if<Environment>(&light)) return f(KeyLightStrategy(*env));
   return f(std::get<EnvironmentMap>(light));
 }
@@ -354,7 +354,7 @@ FresnelTable model_fresnel_table(fresnel::Model model, const std::vector<double>
   return tabulate_fresnel([&](double c) { return fresnel::model_spec(model).evaluate(c, params.data(), false); });
 }
 
-void shade_specular(const Lighting& light, const std::vector<const FresnelTable*>& fresnel, const Vec3& n,
+void shade_specular(const SphereLighting& light, const std::vector<const FresnelTable*>& fresnel, const Vec3& n,
                     const Vec3& v, double alpha, int samples, color::Rgb* out) {
   with_strategy(light, [&](const auto& s) {
     shade_with(s, light_samples(s, samples), fresnel, n, v, alpha, out);
@@ -362,20 +362,20 @@ void shade_specular(const Lighting& light, const std::vector<const FresnelTable*
   });
 }
 
-color::Rgb shade_specular(const Lighting& light, const FresnelTable& fresnel, const Vec3& n, const Vec3& v,
+color::Rgb shade_specular(const SphereLighting& light, const FresnelTable& fresnel, const Vec3& n, const Vec3& v,
                           double alpha, int samples) {
   color::Rgb out;
   shade_specular(light, {&fresnel}, n, v, alpha, samples, &out);
   return out;
 }
 
-std::vector<SphereImage> render_spheres(const Lighting& light, const std::vector<const FresnelTable*>& fresnel,
+std::vector<SphereImage> render_spheres(const SphereLighting& light, const std::vector<const FresnelTable*>& fresnel,
                                         const RenderSettings& s) {
   if (s.size_px < 1) throw std::invalid_argument("render_sphere: size must be positive");
   return with_strategy(light, [&](const auto& strategy) { return render_with(strategy, fresnel, s); });
 }
 
-SphereImage render_sphere(const Lighting& light, const FresnelTable& fresnel, const RenderSettings& s) {
+SphereImage render_sphere(const SphereLighting& light, const FresnelTable& fresnel, const RenderSettings& s) {
   return std::move(render_spheres(light, {&fresnel}, s).front());
 }
 
@@ -420,7 +420,7 @@ HeatmapStats heatmap_stats(const std::vector<double>& de, int width, int height)
   return st;
 }
 
-MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const Lighting& light,
+MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const SphereLighting& light,
                                const std::vector<fresnel::Model>& models, const std::string& kind,
                                const RenderSettings& settings) {
   const FresnelTable truth = truth_fresnel_table(ctx, m.ior, ctx.settings().eta_outside);

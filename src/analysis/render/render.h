@@ -92,7 +92,7 @@ class EnvironmentMap {
 };
 
 // What lights the sphere.
-using Lighting = std::variant<Environment, EnvironmentMap>;
+using SphereLighting = std::variant<Environment, EnvironmentMap>;
 
 // A Fresnel reflectance tabulated uniformly in cosθ ∈ [0, 1] (entry i at cosθ = i/(n − 1)),
 // looked up with linear interpolation; entries 0 and n − 1 are exactly F(90°) and F(0°).
@@ -116,9 +116,9 @@ constexpr double kMirrorAlpha = 1e-4;
 // density), both from the same Hammersley set, so the result is deterministic (a fixed set per
 // pixel: the quasi-Monte Carlo error is smooth across the image, not noise). One set of directions
 // shades every table in `fresnel`: out[i] is the shading with fresnel[i].
-void shade_specular(const Lighting& light, const std::vector<const FresnelTable*>& fresnel, const brdf::Vec3& n,
+void shade_specular(const SphereLighting& light, const std::vector<const FresnelTable*>& fresnel, const brdf::Vec3& n,
                     const brdf::Vec3& v, double alpha, int samples, color::Rgb* out);
-color::Rgb shade_specular(const Lighting& light, const FresnelTable& fresnel, const brdf::Vec3& n,
+color::Rgb shade_specular(const SphereLighting& light, const FresnelTable& fresnel, const brdf::Vec3& n,
                           const brdf::Vec3& v, double alpha, int samples);
 
 struct RenderSettings {
@@ -135,9 +135,9 @@ struct SphereImage {
   std::vector<float> alpha;  // coverage
 };
 // One image per table, all shaded with the same directions (shade_specular).
-std::vector<SphereImage> render_spheres(const Lighting& light, const std::vector<const FresnelTable*>& fresnel,
+std::vector<SphereImage> render_spheres(const SphereLighting& light, const std::vector<const FresnelTable*>& fresnel,
                                         const RenderSettings& settings);
-SphereImage render_sphere(const Lighting& light, const FresnelTable& fresnel, const RenderSettings& settings);
+SphereImage render_sphere(const SphereLighting& light, const FresnelTable& fresnel, const RenderSettings& settings);
 
 // A working-space environment map from an image in colour space `space` (a name the context's
 // SpaceLibrary knows), converted with OpenColorIO's matrix from `space` to the working space, then
@@ -175,7 +175,7 @@ struct MaterialRender {
   SphereImage truth;
   std::vector<ModelRender> models;
 };
-MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const Lighting& light,
+MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const SphereLighting& light,
                                const std::vector<fresnel::Model>& models, const std::string& kind,
                                const RenderSettings& settings);
 
