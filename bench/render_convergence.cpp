@@ -2,7 +2,8 @@
 // materials under HDR environments at increasing sample counts and compares each heat map with one
 // rendered at a reference count, pixel by pixel (max and 99.9th percentile of |ΔE − ΔE_ref|),
 // and times each pass. Prints a Markdown table.
-//   render_convergence --env DIR [--size N] [--roughness R] [--reference N] [--materials a,b] [--envs a,b]
+//   render_convergence --env DIR [--size N] [--roughness R] [--reference N] [--counts a,b] [--materials a,b]
+//                      [--envs a,b]
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -48,6 +49,10 @@ Options parse(int argc, char** argv) {
     else if (k == "--reference") o.reference = std::stoi(v);
     else if (k == "--materials") o.materials = v;
     else if (k == "--envs") o.envs = v;
+    else if (k == "--counts") {
+      o.counts.clear();
+      for (const auto& c : split(v)) o.counts.push_back(std::stoi(c));
+    }
   }
   return o;
 }

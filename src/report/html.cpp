@@ -48,21 +48,25 @@ constexpr const char* kScript = R"JS(
     if (v === null) return td.textContent;
     return v === '' ? NaN : parseFloat(v);
   }
+  var collator = new Intl.Collator(undefined, { numeric: true });
   function compare(x, y, sign) {
     if (typeof x === 'number' && typeof y === 'number') {
       if (isNaN(x) || isNaN(y)) return isNaN(x) ? (isNaN(y) ? 0 : 1) : -1;
       return sign * (x - y);
     }
-    return sign * String(x).localeCompare(String(y));
+    return sign * collator.compare(String(x), String(y));
   }
   function sortBy(th) {
     var table = th.closest('table'), index = Array.prototype.indexOf.call(th.parentNode.children, th);
     var dir = th.getAttribute('aria-sort') === 'ascending' ? 'descending' : 'ascending';
     table.querySelectorAll('th').forEach(function (h) { h.removeAttribute('aria-sort'); });
     th.setAttribute('aria-sort', dir);
-    var body = table.tBodies[0], rows = Array.prototype.slice.call(body.rows), sign = dir === 'ascending' ? 1 : -1;
-    rows.sort(function (a, b) { return compare(value(a.cells[index]), value(b.cells[index]), sign); });
-    rows.forEach(function (r) { body.appendChild(r); });
+    var body = table.tBodies[0], sign = dir === 'ascending' ? 1 : -1;
+    var keyed = Array.prototype.map.call(body.rows, function (r) { return [value(r.cells[index]), r]; });
+    keyed.sort(function (a, b) { return compare(a[0], b[0], sign); });
+    var rows = document.createDocumentFragment();
+    keyed.forEach(function (k) { rows.appendChild(k[1]); });
+    body.appendChild(rows);
   }
   function matches(text, query) {
     var terms = query.toLowerCase().split(/\s+/).filter(Boolean);

@@ -193,26 +193,33 @@ Rgb8 rgb8(const std::uint8_t* p) { return {p[0], p[1], p[2]}; }
 
 }  // namespace
 
+GalleryEntry material_card(const analysis::Context& ctx, const analysis::LoadedMaterial& m, std::vector<std::string> flags,
+                           std::vector<std::pair<std::string, std::string>> facts) {
+  const auto& mat = m.material;
+  const auto sw = analysis::material_swatches(ctx, m.ior);
+  GalleryEntry e;
+  e.key = mat.key;
+  e.name = mat.name;
+  e.material_class = spectral::to_string(mat.material_class);
+  e.source = mat.source;
+  for (size_t k = 0; k + 2 < sw.strip.size(); k += 3) e.strip.push_back(rgb8(&sw.strip[k]));
+  e.f0 = rgb8(sw.f0.data());
+  e.f82 = rgb8(sw.f82.data());
+  e.flags = std::move(flags);
+  e.facts = std::move(facts);
+  return e;
+}
+
 std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
                                           const analysis::Table& presets, bool figures, const std::vector<Flip>& flips) {
   std::vector<GalleryEntry> out;
   for (size_t i = 0; i < studies.size(); ++i) {
     const auto& st = studies[i];
     const auto& mat = st.material->material;
-    const auto sw = analysis::material_swatches(ctx, st.material->ior);
-    GalleryEntry e;
-    e.key = mat.key;
-    e.name = mat.name;
-    e.material_class = spectral::to_string(mat.material_class);
-    e.source = mat.source;
-    for (size_t k = 0; k + 2 < sw.strip.size(); k += 3) e.strip.push_back(rgb8(&sw.strip[k]));
-    e.f0 = rgb8(sw.f0.data());
-    e.f82 = rgb8(sw.f82.data());
     std::string out_of_range;
     for (const auto& row : presets.rows)
       if (std::get<std::string>(row[0]) == mat.name) out_of_range = std::get<std::string>(row.back());
-    e.flags = card_flags(st, out_of_range);
-    e.facts = card_facts(st);
+    GalleryEntry e = material_card(ctx, *st.material, card_flags(st, out_of_range), card_facts(st));
     if (figures)
       e.figures = {{mat.name + " colour strips", "figures/strip-" + mat.key + ".png"},
                    {mat.name + " curves", "figures/curves-" + mat.key + ".png"}};

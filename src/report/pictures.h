@@ -69,6 +69,12 @@ struct FlipFiles {
 };
 FlipFiles reproduce_flips(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies);
 
+// A gallery card of any material (a catalog entry, a database page, a file; no renders): name,
+// class, page, the ground-truth colour strip (19 angles) and F0/F82 swatches, with the flags and
+// facts given. What a preset library's gallery is made of.
+GalleryEntry material_card(const analysis::Context& ctx, const analysis::LoadedMaterial& m, std::vector<std::string> flags,
+                           std::vector<std::pair<std::string, std::string>> facts);
+
 // A gallery card per study: name, class, page, ground-truth strip and F0/F82 swatches, flags (data
 // extrapolated, presets outside [0, 1] from `presets`' out_of_range column, the F82 model's output
 // clamp), the RMS ΔE2000 of Schlick, F82 and Gulbrandsen and the best fitted model; `figures` and
