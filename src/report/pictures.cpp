@@ -171,7 +171,7 @@ namespace {
 
 std::vector<std::string> card_flags(const analysis::MaterialStudy& st, const std::string& out_of_range) {
   std::vector<std::string> flags;
-  if (!st.material->warnings.empty()) flags.push_back("extrapolated");
+  if (st.material->coverage.extrapolated) flags.push_back("extrapolated");
   if (!out_of_range.empty()) flags.push_back("outside [0, 1]: " + out_of_range);
   if (st.result(fresnel::model_from_name("f82").model).derived_clamps) flags.push_back("F82 output clamped");
   return flags;
@@ -210,16 +210,22 @@ GalleryEntry material_card(const analysis::Context& ctx, const analysis::LoadedM
   return e;
 }
 
+GalleryEntry study_card(const analysis::Context& ctx, const analysis::MaterialStudy& st, std::vector<std::string> flags) {
+  return material_card(ctx, *st.material, std::move(flags), card_facts(st));
+}
+
 std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
                                           const analysis::Table& presets, bool figures, const std::vector<Flip>& flips) {
   std::vector<GalleryEntry> out;
   for (size_t i = 0; i < studies.size(); ++i) {
     const auto& st = studies[i];
     const auto& mat = st.material->material;
+    size_t col = 0;
+    while (col < presets.columns.size() && presets.columns[col].name != "out_of_range") ++col;
     std::string out_of_range;
     for (const auto& row : presets.rows)
-      if (std::get<std::string>(row[0]) == mat.name) out_of_range = std::get<std::string>(row.back());
-    GalleryEntry e = material_card(ctx, *st.material, card_flags(st, out_of_range), card_facts(st));
+      if (col < row.size() && std::get<std::string>(row[0]) == mat.name) out_of_range = std::get<std::string>(row[col]);
+    GalleryEntry e = study_card(ctx, st, card_flags(st, out_of_range));
     if (figures)
       e.figures = {{mat.name + " colour strips", "figures/strip-" + mat.key + ".png"},
                    {mat.name + " curves", "figures/curves-" + mat.key + ".png"}};

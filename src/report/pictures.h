@@ -75,6 +75,10 @@ FlipFiles reproduce_flips(const analysis::Context& ctx, const std::vector<analys
 GalleryEntry material_card(const analysis::Context& ctx, const analysis::LoadedMaterial& m, std::vector<std::string> flags,
                            std::vector<std::pair<std::string, std::string>> facts);
 
+// material_card with the study's facts: the RMS ΔE2000 of Schlick, F82 and Gulbrandsen (derived
+// parameters) and the best fitted model.
+GalleryEntry study_card(const analysis::Context& ctx, const analysis::MaterialStudy& st, std::vector<std::string> flags);
+
 // A gallery card per study: name, class, page, ground-truth strip and F0/F82 swatches, flags (data
 // extrapolated, presets outside [0, 1] from `presets`' out_of_range column, the F82 model's output
 // clamp), the RMS ΔE2000 of Schlick, F82 and Gulbrandsen and the best fitted model; `figures` and

@@ -16,6 +16,14 @@ struct Slot {
   std::string reason;  // the error's message, when it may be skipped
 };
 
+// A skip reason names the page's file relative to the database's data/ folder, so a library's
+// files do not depend on where the database is.
+std::string without_database_root(std::string reason, const spectral::DataPaths& paths) {
+  const std::string root = paths.database + "/data/";
+  if (reason.rfind(root, 0) == 0) reason.erase(0, root.size());
+  return reason;
+}
+
 Slot load_request(const Context& ctx, const spectral::MaterialRequest& r, bool may_skip) {
   Slot s;
   try {
@@ -24,7 +32,7 @@ Slot load_request(const Context& ctx, const spectral::MaterialRequest& r, bool m
     s.material = load_material(ctx, std::move(m));
   } catch (const InputError& e) {
     if (!may_skip) s.error = std::current_exception();
-    s.reason = e.what();
+    s.reason = without_database_root(e.what(), ctx.settings().paths);
   }
   return s;
 }
