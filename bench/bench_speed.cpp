@@ -23,6 +23,7 @@
 
 #include "analysis/tables/speed.h"
 #include "analysis/tables/table_registry.h"
+#include "color/ciede2000_batch.h"
 #include "color/ciede2000_fast.h"
 #include "color/lab.h"
 #include "fresnel/batch.h"
@@ -116,6 +117,17 @@ void bm_de2000_fast(benchmark::State& state) {
   state.counters["evals"] = static_cast<double>(kLabPairs);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kLabPairs));
 }
+void bm_de2000_batch(benchmark::State& state) {
+  const auto& p = lab_pairs();
+  std::vector<double> out(kLabPairs);
+  for (auto _ : state) {
+    fl::color::ciede2000_batch(p.a, p.b, out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["evals"] = static_cast<double>(kLabPairs);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kLabPairs));
+}
 void bm_de2000_lcms(benchmark::State& state) {
   const auto& p = lab_pairs();
   for (auto _ : state)
@@ -200,6 +212,7 @@ void register_all() {
   }
   RegisterBenchmark("de2000/ours_template", bm_de2000_template);
   RegisterBenchmark("de2000/ours_fast", bm_de2000_fast);
+  RegisterBenchmark("de2000/ours_batch", bm_de2000_batch);
   RegisterBenchmark("de2000/lcms", bm_de2000_lcms);
   RegisterBenchmark("ground_truth/rgb_one_angle", bm_ground_truth_rgb);
   RegisterBenchmark("ground_truth/curve_91_angles", bm_ground_truth_curve)->Unit(benchmark::kMicrosecond);
