@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -85,7 +86,7 @@ HWY_INLINE V t_term(D d, V c, V s) {
 // [0°, 134°), where Δθ is under 5e-13° (exp(−31.8)), as in ciede2000_fast.
 HWY_INLINE V rotation_term(D d, V c, V s, V cp_bar) {
   const M negligible = hn::And(hn::Ge(s, hn::Zero(d)), hn::Gt(c, hn::Set(d, kCos134)));
-  const V q = hn::Div(hn::Sub(atan2_deg(d, s, c), hn::Set(d, 275.0)), hn::Set(d, 25.0));
+  const V q = hn::Mul(hn::Sub(atan2_deg(d, s, c), hn::Set(d, 275.0)), hn::Set(d, 1.0 / 25.0));
   const V d_theta = hn::Mul(hn::Set(d, 30.0), hn::Exp(d, hn::Neg(hn::Mul(q, q))));
   const V rc = hn::Mul(hn::Set(d, 2.0), chroma_weight(d, cp_bar));
   const V rt = hn::Neg(hn::Mul(hn::Sin(d, hn::Mul(d_theta, hn::Set(d, 2.0 / detail::kDegPerRad))), rc));
@@ -99,13 +100,16 @@ HWY_INLINE V weighted_difference(D d, V dl, V dc, V d_big_h, V l_bar, V cp_bar, 
   const V sl = hn::Add(one, hn::Div(hn::Mul(hn::Set(d, 0.015), l50), hn::Sqrt(hn::Add(hn::Set(d, 20.0), l50))));
   const V sc = hn::Add(one, hn::Mul(hn::Set(d, 0.045), cp_bar));
   const V sh = hn::Add(one, hn::Mul(hn::Mul(hn::Set(d, 0.015), cp_bar), t));
-  const V tl = hn::Div(dl, sl), tc = hn::Div(dc, sc), th = hn::Div(d_big_h, sh);
+  // One division for the three quotients ΔL′/S_L, ΔC′/S_C, ΔH′/S_H.
+  const V sc_sh = hn::Mul(sc, sh), inv = hn::Div(one, hn::Mul(sl, sc_sh));
+  const V tl = hn::Mul(dl, hn::Mul(sc_sh, inv)), tc = hn::Mul(dc, hn::Mul(hn::Mul(sl, sh), inv));
+  const V th = hn::Mul(d_big_h, hn::Mul(hn::Mul(sl, sc), inv));
   const V e2 = hn::Add(hn::Add(hn::Add(hn::Mul(tl, tl), hn::Mul(tc, tc)), hn::Mul(th, th)), hn::Mul(hn::Mul(rt, tc), th));
   return hn::IfThenElseZero(hn::Gt(e2, hn::Zero(d)), hn::Sqrt(e2));
 }
 
-// ΔE00 of the lanes' pairs; `reference` marks achromatic colours and opposite hues (see
-// ciede2000_fast), whose results the caller replaces with the reference's.
+// ΔE00 of the lanes' pairs; `reference` marks achromatic colours (or chromas near underflow) and
+// opposite hues (see ciede2000_fast), whose results the caller replaces with the reference's.
 HWY_INLINE V de2000_lanes(D d, const double* p1, const double* p2, M& reference) {
   V l1, a1, b1, l2, a2, b2;
   hn::LoadInterleaved3(d, p1, l1, a1, b1);
@@ -119,7 +123,8 @@ HWY_INLINE V de2000_lanes(D d, const double* p1, const double* p2, M& reference)
   const V c2p = hn::Sqrt(hn::Add(hn::Mul(a2p, a2p), hn::Mul(b2, b2)));
   // Unit hue vectors u = (a′, b)/C′; ΔH′ = 2·sqrt(C′1·C′2)·sin(Δh′/2) from |u2 − u1| = 2|sin(Δh′/2)|,
   // signed as u1 × u2.
-  const V inv_c1p = hn::Div(one, c1p), inv_c2p = hn::Div(one, c2p);
+  const V cc = hn::Mul(c1p, c2p), inv_c1c2 = hn::Div(one, cc);
+  const V inv_c1p = hn::Mul(c2p, inv_c1c2), inv_c2p = hn::Mul(c1p, inv_c1c2);
   const V u1x = hn::Mul(a1p, inv_c1p), u1y = hn::Mul(b1, inv_c1p);
   const V u2x = hn::Mul(a2p, inv_c2p), u2y = hn::Mul(b2, inv_c2p);
   const V dx = hn::Sub(u2x, u1x), dy = hn::Sub(u2y, u1y);
@@ -128,9 +133,10 @@ HWY_INLINE V de2000_lanes(D d, const double* p1, const double* p2, M& reference)
   const V mx = hn::Add(u1x, u2x), my = hn::Add(u1y, u2y);
   const V m2 = hn::Add(hn::Mul(mx, mx), hn::Mul(my, my));
   const M far = hn::Lt(m2, d2);
-  const M achromatic = hn::Not(hn::And(hn::Gt(c1p, hn::Zero(d)), hn::Gt(c2p, hn::Zero(d))));
+  // C′1·C′2 zero (an achromatic colour) or so small that its reciprocal overflows.
+  const M achromatic = hn::Not(hn::Gt(cc, hn::Set(d, std::numeric_limits<double>::min())));
   reference = hn::Or(achromatic, hn::And(far, hn::Lt(hn::Abs(cross), hn::Set(d, kOppositeHueCross))));
-  const V d_big_h = hn::CopySign(hn::Sqrt(hn::Mul(hn::Mul(c1p, c2p), d2)), cross);
+  const V d_big_h = hn::CopySign(hn::Sqrt(hn::Mul(cc, d2)), cross);
   // The mean hue h̄′: the direction of u1 + u2, or, more than 90° apart, of u2 − u1 turned by ∓90°.
   const M ccw = hn::Gt(cross, hn::Zero(d));
   const V bx = hn::IfThenElse(far, hn::IfThenElse(ccw, dy, hn::Neg(dy)), mx);

@@ -191,7 +191,9 @@ TEST(LcmsAgreement, BatchMatchesTemplateAndLcmsOnRandomPairsOnEveryInstructionSe
 
 TEST(LcmsAgreement, BatchShortSpansNeutralAndIdenticalColours) {
   const Lab grey{50, 0, 0}, grey2{60, 0, 0}, red{50, 60, 10}, blue{30, 10, -60};
-  const std::vector<Lab> a{red, grey, grey, blue, red}, b{red, grey2, red, red, blue};
+  // Chromas whose product underflows.
+  const Lab faint{50, 1e-160, 2e-160}, faint2{60, -1e-160, 1e-160};
+  const std::vector<Lab> a{red, grey, grey, blue, red, faint}, b{red, grey2, red, red, blue, faint2};
   for (size_t n = 0; n <= a.size(); ++n) {
     std::vector<double> out(n, -1.0);
     fl::color::ciede2000_batch(std::span(a).first(n), std::span(b).first(n), out);
