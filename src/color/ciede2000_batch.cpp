@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "color/ciede2000_constants.h"
 #include "color/lab.h"
 
 namespace fl::color::detail {
@@ -32,16 +33,7 @@ using D = hn::ScalableTag<double>;
 using V = hn::Vec<D>;
 using M = hn::Mask<D>;
 
-// cos and sin of the T term's phase offsets (degrees 30, 6, 63), to double precision.
-constexpr double kCos30 = 0.8660254037844387, kSin30 = 0.5;
-constexpr double kCos6 = 0.9945218953682733, kSin6 = 0.10452846326765347;
-constexpr double kCos63 = 0.4539904997395468, kSin63 = 0.8910065241883678;
-// cos 134°: hues below 134° are 141° or more from the Δθ term's centre at 275°.
-constexpr double kCos134 = -0.6946583704589973;
-// Hues opposite to rounding (|u1 × u2| below this, u1 · u2 < 0): the reference decides.
-constexpr double kOppositeHueCross = 1e-14;
-constexpr double k25pow7 = 6103515625.0;  // 25^7, the formula's chroma constant
-constexpr double kPi = detail::kPi;
+using namespace detail;  // the formula's constants (ciede2000_constants.h), kPi, kDegPerRad
 
 HWY_INLINE V pow7(V x) {
   const V x2 = hn::Mul(x, x);
@@ -61,7 +53,7 @@ HWY_INLINE V atan2_deg(D d, V y, V x) {
   const V r = hn::Atan(d, hn::Div(hn::IfThenElse(steep, ax, ay), hn::IfThenElse(steep, ay, ax)));
   const V first = hn::IfThenElse(steep, hn::Sub(hn::Set(d, 0.5 * kPi), r), r);
   const V upper = hn::Mul(hn::IfThenElse(hn::Lt(x, hn::Zero(d)), hn::Sub(hn::Set(d, kPi), first), first),
-                          hn::Set(d, detail::kDegPerRad));
+                          hn::Set(d, kDegPerRad));
   return hn::IfThenElse(hn::Lt(y, hn::Zero(d)), hn::Sub(hn::Set(d, 360.0), upper), upper);
 }
 
@@ -89,7 +81,7 @@ HWY_INLINE V rotation_term(D d, V c, V s, V cp_bar) {
   const V q = hn::Mul(hn::Sub(atan2_deg(d, s, c), hn::Set(d, 275.0)), hn::Set(d, 1.0 / 25.0));
   const V d_theta = hn::Mul(hn::Set(d, 30.0), hn::Exp(d, hn::Neg(hn::Mul(q, q))));
   const V rc = hn::Mul(hn::Set(d, 2.0), chroma_weight(d, cp_bar));
-  const V rt = hn::Neg(hn::Mul(hn::Sin(d, hn::Mul(d_theta, hn::Set(d, 2.0 / detail::kDegPerRad))), rc));
+  const V rt = hn::Neg(hn::Mul(hn::Sin(d, hn::Mul(d_theta, hn::Set(d, 2.0 / kDegPerRad))), rc));
   return hn::IfThenZeroElse(negligible, rt);
 }
 
@@ -108,7 +100,8 @@ HWY_INLINE V weighted_difference(D d, V dl, V dc, V d_big_h, V l_bar, V cp_bar, 
   return hn::IfThenElseZero(hn::Gt(e2, hn::Zero(d)), hn::Sqrt(e2));
 }
 
-// ΔE00 of the lanes' pairs; `reference` marks achromatic colours (or chromas near underflow) and
+// Sharma, Wu & Dalal 2005, "The CIEDE2000 color-difference formula: implementation notes", with
+// ciede2000_fast's hue vectors: ΔE00 of the lanes' pairs; `reference` marks achromatic colours (or chromas near underflow) and
 // opposite hues (see ciede2000_fast), whose results the caller replaces with the reference's.
 HWY_INLINE V de2000_lanes(D d, const double* p1, const double* p2, M& reference) {
   V l1, a1, b1, l2, a2, b2;

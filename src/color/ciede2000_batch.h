@@ -10,9 +10,9 @@
 
 namespace fl::color {
 
-// out[i] = ΔE00(lab1[i], lab2[i]) (Sharma, Wu & Dalal 2005; kL = kC = kH = 1) with the same
-// vector-algebra hue handling as ciede2000_fast, without branches: the widest instruction set the CPU
-// has is chosen at run time. Throws std::invalid_argument unless the three spans have one length.
+// Sharma, Wu & Dalal 2005, "The CIEDE2000 color-difference formula": out[i] = ΔE00(lab1[i], lab2[i])
+// with kL = kC = kH = 1 and ciede2000_fast's hue vectors, without branches; the widest instruction
+// set the CPU has is chosen at run time. Throws std::invalid_argument unless the three spans have one length.
 void ciede2000_batch(std::span<const Lab> lab1, std::span<const Lab> lab2, std::span<double> out);
 
 // The instruction sets ciede2000_batch is compiled for that this CPU runs, by Highway's names
