@@ -4,7 +4,7 @@
 #include <cmath>
 #include <optional>
 
-#include "color/ciede2000_fast.h"
+#include "color/ciede2000_batch.h"
 #include "fresnel/ground_truth.h"
 #include "spectral/errors.h"
 
@@ -135,8 +135,13 @@ std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::C
 
 std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,
                                      const std::vector<color::Rgb>& b) {
+  std::vector<color::Lab> lab_a, lab_b;
+  lab_a.reserve(a.size());
+  lab_b.reserve(b.size());
+  for (const auto& c : a) lab_a.push_back(ctx.rgb_to_lab(c));
+  for (const auto& c : b) lab_b.push_back(ctx.rgb_to_lab(c));
   std::vector<double> out(a.size());
-  for (size_t i = 0; i < a.size(); ++i) out[i] = color::ciede2000_fast(ctx.rgb_to_lab(a[i]), ctx.rgb_to_lab(b[i]));
+  color::ciede2000_batch(lab_a, lab_b, out);
   return out;
 }
 

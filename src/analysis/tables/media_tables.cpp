@@ -5,7 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "color/ciede2000_fast.h"
+#include "color/ciede2000_batch.h"
 #include "fresnel/exact.h"
 #include "fresnel/media.h"
 #include "fresnel/model_set.h"
@@ -168,8 +168,11 @@ GamutResult gamut_error(const Context& ctx, Model m, const std::vector<double>& 
   r.outside_unit = fresnel::reflectances_outside_unit(m, p);
   r.moved = fresnel::clamp_to_domain(m, p);
   const auto b = fresnel::evaluate_curve_unclamped(m, p, cos);
+  std::vector<color::Lab> lab_a, lab_b;
+  for (const auto& c : a) lab_a.push_back(to_lab(c));
+  for (const auto& c : b) lab_b.push_back(to_lab(c));
   std::vector<double> de(a.size());
-  for (size_t i = 0; i < a.size(); ++i) de[i] = color::ciede2000_fast(to_lab(a[i]), to_lab(b[i]));
+  color::ciede2000_batch(lab_a, lab_b, de);
   r.de = rms(de);
   return r;
 }
