@@ -103,8 +103,9 @@ struct GgxDirection {
 std::vector<GgxDirection> ggx_directions(const brdf::Vec3& v, double alpha, const std::vector<brdf::Point2>& pts) {
   std::vector<GgxDirection> out;
   out.reserve(pts.size());
+  const brdf::GgxVndfSampler vndf(v, alpha);
   for (const auto& u : pts) {
-    const brdf::Vec3 l = brdf::reflect(v, brdf::sample_ggx_vndf(v, alpha, u.u1, u.u2));
+    const brdf::Vec3 l = brdf::reflect(v, vndf(u.u1, u.u2));
     out.push_back({l, brdf::ggx_lobe_cos(v, l, alpha), ggx_vndf_direction_pdf(v, l, alpha)});
   }
   return out;

@@ -73,9 +73,10 @@ struct LobeSample {
 template <class Fn>
 void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
   const brdf::Vec3 v = brdf::view_from_nov(nov);
+  const brdf::GgxVndfSampler vndf(v, alpha);
   for (int k = 0; k < samples; ++k) {
     const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
-    const brdf::Vec3 h = brdf::sample_ggx_vndf(v, alpha, u.u1, u.u2);
+    const brdf::Vec3 h = vndf(u.u1, u.u2);
     const brdf::Vec3 l = brdf::reflect(v, h);
     const double w = brdf::ggx_vndf_weight(v.z, l.z, alpha);
     if (w <= 0.0) continue;
