@@ -1,7 +1,7 @@
 // The 64 × 64 LTC fit (`lut ltc`) against ltc_code's published table (Heitz, Dupuy, Hill & Neubelt
 // 2016; fit/results/ltc.inc of Heitz & Hill's ltc_code), cell by cell on held-out error
-// (analysis/lut/ltc_reference.h), and the fit's wall time. Writes Markdown; scripts/ltc_accuracy.sh
-// writes reports/ltc-vs-ltc_code.md with it.
+// (analysis/lut/ltc_reference.h), and the fit's wall and CPU time (medians of --runs runs, default
+// 5). Writes Markdown; scripts/ltc_accuracy.sh writes reports/ltc-vs-ltc_code.md with it.
 //   ltc_accuracy [--out FILE] [--runs N] [--reference ltc.inc]
 #include <fmt/format.h>
 
@@ -19,6 +19,7 @@
 #include "analysis/lut/lut.h"
 #include "analysis/tables/ltc_comparison.h"
 #include "report/writer.h"
+#include "util/median.h"
 
 namespace {
 
@@ -78,10 +79,12 @@ std::string timing_section(const Timing& t) {
   return fmt::format(
       "## 64 × 64 fit time\n\n`fit_ltc_table(64)` as `lut ltc --size 64` runs it (moments with {} "
       "samples per cell, then the fits; every hardware thread): **{:.2f} s** wall time, the "
-      "minimum of {} runs ({} s), on {} hardware threads; CPU time over all threads {} s. Load "
-      "average {:.1f} at the end (other work shares the machine).\n",
-      fl::analysis::kLutSamples, *std::min_element(t.seconds.begin(), t.seconds.end()),
-      t.seconds.size(), runs, std::thread::hardware_concurrency(), cpu, load[0]);
+      "median of {} runs ({} s; minimum {:.2f} s), on {} hardware threads; CPU time over all "
+      "threads {:.2f} s, the median ({} s). Load average {:.1f} at the end (other work shares the "
+      "machine).\n",
+      fl::analysis::kLutSamples, fl::median(t.seconds), t.seconds.size(), runs,
+      *std::min_element(t.seconds.begin(), t.seconds.end()), std::thread::hardware_concurrency(),
+      fl::median(t.cpu_seconds), cpu, load[0]);
 }
 
 std::string report(const Timing& timing, const LtcReferenceTable& ref, const LtcComparison& c) {
@@ -113,7 +116,7 @@ std::string report(const Timing& timing, const LtcReferenceTable& ref, const Ltc
 
 int main(int argc, char** argv) {
   std::string out, reference = FL_LTC_CODE_TABLE;
-  int runs = 3;
+  int runs = 5;
   for (int k = 1; k + 1 < argc; k += 2) {
     const std::string flag = argv[k];
     if (flag == "--out") out = argv[k + 1];

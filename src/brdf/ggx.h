@@ -77,21 +77,32 @@ inline double ggx_lobe_cos(const Vec3& v, const Vec3& l, double alpha) {
 // Heitz 2018, "Sampling the GGX Distribution of Visible Normals" (JCGT 7(4)), listing 1 with
 // α_x = α_y = α: a microfacet normal h drawn from the visible-normal distribution
 // D_v(h) = G₁(v) max(0, v·h) D(h) / (n·v), from two uniform numbers u1, u2 ∈ [0, 1).
+// The view's part (the stretched view vh and the frame t1, t2 of its hemisphere) is computed once
+// per view by GgxVndfSampler; sample_ggx_vndf is one draw of it.
+struct GgxVndfSampler {
+  Vec3 vh, t1, t2;
+  double alpha = 1, s = 1;
+  GgxVndfSampler(const Vec3& v, double alpha_) : alpha(alpha_) {
+    vh = normalize(Vec3{alpha * v.x, alpha * v.y, v.z});
+    const double len2 = vh.x * vh.x + vh.y * vh.y;
+    t1 = len2 > 0.0 ? Vec3{-vh.y / std::sqrt(len2), vh.x / std::sqrt(len2), 0.0} : Vec3{1.0, 0.0, 0.0};
+    t2 = cross(vh, t1);
+    s = 0.5 * (1.0 + vh.z);
+  }
+  Vec3 operator()(double u1, double u2) const {
+    const double r = std::sqrt(u1);
+    const double phi = 2.0 * std::numbers::pi * u2;
+    const double p1 = r * std::cos(phi);
+    double p2 = r * std::sin(phi);
+    p2 = (1.0 - s) * std::sqrt(std::fmax(0.0, 1.0 - p1 * p1)) + s * p2;
+    const double p3 = std::sqrt(std::fmax(0.0, 1.0 - p1 * p1 - p2 * p2));
+    const Vec3 nh{p1 * t1.x + p2 * t2.x + p3 * vh.x, p1 * t1.y + p2 * t2.y + p3 * vh.y,
+                  p1 * t1.z + p2 * t2.z + p3 * vh.z};
+    return normalize(Vec3{alpha * nh.x, alpha * nh.y, std::fmax(0.0, nh.z)});
+  }
+};
 inline Vec3 sample_ggx_vndf(const Vec3& v, double alpha, double u1, double u2) {
-  const Vec3 vh = normalize(Vec3{alpha * v.x, alpha * v.y, v.z});
-  const double len2 = vh.x * vh.x + vh.y * vh.y;
-  const Vec3 t1 = len2 > 0.0 ? Vec3{-vh.y / std::sqrt(len2), vh.x / std::sqrt(len2), 0.0} : Vec3{1.0, 0.0, 0.0};
-  const Vec3 t2 = cross(vh, t1);
-  const double r = std::sqrt(u1);
-  const double phi = 2.0 * std::numbers::pi * u2;
-  const double p1 = r * std::cos(phi);
-  double p2 = r * std::sin(phi);
-  const double s = 0.5 * (1.0 + vh.z);
-  p2 = (1.0 - s) * std::sqrt(std::fmax(0.0, 1.0 - p1 * p1)) + s * p2;
-  const double p3 = std::sqrt(std::fmax(0.0, 1.0 - p1 * p1 - p2 * p2));
-  const Vec3 nh{p1 * t1.x + p2 * t2.x + p3 * vh.x, p1 * t1.y + p2 * t2.y + p3 * vh.y,
-                p1 * t1.z + p2 * t2.z + p3 * vh.z};
-  return normalize(Vec3{alpha * nh.x, alpha * nh.y, std::fmax(0.0, nh.z)});
+  return GgxVndfSampler(v, alpha)(u1, u2);
 }
 
 // The mirror direction l = 2(v·h)h − v.

@@ -103,8 +103,9 @@ struct GgxDirection {
 std::vector<GgxDirection> ggx_directions(const brdf::Vec3& v, double alpha, const std::vector<brdf::Point2>& pts) {
   std::vector<GgxDirection> out;
   out.reserve(pts.size());
+  const brdf::GgxVndfSampler vndf(v, alpha);
   for (const auto& u : pts) {
-    const brdf::Vec3 l = brdf::reflect(v, brdf::sample_ggx_vndf(v, alpha, u.u1, u.u2));
+    const brdf::Vec3 l = brdf::reflect(v, vndf(u.u1, u.u2));
     out.push_back({l, brdf::ggx_lobe_cos(v, l, alpha), ggx_vndf_direction_pdf(v, l, alpha)});
   }
   return out;
@@ -288,10 +289,42 @@ Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& fr
   return out;
 }
 
+// The point of the segment from `best` (held-out error `best_error`) to `target` nearest `target` whose
+// error stays within `bound`: `target` itself when it is; otherwise the last of the steps of
+// 1/kLtcContinuationSteps from `best` that is, refined by kLtcContinuationBisections bisections
+// towards the first that is not (the walk stays in `best`'s valley).
+struct Chosen {
+  LtcParams params;
+  double step = 0;  // the fraction of the way from best to target
+};
+Chosen toward_continuation(const LtcParams& best, const LtcParams& target, double bound,
+                           const std::function<double(const LtcParams&)>& error) {
+  auto at = [&](double s) {
+    return LtcParams{best.m11 + s * (target.m11 - best.m11), best.m22 + s * (target.m22 - best.m22),
+                     best.m13 + s * (target.m13 - best.m13), best.m31 + s * (target.m31 - best.m31)};
+  };
+  if (error(target) <= bound) return {target, 1.0};
+  double lo = 0.0, hi = 1.0;
+  for (int k = 1; k < kLtcContinuationSteps; ++k) {
+    const double s = static_cast<double>(k) / kLtcContinuationSteps;
+    if (error(at(s)) > bound) {
+      hi = s;
+      break;
+    }
+    lo = s;
+  }
+  for (int k = 0; k < kLtcContinuationBisections; ++k) {
+    const double s = 0.5 * (lo + hi);
+    (error(at(s)) <= bound ? lo : hi) = s;
+  }
+  return {at(lo), lo};
+}
+
 }  // namespace
 
 LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
-                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver, int sample_sqrt) {
+                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver, int sample_sqrt,
+                        double near_equal_margin) {
   if (starts.empty()) throw std::invalid_argument("fit_ltc_cell needs a start");
   const brdf::Vec3 v = brdf::view_from_nov(nov);
   const LtcFrame frame = ltc_frame_from_average_direction(average_dir);
@@ -321,6 +354,16 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   }
   out.kept_start = out.heldout_error > out.start_heldout_error * (1.0 + kLtcHeldOutMargin);
   if (out.kept_start) out.params = best_start, out.heldout_error = out.start_heldout_error;
+  if (out.kept_start || !(near_equal_margin > 0.0)) return out;
+  // The near-equal choice, judged on kLtcNearEqualSamples fresh directions.
+  const auto near_pts = hammersley_points(kLtcNearEqualSamples);
+  const auto near_ggx = ggx_directions(v, alpha, near_pts);
+  auto near_error = [&](const LtcParams& x) {
+    return l3_errors(v, alpha, magnitude, near_ggx, near_pts, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
+  };
+  const auto c = toward_continuation(out.params, clamp_to_bounds(starts.front()),
+                                     near_error(out.params) * (1.0 + near_equal_margin), near_error);
+  if (c.step > 0.0) out.params = c.params, out.heldout_error = heldout(c.params), out.continuation_step = c.step;
   return out;
 }
 

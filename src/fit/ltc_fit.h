@@ -24,7 +24,8 @@ struct LtcParams {
 };
 
 // Bounds of the fit: A stays invertible (m11, m22 > 0, and the fit keeps det = m22 (m11 − m13 m31) > 0)
-// and the lobe stays representable.
+// and the lobe stays representable. The lower bound of m11 and m22 is ltc_code's (fit/fitLTC.cpp,
+// FitLTC::update clamps them at 1e-7); α itself is clamped at 1e-5 (analysis::kLtcMinAlpha).
 constexpr double kLtcMinScale = 1e-7;
 constexpr double kLtcMaxScale = 1e3;
 constexpr double kLtcMaxSkew = 1e3;
@@ -140,12 +141,24 @@ LtcParams extrapolate_ltc_start(const LtcParams& prev, const LtcParams& prev2);
 // The held-out check, on kLtcHeldOutSamples fresh directions (the Hammersley set of ltc_l3_errors):
 // the fit with the lowest held-out error is kept unless it is worse than the best start by more than
 // kLtcHeldOutMargin, and then the cell keeps that start.
+// The near-equal choice (near_equal_margin > 0, a fraction of the error): where the held-out error is
+// flat along a valley, the fit's end point within it depends on where the solver stopped, and
+// neighbouring cells may step far apart in the texture though the continuation (the first start) is
+// nearly as good. Among the LTCs on the segment from the kept fit to the continuation whose held-out
+// error, on kLtcNearEqualSamples fresh directions, stays within (1 + near_equal_margin) of the fit's,
+// the cell takes the one nearest the continuation: the continuation itself when it is within, else
+// the last of steps of 1/kLtcContinuationSteps from the fit that is, refined by
+// kLtcContinuationBisections bisections (a walk, so the choice stays in the fit's valley).
+// heldout_error is then the chosen LTC's (kLtcHeldOutSamples directions); a kept start is kept.
 constexpr int kLtcMaxRounds = 8;
 constexpr int kLtcRetryRounds = 3;
 constexpr double kLtcRoundTolerance = 1e-2;
 constexpr int kLtcHeldOutSamples = 256;
 // The held-out estimates share their GGX directions; below this their difference is sampling noise.
 constexpr double kLtcHeldOutMargin = 0.01;
+constexpr int kLtcNearEqualSamples = 2048;
+constexpr int kLtcContinuationSteps = 8;
+constexpr int kLtcContinuationBisections = 3;
 struct LtcCellFit {
   LtcParams params;
   FitResult fit;            // of the kept fit's last round
@@ -153,9 +166,10 @@ struct LtcCellFit {
   int fits = 0;             // starts fitted
   bool kept_start = false;  // the held-out check rejected every fit
   double heldout_error = 0, start_heldout_error = 0;  // ltc_l3_error(...).relative() of the result and the best start
+  double continuation_step = 0;  // the near-equal choice's way from the fit to the continuation (0: the fit)
 };
 LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
                         const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver = fit_ltc_ceres,
-                        int sample_sqrt = kLtcDefaultSampleSqrt);
+                        int sample_sqrt = kLtcDefaultSampleSqrt, double near_equal_margin = 0.0);
 
 }  // namespace fl::fit

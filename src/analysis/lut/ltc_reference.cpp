@@ -248,11 +248,27 @@ LtcComparison compare_ltc_tables(const LtcTable& table, const LtcReferenceTable&
         c.midpoint_reference_excess,
         c.midpoint_reference_error[k] - std::max(c.reference_error[p.a], c.reference_error[p.b]));
   }
-  const char* names[4] = {"inv_m00", "inv_m20", "inv_m02", "inv_m22"};
-  for (int e = 0; e < 4; ++e) c.jumps[e].entry = names[e];
-  fill_jumps(n, entries, false, c.jumps);
-  fill_jumps(n, reference_entries, true, c.jumps);
+  c.jumps = ltc_entry_jumps(table, reference);
   return c;
+}
+
+std::array<LtcEntryJump, 4> ltc_entry_jumps(const LtcTable& table, const LtcReferenceTable& reference) {
+  const int n = table.grid.size;
+  if (reference.size != n)
+    throw InputError(
+        fmt::format("reference table is {0}x{0}, the fitted table {1}x{1}", reference.size, n));
+  const size_t count = static_cast<size_t>(n) * n;
+  std::vector<std::array<double, 4>> entries(count), reference_entries(count);
+  for (size_t k = 0; k < count; ++k) {
+    entries[k] = table.cells[k].inv_packed;
+    reference_entries[k] = ltc_texture_entries(reference.m_inv[k]);
+  }
+  std::array<LtcEntryJump, 4> jumps;
+  const char* names[4] = {"inv_m00", "inv_m20", "inv_m02", "inv_m22"};
+  for (int e = 0; e < 4; ++e) jumps[e].entry = names[e];
+  fill_jumps(n, entries, false, jumps);
+  fill_jumps(n, reference_entries, true, jumps);
+  return jumps;
 }
 
 }  // namespace fl::analysis

@@ -153,7 +153,9 @@ LtcCell fit_table_cell(const LutGrid& g, const GgxMoments& mo, int i, int j, con
                        const LtcCellFitter& fitter, int fit_sample_sqrt) {
   const bool isotropic = i == 0;
   const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
-  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter, fit_sample_sqrt);
+  const double near_equal_margin = i == g.size - 1 ? kLtcGrazingNearEqualMargin : 0.0;
+  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter, fit_sample_sqrt,
+                                   near_equal_margin);
   LtcCell c;
   c.fit = r.fit;
   c.params = r.params;
