@@ -114,8 +114,9 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
           progress(g, "presets: " + report::materialx_space(ctx).note);
         return 0;
       }
-      analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      const auto t = a->openpbr ? analysis::openpbr_table(ctx, in.studies()) : analysis::presets_table(ctx, in.studies());
+      const auto studies =
+          analysis::study_materials(ctx, ms, analysis::presets_study_options(a->openpbr), study_progress(g, "fitting: "));
+      const auto t = a->openpbr ? analysis::openpbr_table(ctx, studies) : analysis::presets_table(ctx, studies);
       fmt::print("{}", report::render(t, report::format_from_name(a->format)));
       return 0;
     };

@@ -6,6 +6,7 @@
 #include "fresnel/registry.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <cmath>
 #include <memory>
@@ -17,50 +18,91 @@ using fresnel::Model;
 
 // Three residuals per angle whose squares sum to ΔE2000² between the ground truth and the model's
 // RGB (color::ciede2000_residuals), both in the working space's CIELAB. The Jacobian is formed by
-// the chain rule from two automatic derivatives: the model's RGB over its parameters (Jets of
-// kParams lanes) and the residuals over RGB (Jets of 3 lanes), so the costly colour-difference
-// arithmetic carries 3 derivative lanes instead of up to 9.
+// the chain rule from two automatic derivatives: each channel over the parameters it reads (its
+// own block and the shared ones: Jets of kChannelLanes lanes; a channel never reads another
+// channel's block, so those entries are zero) and the residuals over RGB (Jets of 3 lanes).
 template <class Unit>
 class ModelCurveCost : public ceres::CostFunction {
  public:
+  static constexpr int kPer = static_cast<int>(Unit::kChannelParams.size());
+  static constexpr int kShared = static_cast<int>(Unit::kSharedParams.size());
   static constexpr int kParams = fresnel::unit_param_count<Unit>();
+  static constexpr int kChannelLanes = kPer + kShared;
+  using ChannelJet = ceres::Jet<double, kChannelLanes>;
+  using RgbJet = ceres::Jet<double, 3>;
 
-  explicit ModelCurveCost(const CurveTarget* target) : target_(target) {
-    set_num_residuals(3 * static_cast<int>(target->cos_thetas.size()));
+  explicit ModelCurveCost(const CurveTarget* target)
+      : target_(target), residuals_(3 * target->cos_thetas.size()), jacobian_(residuals_.size() * kParams) {
+    set_num_residuals(static_cast<int>(residuals_.size()));
     mutable_parameter_block_sizes()->push_back(kParams);
   }
 
+  // Ceres' bounded trust-region step evaluates each accepted point three times (the projected
+  // line search's cost and gradient, the candidate's cost, then the Jacobian); the last point's
+  // residuals and Jacobian are kept and returned again for bit-identical parameters. Not for
+  // concurrent use: a solve runs single-threaded (num_threads = 1).
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    using ParamJet = ceres::Jet<double, kParams>;
-    using RgbJet = ceres::Jet<double, 3>;
     const double* p = parameters[0];
     double* jac = jacobians ? jacobians[0] : nullptr;
-    ParamJet pj[kParams];
-    for (int k = 0; k < kParams; ++k) pj[k] = ParamJet(p[k], k);
-    for (size_t i = 0; i < target_->cos_thetas.size(); ++i) {
-      const auto& t = target_->truth_lab[i];
-      double* r = residuals + 3 * i;
-      // Residual values always come from the double path, so they do not depend on whether
-      // Jacobians were asked for (Jet arithmetic rounds differently near zero).
-      const auto rgb_d = fresnel::evaluate_unit<Unit, double>(target_->cos_thetas[i], p);
-      color::ciede2000_residuals(t, target_->to_lab(rgb_d), r);
-      if (!jac) continue;
-      const auto rgb = fresnel::evaluate_unit<Unit, ParamJet>(ParamJet(target_->cos_thetas[i]), pj);
-      const color::RgbT<RgbJet> rgb3{RgbJet(rgb.r.a, 0), RgbJet(rgb.g.a, 1), RgbJet(rgb.b.a, 2)};
-      RgbJet rj[3];
-      color::ciede2000_residuals(color::LabT<RgbJet>{RgbJet(t.L), RgbJet(t.a), RgbJet(t.b)}, target_->to_lab(rgb3), rj);
-      for (int q = 0; q < 3; ++q) {
-        for (int k = 0; k < kParams; ++k)
-          jac[(3 * i + q) * kParams + k] = rj[q].v[0] * rgb.r.v[k] + rj[q].v[1] * rgb.g.v[k] + rj[q].v[2] * rgb.b.v[k];
-      }
+    if (!have_residuals_ || std::memcmp(p, at_, sizeof at_) != 0) {
+      std::memcpy(at_, p, sizeof at_);
+      residuals_at(p, residuals_.data());
+      have_residuals_ = true;
+      have_jacobian_ = false;
     }
+    std::copy(residuals_.begin(), residuals_.end(), residuals);
+    if (!jac) return true;
+    if (!have_jacobian_) jacobian_at(p, jacobian_.data());
+    have_jacobian_ = true;
+    std::copy(jacobian_.begin(), jacobian_.end(), jac);
     return true;
   }
 
   static ceres::CostFunction* Create(const CurveTarget* target) { return new ModelCurveCost(target); }
 
  private:
+  // Both evaluations are flattened (every call inlined): the compiler otherwise leaves Eigen's
+  // small Jet-lane loops as calls, about a tenth of a fit's time.
+  // Residual values always come from the double path, so they do not depend on whether Jacobians
+  // were asked for (Jet arithmetic rounds differently near zero).
+  [[gnu::flatten]] void residuals_at(const double* p, double* residuals) const {
+    for (size_t i = 0; i < target_->cos_thetas.size(); ++i) {
+      const auto rgb = fresnel::evaluate_unit<Unit, double>(target_->cos_thetas[i], p);
+      color::ciede2000_residuals(target_->truth_lab[i], target_->to_lab(rgb), residuals + 3 * i);
+    }
+  }
+
+  [[gnu::flatten]] void jacobian_at(const double* p, double* jac) const {
+    // Channel c's lanes: its own parameters, then the shared ones.
+    ChannelJet pj[3][kChannelLanes];
+    for (int c = 0; c < 3; ++c) {
+      for (int k = 0; k < kPer; ++k) pj[c][k] = ChannelJet(p[c * kPer + k], k);
+      for (int s = 0; s < kShared; ++s) pj[c][kPer + s] = ChannelJet(p[3 * kPer + s], kPer + s);
+    }
+    for (size_t i = 0; i < target_->cos_thetas.size(); ++i) {
+      const auto& t = target_->truth_lab[i];
+      const ChannelJet cos_theta(target_->cos_thetas[i]);
+      ChannelJet ch[3];
+      for (int c = 0; c < 3; ++c) ch[c] = Unit::channel(cos_theta, pj[c], pj[c] + kPer);
+      const color::RgbT<RgbJet> rgb{RgbJet(ch[0].a, 0), RgbJet(ch[1].a, 1), RgbJet(ch[2].a, 2)};
+      RgbJet rj[3];
+      color::ciede2000_residuals(color::LabT<RgbJet>{RgbJet(t.L), RgbJet(t.a), RgbJet(t.b)}, target_->to_lab(rgb), rj);
+      for (int q = 0; q < 3; ++q) chain_rule(rj[q], ch, jac + (3 * i + q) * kParams);
+    }
+  }
+
+  // One Jacobian row: d residual / d RGB times d RGB / d parameters.
+  static void chain_rule(const RgbJet& d_rgb, const ChannelJet (&ch)[3], double* row) {
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < kPer; ++k) row[c * kPer + k] = d_rgb.v[c] * ch[c].v[k];
+    for (int s = 0; s < kShared; ++s)
+      row[3 * kPer + s] = d_rgb.v[0] * ch[0].v[kPer + s] + d_rgb.v[1] * ch[1].v[kPer + s] + d_rgb.v[2] * ch[2].v[kPer + s];
+  }
+
   const CurveTarget* target_;
+  mutable double at_[kParams] = {};
+  mutable bool have_residuals_ = false, have_jacobian_ = false;
+  mutable std::vector<double> residuals_, jacobian_;
 };
 
 ceres::CostFunction* create_cost(Model m, const CurveTarget* target) {

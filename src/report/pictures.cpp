@@ -58,9 +58,10 @@ void check_plot_request(const PlotRequest& r) {
 Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m, const PlotRequest& r) {
   check_plot_request(r);
   const std::vector<analysis::LoadedMaterial> one{m};
-  const auto st = analysis::study_one(ctx, one, r.params);
+  const auto models = parse_models(r.models);
+  const auto st = analysis::study_one(ctx, one, r.params, models);
   Output o;
-  const auto d = figure_drawing(ctx, figure_input(st, parse_models(r.models), r.params), r.figure);
+  const auto d = figure_drawing(ctx, figure_input(st, models, r.params), r.figure);
   o.files.emplace_back(r.out, encode(d, file_type(r.out)));
   o.messages.push_back(fmt::format("plot {}: wrote {}", r.figure, r.out));
   return o;

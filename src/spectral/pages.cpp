@@ -19,7 +19,8 @@ std::vector<std::string> list_pages(const std::string& database) {
     if (ec) break;
     const auto& p = it->path();
     if (!it->is_regular_file(ec) || p.extension() != ".yml" || p.filename() == "about.yml") continue;
-    std::string rel = fs::relative(p, data, ec).generic_string();
+    // The iterator's paths start with `data`: lexical, without resolving each file's path.
+    std::string rel = p.lexically_relative(data).generic_string();
     out.push_back(rel.substr(0, rel.size() - 4));
   }
   std::sort(out.begin(), out.end());

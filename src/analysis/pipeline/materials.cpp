@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <exception>
 
 #include "spectral/errors.h"
+#include "spectral/pages.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {
@@ -74,6 +76,10 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
   }
   const auto requests = spectral::expand_materials(specs, ctx.settings().paths);
   set.requested = static_cast<int>(requests.size());
+  // The page catalog is read once, under a lock: before the parallel loads rather than by the
+  // first of them while the others wait (a caller running this beside other work keeps its threads busy).
+  if (std::any_of(requests.begin(), requests.end(), [](const auto& r) { return !r.pattern.empty(); }))
+    spectral::page_entry(ctx.settings().paths.database, "");
   std::vector<Slot> slots(requests.size());
   ProgressCounter done(progress, set.requested);
   parallel_for(

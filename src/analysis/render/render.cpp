@@ -428,7 +428,7 @@ MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, cons
   std::vector<FresnelTable> tables;
   if (!models.empty()) {
     const std::vector<LoadedMaterial> one{m};
-    const auto st = study_one(ctx, one, kind);
+    const auto st = study_one(ctx, one, kind, models);
     for (const auto model : models) {
       params.push_back(model_params(st, model, kind));
       tables.push_back(model_fresnel_table(model, params.back()));

@@ -49,7 +49,7 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
     r.derived = fresnel::derived_model_params(spec.model, d);
     r.derived_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.derived, cos));
     r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
-    if (o.fit) {
+    if (o.fits(spec.model)) {
       r.fitted = fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d), fit_options);
       r.fitted_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
       r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);

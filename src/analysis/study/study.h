@@ -1,6 +1,7 @@
 #pragma once
 // Everything the parameter tables need per material, computed once: ground truth, derived
 // parameters, and every model's derived and fitted parameter sets with their errors.
+#include <algorithm>
 #include <functional>
 #include <vector>
 
@@ -35,7 +36,13 @@ struct MaterialStudy {
 struct StudyOptions {
   std::array<double, 3> point_sample_nm = fresnel::kDefaultPointSampleNm;
   bool fit = true;  // run the Ceres fits (fitted parameter sets)
+  // With `fit`: the models to fit (empty: every model); the others' fitted results stay empty.
+  std::vector<fresnel::Model> fitted_models;
   int threads = 0;  // 0: hardware concurrency
+
+  bool fits(fresnel::Model m) const {
+    return fit && (fitted_models.empty() || std::find(fitted_models.begin(), fitted_models.end(), m) != fitted_models.end());
+  }
 };
 
 // Studies every material (in parallel over materials; each study is deterministic).

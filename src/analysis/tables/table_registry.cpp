@@ -7,6 +7,7 @@
 #include "analysis/tables/speed.h"
 #include "analysis/tables/tables.h"
 #include "spectral/errors.h"
+#include "util/parallel.h"
 
 namespace fl::analysis {
 
@@ -18,6 +19,10 @@ const std::vector<MaterialStudy>& TableInputs::studies() {
 const PageStudies& TableInputs::group_pages() {
   if (!group_pages_) group_pages_ = study_pages(ctx, group_globs(materials));
   return *group_pages_;
+}
+
+void TableInputs::prepare() {
+  parallel_for(2, [this](size_t i) { i == 0 ? (void)studies() : (void)group_pages(); });
 }
 
 const std::vector<TableSpec>& table_specs() {

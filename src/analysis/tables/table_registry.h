@@ -27,6 +27,9 @@ class TableInputs {
   // Every conductor page (covering the visible range) of the groups of the metals among `materials`
   // (spread.h), studied without fits.
   const PageStudies& group_pages();
+  // Computes both of the above at once (each in parallel), for a run that builds many tables; the
+  // tables may then be built concurrently.
+  void prepare();
 
  private:
   std::function<void(int, int)> study_progress_;

@@ -97,9 +97,11 @@ bool wants_fitted(const std::string& kind) {
   return kind == "fitted";
 }
 
-MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one, const std::string& kind) {
+MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one, const std::string& kind,
+                        const std::vector<fresnel::Model>& models) {
   StudyOptions o;
   o.fit = wants_fitted(kind);
+  o.fitted_models = models;
   o.threads = 1;
   return study_materials(ctx, one, o).front();
 }
@@ -115,7 +117,7 @@ namespace {
 void add_curve_rows(Table& t, const Context& ctx, const LoadedMaterial& m, const fresnel::ModelSpec& spec,
                     const std::string& parameters) {
   const std::vector<LoadedMaterial> one{m};
-  const auto st = study_one(ctx, one, parameters);
+  const auto st = study_one(ctx, one, parameters, {spec.model});
   const auto& params = model_params(st, spec.model, parameters);
   const auto approx = fresnel::evaluate_curve(spec.model, params, ctx.cos_thetas());
   const auto de = de2000_per_angle(ctx, st.truth, approx);
@@ -339,6 +341,13 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
              kF82AverageNote, out_of_range_note(flagged),
              "fit_flags: of the eta, kappa fit (see the models table's notes).", coverage_note(materials_of(studies))};
   return t;
+}
+
+StudyOptions presets_study_options(bool openpbr) {
+  StudyOptions o;
+  o.fit = !openpbr;
+  o.fitted_models = {fresnel::model_of<fresnel::models::FresnelRgb>};
+  return o;
 }
 
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
