@@ -5,10 +5,12 @@
 # $JOB_RUNS runs (default 5) for each build, and the ratio. Commit the file.
 #   scripts/bench_jobs.sh BASE_CLI NEW_CLI [JOBS]
 #   BASE_CLI, NEW_CLI: fresnel-lab binaries (e.g. a git worktree of the previous main, built beside)
-#   JOBS: comma-separated names from: reproduce, presets_all, lut_ltc, curve_fitted (default all)
+#   JOBS: comma-separated names from: reproduce, presets_all, library_all, lut_ltc, curve_fitted,
+#   de2000 (default all). de2000 runs each build's bench_speed (found beside the CLI, in
+#   ../bench/) for its CIEDE2000 group: ns per pair of each build's fastest ΔE2000 and Little CMS's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-base=$1 new=$2 jobs=${3:-reproduce,presets_all,lut_ltc,curve_fitted}
+base=$1 new=$2 jobs=${3:-reproduce,presets_all,library_all,lut_ltc,curve_fitted,de2000}
 runs=${JOB_RUNS:-5}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -16,6 +18,7 @@ command_of() {  # the job's arguments
   case $1 in
     reproduce) echo "-q reproduce --no-figures --out $tmp/out" ;;
     presets_all) echo "-q presets ** --format csv" ;;
+    library_all) echo "-q --min-coverage 0 library ** --class all --no-gallery --out $tmp/library" ;;
     lut_ltc) echo "-q lut ltc --size 64 --out $tmp/ltc.exr" ;;
     curve_fitted) echo "-q curve gold --model f82 --params fitted" ;;
   esac
@@ -23,7 +26,8 @@ command_of() {  # the job's arguments
 describe() {
   case $1 in
     reproduce) echo '`reproduce --no-figures` (every table, every fit, the 28-material catalog)' ;;
-    presets_all) echo "\`presets '**'\` (every loadable database page, every model fitted)" ;;
+    presets_all) echo "\`presets '**'\` (every loadable database page; the models presets prints)" ;;
+    library_all) echo "\`library '**' --class all\`, coverage 0 (every loadable page, every model fitted)" ;;
     lut_ltc) echo '`lut ltc --size 64` (the Ceres LTC fit)' ;;
     curve_fitted) echo '`curve gold --model f82 --params fitted`' ;;
   esac
@@ -49,8 +53,36 @@ section="## Jobs against the previous main"
   echo "| job | previous wall s | wall s | ratio | previous CPU s | CPU s | previous peak MB | peak MB |"
   echo "|---|---|---|---|---|---|---|---|"
 } >"$tmp/section"
+# ns per pair of a bench_speed run's ΔE2000 rows: fastest of ours, and Little CMS.
+de2000_once() {
+  local bench
+  bench="$(dirname "$1")/../bench/bench_speed"
+  "$bench" --benchmark_filter=de2000 --benchmark_out="$tmp/de.csv" --benchmark_out_format=csv >/dev/null 2>&1 ||
+    { echo "bench_jobs: $bench failed" >&2; exit 1; }
+  awk -F, '/^"de2000\/ours/ {v = $4 / $NF; if (best == "" || v < best) best = v}
+           /^"de2000\/lcms"/ {l = $4 / $NF} END {printf "%.2f %.2f\n", best, l}' "$tmp/de.csv"
+}
+de2000_row() {
+  : >"$tmp/base.de"; : >"$tmp/new.de"
+  for ((i = 0; i < runs; ++i)); do
+    de2000_once "$base" >>"$tmp/base.de"; de2000_once "$new" >>"$tmp/new.de"
+    echo "bench_jobs: de2000 run $((i + 1))/$runs" >&2
+  done
+  local bo bl no nl
+  bo=$(awk '{print $1}' "$tmp/base.de" | median) bl=$(awk '{print $2}' "$tmp/base.de" | median)
+  no=$(awk '{print $1}' "$tmp/new.de" | median) nl=$(awk '{print $2}' "$tmp/new.de" | median)
+  awk -v bo="$bo" -v bl="$bl" -v no="$no" -v nl="$nl" 'BEGIN {
+    printf "\nCIEDE2000, ns per colour pair (bench_speed, 1024 pairs across CIELAB, median CPU time of %d runs per build):\n\n", '"$runs"'
+    print "| build | fastest of ours | Little CMS | Little CMS time / ours |"
+    print "|---|---|---|---|"
+    printf "| previous main | %.1f | %.1f | %.2f× |\n", bo, bl, bl / bo
+    printf "| this build | %.1f | %.1f | %.2f× |\n", no, nl, nl / no
+    printf "\nOurs against the previous main: %.1f×.\n", bo / no }' >>"$tmp/section.de"
+}
+: >"$tmp/section.de"
 IFS=, read -ra names <<<"$jobs"
 for job in "${names[@]}"; do
+  if [ "$job" = de2000 ]; then de2000_row; continue; fi
   : >"$tmp/base.$job"; : >"$tmp/new.$job"
   for ((i = 0; i < runs; ++i)); do
     run_once "$base" "$job" >>"$tmp/base.$job"
@@ -63,7 +95,9 @@ for job in "${names[@]}"; do
     'BEGIN {printf "| %s | %.2f | %.2f | %.1f× | %.2f | %.2f | %.0f | %.0f |\n", d, bw, nw, bw / nw, bc, nc, bm / 1024, nm / 1024}' \
     >>"$tmp/section"
 done
-echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)." >>"$tmp/section"
+cat "$tmp/section.de" >>"$tmp/section"
+echo >>"$tmp/section"
+echo "Load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)." >>"$tmp/section"
 report=reports/bench.md
 if grep -qF "$section" "$report"; then
   sed "/^$section\$/,\$d" "$report" >"$tmp/report"
