@@ -74,6 +74,17 @@ inline double ggx_lobe_cos(const Vec3& v, const Vec3& l, double alpha) {
   return ggx_ndf(h.z, alpha) * smith_ggx_correlated_visibility(nov, nol, alpha) * nol;
 }
 
+// Heitz 2018, listing 1: the uniform point (√u1 cos 2πu2, √u1 sin 2πu2) of the unit disk that the
+// visible-normal sampler warps; it does not depend on the view, so a point set can be shared by every view.
+struct DiskPoint {
+  double p1 = 0, p2 = 0;
+};
+inline DiskPoint disk_point(double u1, double u2) {
+  const double r = std::sqrt(u1);
+  const double phi = 2.0 * std::numbers::pi * u2;
+  return {r * std::cos(phi), r * std::sin(phi)};
+}
+
 // Heitz 2018, "Sampling the GGX Distribution of Visible Normals" (JCGT 7(4)), listing 1 with
 // α_x = α_y = α: a microfacet normal h drawn from the visible-normal distribution
 // D_v(h) = G₁(v) max(0, v·h) D(h) / (n·v), from two uniform numbers u1, u2 ∈ [0, 1).
@@ -89,12 +100,11 @@ struct GgxVndfSampler {
     t2 = cross(vh, t1);
     s = 0.5 * (1.0 + vh.z);
   }
-  Vec3 operator()(double u1, double u2) const {
-    const double r = std::sqrt(u1);
-    const double phi = 2.0 * std::numbers::pi * u2;
-    const double p1 = r * std::cos(phi);
-    double p2 = r * std::sin(phi);
-    p2 = (1.0 - s) * std::sqrt(std::fmax(0.0, 1.0 - p1 * p1)) + s * p2;
+  Vec3 operator()(double u1, double u2) const { return (*this)(disk_point(u1, u2)); }
+  // The same draw from the view-independent point of the unit disk that (u1, u2) maps to.
+  Vec3 operator()(const DiskPoint& d) const {
+    const double p1 = d.p1;
+    const double p2 = (1.0 - s) * std::sqrt(std::fmax(0.0, 1.0 - p1 * p1)) + s * d.p2;
     const double p3 = std::sqrt(std::fmax(0.0, 1.0 - p1 * p1 - p2 * p2));
     const Vec3 nh{p1 * t1.x + p2 * t2.x + p3 * vh.x, p1 * t1.y + p2 * t2.y + p3 * vh.y,
                   p1 * t1.z + p2 * t2.z + p3 * vh.z};
@@ -123,6 +133,19 @@ inline double ggx_vndf_weight(double nov, double nol, double alpha) {
   if (nol <= 0.0) return 0.0;
   return 4.0 * smith_ggx_correlated_visibility(nov, nol, alpha) * nov * nol / smith_ggx_g1(nov, alpha);
 }
+
+// ggx_vndf_weight at one view, with the view's factors (its Smith term √((n·v)²(1 − α²) + α²) and
+// G₁(v)) computed once; the same operations in the same order, so the same values.
+struct GgxVndfWeight {
+  double nov = 1, a2 = 1, view_root = 1, g1 = 1;
+  GgxVndfWeight(double nov_, double alpha)
+      : nov(nov_), a2(alpha * alpha), view_root(std::sqrt(nov * nov * (1.0 - a2) + a2)), g1(smith_ggx_g1(nov, alpha)) {}
+  double operator()(double nol) const {
+    if (nol <= 0.0) return 0.0;
+    const double visibility = 0.5 / (nol * view_root + nov * std::sqrt(nol * nol * (1.0 - a2) + a2));
+    return 4.0 * visibility * nov * nol / g1;
+  }
+};
 
 // Van der Corput radical inverse in base 2 (Hammersley 1964), by bit reversal.
 inline double radical_inverse_base2(std::uint32_t bits) {

@@ -74,20 +74,34 @@ LutGrid ltc_grid(int size) {
   return g;
 }
 
-DfgTexel integrate_dfg(double nov, double alpha, int samples) {
+std::vector<brdf::DiskPoint> lobe_disk_points(int samples) {
   check_samples(samples);
+  std::vector<brdf::DiskPoint> points;
+  points.reserve(static_cast<size_t>(samples));
+  for (int k = 0; k < samples; ++k) {
+    const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
+    points.push_back(brdf::disk_point(u.u1, u.u2));
+  }
+  return points;
+}
+
+DfgTexel integrate_dfg(double nov, double alpha, const std::vector<brdf::DiskPoint>& points) {
   DfgTexel t;
-  for_each_lobe_sample(nov, alpha, samples, [&](const LobeSample& s) {
+  for_each_lobe_sample(nov, alpha, points, [&](const LobeSample& s) {
     const double m = 1.0 - s.voh;
     const double fc = pow5(m);
     t.dfg1 += (1.0 - fc) * s.weight;
     t.dfg2 += fc * s.weight;
     t.dfg_f82 += s.voh * fc * m * s.weight;
   });
+  const double samples = static_cast<double>(points.size());
   t.dfg1 /= samples;
   t.dfg2 /= samples;
   t.dfg_f82 /= samples;
   return t;
+}
+DfgTexel integrate_dfg(double nov, double alpha, int samples) {
+  return integrate_dfg(nov, alpha, lobe_disk_points(samples));
 }
 
 double integrate_sheen_dfg(double nov, double alpha, int samples) {
@@ -107,11 +121,10 @@ double integrate_sheen_dfg(double nov, double alpha, int samples) {
   return sum * 2.0 * kPi / samples;
 }
 
-GgxMoments integrate_moments(double nov, double alpha, int samples) {
-  check_samples(samples);
+GgxMoments integrate_moments(double nov, double alpha, const std::vector<brdf::DiskPoint>& points) {
   GgxMoments m;
   brdf::Vec3 dir{0, 0, 0};
-  for_each_lobe_sample(nov, alpha, samples, [&](const LobeSample& s) {
+  for_each_lobe_sample(nov, alpha, points, [&](const LobeSample& s) {
     const double m1 = 1.0 - s.voh;
     const double m5 = pow5(m1);
     m.n_d += s.weight;
@@ -120,6 +133,7 @@ GgxMoments integrate_moments(double nov, double alpha, int samples) {
     dir.x += s.l.x * s.weight;
     dir.z += s.l.z * s.weight;
   });
+  const double samples = static_cast<double>(points.size());
   m.n_d /= samples;
   m.f_d /= samples;
   m.l_d /= samples;
@@ -127,10 +141,13 @@ GgxMoments integrate_moments(double nov, double alpha, int samples) {
   m.average_dir = (dir.x * dir.x + dir.z * dir.z > 0.0) ? brdf::normalize(dir) : brdf::Vec3{0, 0, 1};
   return m;
 }
+GgxMoments integrate_moments(double nov, double alpha, int samples) {
+  return integrate_moments(nov, alpha, lobe_disk_points(samples));
+}
 
 namespace {
 
-// Every cell of the grid, integrand(n·v, α, samples), filled in parallel column by column; each
+// Every cell of the grid, integrand(n·v, α), filled in parallel column by column; each
 // cell counts once in `done`.
 template <class Cell, class Integrand>
 std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options, Integrand integrand,
@@ -141,11 +158,19 @@ std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options,
       grid.size,
       [&](size_t j) {
         for (int i = 0; i < grid.size; ++i)
-          cells[grid.index(i, static_cast<int>(j))] = integrand(grid.nov[i], grid.alpha[j], options.samples);
+          cells[grid.index(i, static_cast<int>(j))] = integrand(grid.nov[i], grid.alpha[j]);
         done.add(grid.size);
       },
       options.threads);
   return cells;
+}
+
+// integral(n·v, α, points) over one point set for every cell: lobe_disk_points(options.samples), made once.
+template <class Cell>
+auto lobe_integrand(Cell (*integral)(double, double, const std::vector<brdf::DiskPoint>&), const LutOptions& options) {
+  return [integral, points = lobe_disk_points(options.samples)](double nov, double alpha) {
+    return integral(nov, alpha, points);
+  };
 }
 
 // Fits cell (i, j) of an LTC grid from its starts (fit::fit_ltc_cell); i = 0 (normal incidence) is isotropic.
@@ -177,17 +202,18 @@ std::array<double, 4> ltc_texture_entries(const fit::LtcMatrix& m_inv) {
 
 DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
-  return {grid, integrate_grid<DfgTexel>(grid, options, integrate_dfg, done)};
+  return {grid, integrate_grid<DfgTexel>(grid, options, lobe_integrand(integrate_dfg, options), done)};
 }
 
 std::vector<double> sheen_dfg_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
-  return integrate_grid<double>(grid, options, integrate_sheen_dfg, done);
+  return integrate_grid<double>(
+      grid, options, [&](double nov, double alpha) { return integrate_sheen_dfg(nov, alpha, options.samples); }, done);
 }
 
 MomentsTable moments_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
-  return {grid, integrate_grid<GgxMoments>(grid, options, integrate_moments, done)};
+  return {grid, integrate_grid<GgxMoments>(grid, options, lobe_integrand(integrate_moments, options), done)};
 }
 
 double horizon_clipped_sphere_form_factor(double z, double len) {
@@ -244,7 +270,7 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   ProgressCounter done(options.progress, 2 * size * size);
 
   // Stage 1: moments and mean directions (the LTC magnitudes and frames), every cell independent.
-  t.moments = integrate_grid<GgxMoments>(g, options, integrate_moments, done);
+  t.moments = integrate_grid<GgxMoments>(g, options, lobe_integrand(integrate_moments, options), done);
   // Stage 2: the normal-incidence column, rough to smooth (sequential warm starts).
   for (int j = size - 1; j >= 0; --j) {
     fit::LtcParams start;

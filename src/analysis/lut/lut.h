@@ -70,18 +70,25 @@ struct LobeSample {
   brdf::Vec3 l;
   double voh = 0, weight = 0;
 };
+// Hammersley point k of `samples` (brdf::hammersley) on the unit disk (brdf::disk_point), k = 0 … samples − 1:
+// the view-independent part of every lobe integral, shared by all the cells of a table.
+std::vector<brdf::DiskPoint> lobe_disk_points(int samples);
 template <class Fn>
-void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
+void for_each_lobe_sample(double nov, double alpha, const std::vector<brdf::DiskPoint>& points, Fn fn) {
   const brdf::Vec3 v = brdf::view_from_nov(nov);
   const brdf::GgxVndfSampler vndf(v, alpha);
-  for (int k = 0; k < samples; ++k) {
-    const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
-    const brdf::Vec3 h = vndf(u.u1, u.u2);
+  const brdf::GgxVndfWeight weight(v.z, alpha);
+  for (const auto& d : points) {
+    const brdf::Vec3 h = vndf(d);
     const brdf::Vec3 l = brdf::reflect(v, h);
-    const double w = brdf::ggx_vndf_weight(v.z, l.z, alpha);
+    const double w = weight(l.z);
     if (w <= 0.0) continue;
     fn(LobeSample{l, std::clamp(brdf::dot(v, h), 0.0, 1.0), w});
   }
+}
+template <class Fn>
+void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
+  for_each_lobe_sample(nov, alpha, lobe_disk_points(samples), fn);
 }
 
 DfgTexel integrate_dfg(double nov, double alpha, int samples = kLutSamples);
@@ -90,6 +97,9 @@ DfgTexel integrate_dfg(double nov, double alpha, int samples = kLutSamples);
 // points, density 1/(2π)), as Filament's own generator does: the Charlie lobe is broad.
 double integrate_sheen_dfg(double nov, double alpha, int samples = kLutSamples);
 GgxMoments integrate_moments(double nov, double alpha, int samples = kLutSamples);
+// The same integrals over a shared point set (lobe_disk_points(samples)).
+DfgTexel integrate_dfg(double nov, double alpha, const std::vector<brdf::DiskPoint>& points);
+GgxMoments integrate_moments(double nov, double alpha, const std::vector<brdf::DiskPoint>& points);
 
 // Progress of a long computation: cells done of total (called from worker threads, one at a time).
 using LutProgress = std::function<void(int done, int total)>;
