@@ -6,6 +6,7 @@
 
 #include "fresnel/model_set.h"
 #include "util/median.h"
+#include "util/parallel.h"
 
 namespace fl::analysis {
 
@@ -97,16 +98,17 @@ Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& s
   t.columns = {{"material"},         {"model"},           {"parameters"},      {"curve_rms_de00", 3},
                {"ibl"},              {"ibl_rms_de00", 3}, {"ibl_max_de00", 3}, {"area"},
                {"area_rms_de00", 3}, {"area_max_de00", 3}};
-  std::vector<std::vector<RenderedCandidate>> per_metal;
-  for (const auto& s : studies) {
-    if (s.material->material.material_class != spectral::MaterialClass::Metal) continue;
-    per_metal.push_back(rendered_candidates(ctx, s, points));
-    for (const auto& c : per_metal.back())
-      t.rows.push_back({s.material->material.name, std::string(fresnel::model_spec(c.model).name),
+  std::vector<const MaterialStudy*> metals;
+  for (const auto& s : studies)
+    if (s.material->material.material_class == spectral::MaterialClass::Metal) metals.push_back(&s);
+  std::vector<std::vector<RenderedCandidate>> per_metal(metals.size());
+  parallel_for(metals.size(), [&](size_t i) { per_metal[i] = rendered_candidates(ctx, *metals[i], points); });
+  for (size_t i = 0; i < metals.size(); ++i)
+    for (const auto& c : per_metal[i])
+      t.rows.push_back({metals[i]->material->material.name, std::string(fresnel::model_spec(c.model).name),
                         std::string(c.fitted ? "fitted" : "derived"), c.punctual_rms,
                         approximation(c.model, Lighting::Ibl), c.ibl.rms, c.ibl.max,
                         approximation(c.model, Lighting::Area), c.area.rms, c.area.max});
-  }
   if (!per_metal.empty())
     t.reading = fmt::format("With the spectral F0 and F82 (derived sets): {}; {}. The models no shared table holds, "
                             "evaluated at n·v, render with the errors listed beside their curve errors.",
