@@ -89,8 +89,12 @@ std::vector<std::string> accuracy_notes(const Context& ctx) {
 
 }  // namespace
 
-Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
-  const auto points = shading_points({kDefaultRoughness.begin(), kDefaultRoughness.end()});
+std::vector<ShadingPoint> lut_accuracy_points() {
+  return shading_points({kDefaultRoughness.begin(), kDefaultRoughness.end()});
+}
+
+Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                         const std::vector<ShadingPoint>& points) {
   Table t;
   t.name = "lut-accuracy";
   t.title = "Fresnel models as rendered under IBL (DFG) and area lights (LTC moments) against brute-force spectral "

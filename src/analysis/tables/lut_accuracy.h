@@ -25,8 +25,11 @@ struct RenderedCandidate {
 std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const MaterialStudy& study,
                                                    const std::vector<ShadingPoint>& points);
 
-// `table lut-accuracy`: per metal, every model × {derived, fitted} under ibl and area, at the
-// default roughness set.
-Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
+// The shading points lut-accuracy renders: the default roughness set × the view angles.
+std::vector<ShadingPoint> lut_accuracy_points();
+// `table lut-accuracy`: per metal, every model × {derived, fitted} under ibl and area, at
+// lut_accuracy_points().
+Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                         const std::vector<ShadingPoint>& points);
 
 }  // namespace fl::analysis

@@ -21,8 +21,17 @@ const PageStudies& TableInputs::group_pages() {
   return *group_pages_;
 }
 
+const std::vector<ShadingPoint>& TableInputs::lut_points() {
+  if (!lut_points_) lut_points_ = lut_accuracy_points();
+  return *lut_points_;
+}
+
 void TableInputs::prepare() {
-  parallel_for(2, [this](size_t i) { i == 0 ? (void)studies() : (void)group_pages(); });
+  parallel_for(3, [this](size_t i) {
+    if (i == 0) studies();
+    else if (i == 1) group_pages();
+    else lut_points();
+  });
 }
 
 const std::vector<TableSpec>& table_specs() {
@@ -54,7 +63,7 @@ const std::vector<TableSpec>& table_specs() {
       {"talk_spread", "the talk's Schlick values against the spread of each metal's database pages",
        [](TableInputs& in) { return talk_misses_table(in.ctx, in.materials, in.group_pages().studies); }},
       {"lut-accuracy", "every model as rendered under IBL (DFG) and area lights (LTC moments) against brute-force spectral integration, metals",
-       [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.studies()); }},
+       [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.studies(), in.lut_points()); }},
       {"speed", "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, Pareto front",
        [](TableInputs& in) { return speed_table(in.ctx, in.studies(), load_model_costs(), load_gpu_costs()); }},
   };

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/lut/rendered.h"
 #include "analysis/tables/media_tables.h"
 #include "analysis/study/study.h"
 #include "analysis/tables/spread.h"
@@ -27,14 +28,17 @@ class TableInputs {
   // Every conductor page (covering the visible range) of the groups of the metals among `materials`
   // (spread.h), studied without fits.
   const PageStudies& group_pages();
-  // Computes both of the above at once (each in parallel), for a run that builds many tables; the
-  // tables may then be built concurrently.
+  // lut-accuracy's shading points (lut_accuracy_points()).
+  const std::vector<ShadingPoint>& lut_points();
+  // Computes the above at once (each in parallel), for a run that builds many tables; the tables
+  // may then be built concurrently.
   void prepare();
 
  private:
   std::function<void(int, int)> study_progress_;
   std::optional<std::vector<MaterialStudy>> studies_;
   std::optional<PageStudies> group_pages_;
+  std::optional<std::vector<ShadingPoint>> lut_points_;
 };
 
 struct TableSpec {
