@@ -43,8 +43,12 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
   const auto target = curve_target(ctx, st.truth);
   fit::FitOptions fit_options;
   fit_options.lossless = st.lossless = is_lossless(m.ior);
-  for (const auto& spec : fresnel::model_specs()) {
-    ModelResult r;
+  // One slot per model, in registry order: the fits of a material run in parallel.
+  const auto& specs = fresnel::model_specs();
+  st.models.resize(specs.size());
+  parallel_for(specs.size(), [&](size_t k) {
+    const auto& spec = specs[k];
+    ModelResult& r = st.models[k];
     r.model = spec.model;
     r.derived = fresnel::derived_model_params(spec.model, d);
     r.derived_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.derived, cos));
@@ -54,8 +58,7 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
       r.fitted_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
       r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);
     }
-    st.models.push_back(std::move(r));
-  }
+  }, o.threads);
   std::vector<double> ps;
   for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
   st.ps_eta_kappa = curve_error(ctx, st.truth, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::FresnelRgb>, ps, cos));
