@@ -2,7 +2,9 @@
 # Times whole commands of two builds side by side, alternating runs in one session (the machine's
 # noise hits both alike), and writes the section "Jobs against the previous main" at the end of
 # reports/bench.md: per job the median wall time, CPU time (user + system) and peak memory of
-# $JOB_RUNS runs (default 5) for each build, and the ratio. Commit the file.
+# $JOB_RUNS runs (default 5) for each build, and the ratio; the whole-database jobs (presets_all,
+# library_all) run $SLOW_RUNS times (default $JOB_RUNS: a previous build may take minutes each).
+# Commit the file.
 #   scripts/bench_jobs.sh BASE_CLI NEW_CLI [JOBS]
 #   BASE_CLI, NEW_CLI: fresnel-lab binaries (e.g. a git worktree of the previous main, built beside)
 #   JOBS: comma-separated names from: reproduce, presets_all, library_all, lut_ltc, curve_fitted,
@@ -46,7 +48,7 @@ section="## Jobs against the previous main"
 {
   echo "$section"
   echo
-  echo "Written by \`scripts/bench_jobs.sh\`: each job run $runs times per build, the builds alternating run by run"
+  echo "Written by \`scripts/bench_jobs.sh\`: each job run the stated number of times per build, the builds alternating run by run"
   echo "in one session; medians. Machine: $(nproc) hardware threads, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //');"
   echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)."
   echo
@@ -84,15 +86,17 @@ IFS=, read -ra names <<<"$jobs"
 for job in "${names[@]}"; do
   if [ "$job" = de2000 ]; then de2000_row; continue; fi
   : >"$tmp/base.$job"; : >"$tmp/new.$job"
-  for ((i = 0; i < runs; ++i)); do
+  n=$runs
+  case $job in presets_all | library_all) n=${SLOW_RUNS:-$runs} ;; esac
+  for ((i = 0; i < n; ++i)); do
     run_once "$base" "$job" >>"$tmp/base.$job"
     run_once "$new" "$job" >>"$tmp/new.$job"
-    echo "bench_jobs: $job run $((i + 1))/$runs" >&2
+    echo "bench_jobs: $job run $((i + 1))/$n" >&2
   done
   col() { awk -v c="$2" '{print $c}' "$tmp/$1.$job" | median; }
   bw=$(col base 1) nw=$(col new 1) bc=$(col base 2) nc=$(col new 2) bm=$(col base 3) nm=$(col new 3)
-  awk -v d="$(describe "$job")" -v bw="$bw" -v nw="$nw" -v bc="$bc" -v nc="$nc" -v bm="$bm" -v nm="$nm" \
-    'BEGIN {printf "| %s | %.2f | %.2f | %.1f× | %.2f | %.2f | %.0f | %.0f |\n", d, bw, nw, bw / nw, bc, nc, bm / 1024, nm / 1024}' \
+  awk -v n="$n" -v d="$(describe "$job")" -v bw="$bw" -v nw="$nw" -v bc="$bc" -v nc="$nc" -v bm="$bm" -v nm="$nm" \
+    'BEGIN {printf "| %s | %.2f | %.2f | %.1f× | %.2f | %.2f | %.0f | %.0f |\n", d " (" n (n == 1 ? " run)" : " runs)"), bw, nw, bw / nw, bc, nc, bm / 1024, nm / 1024}' \
     >>"$tmp/section"
 done
 cat "$tmp/section.de" >>"$tmp/section"
