@@ -27,12 +27,18 @@ inline double f0_in_medium_metal(double f0, double eta_e) {
   return (a * one_minus + 4.0 * f0) / (b * one_minus + 4.0 * f0);
 }
 
+// The real index whose normal-incidence reflectance ((η − 1)/(η + 1))² is f0: η = (1 + √f0)/(1 − √f0),
+// with f0 held below 1 so that η stays finite.
+inline double ior_from_f0(double f0) {
+  const double s = std::sqrt(std::clamp(f0, 0.0, 0.999999));
+  return (1.0 + s) / (1.0 - s);
+}
+
 // Hoffman 2020, Schlick 1994 for internal reflection: evaluated with the transmission angle's
 // cosine for a dielectric of index n = (1 + √F0)/(1 − √F0) seen from inside; 1 past the critical
 // angle.
 inline double schlick_internal(double cos_theta_i, double f0) {
-  const double s = std::sqrt(std::clamp(f0, 0.0, 0.999999));
-  const double n = (1.0 + s) / (1.0 - s);
+  const double n = ior_from_f0(f0);
   const double sin2_t = n * n * (1.0 - cos_theta_i * cos_theta_i);
   if (sin2_t >= 1.0) return 1.0;
   return schlick(std::sqrt(1.0 - sin2_t), f0);

@@ -218,14 +218,13 @@ GalleryEntry study_card(const analysis::Context& ctx, const analysis::MaterialSt
 std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
                                           const analysis::Table& presets, bool figures, const std::vector<Flip>& flips) {
   std::vector<GalleryEntry> out;
+  const int col = analysis::column_index(presets, "out_of_range");
   for (size_t i = 0; i < studies.size(); ++i) {
     const auto& st = studies[i];
     const auto& mat = st.material->material;
-    size_t col = 0;
-    while (col < presets.columns.size() && presets.columns[col].name != "out_of_range") ++col;
     std::string out_of_range;
     for (const auto& row : presets.rows)
-      if (col < row.size() && std::get<std::string>(row[0]) == mat.name) out_of_range = std::get<std::string>(row[col]);
+      if (std::get<std::string>(row[0]) == mat.name) out_of_range = std::get<std::string>(row[col]);
     GalleryEntry e = study_card(ctx, st, card_flags(st, out_of_range));
     if (figures)
       e.figures = {{mat.name + " colour strips", "figures/strip-" + mat.key + ".png"},

@@ -8,16 +8,11 @@
 #include "analysis/tables/tables.h"
 #include "fresnel/model_set.h"
 #include "spectral/pages.h"
+#include "spectral/text_file.h"
 
 namespace fl::analysis {
 
 namespace {
-
-int column_index(const Table& t, const std::string& name) {
-  for (size_t i = 0; i < t.columns.size(); ++i)
-    if (t.columns[i].name == name) return static_cast<int>(i);
-  throw std::logic_error("table " + t.name + " has no column " + name);
-}
 
 std::vector<Cell> page_row(const std::string& page, const spectral::PageEntry* entry) {
   return {page, spectral::book_of(page), entry ? entry->book_name : std::string(), entry ? entry->section : std::string()};
@@ -83,19 +78,10 @@ std::string quality_flags(const MaterialStudy& s, const std::string& out_of_rang
   if (s.material->coverage.extrapolated) flags.push_back("extrapolated");
   for (const auto& r : s.models) {
     const std::string f = fit::fit_flags(r.fitted);
-    size_t start = 0;
-    while (start < f.size()) {
-      const size_t end = std::min(f.find(' ', start), f.size());
-      flags.push_back(std::string(fresnel::model_spec(r.model).name) + ":" + f.substr(start, end - start));
-      start = end + 1;
-    }
+    for (const auto flag : spectral::split_fields(f, " "))
+      flags.push_back(std::string(fresnel::model_spec(r.model).name) + ":" + std::string(flag));
   }
-  size_t start = 0;
-  while (start < out_of_range.size()) {
-    const size_t end = std::min(out_of_range.find(' ', start), out_of_range.size());
-    flags.push_back("out_of_range:" + out_of_range.substr(start, end - start));
-    start = end + 1;
-  }
+  for (const auto value : spectral::split_fields(out_of_range, " ")) flags.push_back("out_of_range:" + std::string(value));
   std::string out;
   for (const auto& f : flags) out += (out.empty() ? "" : " ") + f;
   return out;

@@ -124,7 +124,7 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       p.roughness = r;
       p.view_deg = deg;
       p.nov = std::cos(deg * std::numbers::pi / 180.0);
-      p.alpha = std::max(r * r, kLtcMinAlpha);
+      p.alpha = ltc_alpha_at(r);
       points.push_back(std::move(p));
     }
   TexelCache<DfgTexel, decltype(&dfg_cell)> dfg(dfg_grid(kEngineLutSize), &dfg_cell);

@@ -12,6 +12,17 @@ namespace fl::analysis {
 
 namespace {
 
+// The white of a set of per-wavelength XYZ weights: their sum, in wavelength order.
+color::Xyz sum_xyz(const std::vector<color::Xyz>& weights) {
+  color::Xyz w;
+  for (const auto& v : weights) {
+    w.X += v.X;
+    w.Y += v.Y;
+    w.Z += v.Z;
+  }
+  return w;
+}
+
 const Settings& validated(const Settings& s) {
   if (s.angles < 3 || s.angles > 100000) throw InputError("--angles must be between 3 and 100000");
   if (!(s.eta_outside > 0.0) || !std::isfinite(s.eta_outside)) throw InputError("the outside medium's index must be positive");
@@ -27,12 +38,7 @@ std::optional<color::SpaceWhite> space_white(const Settings& s, const spectral::
   if (s.ocio_config.empty()) throw InputError("--ocio-white applies to the spaces of an --ocio-config only");
   const std::string source = "white " + s.ocio_white + " given by --ocio-white";
   if (s.ocio_white == "ACES") return color::SpaceWhite{color::xyz_from_xy({0.32168, 0.33767}), "D60", source};
-  color::Xyz w;
-  for (const auto& v : color::xyz_weights(observer, spectral::illuminant_spd(s.ocio_white, grid, colord))) {
-    w.X += v.X;
-    w.Y += v.Y;
-    w.Z += v.Z;
-  }
+  const color::Xyz w = sum_xyz(color::xyz_weights(observer, spectral::illuminant_spd(s.ocio_white, grid, colord)));
   return color::SpaceWhite{{w.X / w.Y, 1.0, w.Z / w.Y}, s.ocio_white, source};
 }
 
@@ -49,12 +55,7 @@ Context::Context(const Settings& s)
   if (settings_.illuminant.empty()) settings_.illuminant = space_.reference_illuminant;
   const auto illuminant = spectral::illuminant_spd(settings_.illuminant, grid_, colord);
   const auto xyz_w = color::xyz_weights(observer, illuminant);
-  illuminant_white_ = {};
-  for (const auto& w : xyz_w) {
-    illuminant_white_.X += w.X;
-    illuminant_white_.Y += w.Y;
-    illuminant_white_.Z += w.Z;
-  }
+  illuminant_white_ = sum_xyz(xyz_w);
   const color::Mat3 m = space_.xyz_to_rgb *
                         color::adaptation_matrix(color::adaptation_from_name(s.adaptation), illuminant_white_, space_.white);
   rgb_weights_.resize(xyz_w.size());

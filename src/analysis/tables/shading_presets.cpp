@@ -1,5 +1,7 @@
 #include "analysis/tables/shading_presets.h"
 
+#include "fresnel/media.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -30,12 +32,6 @@ bool is_clear(const LoadedMaterial& m) {
   return std::all_of(m.ior.ior.begin(), m.ior.ior.end(), [](const auto& n) { return n.imag() <= kClearKappa; });
 }
 
-// The real index with ((η − 1)/(η + 1))² = r: η = (1 + √r)/(1 − √r).
-double ior_from_reflectance(double r) {
-  const double s = std::sqrt(std::clamp(r, 0.0, 0.999999));
-  return (1.0 + s) / (1.0 - s);
-}
-
 }  // namespace
 
 ShadingPreset shading_preset(const Context& ctx, const MaterialStudy& study) {
@@ -48,7 +44,7 @@ ShadingPreset shading_preset(const Context& ctx, const MaterialStudy& study) {
   p.edge_tint = study.derived.g_refl_eta;
   // RGB (1, 1, 1) is the space's white with Y = 1, so Y of a colour is the middle row of RGB → XYZ.
   const double f0_y = (ctx.space().rgb_to_xyz * p.f0).Y;
-  if (!p.metal) p.ior = ior_from_reflectance(f0_y);
+  if (!p.metal) p.ior = fresnel::ior_from_f0(f0_y);
   return p;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cstdlib>
 #include <stdexcept>
 #include <thread>
@@ -23,10 +24,20 @@ double ModelCosts::ns_per_eval(Model m) const {
   throw std::logic_error("model without a cost");
 }
 
-ModelCosts read_model_costs(const std::string& path) {
+namespace {
+
+// The data rows of a comma-separated cost file: '#' lines are comments (the value of a
+// "# KEY:" comment goes to `note`), the first other line is the header, which `header_ok` judges
+// (`header_error` when it fails, `missing_header` when there is none).
+struct CostRow {
+  int line_no = 0;
+  std::vector<std::string> fields;
+};
+std::vector<CostRow> cost_file_rows(const std::string& path, std::string_view comment_key, std::string& note,
+                                    const std::function<bool(std::string_view line)>& header_ok,
+                                    const std::string& header_error, const std::string& missing_header) {
   const std::string text = spectral::read_text_file(path);
-  ModelCosts out;
-  out.source = path;
+  std::vector<CostRow> rows;
   bool header = false;
   int line_no = 0;
   for (const auto raw : spectral::split_lines(text)) {
@@ -34,17 +45,34 @@ ModelCosts read_model_costs(const std::string& path) {
     const auto line = spectral::trim(raw);
     if (line.empty()) continue;
     if (line.front() == '#') {
-      constexpr std::string_view kMachine = "# machine:";
-      if (line.substr(0, kMachine.size()) == kMachine) out.machine = std::string(spectral::trim(line.substr(kMachine.size())));
+      if (line.substr(0, comment_key.size()) == comment_key) note = std::string(spectral::trim(line.substr(comment_key.size())));
       continue;
     }
-    const auto f = spectral::split_fields(line, ",");
     if (!header) {
-      if (f.size() < 2 || f[0] != "model" || f[1] != "ns_per_eval_float_batched")
-        throw InputError(path, line_no, "header must start with model,ns_per_eval_float_batched");
+      if (!header_ok(line)) throw InputError(path, line_no, header_error);
       header = true;
       continue;
     }
+    CostRow row{line_no, {}};
+    for (const auto f : spectral::split_fields(line, ",")) row.fields.emplace_back(f);
+    rows.push_back(std::move(row));
+  }
+  if (!header) throw InputError(path, 0, missing_header);
+  return rows;
+}
+
+}  // namespace
+
+ModelCosts read_model_costs(const std::string& path) {
+  ModelCosts out;
+  out.source = path;
+  const auto header_ok = [](std::string_view line) {
+    const auto f = spectral::split_fields(line, ",");
+    return f.size() >= 2 && f[0] == "model" && f[1] == "ns_per_eval_float_batched";
+  };
+  for (const auto& [line_no, f] :
+       cost_file_rows(path, "# machine:", out.machine, header_ok, "header must start with model,ns_per_eval_float_batched",
+                      "no header line model,ns_per_eval_float_batched")) {
     if (f.size() < 2) throw InputError(path, line_no, "expected model,ns_per_eval_float_batched,...");
     const auto& spec = [&]() -> const fresnel::ModelSpec& {
       try {
@@ -60,7 +88,6 @@ ModelCosts read_model_costs(const std::string& path) {
       if (c.model == spec.model) throw InputError(path, line_no, fmt::format("model '{}' listed twice", spec.name));
     out.costs.push_back({spec.model, ns});
   }
-  if (!header) throw InputError(path, 0, "no header line model,ns_per_eval_float_batched");
   for (const auto& spec : fresnel::model_specs()) {
     if (std::none_of(out.costs.begin(), out.costs.end(), [&](const ModelCost& c) { return c.model == spec.model; }))
       throw InputError(path, 0, fmt::format("no cost for model '{}'", spec.name));
@@ -81,7 +108,7 @@ namespace {
 
 constexpr const char* kGpuHeader = "model,lighting,instructions,arithmetic,extended,texture";
 
-GpuCost parse_gpu_row(const std::string& path, int line_no, const std::vector<std::string_view>& f) {
+GpuCost parse_gpu_row(const std::string& path, int line_no, const std::vector<std::string>& f) {
   if (f.size() != 6) throw InputError(path, line_no, fmt::format("expected {}", kGpuHeader));
   GpuCost c;
   try {
@@ -103,33 +130,19 @@ GpuCost parse_gpu_row(const std::string& path, int line_no, const std::vector<st
 }  // namespace
 
 GpuCosts read_gpu_costs(const std::string& path) {
-  const std::string text = spectral::read_text_file(path);
   GpuCosts out;
   out.source = path;
-  bool header = false;
-  int line_no = 0;
-  for (const auto raw : spectral::split_lines(text)) {
-    ++line_no;
-    const auto line = spectral::trim(raw);
-    if (line.empty()) continue;
-    if (line.front() == '#') {
-      constexpr std::string_view kTools = "# tools:";
-      if (line.substr(0, kTools.size()) == kTools) out.tools = std::string(spectral::trim(line.substr(kTools.size())));
-      continue;
-    }
-    if (!header) {
-      if (line != kGpuHeader) throw InputError(path, line_no, fmt::format("header must be {}", kGpuHeader));
-      header = true;
-      continue;
-    }
-    const auto c = parse_gpu_row(path, line_no, spectral::split_fields(line, ","));
+  const auto header_ok = [](std::string_view line) { return line == kGpuHeader; };
+  for (const auto& [line_no, f] : cost_file_rows(path, "# tools:", out.tools, header_ok,
+                                                 fmt::format("header must be {}", kGpuHeader),
+                                                 fmt::format("no header line {}", kGpuHeader))) {
+    const auto c = parse_gpu_row(path, line_no, f);
     for (const auto& o : out.costs)
       if (o.model == c.model && o.lighting == c.lighting)
         throw InputError(path, line_no, fmt::format("'{}' under {} listed twice", fresnel::model_spec(c.model).name,
                                                     lighting_name(c.lighting)));
     out.costs.push_back(c);
   }
-  if (!header) throw InputError(path, 0, fmt::format("no header line {}", kGpuHeader));
   for (const auto& spec : fresnel::model_specs())
     for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area})
       if (std::none_of(out.costs.begin(), out.costs.end(), [&](const GpuCost& c) { return c.model == spec.model && c.lighting == l; }))

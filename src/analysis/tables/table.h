@@ -1,5 +1,6 @@
 #pragma once
 // A table of results, independent of how it is written (CSV, Markdown, JSON live in report/).
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
@@ -23,5 +24,12 @@ struct Table {
   std::string reading;  // a short reading of what the table shows (Markdown)
   std::vector<std::string> notes;  // conventions, flags (Markdown bullet list)
 };
+
+// The index of the column named `name`; a table without it is a programming error.
+inline int column_index(const Table& t, const std::string& name) {
+  for (size_t i = 0; i < t.columns.size(); ++i)
+    if (t.columns[i].name == name) return static_cast<int>(i);
+  throw std::logic_error("table " + t.name + " has no column " + name);
+}
 
 }  // namespace fl::analysis
