@@ -86,14 +86,21 @@ class TexelCache {
 
 double as_stored(double v) { return static_cast<double>(static_cast<float>(v)); }
 
-DfgTexel dfg_cell(double nov, double alpha) {
-  const auto t = integrate_dfg(nov, alpha, kLutSamples);
-  return {as_stored(t.dfg1), as_stored(t.dfg2), as_stored(t.dfg_f82)};
-}
-GgxMoments ltc_cell(double nov, double alpha) {
-  const auto m = integrate_moments(nov, alpha, kLutSamples);
-  return {as_stored(m.n_d), as_stored(m.f_d), as_stored(m.l_d), m.average_dir};
-}
+// A texel as the engine tables store it, integrated over the shared point set.
+struct DfgCell {
+  const std::vector<brdf::DiskPoint>* points;
+  DfgTexel operator()(double nov, double alpha) const {
+    const auto t = integrate_dfg(nov, alpha, *points);
+    return {as_stored(t.dfg1), as_stored(t.dfg2), as_stored(t.dfg_f82)};
+  }
+};
+struct MomentsCell {
+  const std::vector<brdf::DiskPoint>* points;
+  GgxMoments operator()(double nov, double alpha) const {
+    const auto m = integrate_moments(nov, alpha, *points);
+    return {as_stored(m.n_d), as_stored(m.f_d), as_stored(m.l_d), m.average_dir};
+  }
+};
 
 // Texel coordinates of a point: DFG texel centres (i + ½)/N over n·v and roughness; LTC endpoints
 // i/(N − 1) over √(1 − n·v) and roughness.
@@ -127,8 +134,10 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       p.alpha = ltc_alpha_at(r);
       points.push_back(std::move(p));
     }
-  TexelCache<DfgTexel, decltype(&dfg_cell)> dfg(dfg_grid(kEngineLutSize), &dfg_cell);
-  TexelCache<GgxMoments, decltype(&ltc_cell)> ltc(ltc_grid(kEngineLutSize), &ltc_cell);
+  // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
+  const auto disk = lobe_disk_points(kLutSamples);
+  TexelCache<DfgTexel, DfgCell> dfg(dfg_grid(kEngineLutSize), DfgCell{&disk});
+  TexelCache<GgxMoments, MomentsCell> ltc(ltc_grid(kEngineLutSize), MomentsCell{&disk});
   for (const auto& p : points) {
     for_texels(dfg_read(p), [&](int i, int j, double) { dfg.request(i, j); });
     for_texels(ltc_read(p), [&](int i, int j, double) { ltc.request(i, j); });
@@ -139,7 +148,7 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       points.size(),
       [&](size_t k) {
         auto& p = points[k];
-        for_each_lobe_sample(p.nov, p.alpha, kLutSamples, [&](const LobeSample& s) { p.samples.push_back(s); });
+        for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) { p.samples.push_back(s); });
         for_texels(dfg_read(p), [&](int i, int j, double w) {
           const auto& c = dfg.at(i, j);
           p.dfg.dfg1 += w * c.dfg1;
