@@ -112,6 +112,9 @@ LoadedMaterial load_material(const Context& ctx, spectral::Material m) {
   LoadedMaterial out{std::move(m), std::move(sampled.ior), {}, coverage_of(ctx, sampled)};
   for (const auto& w : out.material.constants.warnings) out.warnings.push_back(w);
   for (auto& w : sampled.warnings) out.warnings.push_back(std::move(w));
+  // Everything downstream reads the sampled `ior`; the measured tables are let go, which is most
+  // of a whole-database run's memory.
+  std::vector<spectral::DispersionBlock>().swap(out.material.constants.blocks);
   return out;
 }
 
