@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <fmt/format.h>
 
 #include "spectral/errors.h"
@@ -190,15 +191,16 @@ Material read_database_page(const std::string& page, const DataPaths& paths) {
 
 std::vector<MaterialRequest> expand_materials(const std::vector<std::string>& specs, const DataPaths& paths) {
   std::vector<MaterialRequest> out;
-  std::vector<std::string> pages;
-  bool listed = false;
+  std::map<std::string, std::vector<std::string>> pages;  // by folder: only what the globs can match is listed
   for (const auto& spec : specs) {
     if (!is_glob(spec)) {
       out.push_back({spec, ""});
       continue;
     }
-    if (!listed) pages = list_pages(paths.database), listed = true;
-    const auto matched = match_pages(pages, spec);
+    const std::string folder = glob_folder(spec);
+    auto listed = pages.find(folder);
+    if (listed == pages.end()) listed = pages.emplace(folder, list_pages(paths.database, folder)).first;
+    const auto matched = match_pages(listed->second, spec);
     if (matched.empty())
       throw InputError(fmt::format("'{}' matches no database page under {}/data", spec, paths.database));
     for (const auto& p : matched) out.push_back({p, spec});

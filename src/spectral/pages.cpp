@@ -9,12 +9,13 @@
 namespace fl::spectral {
 namespace fs = std::filesystem;
 
-std::vector<std::string> list_pages(const std::string& database) {
+std::vector<std::string> list_pages(const std::string& database, const std::string& folder) {
   std::vector<std::string> out;
   const fs::path data = fs::path(database) / "data";
+  const fs::path root = folder.empty() ? data : data / folder;
   std::error_code ec;
-  if (!fs::is_directory(data, ec)) return out;
-  for (auto it = fs::recursive_directory_iterator(data, fs::directory_options::skip_permission_denied, ec);
+  if (!fs::is_directory(root, ec)) return out;
+  for (auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
        it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (ec) break;
     const auto& p = it->path();
@@ -44,6 +45,16 @@ bool glob_match(std::string_view pattern, std::string_view path) {
   if (path.empty()) return false;
   if (pattern[0] == '?' ? path[0] == '/' : pattern[0] != path[0]) return false;
   return glob_match(pattern.substr(1), path.substr(1));
+}
+
+std::string glob_folder(std::string_view pattern) {
+  const size_t wild = pattern.find_first_of("*?");
+  const size_t slash = pattern.substr(0, wild).rfind('/');
+  if (slash == std::string_view::npos) return {};
+  const fs::path folder(pattern.substr(0, slash));
+  // A folder outside data/ holds no page: the whole listing is matched (and matches nothing).
+  if (folder.is_absolute() || std::find(folder.begin(), folder.end(), fs::path("..")) != folder.end()) return {};
+  return folder.generic_string();
 }
 
 bool is_glob(std::string_view spec) { return spec.find_first_of("*?") != std::string_view::npos; }

@@ -9,8 +9,9 @@
 namespace fl::spectral {
 
 // Every data file under DATABASE/data/ except the books' about.yml, as page paths relative to data/
-// without ".yml" ("main/Au/nk/Johnson"), sorted.
-std::vector<std::string> list_pages(const std::string& database);
+// without ".yml" ("main/Au/nk/Johnson"), sorted. With `folder` ("main/Au"), only the pages under
+// DATABASE/data/FOLDER/.
+std::vector<std::string> list_pages(const std::string& database, const std::string& folder = "");
 
 // A page path glob: `*` matches any run of characters within one path segment, `?` one character
 // other than '/', `**` any run including '/' (so 'main/**' is every page of the main shelf and '**'
@@ -20,6 +21,9 @@ bool is_glob(std::string_view spec);  // contains '*' or '?'
 
 // The pages matching `pattern`, sorted.
 std::vector<std::string> match_pages(const std::vector<std::string>& pages, const std::string& pattern);
+// The folder every match of `pattern` lies in: its segments before the first one holding a
+// wildcard ("main/Au/**" → "main/Au", "**" → ""); empty for a folder outside data/ ("../x/*").
+std::string glob_folder(std::string_view pattern);
 
 // A page's place in the database's catalog.
 struct PageEntry {
