@@ -36,21 +36,16 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
-# The validators' npm packages (MaterialX 1.39 as WebAssembly, the Khronos glTF validator), exactly as
-# locked; installed again only when the lock file changes.
-validators=tests/validators
-if ! cmp -s "$validators/package-lock.json" "$validators/node_modules/.fresnel-lab-lock"; then
-  echo "setup: npm ci in $validators" >&2
-  (cd "$validators" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  cp "$validators/package-lock.json" "$validators/node_modules/.fresnel-lab-lock"
-fi
-# The browser test's driver, puppeteer-core, at the versions tests/browser/package-lock.json pins;
-# reinstalled only when the lock file changes.
-if ! cmp -s tests/browser/package-lock.json tests/browser/node_modules/.fresnel-lab-lock 2>/dev/null; then
-  echo "setup: npm ci in tests/browser" >&2
-  (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  cp tests/browser/package-lock.json tests/browser/node_modules/.fresnel-lab-lock
-fi
+# The npm packages each Node test needs, exactly as its package-lock.json pins them, installed again
+# only when that lock file changes: tests/validators (MaterialX 1.39 as WebAssembly, the Khronos glTF
+# validator) and tests/browser (puppeteer-core, which drives Debian's chromium).
+for dir in tests/validators tests/browser; do
+  if ! cmp -s "$dir/package-lock.json" "$dir/node_modules/.fresnel-lab-lock" 2>/dev/null; then
+    echo "setup: npm ci in $dir" >&2
+    (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+    cp "$dir/package-lock.json" "$dir/node_modules/.fresnel-lab-lock"
+  fi
+done
 [ "${1:-}" = "--deps-only" ] && exit 0
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
