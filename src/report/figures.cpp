@@ -299,15 +299,17 @@ Point sheet_tile(const ContactSheet& s, size_t row, int column) {
   return {double(kSheetMargin + column * (s.truth.width + kSheetGap)), double(sheet_row_top(s, row) + kSheetLabel)};
 }
 
+double contact_sheet_scale(const ContactSheet& s) {
+  std::vector<double> all;
+  for (const auto& row : s.rows) all.insert(all.end(), row.de2000.begin(), row.de2000.end());
+  return heatmap_scale(all);
+}
+
 Drawing contact_sheet_drawing(const ContactSheet& s) {
   if (s.rows.empty() || s.truth.width <= 0) throw std::invalid_argument("contact_sheet_drawing: no rows");
-  std::vector<double> all;
   double de_max = 0;
-  for (const auto& row : s.rows) {
-    all.insert(all.end(), row.de2000.begin(), row.de2000.end());
-    de_max = std::max(de_max, row.max_de2000);
-  }
-  const double scale = heatmap_scale(all);
+  for (const auto& row : s.rows) de_max = std::max(de_max, row.max_de2000);
+  const double scale = contact_sheet_scale(s);
   const int size = s.truth.width;
   Drawing dr;
   double text_w = text_width_px(s.title, 17);

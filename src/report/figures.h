@@ -44,6 +44,8 @@ struct ContactSheet {
   Image8 truth;  // square
   std::vector<ContactSheetRow> rows;
 };
+// heatmap_scale over every row's ΔE2000: the one scale of the sheet and of its models' heat maps.
+double contact_sheet_scale(const ContactSheet& s);
 Drawing contact_sheet_drawing(const ContactSheet& sheet);
 // Where the sheet paints a tile (column 0 truth, 1 model, 2 heat map): its top-left pixel, and the
 // top of a row's band (its label line).

@@ -143,12 +143,9 @@ FlipFiles reproduce_flips(const analysis::Context& ctx, const std::vector<analys
   const size_t n = studies.size();
   std::vector<std::string> sprites(n);
   parallel_for(n, [&](size_t i) {
-    std::vector<analysis::FresnelTable> tables{
-        analysis::truth_fresnel_table(ctx, studies[i].material->ior, ctx.settings().eta_outside)};
-    for (const auto m : models) tables.push_back(analysis::model_fresnel_table(m, analysis::model_params(studies[i], m, "derived")));
-    std::vector<const analysis::FresnelTable*> ptrs;
-    for (const auto& t : tables) ptrs.push_back(&t);
-    const auto images = analysis::render_spheres(light, ptrs, rs);
+    std::vector<std::vector<double>> params;
+    for (const auto m : models) params.push_back(analysis::model_params(studies[i], m, "derived"));
+    const auto images = analysis::render_truth_and_models(ctx, *studies[i].material, light, models, params, rs);
     Image8 sprite(kFlipSizePx * static_cast<int>(images.size()), kFlipSizePx);
     for (size_t f = 0; f < images.size(); ++f) {
       const Image8 frame(kFlipSizePx, kFlipSizePx, analysis::sphere_display(ctx, images[f]));

@@ -168,9 +168,7 @@ Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial
   Files files;
   files.emplace_back(r.out, compare_exr(ctx, m, r, scene, images));
   files.emplace_back(base + ".truth.png", encode_png(sheet.truth));
-  std::vector<double> all;
-  for (const auto& mr : images.models) all.insert(all.end(), mr.de2000.begin(), mr.de2000.end());
-  const double scale = heatmap_scale(all);
+  const double scale = contact_sheet_scale(sheet);
   std::vector<Image8> frames;
   for (size_t i = 0; i < images.models.size(); ++i) {
     const auto& mr = images.models[i];

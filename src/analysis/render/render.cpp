@@ -420,23 +420,28 @@ HeatmapStats heatmap_stats(const std::vector<double>& de, int width, int height)
   return st;
 }
 
+std::vector<SphereImage> render_truth_and_models(const Context& ctx, const LoadedMaterial& m, const SceneLight& light,
+                                                const std::vector<fresnel::Model>& models,
+                                                const std::vector<std::vector<double>>& params,
+                                                const RenderSettings& settings) {
+  if (params.size() != models.size()) throw std::invalid_argument("render_truth_and_models: one parameter set per model");
+  std::vector<FresnelTable> tables{truth_fresnel_table(ctx, m.ior, ctx.settings().eta_outside)};
+  for (size_t i = 0; i < models.size(); ++i) tables.push_back(model_fresnel_table(models[i], params[i]));
+  std::vector<const FresnelTable*> all;
+  for (const auto& t : tables) all.push_back(&t);
+  return render_spheres(light, all, settings);
+}
+
 MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, const SceneLight& light,
                                const std::vector<fresnel::Model>& models, const std::string& kind,
                                const RenderSettings& settings) {
-  const FresnelTable truth = truth_fresnel_table(ctx, m.ior, ctx.settings().eta_outside);
   std::vector<std::vector<double>> params;
-  std::vector<FresnelTable> tables;
   if (!models.empty()) {
     const std::vector<LoadedMaterial> one{m};
     const auto st = study_one(ctx, one, kind, models);
-    for (const auto model : models) {
-      params.push_back(model_params(st, model, kind));
-      tables.push_back(model_fresnel_table(model, params.back()));
-    }
+    for (const auto model : models) params.push_back(model_params(st, model, kind));
   }
-  std::vector<const FresnelTable*> all{&truth};
-  for (const auto& t : tables) all.push_back(&t);
-  auto images = render_spheres(light, all, settings);
+  auto images = render_truth_and_models(ctx, m, light, models, params, settings);
   MaterialRender r;
   r.truth = std::move(images[0]);
   for (size_t i = 0; i < models.size(); ++i) {

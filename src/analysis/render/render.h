@@ -169,6 +169,13 @@ struct ModelRender {
   HeatmapStats stats;
 };
 
+// Spheres under `light`, all in one pass: the spectral ground truth first, then each model with its
+// parameter set (params[i] for models[i]).
+std::vector<SphereImage> render_truth_and_models(const Context& ctx, const LoadedMaterial& m, const SceneLight& light,
+                                                const std::vector<fresnel::Model>& models,
+                                                const std::vector<std::vector<double>>& params,
+                                                const RenderSettings& settings);
+
 // A material's sphere under `light` with the spectral ground truth and with each model's derived or
 // fitted parameters (`kind`, from the material's study), all in one pass.
 struct MaterialRender {
