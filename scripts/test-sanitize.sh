@@ -15,8 +15,10 @@ export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/scripts/lsan.supp:print_s
 # allocated inside libceres and freed in our code (ceres::GradientChecker results) then looks like a
 # heap-buffer-overflow. Keeping glibc's assumption (true on x86-64 with 16-byte SSE alignment) makes
 # both sides agree.
+# Debug information is line tables only (-g1): reports still name file and line, and the build
+# takes a third less time than with full debug information.
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRESNEL_LAB_SANITIZE=ON \
-  -DCMAKE_CXX_FLAGS="-DEIGEN_MALLOC_ALREADY_ALIGNED=1" >/dev/null
+  -DCMAKE_CXX_FLAGS="-DEIGEN_MALLOC_ALREADY_ALIGNED=1" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
 cmake --build build-asan -j"$(nproc)"
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)" --timeout 900
 echo "test-sanitize: ASan + UBSan suite passed in $(( $(date +%s) - start )) s" >&2

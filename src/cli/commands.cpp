@@ -107,7 +107,9 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ms = load_many(g, ctx, a->materials);
       if (document) {
         // Documents use the derived parameters only: no fits.
-        const auto studies = analysis::study_materials(ctx, ms, {.fit = false}, study_progress(g, "deriving: "));
+        analysis::StudyOptions derived_only;
+        derived_only.fit = false;
+        const auto studies = analysis::study_materials(ctx, ms, derived_only, study_progress(g, "deriving: "));
         fmt::print("{}", a->format == "mtlx" ? report::presets_materialx(ctx, studies, shader)
                                              : report::presets_gltf(ctx, studies));
         if (a->format == "mtlx" && !report::materialx_space(ctx).note.empty())

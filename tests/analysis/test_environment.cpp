@@ -109,7 +109,7 @@ TEST(Environment, SamplesFollowLuminanceTimesSolidAngle) {
   }
   for (size_t k = 0; k < hits.size(); ++k) {
     EXPECT_NEAR(hits[k], expected[k] / total, 2e-3) << "pixel " << k;
-    if (expected[k] == 0) EXPECT_EQ(hits[k], 0.0);
+    if (expected[k] == 0) { EXPECT_EQ(hits[k], 0.0); }
   }
 }
 

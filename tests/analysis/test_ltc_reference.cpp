@@ -167,7 +167,7 @@ TEST(LtcCode, LookupsBetweenCellsAreNoWorse) {
     }
     ASSERT_GT(r.count, 0) << r.name;
     EXPECT_LE(r.sum / r.count, r.reference_sum / r.count) << r.name;
-    if (r.max) EXPECT_LE(r.worst, r.reference_worst) << r.name;
+    if (r.max) { EXPECT_LE(r.worst, r.reference_worst) << r.name; }
   }
 }
 

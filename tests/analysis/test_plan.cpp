@@ -162,7 +162,7 @@ TEST(Plan, ExampleScenesAreServedByTheirTablesOrNameTheirApproximation) {
     for (const auto& m : chosen) {
       for (Lighting l : scene.lightings()) {
         const auto& s = fl::analysis::lighting_support(m.model, l);
-        if (l != Lighting::Punctual && !s.fresnel_pre_integrated) EXPECT_EQ(std::string(s.evaluated_at), "n·v") << path;
+        if (l != Lighting::Punctual && !s.fresnel_pre_integrated) { EXPECT_EQ(std::string(s.evaluated_at), "n·v") << path; }
       }
       EXPECT_TRUE(std::isfinite(m.error)) << path << " " << m.material;
       EXPECT_EQ(m.meets_budget, m.error <= scene.max_de00) << path << " " << m.material;

@@ -193,8 +193,9 @@ TEST(MaterialsCli, PagesListsBookClassCoverageAndReference) {
   EXPECT_EQ(by_page["main/Au/nk/Ordal"].at("extrapolated"), "yes");
   EXPECT_NE(by_page["main/Au/nk/Ordal"].at("reference").find("Ordal"), std::string::npos);
   for (const auto& [page, row] : by_page)
-    if (page.find("/n2/") != std::string::npos)
+    if (page.find("/n2/") != std::string::npos) {
       EXPECT_NE(row.at("status").find("nonlinear index, not n, k data"), std::string::npos) << page;
+    }
 }
 
 // A small database: one good metal page, one extrapolated, one that cannot be read, one glass.

@@ -92,9 +92,10 @@ TEST(Fit, RecoversKnownParametersFromSyntheticCurves) {
     EXPECT_TRUE(r.usable) << spec.name;
     EXPECT_LT(fit::rms_from_cost(r.cost, target.cos_thetas.size()), kRecoveredRms) << spec.name;
     if (spec.model == fresnel::model_of<fresnel::models::Schlick> || spec.model == fresnel::model_of<fresnel::models::F82> || spec.model == fresnel::model_of<fresnel::models::Gulbrandsen> ||
-        spec.model == fresnel::model_of<fresnel::models::FresnelRgb>)
+        spec.model == fresnel::model_of<fresnel::models::FresnelRgb>) {
       for (size_t i = 0; i < start.size(); ++i)
         EXPECT_NEAR(r.parameters[i], truth_params[i], kRecoveredParam) << spec.name << " parameter " << i;
+    }
   }
 }
 
@@ -128,7 +129,7 @@ TEST(Acceptance, MethodsTableAndF82Median) {
     EXPECT_LE(refl_refl, 0.10) << std::get<std::string>(row[0]);
     EXPECT_LE(fitted, refl_refl) << std::get<std::string>(row[0]);
     for (const auto& srow : schlick.rows)
-      if (srow[0] == row[0]) EXPECT_EQ(std::get<double>(row[1]), std::get<double>(srow[3])) << "Schlick column = table schlick";
+      if (srow[0] == row[0]) { EXPECT_EQ(std::get<double>(row[1]), std::get<double>(srow[3])) << "Schlick column = table schlick"; }
   }
   for (const auto& st : studies)
     if (st.material->material.material_class == spectral::MaterialClass::Metal) {

@@ -246,7 +246,7 @@ TEST(Registry, PreIntegrationDeclarationsAreTrue) {
         EXPECT_LT(f.residual, 1e-12) << spec.name << ": declared pre-integrable but not in the tables' span";
         const bool needs_f82 = f.c_abs > 1e-9;
         any_f82 = any_f82 || needs_f82;
-        if (needs_f82) EXPECT_TRUE(lists(pi.ibl, ch::kDfgF82) && lists(pi.area, ch::kLtcF82)) << spec.name;
+        if (needs_f82) { EXPECT_TRUE(lists(pi.ibl, ch::kDfgF82) && lists(pi.area, ch::kLtcF82)) << spec.name; }
         EXPECT_TRUE(lists(pi.area, ch::kLtcSchlick)) << spec.name;
       }
     }

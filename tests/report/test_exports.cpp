@@ -77,7 +77,7 @@ TEST(Exports, OpenPbrTableFollowsOpenPbrsRules) {
     double y = 0;
     for (int c = 0; c < 3; ++c) y += kAp1Y[c] * std::stod(presets[i].at(std::string("f0_") + "rgb"[c]));
     EXPECT_NEAR(s * s, y, 2e-6) << r.at("material");  // printed to 6 decimals
-    if (n_d.count(r.at("material"))) EXPECT_NEAR(eta, n_d.at(r.at("material")), kIorTolerance) << r.at("material");
+    if (n_d.count(r.at("material"))) { EXPECT_NEAR(eta, n_d.at(r.at("material")), kIorTolerance) << r.at("material"); }
   }
   EXPECT_EQ(dielectrics, 14);
 }
@@ -185,9 +185,9 @@ TEST(Exports, GltfRefusesOtherSpaces) {
 // flagged; gold's F0 of 1.04 in linear Rec.709 is, in the CSV too.
 TEST(Exports, OutOfRangeFlagsUseTheStatedTolerance) {
   for (const auto& r : csv_rows(run_ok("presets --format csv")))
-    if (r.at("class") == "dielectric") EXPECT_EQ(r.at("out_of_range"), "") << r.at("material");
+    if (r.at("class") == "dielectric") { EXPECT_EQ(r.at("out_of_range"), "") << r.at("material"); }
   for (const auto& r : csv_rows(run_ok("--space lin_rec709 presets --format csv")))
-    if (r.at("material") == "Gold") EXPECT_NE(r.at("out_of_range").find("f0_r"), std::string::npos);
+    if (r.at("material") == "Gold") { EXPECT_NE(r.at("out_of_range").find("f0_r"), std::string::npos); }
 }
 
 }  // namespace

@@ -67,7 +67,7 @@ TEST(Render, MirrorCentrePixelIsF0TimesTheKeyLight) {
     EXPECT_NEAR(c.b, f0.b * env.key_radiance.b, kMirrorCentreTol) << name;
     EXPECT_FLOAT_EQ(img.alpha[static_cast<size_t>(16) * 33 + 16], 1.0f);
     // Gold's F0 is far from grey: the check is not passing on a neutral value by accident.
-    if (std::string(name) == "gold") EXPECT_GT(f0.r - f0.b, 0.3);
+    if (std::string(name) == "gold") { EXPECT_GT(f0.r - f0.b, 0.3); }
   }
 }
 
