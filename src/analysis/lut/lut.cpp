@@ -12,6 +12,7 @@
 #include "spectral/errors.h"
 #include "util/median.h"
 #include "util/parallel.h"
+#include "util/vector_clones.h"
 
 namespace fl::analysis {
 
@@ -83,6 +84,16 @@ std::vector<brdf::DiskPoint> lobe_disk_points(int samples) {
     points.push_back(brdf::disk_point(u.u1, u.u2));
   }
   return points;
+}
+
+FL_VECTOR_CLONES void lobe_samples(const LobeView& view, const brdf::DiskPoint* points, size_t count, LobeSampleBlock& out) {
+  const LobeView local = view;  // a local copy: its reads cannot fault, so the loop runs branch-free
+  for (size_t k = 0; k < count; ++k) {
+    const brdf::Vec3 h = local.vndf(points[k]);
+    const brdf::Vec3 l = brdf::reflect(local.v, h);
+    const double voh = std::clamp(brdf::dot(local.v, h), 0.0, 1.0), w = local.weight(l.z);
+    out.lx[k] = l.x, out.ly[k] = l.y, out.lz[k] = l.z, out.voh[k] = voh, out.weight[k] = w;
+  }
 }
 
 DfgTexel integrate_dfg(double nov, double alpha, const std::vector<brdf::DiskPoint>& points) {
