@@ -80,14 +80,16 @@ inline double ggx_lobe_cos(const Vec3& v, const Vec3& l, double alpha) {
 }
 
 // Heitz 2018, listing 1: the uniform point (√u1 cos 2πu2, √u1 sin 2πu2) of the unit disk that the
-// visible-normal sampler warps; it does not depend on the view, so a point set can be shared by every view.
+// visible-normal sampler warps, with the half-chord √(1 − p1²) at p1 that the warp scales; neither
+// depends on the view, so a point set can be shared by every view.
 struct DiskPoint {
-  double p1 = 0, p2 = 0;
+  double p1 = 0, p2 = 0, chord = 1;
 };
 inline DiskPoint disk_point(double u1, double u2) {
   const double r = std::sqrt(u1);
   const double phi = 2.0 * std::numbers::pi * u2;
-  return {r * std::cos(phi), r * std::sin(phi)};
+  const double p1 = r * std::cos(phi);
+  return {p1, r * std::sin(phi), std::sqrt(max0(1.0 - p1 * p1))};
 }
 
 // Heitz 2018, "Sampling the GGX Distribution of Visible Normals" (JCGT 7(4)), listing 1 with
@@ -109,7 +111,7 @@ struct GgxVndfSampler {
   // The same draw from the view-independent point of the unit disk that (u1, u2) maps to.
   Vec3 operator()(const DiskPoint& d) const {
     const double p1 = d.p1;
-    const double p2 = (1.0 - s) * std::sqrt(max0(1.0 - p1 * p1)) + s * d.p2;
+    const double p2 = (1.0 - s) * d.chord + s * d.p2;
     const double p3 = std::sqrt(max0(1.0 - p1 * p1 - p2 * p2));
     const Vec3 nh{p1 * t1.x + p2 * t2.x + p3 * vh.x, p1 * t1.y + p2 * t2.y + p3 * vh.y,
                   p1 * t1.z + p2 * t2.z + p3 * vh.z};

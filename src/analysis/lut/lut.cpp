@@ -132,17 +132,39 @@ double integrate_sheen_dfg(double nov, double alpha, int samples) {
   return sum * 2.0 * kPi / samples;
 }
 
+namespace {
+
+// The terms of integrate_moments' sums for a block of samples, as columns; 0 for a direction below the
+// horizon, which adds nothing to a sum.
+struct MomentTerms {
+  double n_d[kLobeBlock], f_d[kLobeBlock], l_d[kLobeBlock], dir_x[kLobeBlock], dir_z[kLobeBlock];
+};
+FL_VECTOR_CLONES void moment_terms(const LobeSampleBlock& b, size_t count, MomentTerms& t) {
+  for (size_t k = 0; k < count; ++k) {
+    const double w = b.weight[k], voh = b.voh[k];
+    const double m1 = 1.0 - voh;
+    const double m5 = pow5(m1);
+    const bool above = !(w <= 0.0);
+    t.n_d[k] = above ? w : 0.0;
+    t.f_d[k] = above ? m5 * w : 0.0;
+    t.l_d[k] = above ? voh * m5 * m1 * w : 0.0;
+    t.dir_x[k] = above ? b.lx[k] * w : 0.0;
+    t.dir_z[k] = above ? b.lz[k] * w : 0.0;
+  }
+}
+
+}  // namespace
+
 GgxMoments integrate_moments(double nov, double alpha, const std::vector<brdf::DiskPoint>& points) {
   GgxMoments m;
   brdf::Vec3 dir{0, 0, 0};
-  for_each_lobe_sample(nov, alpha, points, [&](const LobeSample& s) {
-    const double m1 = 1.0 - s.voh;
-    const double m5 = pow5(m1);
-    m.n_d += s.weight;
-    m.f_d += m5 * s.weight;
-    m.l_d += s.voh * m5 * m1 * s.weight;
-    dir.x += s.l.x * s.weight;
-    dir.z += s.l.z * s.weight;
+  MomentTerms t;
+  for_each_lobe_block(nov, alpha, points, [&](const LobeSampleBlock& b, size_t count) {
+    moment_terms(b, count, t);
+    for (size_t k = 0; k < count; ++k) {
+      m.n_d += t.n_d[k], m.f_d += t.f_d[k], m.l_d += t.l_d[k];
+      dir.x += t.dir_x[k], dir.z += t.dir_z[k];
+    }
   });
   const double samples = static_cast<double>(points.size());
   m.n_d /= samples;

@@ -87,19 +87,26 @@ struct LobeView {
       : v(brdf::view_from_nov(nov)), vndf(v, alpha), weight(v.z, alpha) {}
 };
 void lobe_samples(const LobeView& view, const brdf::DiskPoint* points, size_t count, LobeSampleBlock& out);
-// fn(sample) for each point whose direction is above the horizon, in the order of `points`.
+// fn(block, count) for the blocks of `points` in order, each of count ≤ kLobeBlock samples.
 template <class Fn>
-void for_each_lobe_sample(double nov, double alpha, const std::vector<brdf::DiskPoint>& points, Fn fn) {
+void for_each_lobe_block(double nov, double alpha, const std::vector<brdf::DiskPoint>& points, Fn fn) {
   const LobeView view(nov, alpha);
   LobeSampleBlock b;
   for (size_t first = 0; first < points.size(); first += kLobeBlock) {
     const size_t count = std::min(kLobeBlock, points.size() - first);
     lobe_samples(view, points.data() + first, count, b);
+    fn(static_cast<const LobeSampleBlock&>(b), count);
+  }
+}
+// fn(sample) for each point whose direction is above the horizon, in the order of `points`.
+template <class Fn>
+void for_each_lobe_sample(double nov, double alpha, const std::vector<brdf::DiskPoint>& points, Fn fn) {
+  for_each_lobe_block(nov, alpha, points, [&](const LobeSampleBlock& b, size_t count) {
     for (size_t k = 0; k < count; ++k) {
       if (b.weight[k] <= 0.0) continue;
       fn(LobeSample{{b.lx[k], b.ly[k], b.lz[k]}, b.voh[k], b.weight[k]});
     }
-  }
+  });
 }
 template <class Fn>
 void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
