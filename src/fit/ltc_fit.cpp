@@ -113,13 +113,7 @@ std::vector<brdf::Point2> hammersley_points(int n) {
   return pts;
 }
 
-// The view-independent part of a direction set's points, made once per cell: the unit-disk points of
-// the GGX half (brdf::disk_point) and the clamped-cosine directions of the LTC half (sample_ltc_lobe
-// before M).
-struct PointSet {
-  std::vector<brdf::DiskPoint> disk;
-  std::vector<brdf::Vec3> cosine;
-};
+using PointSet = LtcPointSet;
 PointSet point_set(const std::vector<brdf::Point2>& pts) {
   PointSet set;
   for (const auto& u : pts) {
@@ -456,15 +450,27 @@ Chosen toward_continuation(const LtcParams& best, const LtcParams& target, doubl
 
 }  // namespace
 
+LtcCellPoints ltc_cell_points(int sample_sqrt) {
+  return {point_set(stratified_midpoints(std::max(1, sample_sqrt))), point_set(hammersley_points(kLtcHeldOutSamples)),
+          point_set(hammersley_points(kLtcNearEqualSamples))};
+}
+
 LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
                         const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver, int sample_sqrt,
                         double near_equal_margin) {
+  return fit_ltc_cell(nov, alpha, magnitude, average_dir, starts, isotropic, solver, ltc_cell_points(sample_sqrt),
+                      near_equal_margin);
+}
+
+LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
+                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver,
+                        const LtcCellPoints& points, double near_equal_margin) {
   if (starts.empty()) throw std::invalid_argument("fit_ltc_cell needs a start");
   const brdf::Vec3 v = brdf::view_from_nov(nov);
   const LtcFrame frame = ltc_frame_from_average_direction(average_dir);
-  const PointSet set = point_set(stratified_midpoints(std::max(1, sample_sqrt)));
+  const PointSet& set = points.fit;
   const Directions ggx = ggx_half(v, alpha, set.disk);
-  const PointSet heldout_set = point_set(hammersley_points(kLtcHeldOutSamples));
+  const PointSet& heldout_set = points.heldout;
   const Directions heldout_ggx = ggx_half(v, alpha, heldout_set.disk);
   auto heldout = [&](const LtcParams& x) {
     return l3_errors(v, alpha, magnitude, heldout_ggx, heldout_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
@@ -490,7 +496,7 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   if (out.kept_start) out.params = best_start, out.heldout_error = out.start_heldout_error;
   if (out.kept_start || !(near_equal_margin > 0.0)) return out;
   // The near-equal choice, judged on kLtcNearEqualSamples fresh directions.
-  const PointSet near_set = point_set(hammersley_points(kLtcNearEqualSamples));
+  const PointSet& near_set = points.near_equal;
   const Directions near_ggx = ggx_half(v, alpha, near_set.disk);
   auto near_error = [&](const LtcParams& x) {
     return l3_errors(v, alpha, magnitude, near_ggx, near_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();

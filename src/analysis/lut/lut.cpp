@@ -208,11 +208,11 @@ auto lobe_integrand(Cell (*integral)(double, double, const std::vector<brdf::Dis
 
 // Fits cell (i, j) of an LTC grid from its starts (fit::fit_ltc_cell); i = 0 (normal incidence) is isotropic.
 LtcCell fit_table_cell(const LutGrid& g, const GgxMoments& mo, int i, int j, const std::vector<fit::LtcParams>& starts,
-                       const LtcCellFitter& fitter, int fit_sample_sqrt) {
+                       const LtcCellFitter& fitter, const fit::LtcCellPoints& points) {
   const bool isotropic = i == 0;
   const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
   const double near_equal_margin = i == g.size - 1 ? kLtcGrazingNearEqualMargin : 0.0;
-  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter, fit_sample_sqrt,
+  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter, points,
                                    near_equal_margin);
   LtcCell c;
   c.fit = r.fit;
@@ -296,8 +296,9 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   t.grid = ltc_grid(size);
   const auto& g = t.grid;
   t.cells.resize(static_cast<size_t>(size) * size);
+  const fit::LtcCellPoints points = fit::ltc_cell_points(fit_sample_sqrt);
   const auto fit_cell = [&](int i, int j, const std::vector<fit::LtcParams>& starts) {
-    t.cells[g.index(i, j)] = fit_table_cell(g, t.moments[g.index(i, j)], i, j, starts, fitter, fit_sample_sqrt);
+    t.cells[g.index(i, j)] = fit_table_cell(g, t.moments[g.index(i, j)], i, j, starts, fitter, points);
   };
   // Progress counts every cell twice: once for its moments, once for its fit.
   ProgressCounter done(options.progress, 2 * size * size);
