@@ -65,14 +65,15 @@ double ltc_lobe_density(const LtcLobe& lobe, const brdf::Vec3& w) {
 
 namespace {
 
-// The clamped-cosine direction of (u1, u2): cos θ_o = √u1, φ_o = 2π u2.
+// Heitz et al. 2016's D_o = max(0, z_o)/π drawn by inversion: the direction of (u1, u2) with
+// cos θ_o = √u1, φ_o = 2π u2.
 brdf::Vec3 cosine_direction(double u1, double u2) {
   const double cos_t = std::sqrt(u1), sin_t = std::sqrt(std::max(0.0, 1.0 - u1));
   const double phi = 2.0 * std::numbers::pi * u2;
   return {sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t};
 }
 
-// ω = M o / ‖M o‖.
+// Heitz et al. 2016, eq. 1: the direction ω = M ω_o / ‖M ω_o‖ of the LTC for ω_o drawn from D_o.
 brdf::Vec3 ltc_direction(const LtcLobe& lobe, const brdf::Vec3& o) {
   const auto& m = lobe.m.m;
   return brdf::normalize(brdf::Vec3{m[0] * o.x + m[1] * o.y + m[2] * o.z, m[3] * o.x + m[4] * o.y + m[5] * o.z,
@@ -113,9 +114,8 @@ std::vector<brdf::Point2> hammersley_points(int n) {
   return pts;
 }
 
-using PointSet = LtcPointSet;
-PointSet point_set(const std::vector<brdf::Point2>& pts) {
-  PointSet set;
+LtcPointSet point_set(const std::vector<brdf::Point2>& pts) {
+  LtcPointSet set;
   for (const auto& u : pts) {
     set.disk.push_back(brdf::disk_point(u.u1, u.u2));
     set.cosine.push_back(cosine_direction(u.u1, u.u2));
@@ -184,7 +184,7 @@ void add_l3_terms(const LtcLobe& lobe, const Directions& d, double n, double mag
 
 // The balance-heuristic sum over both halves of a direction set for each lobe.
 std::vector<LtcL3Error> l3_errors(const brdf::Vec3& v, double alpha, double magnitude, const Directions& ggx,
-                                  const PointSet& set, const std::vector<LtcLobe>& lobes) {
+                                  const LtcPointSet& set, const std::vector<LtcLobe>& lobes) {
   std::vector<LtcL3Error> out(lobes.size());
   const double n = static_cast<double>(set.cosine.size());
   for (size_t c = 0; c < lobes.size(); ++c) {
@@ -226,7 +226,7 @@ void append_samples(const LtcFrame& frame, const LtcParams& proposal, const Dire
 
 // The fitting directions of a cell: the GGX half (fixed) and the half drawn from the proposal.
 LtcProblem assemble_problem(double nov, double alpha, double magnitude, const LtcFrame& frame, const Directions& ggx,
-                            const PointSet& set, const LtcParams& proposal) {
+                            const LtcPointSet& set, const LtcParams& proposal) {
   LtcProblem pr{nov, alpha, magnitude, frame, proposal, {}};
   const double count = static_cast<double>(set.cosine.size());
   double lobe3 = 0.0;  // Σ target³ w², the estimate of B₃
@@ -370,7 +370,7 @@ LtcParams params_of(const FitResult& r) {
 std::vector<LtcL3Error> ltc_l3_errors(double nov, double alpha, double magnitude, const std::vector<LtcLobe>& lobes,
                                       int samples) {
   const brdf::Vec3 v = brdf::view_from_nov(nov);
-  const PointSet set = point_set(hammersley_points(std::max(1, samples)));
+  const LtcPointSet set = point_set(hammersley_points(std::max(1, samples)));
   return l3_errors(v, alpha, magnitude, ggx_half(v, alpha, set.disk), set, lobes);
 }
 
@@ -380,7 +380,7 @@ LtcL3Error ltc_l3_error(double nov, double alpha, double magnitude, const LtcLob
 
 LtcProblem make_ltc_problem(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
                             const LtcParams& proposal, int sample_sqrt) {
-  const PointSet set = point_set(stratified_midpoints(std::max(1, sample_sqrt)));
+  const LtcPointSet set = point_set(stratified_midpoints(std::max(1, sample_sqrt)));
   return assemble_problem(nov, alpha, magnitude, ltc_frame_from_average_direction(average_dir),
                           ggx_half(brdf::view_from_nov(nov), alpha, set.disk), set, proposal);
 }
@@ -403,7 +403,7 @@ struct Rounds {
   int rounds = 0;
 };
 Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& frame, const Directions& ggx,
-                  const PointSet& set, const LtcParams& start, bool isotropic, const LtcSolver& solver) {
+                  const LtcPointSet& set, const LtcParams& start, bool isotropic, const LtcSolver& solver) {
   Rounds out{start, {}, 0};
   while (out.rounds < kLtcMaxRounds) {
     const auto problem = assemble_problem(nov, alpha, magnitude, frame, ggx, set, out.params);
@@ -468,9 +468,9 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   if (starts.empty()) throw std::invalid_argument("fit_ltc_cell needs a start");
   const brdf::Vec3 v = brdf::view_from_nov(nov);
   const LtcFrame frame = ltc_frame_from_average_direction(average_dir);
-  const PointSet& set = points.fit;
+  const LtcPointSet& set = points.fit;
   const Directions ggx = ggx_half(v, alpha, set.disk);
-  const PointSet& heldout_set = points.heldout;
+  const LtcPointSet& heldout_set = points.heldout;
   const Directions heldout_ggx = ggx_half(v, alpha, heldout_set.disk);
   auto heldout = [&](const LtcParams& x) {
     return l3_errors(v, alpha, magnitude, heldout_ggx, heldout_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
@@ -496,7 +496,7 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   if (out.kept_start) out.params = best_start, out.heldout_error = out.start_heldout_error;
   if (out.kept_start || !(near_equal_margin > 0.0)) return out;
   // The near-equal choice, judged on kLtcNearEqualSamples fresh directions.
-  const PointSet& near_set = points.near_equal;
+  const LtcPointSet& near_set = points.near_equal;
   const Directions near_ggx = ggx_half(v, alpha, near_set.disk);
   auto near_error = [&](const LtcParams& x) {
     return l3_errors(v, alpha, magnitude, near_ggx, near_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
