@@ -30,6 +30,9 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
+// max(0, x) for a number x as glibc's fmax(0.0, x) gives it (−0 stays −0), without the library call.
+inline double max0(double x) { return x < 0.0 ? 0.0 : x; }
+
 // The view vector of an isotropic lobe at cosθ_v = nov (clamped to [0, 1]).
 inline Vec3 view_from_nov(double nov) {
   const double c = std::fmin(1.0, std::fmax(0.0, nov));
@@ -67,22 +70,26 @@ T smith_ggx_g1(T nov, T alpha) {
 
 // Filament §4.4 (Cook-Torrance without Fresnel): the specular lobe times the cosine,
 // ρ(v, l)·(n·l) = D(h) V(v, l) (n·l); zero when l is below the horizon.
+// The value is computed first and then selected, so a loop over directions has no branch.
 inline double ggx_lobe_cos(const Vec3& v, const Vec3& l, double alpha) {
   const double nov = v.z, nol = l.z;
-  if (nol <= 0.0 || nov <= 0.0) return 0.0;
   const Vec3 h = normalize(Vec3{v.x + l.x, v.y + l.y, v.z + l.z});
-  return ggx_ndf(h.z, alpha) * smith_ggx_correlated_visibility(nov, nol, alpha) * nol;
+  const double value = ggx_ndf(h.z, alpha) * smith_ggx_correlated_visibility(nov, nol, alpha) * nol;
+  const bool above = nol > 0.0 && nov > 0.0;
+  return above ? value : 0.0;
 }
 
 // Heitz 2018, listing 1: the uniform point (√u1 cos 2πu2, √u1 sin 2πu2) of the unit disk that the
-// visible-normal sampler warps; it does not depend on the view, so a point set can be shared by every view.
+// visible-normal sampler warps, with the half-chord √(1 − p1²) at p1 that the warp scales; neither
+// depends on the view, so a point set can be shared by every view.
 struct DiskPoint {
-  double p1 = 0, p2 = 0;
+  double p1 = 0, p2 = 0, chord = 1;
 };
 inline DiskPoint disk_point(double u1, double u2) {
   const double r = std::sqrt(u1);
   const double phi = 2.0 * std::numbers::pi * u2;
-  return {r * std::cos(phi), r * std::sin(phi)};
+  const double p1 = r * std::cos(phi);
+  return {p1, r * std::sin(phi), std::sqrt(max0(1.0 - p1 * p1))};
 }
 
 // Heitz 2018, "Sampling the GGX Distribution of Visible Normals" (JCGT 7(4)), listing 1 with
@@ -104,11 +111,11 @@ struct GgxVndfSampler {
   // The same draw from the view-independent point of the unit disk that (u1, u2) maps to.
   Vec3 operator()(const DiskPoint& d) const {
     const double p1 = d.p1;
-    const double p2 = (1.0 - s) * std::sqrt(std::fmax(0.0, 1.0 - p1 * p1)) + s * d.p2;
-    const double p3 = std::sqrt(std::fmax(0.0, 1.0 - p1 * p1 - p2 * p2));
+    const double p2 = (1.0 - s) * d.chord + s * d.p2;
+    const double p3 = std::sqrt(max0(1.0 - p1 * p1 - p2 * p2));
     const Vec3 nh{p1 * t1.x + p2 * t2.x + p3 * vh.x, p1 * t1.y + p2 * t2.y + p3 * vh.y,
                   p1 * t1.z + p2 * t2.z + p3 * vh.z};
-    return normalize(Vec3{alpha * nh.x, alpha * nh.y, std::fmax(0.0, nh.z)});
+    return normalize(Vec3{alpha * nh.x, alpha * nh.y, max0(nh.z)});
   }
 };
 inline Vec3 sample_ggx_vndf(const Vec3& v, double alpha, double u1, double u2) {
@@ -141,9 +148,8 @@ struct GgxVndfWeight {
   GgxVndfWeight(double nov_, double alpha)
       : nov(nov_), a2(alpha * alpha), view_root(std::sqrt(nov * nov * (1.0 - a2) + a2)), g1(smith_ggx_g1(nov, alpha)) {}
   double operator()(double nol) const {
-    if (nol <= 0.0) return 0.0;
     const double visibility = 0.5 / (nol * view_root + nov * std::sqrt(nol * nol * (1.0 - a2) + a2));
-    return 4.0 * visibility * nov * nol / g1;
+    return nol <= 0.0 ? 0.0 : 4.0 * visibility * nov * nol / g1;
   }
 };
 

@@ -5,8 +5,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
+
+#include "util/vector_clones.h"
 
 namespace fl::fit {
 
@@ -55,25 +58,42 @@ double ltc_lobe_density(const LtcLobe& lobe, const brdf::Vec3& w) {
   const double ox = a[0] * w.x + a[1] * w.y + a[2] * w.z;
   const double oy = a[3] * w.x + a[4] * w.y + a[5] * w.z;
   const double oz = a[6] * w.x + a[7] * w.y + a[8] * w.z;
-  if (oz <= 0.0) return 0.0;
   const double len2 = ox * ox + oy * oy + oz * oz;
-  return oz * lobe.abs_det_m_inv / (std::numbers::pi * len2 * len2);
+  const double density = oz * lobe.abs_det_m_inv / (std::numbers::pi * len2 * len2);
+  return oz <= 0.0 ? 0.0 : density;
 }
 
-brdf::Vec3 sample_ltc_lobe(const LtcLobe& lobe, double u1, double u2) {
+namespace {
+
+// Heitz et al. 2016's D_o = max(0, z_o)/π drawn by inversion: the direction of (u1, u2) with
+// cos θ_o = √u1, φ_o = 2π u2.
+brdf::Vec3 cosine_direction(double u1, double u2) {
   const double cos_t = std::sqrt(u1), sin_t = std::sqrt(std::max(0.0, 1.0 - u1));
   const double phi = 2.0 * std::numbers::pi * u2;
-  const brdf::Vec3 o{sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t};
+  return {sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t};
+}
+
+// Heitz et al. 2016, eq. 1: the direction ω = M ω_o / ‖M ω_o‖ of the LTC for ω_o drawn from D_o.
+brdf::Vec3 ltc_direction(const LtcLobe& lobe, const brdf::Vec3& o) {
   const auto& m = lobe.m.m;
   return brdf::normalize(brdf::Vec3{m[0] * o.x + m[1] * o.y + m[2] * o.z, m[3] * o.x + m[4] * o.y + m[5] * o.z,
                                     m[6] * o.x + m[7] * o.y + m[8] * o.z});
 }
 
+}  // namespace
+
+brdf::Vec3 sample_ltc_lobe(const LtcLobe& lobe, double u1, double u2) {
+  return ltc_direction(lobe, cosine_direction(u1, u2));
+}
+
+// The value is computed first and then selected, so a loop over directions has no branch.
 double ggx_vndf_direction_pdf(const brdf::Vec3& v, const brdf::Vec3& l, double alpha) {
   const brdf::Vec3 sum{v.x + l.x, v.y + l.y, v.z + l.z};
-  if (v.z <= 0.0 || brdf::dot(sum, sum) <= 0.0) return 0.0;
+  const double len2 = brdf::dot(sum, sum);
   const brdf::Vec3 h = brdf::normalize(sum);
-  return h.z > 0.0 ? brdf::ggx_vndf_reflection_pdf(v.z, h.z, alpha) : 0.0;
+  const double pdf = brdf::ggx_vndf_reflection_pdf(v.z, h.z, alpha);
+  const bool valid = v.z > 0.0 && len2 > 0.0 && h.z > 0.0;
+  return valid ? pdf : 0.0;
 }
 
 namespace {
@@ -94,130 +114,238 @@ std::vector<brdf::Point2> hammersley_points(int n) {
   return pts;
 }
 
-// The GGX half of a direction set: l = reflect(v, h) for h drawn from the visible normals at each
-// point, with the lobe value and the VNDF density there.
-struct GgxDirection {
-  brdf::Vec3 l;
-  double target = 0, pdf = 0;
-};
-std::vector<GgxDirection> ggx_directions(const brdf::Vec3& v, double alpha, const std::vector<brdf::Point2>& pts) {
-  std::vector<GgxDirection> out;
-  out.reserve(pts.size());
-  const brdf::GgxVndfSampler vndf(v, alpha);
+LtcPointSet point_set(const std::vector<brdf::Point2>& pts) {
+  LtcPointSet set;
   for (const auto& u : pts) {
-    const brdf::Vec3 l = brdf::reflect(v, vndf(u.u1, u.u2));
-    out.push_back({l, brdf::ggx_lobe_cos(v, l, alpha), ggx_vndf_direction_pdf(v, l, alpha)});
+    set.disk.push_back(brdf::disk_point(u.u1, u.u2));
+    set.cosine.push_back(cosine_direction(u.u1, u.u2));
   }
-  return out;
+  return set;
+}
+
+// One half of a direction set at a view, as columns: the directions l, the lobe value ρ cos and the
+// VNDF density at each. Columns let the compiler treat several directions per instruction; each
+// direction's arithmetic is that of the scalar functions.
+struct Directions {
+  std::vector<double> x, y, z, target, pdf;
+  explicit Directions(size_t n) : x(n), y(n), z(n), target(n), pdf(n) {}
+  size_t size() const { return x.size(); }
+};
+
+// The GGX half: l = reflect(v, h) for h drawn from the visible normals at each disk point.
+FL_VECTOR_CLONES Directions ggx_half(const brdf::Vec3& view, double alpha, const std::vector<brdf::DiskPoint>& disk) {
+  Directions d(disk.size());
+  const brdf::Vec3 v = view;
+  const brdf::GgxVndfSampler vndf(v, alpha);
+#pragma GCC ivdep
+  for (size_t k = 0; k < disk.size(); ++k) {
+    const brdf::Vec3 l = brdf::reflect(v, vndf(disk[k]));
+    d.x[k] = l.x, d.y[k] = l.y, d.z[k] = l.z;
+    d.target[k] = brdf::ggx_lobe_cos(v, l, alpha), d.pdf[k] = ggx_vndf_direction_pdf(v, l, alpha);
+  }
+  return d;
+}
+
+// The LTC half: sample_ltc_lobe at each point, from its clamped-cosine direction.
+FL_VECTOR_CLONES Directions ltc_half(const brdf::Vec3& view, double alpha, const LtcLobe& ltc,
+                                     const std::vector<brdf::Vec3>& cosine) {
+  Directions d(cosine.size());
+  const brdf::Vec3 v = view;
+  const LtcLobe lobe = ltc;
+#pragma GCC ivdep
+  for (size_t k = 0; k < cosine.size(); ++k) {
+    const brdf::Vec3 l = ltc_direction(lobe, cosine[k]);
+    d.x[k] = l.x, d.y[k] = l.y, d.z[k] = l.z;
+    d.target[k] = brdf::ggx_lobe_cos(v, l, alpha), d.pdf[k] = ggx_vndf_direction_pdf(v, l, alpha);
+  }
+  return d;
+}
+
+// One half's balance-heuristic terms for a lobe: with the LTC density d_ltc of each direction and
+// q = p_vndf + d_ltc, |ρ cos − n_D d_ltc|³ / (n q) of the error and (ρ cos)³ / (n q) of the lobe's
+// norm, both 0 where q ≤ 0.
+FL_VECTOR_CLONES void l3_terms(const LtcLobe& ltc, const Directions& d, double n, double magnitude, double* error,
+                               double* norm) {
+  const LtcLobe lobe = ltc;
+#pragma GCC ivdep
+  for (size_t k = 0; k < d.size(); ++k) {
+    const double d_ltc = ltc_lobe_density(lobe, {d.x[k], d.y[k], d.z[k]}), b = d.target[k];
+    const double q = d.pdf[k] + d_ltc, diff = std::abs(b - magnitude * d_ltc);
+    const double error_term = diff * diff * diff / (n * q), lobe_term = b * b * b / (n * q);
+    error[k] = q > 0.0 ? error_term : 0.0, norm[k] = q > 0.0 ? lobe_term : 0.0;
+  }
+}
+// Adds the terms to e in the half's order.
+void add_l3_terms(const LtcLobe& lobe, const Directions& d, double n, double magnitude, LtcL3Error& e) {
+  std::vector<double> error(d.size()), norm(d.size());
+  l3_terms(lobe, d, n, magnitude, error.data(), norm.data());
+  for (size_t k = 0; k < d.size(); ++k) e.error += error[k], e.lobe += norm[k];
 }
 
 // The balance-heuristic sum over both halves of a direction set for each lobe.
-std::vector<LtcL3Error> l3_errors(const brdf::Vec3& v, double alpha, double magnitude,
-                                  const std::vector<GgxDirection>& ggx, const std::vector<brdf::Point2>& pts,
-                                  const std::vector<LtcLobe>& lobes) {
+std::vector<LtcL3Error> l3_errors(const brdf::Vec3& v, double alpha, double magnitude, const Directions& ggx,
+                                  const LtcPointSet& set, const std::vector<LtcLobe>& lobes) {
   std::vector<LtcL3Error> out(lobes.size());
-  const double n = static_cast<double>(pts.size());
+  const double n = static_cast<double>(set.cosine.size());
   for (size_t c = 0; c < lobes.size(); ++c) {
-    auto add = [&](double b, double p_vndf, double d_ltc) {
-      const double q = p_vndf + d_ltc;
-      if (!(q > 0.0)) return;
-      const double d = std::abs(b - magnitude * d_ltc);
-      out[c].error += d * d * d / (n * q);
-      out[c].lobe += b * b * b / (n * q);
-    };
-    for (const auto& g : ggx) add(g.target, g.pdf, ltc_lobe_density(lobes[c], g.l));
-    for (const auto& u : pts) {
-      const brdf::Vec3 l = sample_ltc_lobe(lobes[c], u.u1, u.u2);
-      add(brdf::ggx_lobe_cos(v, l, alpha), ggx_vndf_direction_pdf(v, l, alpha), ltc_lobe_density(lobes[c], l));
-    }
+    add_l3_terms(lobes[c], ggx, n, magnitude, out[c]);
+    add_l3_terms(lobes[c], ltc_half(v, alpha, lobes[c], set.cosine), n, magnitude, out[c]);
   }
   return out;
 }
 
-// The fitting directions of a cell: the GGX half (fixed) and the half drawn from the proposal.
-LtcProblem assemble_problem(double nov, double alpha, double magnitude, const LtcFrame& frame,
-                            const std::vector<GgxDirection>& ggx, const std::vector<brdf::Point2>& pts,
-                            const LtcParams& proposal) {
-  LtcProblem pr{nov, alpha, magnitude, frame, proposal, {}};
-  const brdf::Vec3 v = brdf::view_from_nov(nov);
-  const double count = static_cast<double>(pts.size());
-  double lobe3 = 0.0;  // Σ target³ w², the estimate of B₃
-  auto add = [&](const brdf::Vec3& l, double target, double p_vndf) {
-    const LtcSample s{brdf::dot(l, frame.x), brdf::dot(l, frame.y), brdf::dot(l, frame.z), target, 0.0};
-    const double q = p_vndf + ltc_density(proposal, s.x, s.y, s.z);
-    if (!(q > 0.0)) return;
-    pr.samples.push_back({s.x, s.y, s.z, target, 1.0 / std::sqrt(count * q)});
-    lobe3 += target * target * target / (count * q);
-  };
-  pr.samples.reserve(2 * pts.size());
-  for (const auto& g : ggx) add(g.l, g.target, g.pdf);
-  const LtcLobe lobe = ltc_lobe(ltc_matrix(frame, proposal));
-  for (const auto& u : pts) {
-    const brdf::Vec3 l = sample_ltc_lobe(lobe, u.u1, u.u2);
-    add(l, brdf::ggx_lobe_cos(v, l, alpha), ggx_vndf_direction_pdf(v, l, alpha));
+// The fitting samples of one half for the proposal, appended to `samples` in the half's order where
+// q = p_vndf + p_proposal > 0, with weight 1/√(count q); Σ target³ / (count q) is added to lobe3.
+struct SampleTerms {
+  std::vector<double> x, y, z, q, weight, lobe3;
+  explicit SampleTerms(size_t n) : x(n), y(n), z(n), q(n), weight(n), lobe3(n) {}
+};
+FL_VECTOR_CLONES void sample_terms(const LtcFrame& f, const LtcParams& p, const Directions& d, double count,
+                                   SampleTerms& out) {
+  const LtcFrame frame = f;
+  const LtcParams proposal = p;
+#pragma GCC ivdep
+  for (size_t k = 0; k < d.size(); ++k) {
+    const brdf::Vec3 l{d.x[k], d.y[k], d.z[k]};
+    const double x = brdf::dot(l, frame.x), y = brdf::dot(l, frame.y), z = brdf::dot(l, frame.z);
+    const double q = d.pdf[k] + ltc_density(proposal, x, y, z), t = d.target[k];
+    out.x[k] = x, out.y[k] = y, out.z[k] = z, out.q[k] = q;
+    out.weight[k] = 1.0 / std::sqrt(count * q), out.lobe3[k] = t * t * t / (count * q);
   }
+}
+void append_samples(const LtcFrame& frame, const LtcParams& proposal, const Directions& d, double count,
+                    std::vector<LtcSample>& samples, double& lobe3) {
+  SampleTerms t(d.size());
+  sample_terms(frame, proposal, d, count, t);
+  for (size_t k = 0; k < d.size(); ++k) {
+    if (!(t.q[k] > 0.0)) continue;
+    samples.push_back({t.x[k], t.y[k], t.z[k], d.target[k], t.weight[k]});
+    lobe3 += t.lobe3[k];
+  }
+}
+
+// The fitting directions of a cell: the GGX half (fixed) and the half drawn from the proposal.
+LtcProblem assemble_problem(double nov, double alpha, double magnitude, const LtcFrame& frame, const Directions& ggx,
+                            const LtcPointSet& set, const LtcParams& proposal) {
+  LtcProblem pr{nov, alpha, magnitude, frame, proposal, {}};
+  const double count = static_cast<double>(set.cosine.size());
+  double lobe3 = 0.0;  // Σ target³ w², the estimate of B₃
+  pr.samples.reserve(2 * set.cosine.size());
+  append_samples(frame, proposal, ggx, count, pr.samples, lobe3);
+  const LtcLobe lobe = ltc_lobe(ltc_matrix(frame, proposal));
+  append_samples(frame, proposal, ltc_half(brdf::view_from_nov(nov), alpha, lobe, set.cosine), count, pr.samples,
+                 lobe3);
   const double scale = lobe3 > 0.0 ? 1.0 / std::sqrt(lobe3) : 1.0;
   for (auto& smp : pr.samples) smp.weight *= scale;
   return pr;
 }
 
-// Residual k = d √|d| w with d = target − n_D D_LTC, and its derivatives in θ = (m11, m22, m13, m31).
+// A problem's samples as columns, and the per-sample terms of the residuals at the last θ, which
+// their Jacobian reuses. Columns let the compiler evaluate several samples per instruction; each
+// sample's arithmetic is unchanged.
+struct LtcColumns {
+  std::vector<double> x, y, z, target, weight;
+  std::vector<double> ox, oy, oz, inv_len2, dens, root, residual;
+};
+LtcColumns ltc_columns(const LtcProblem& pr) {
+  LtcColumns c;
+  for (const auto& s : pr.samples) {
+    c.x.push_back(s.x), c.y.push_back(s.y), c.z.push_back(s.z);
+    c.target.push_back(s.target), c.weight.push_back(s.weight);
+  }
+  const size_t n = pr.samples.size();
+  for (auto* col : {&c.ox, &c.oy, &c.oz, &c.inv_len2, &c.dens, &c.root, &c.residual}) col->resize(n);
+  return c;
+}
+
+// Residual k = d √|d| w with d = target − n_D D_LTC (ltc_density with θ = p = (m11, m22, m13, m31)).
+FL_VECTOR_CLONES void ltc_residuals(double magnitude, const double* p, LtcColumns& c) {
+  const double inv_beta = 1.0 / (p[0] - p[2] * p[3]), inv_m22 = 1.0 / p[1];
+  const double p0 = p[0], p2 = p[2], p3 = p[3];
+  const size_t n = c.x.size();
+#pragma GCC ivdep
+  for (size_t k = 0; k < n; ++k) {
+    const double ox = (c.x[k] - p2 * c.z[k]) * inv_beta, oy = c.y[k] * inv_m22;
+    const double oz = (p0 * c.z[k] - p3 * c.x[k]) * inv_beta;
+    const double inv_len2 = 1.0 / (ox * ox + oy * oy + oz * oz);
+    const double dens = oz > 0.0 ? oz * inv_beta * inv_m22 * inv_len2 * inv_len2 / std::numbers::pi : 0.0;
+    const double d = c.target[k] - magnitude * dens;
+    const double root = std::sqrt(std::abs(d));
+    c.ox[k] = ox, c.oy[k] = oy, c.oz[k] = oz, c.inv_len2[k] = inv_len2, c.dens[k] = dens, c.root[k] = root;
+    c.residual[k] = d * root * c.weight[k];
+  }
+}
+
+// The Jacobian of ltc_residuals at the same θ, row k = ∂r_k/∂θ, from the terms it kept.
 // With u = x − m13 z, t = m11 z − m31 x, β = m11 − m13 m31, o = (u/β, y/m22, t/β), L = ‖o‖²:
 // D = t / (π m22 β² L²), so ∂ln D = ∂t/t − ∂m22/m22 − 2 ∂β/β − 2 ∂L/L with
 // ∂L = 2 (o_x ∂u + o_z ∂t)/β − 2 (o_x² + o_z²) ∂β/β − 2 o_y² ∂m22/m22, where (∂u, ∂t, ∂β, ∂m22) is
 // (0, z, 1, 0) for m11, (0, 0, 0, 1) for m22, (−z, 0, −m31, 0) for m13 and (0, −x, −m13, 0) for m31;
 // and ∂r/∂D = −1.5 √|d| w n_D.
-double ltc_residual(const LtcProblem& pr, const LtcSample& s, const double* p, double* jacobian_row) {
+FL_VECTOR_CLONES void ltc_jacobian(double magnitude, const double* p, const LtcColumns& c, double* jac) {
   const double inv_beta = 1.0 / (p[0] - p[2] * p[3]), inv_m22 = 1.0 / p[1];
-  const double ox = (s.x - p[2] * s.z) * inv_beta, oy = s.y * inv_m22, oz = (p[0] * s.z - p[3] * s.x) * inv_beta;
-  const double inv_len2 = 1.0 / (ox * ox + oy * oy + oz * oz);
-  const double dens = oz > 0.0 ? oz * inv_beta * inv_m22 * inv_len2 * inv_len2 / std::numbers::pi : 0.0;
-  const double d = s.target - pr.magnitude * dens;
-  const double root = std::sqrt(std::abs(d));
-  if (jacobian_row) {
-    if (dens == 0.0) {
-      std::fill(jacobian_row, jacobian_row + 4, 0.0);
-    } else {
-      const double g = -1.5 * root * s.weight * pr.magnitude * dens;
-      const double inv_t = inv_beta / oz, s2 = 2.0 * (ox * ox + oz * oz) * inv_beta, two_l = 2.0 * inv_len2;
-      jacobian_row[0] = g * (s.z * inv_t - 2.0 * inv_beta - two_l * (2.0 * oz * s.z * inv_beta - s2));
-      jacobian_row[1] = g * inv_m22 * (2.0 * two_l * oy * oy - 1.0);
-      jacobian_row[2] = g * (2.0 * p[3] * inv_beta - two_l * (s2 * p[3] - 2.0 * ox * s.z * inv_beta));
-      jacobian_row[3] = g * (-s.x * inv_t + 2.0 * p[2] * inv_beta - two_l * (s2 * p[2] - 2.0 * oz * s.x * inv_beta));
-    }
+  const double p2 = p[2], p3 = p[3];
+  const size_t n = c.x.size();
+#pragma GCC ivdep
+  for (size_t k = 0; k < n; ++k) {
+    const double ox = c.ox[k], oy = c.oy[k], oz = c.oz[k], x = c.x[k], z = c.z[k];
+    const double g = -1.5 * c.root[k] * c.weight[k] * magnitude * c.dens[k];
+    const double inv_t = inv_beta / oz, s2 = 2.0 * (ox * ox + oz * oz) * inv_beta, two_l = 2.0 * c.inv_len2[k];
+    const double j0 = g * (z * inv_t - 2.0 * inv_beta - two_l * (2.0 * oz * z * inv_beta - s2));
+    const double j1 = g * inv_m22 * (2.0 * two_l * oy * oy - 1.0);
+    const double j2 = g * (2.0 * p3 * inv_beta - two_l * (s2 * p3 - 2.0 * ox * z * inv_beta));
+    const double j3 = g * (-x * inv_t + 2.0 * p2 * inv_beta - two_l * (s2 * p2 - 2.0 * oz * x * inv_beta));
+    const bool zero = c.dens[k] == 0.0;
+    const double r0 = zero ? 0.0 : j0, r1 = zero ? 0.0 : j1, r2 = zero ? 0.0 : j2, r3 = zero ? 0.0 : j3;
+    jac[4 * k] = r0, jac[4 * k + 1] = r1, jac[4 * k + 2] = r2, jac[4 * k + 3] = r3;
   }
-  return d * root * s.weight;
 }
 
 double sum_squared_residuals(const LtcProblem& pr, const LtcParams& p) {
   const double q[4] = {p.m11, p.m22, p.m13, p.m31};
+  LtcColumns c = ltc_columns(pr);
+  ltc_residuals(pr.magnitude, q, c);
   double sum = 0.0;
-  for (const auto& s : pr.samples) {
-    const double r = ltc_residual(pr, s, q, nullptr);
-    sum += r * r;
-  }
+  for (const double r : c.residual) sum += r * r;
   return sum;
 }
 
-// ½ Σ r² estimates ½ ∫ |ρ cos − n_D D_LTC|³ dω / B₃; the Jacobian is analytic (ltc_residual).
+// ½ Σ r² estimates ½ ∫ |ρ cos − n_D D_LTC|³ dω / B₃; the Jacobian is analytic (ltc_jacobian).
 // A step that would make A singular or flip it (β ≤ 0) is rejected as invalid.
+// Ceres' bounded trust-region step evaluates each accepted point up to three times (the projected
+// line search's cost and gradient, the candidate's cost, then the Jacobian); the last point's
+// residuals and Jacobian are kept and returned again for bit-identical parameters. Not for
+// concurrent use: a solve runs single-threaded (num_threads = 1).
 class LtcCost final : public ceres::CostFunction {
  public:
-  explicit LtcCost(const LtcProblem& problem) : problem_(problem) {
+  explicit LtcCost(const LtcProblem& problem)
+      : magnitude_(problem.magnitude), columns_(ltc_columns(problem)), jacobian_(4 * problem.samples.size()) {
     set_num_residuals(static_cast<int>(problem.samples.size()));
     mutable_parameter_block_sizes()->push_back(4);
   }
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     const double* p = parameters[0];
     if (!(p[0] - p[2] * p[3] > kLtcMinScale * p[0])) return false;
-    double* jac = jacobians ? jacobians[0] : nullptr;
-    const size_t n = problem_.samples.size();
-    for (size_t k = 0; k < n; ++k) residuals[k] = ltc_residual(problem_, problem_.samples[k], p, jac ? jac + 4 * k : nullptr);
+    if (!have_residuals_ || std::memcmp(p, at_, sizeof at_) != 0) {
+      std::memcpy(at_, p, sizeof at_);
+      ltc_residuals(magnitude_, p, columns_);
+      have_residuals_ = true;
+      have_jacobian_ = false;
+    }
+    std::copy(columns_.residual.begin(), columns_.residual.end(), residuals);
+    if (!jacobians || !jacobians[0]) return true;
+    if (!have_jacobian_) ltc_jacobian(magnitude_, p, columns_, jacobian_.data());
+    have_jacobian_ = true;
+    std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
     return true;
   }
 
  private:
-  const LtcProblem& problem_;
+  double magnitude_;
+  mutable LtcColumns columns_;
+  mutable double at_[4] = {};
+  mutable bool have_residuals_ = false, have_jacobian_ = false;
+  mutable std::vector<double> jacobian_;
 };
 
 LtcParams clamp_to_bounds(const LtcParams& p) {
@@ -242,8 +370,8 @@ LtcParams params_of(const FitResult& r) {
 std::vector<LtcL3Error> ltc_l3_errors(double nov, double alpha, double magnitude, const std::vector<LtcLobe>& lobes,
                                       int samples) {
   const brdf::Vec3 v = brdf::view_from_nov(nov);
-  const auto pts = hammersley_points(std::max(1, samples));
-  return l3_errors(v, alpha, magnitude, ggx_directions(v, alpha, pts), pts, lobes);
+  const LtcPointSet set = point_set(hammersley_points(std::max(1, samples)));
+  return l3_errors(v, alpha, magnitude, ggx_half(v, alpha, set.disk), set, lobes);
 }
 
 LtcL3Error ltc_l3_error(double nov, double alpha, double magnitude, const LtcLobe& lobe, int samples) {
@@ -252,9 +380,9 @@ LtcL3Error ltc_l3_error(double nov, double alpha, double magnitude, const LtcLob
 
 LtcProblem make_ltc_problem(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
                             const LtcParams& proposal, int sample_sqrt) {
-  const auto pts = stratified_midpoints(std::max(1, sample_sqrt));
+  const LtcPointSet set = point_set(stratified_midpoints(std::max(1, sample_sqrt)));
   return assemble_problem(nov, alpha, magnitude, ltc_frame_from_average_direction(average_dir),
-                          ggx_directions(brdf::view_from_nov(nov), alpha, pts), pts, proposal);
+                          ggx_half(brdf::view_from_nov(nov), alpha, set.disk), set, proposal);
 }
 
 double ltc_objective(const LtcProblem& problem, const LtcParams& p) { return 0.5 * sum_squared_residuals(problem, p); }
@@ -274,11 +402,11 @@ struct Rounds {
   FitResult fit;
   int rounds = 0;
 };
-Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& frame, const std::vector<GgxDirection>& ggx,
-                  const std::vector<brdf::Point2>& pts, const LtcParams& start, bool isotropic, const LtcSolver& solver) {
+Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& frame, const Directions& ggx,
+                  const LtcPointSet& set, const LtcParams& start, bool isotropic, const LtcSolver& solver) {
   Rounds out{start, {}, 0};
   while (out.rounds < kLtcMaxRounds) {
-    const auto problem = assemble_problem(nov, alpha, magnitude, frame, ggx, pts, out.params);
+    const auto problem = assemble_problem(nov, alpha, magnitude, frame, ggx, set, out.params);
     out.fit = solver(problem, out.params, isotropic);
     const LtcParams q = params_of(out.fit);
     ++out.rounds;
@@ -322,18 +450,30 @@ Chosen toward_continuation(const LtcParams& best, const LtcParams& target, doubl
 
 }  // namespace
 
+LtcCellPoints ltc_cell_points(int sample_sqrt) {
+  return {point_set(stratified_midpoints(std::max(1, sample_sqrt))), point_set(hammersley_points(kLtcHeldOutSamples)),
+          point_set(hammersley_points(kLtcNearEqualSamples))};
+}
+
 LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
                         const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver, int sample_sqrt,
                         double near_equal_margin) {
+  return fit_ltc_cell(nov, alpha, magnitude, average_dir, starts, isotropic, solver, ltc_cell_points(sample_sqrt),
+                      near_equal_margin);
+}
+
+LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
+                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver,
+                        const LtcCellPoints& points, double near_equal_margin) {
   if (starts.empty()) throw std::invalid_argument("fit_ltc_cell needs a start");
   const brdf::Vec3 v = brdf::view_from_nov(nov);
   const LtcFrame frame = ltc_frame_from_average_direction(average_dir);
-  const auto pts = stratified_midpoints(std::max(1, sample_sqrt));
-  const auto ggx = ggx_directions(v, alpha, pts);
-  const auto heldout_pts = hammersley_points(kLtcHeldOutSamples);
-  const auto heldout_ggx = ggx_directions(v, alpha, heldout_pts);
+  const LtcPointSet& set = points.fit;
+  const Directions ggx = ggx_half(v, alpha, set.disk);
+  const LtcPointSet& heldout_set = points.heldout;
+  const Directions heldout_ggx = ggx_half(v, alpha, heldout_set.disk);
   auto heldout = [&](const LtcParams& x) {
-    return l3_errors(v, alpha, magnitude, heldout_ggx, heldout_pts, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
+    return l3_errors(v, alpha, magnitude, heldout_ggx, heldout_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
   };
   LtcCellFit out;
   LtcParams best_start;
@@ -345,7 +485,7 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   }
   out.heldout_error = std::numeric_limits<double>::infinity();
   for (const auto& s : starts) {
-    const auto r = fit_rounds(nov, alpha, magnitude, frame, ggx, pts, clamp_to_bounds(s), isotropic, solver);
+    const auto r = fit_rounds(nov, alpha, magnitude, frame, ggx, set, clamp_to_bounds(s), isotropic, solver);
     const double e = heldout(r.params);
     ++out.fits;
     if (e < out.heldout_error) out.params = r.params, out.fit = r.fit, out.rounds = r.rounds, out.heldout_error = e;
@@ -356,10 +496,10 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   if (out.kept_start) out.params = best_start, out.heldout_error = out.start_heldout_error;
   if (out.kept_start || !(near_equal_margin > 0.0)) return out;
   // The near-equal choice, judged on kLtcNearEqualSamples fresh directions.
-  const auto near_pts = hammersley_points(kLtcNearEqualSamples);
-  const auto near_ggx = ggx_directions(v, alpha, near_pts);
+  const LtcPointSet& near_set = points.near_equal;
+  const Directions near_ggx = ggx_half(v, alpha, near_set.disk);
   auto near_error = [&](const LtcParams& x) {
-    return l3_errors(v, alpha, magnitude, near_ggx, near_pts, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
+    return l3_errors(v, alpha, magnitude, near_ggx, near_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
   };
   const auto c = toward_continuation(out.params, clamp_to_bounds(starts.front()),
                                      near_error(out.params) * (1.0 + near_equal_margin), near_error);

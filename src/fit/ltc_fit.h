@@ -172,4 +172,21 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
                         const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver = fit_ltc_ceres,
                         int sample_sqrt = kLtcDefaultSampleSqrt, double near_equal_margin = 0.0);
 
+// The view-independent part of a direction set's points: the unit-disk points of its GGX half
+// (brdf::disk_point) and the clamped-cosine directions of its LTC half (sample_ltc_lobe before M).
+struct LtcPointSet {
+  std::vector<brdf::DiskPoint> disk;
+  std::vector<brdf::Vec3> cosine;
+};
+// The point sets of fit_ltc_cell (sample_sqrt² stratified midpoints for the fit, kLtcHeldOutSamples
+// and kLtcNearEqualSamples Hammersley points), made once and shared by every cell of a table.
+struct LtcCellPoints {
+  LtcPointSet fit, heldout, near_equal;
+};
+LtcCellPoints ltc_cell_points(int sample_sqrt = kLtcDefaultSampleSqrt);
+// fit_ltc_cell with its point sets made beforehand; the same result.
+LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
+                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver,
+                        const LtcCellPoints& points, double near_equal_margin);
+
 }  // namespace fl::fit

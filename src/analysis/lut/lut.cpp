@@ -12,6 +12,7 @@
 #include "spectral/errors.h"
 #include "util/median.h"
 #include "util/parallel.h"
+#include "util/vector_clones.h"
 
 namespace fl::analysis {
 
@@ -85,6 +86,17 @@ std::vector<brdf::DiskPoint> lobe_disk_points(int samples) {
   return points;
 }
 
+FL_VECTOR_CLONES void lobe_samples(const LobeView& view, const brdf::DiskPoint* points, size_t count,
+                                   LobeSampleBlock& out) {
+  const LobeView local = view;  // a local copy: its reads cannot fault, so the loop runs branch-free
+  for (size_t k = 0; k < count; ++k) {
+    const brdf::Vec3 h = local.vndf(points[k]);
+    const brdf::Vec3 l = brdf::reflect(local.v, h);
+    const double voh = std::clamp(brdf::dot(local.v, h), 0.0, 1.0), w = local.weight(l.z);
+    out.lx[k] = l.x, out.ly[k] = l.y, out.lz[k] = l.z, out.voh[k] = voh, out.weight[k] = w;
+  }
+}
+
 DfgTexel integrate_dfg(double nov, double alpha, const std::vector<brdf::DiskPoint>& points) {
   DfgTexel t;
   for_each_lobe_sample(nov, alpha, points, [&](const LobeSample& s) {
@@ -121,17 +133,39 @@ double integrate_sheen_dfg(double nov, double alpha, int samples) {
   return sum * 2.0 * kPi / samples;
 }
 
+namespace {
+
+// The terms of integrate_moments' sums for a block of samples, as columns; 0 for a direction below the
+// horizon, which adds nothing to a sum.
+struct MomentTerms {
+  double n_d[kLobeBlock], f_d[kLobeBlock], l_d[kLobeBlock], dir_x[kLobeBlock], dir_z[kLobeBlock];
+};
+FL_VECTOR_CLONES void moment_terms(const LobeSampleBlock& b, size_t count, MomentTerms& t) {
+  for (size_t k = 0; k < count; ++k) {
+    const double w = b.weight[k], voh = b.voh[k];
+    const double m1 = 1.0 - voh;
+    const double m5 = pow5(m1);
+    const bool above = !(w <= 0.0);
+    t.n_d[k] = above ? w : 0.0;
+    t.f_d[k] = above ? m5 * w : 0.0;
+    t.l_d[k] = above ? voh * m5 * m1 * w : 0.0;
+    t.dir_x[k] = above ? b.lx[k] * w : 0.0;
+    t.dir_z[k] = above ? b.lz[k] * w : 0.0;
+  }
+}
+
+}  // namespace
+
 GgxMoments integrate_moments(double nov, double alpha, const std::vector<brdf::DiskPoint>& points) {
   GgxMoments m;
   brdf::Vec3 dir{0, 0, 0};
-  for_each_lobe_sample(nov, alpha, points, [&](const LobeSample& s) {
-    const double m1 = 1.0 - s.voh;
-    const double m5 = pow5(m1);
-    m.n_d += s.weight;
-    m.f_d += m5 * s.weight;
-    m.l_d += s.voh * m5 * m1 * s.weight;
-    dir.x += s.l.x * s.weight;
-    dir.z += s.l.z * s.weight;
+  MomentTerms t;
+  for_each_lobe_block(nov, alpha, points, [&](const LobeSampleBlock& b, size_t count) {
+    moment_terms(b, count, t);
+    for (size_t k = 0; k < count; ++k) {
+      m.n_d += t.n_d[k], m.f_d += t.f_d[k], m.l_d += t.l_d[k];
+      dir.x += t.dir_x[k], dir.z += t.dir_z[k];
+    }
   });
   const double samples = static_cast<double>(points.size());
   m.n_d /= samples;
@@ -175,11 +209,11 @@ auto lobe_integrand(Cell (*integral)(double, double, const std::vector<brdf::Dis
 
 // Fits cell (i, j) of an LTC grid from its starts (fit::fit_ltc_cell); i = 0 (normal incidence) is isotropic.
 LtcCell fit_table_cell(const LutGrid& g, const GgxMoments& mo, int i, int j, const std::vector<fit::LtcParams>& starts,
-                       const LtcCellFitter& fitter, int fit_sample_sqrt) {
+                       const LtcCellFitter& fitter, const fit::LtcCellPoints& points) {
   const bool isotropic = i == 0;
   const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
   const double near_equal_margin = i == g.size - 1 ? kLtcGrazingNearEqualMargin : 0.0;
-  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter, fit_sample_sqrt,
+  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter, points,
                                    near_equal_margin);
   LtcCell c;
   c.fit = r.fit;
@@ -263,8 +297,9 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   t.grid = ltc_grid(size);
   const auto& g = t.grid;
   t.cells.resize(static_cast<size_t>(size) * size);
+  const fit::LtcCellPoints points = fit::ltc_cell_points(fit_sample_sqrt);
   const auto fit_cell = [&](int i, int j, const std::vector<fit::LtcParams>& starts) {
-    t.cells[g.index(i, j)] = fit_table_cell(g, t.moments[g.index(i, j)], i, j, starts, fitter, fit_sample_sqrt);
+    t.cells[g.index(i, j)] = fit_table_cell(g, t.moments[g.index(i, j)], i, j, starts, fitter, points);
   };
   // Progress counts every cell twice: once for its moments, once for its fit.
   ProgressCounter done(options.progress, 2 * size * size);

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/pipeline/context.h"
@@ -73,18 +74,43 @@ struct LobeSample {
 // Hammersley point k of `samples` (brdf::hammersley) on the unit disk (brdf::disk_point), k = 0 … samples − 1:
 // the view-independent part of every lobe integral, shared by all the cells of a table.
 std::vector<brdf::DiskPoint> lobe_disk_points(int samples);
+// The samples of one view for up to kLobeBlock points, as columns (one array per quantity, so the
+// compiler computes several samples per instruction); a weight of 0 marks a direction below the horizon.
+constexpr size_t kLobeBlock = 256;
+struct LobeSampleBlock {
+  double lx[kLobeBlock], ly[kLobeBlock], lz[kLobeBlock], voh[kLobeBlock], weight[kLobeBlock];
+};
+// The view's part of every sample: v, its visible-normal sampler and its weight G₂/G₁.
+struct LobeView {
+  brdf::Vec3 v;
+  brdf::GgxVndfSampler vndf;
+  brdf::GgxVndfWeight weight;
+  LobeView(double nov, double alpha)
+      : v(brdf::view_from_nov(nov)), vndf(v, alpha), weight(v.z, alpha) {}
+};
+// The samples of points[0, count), count ≤ kLobeBlock, at one view, with the arithmetic of one
+// sample at a time.
+void lobe_samples(const LobeView& view, const brdf::DiskPoint* points, size_t count, LobeSampleBlock& out);
+// fn(block, count) for the blocks of `points` in order, each of count ≤ kLobeBlock samples.
+template <class Fn>
+void for_each_lobe_block(double nov, double alpha, const std::vector<brdf::DiskPoint>& points, Fn fn) {
+  const LobeView view(nov, alpha);
+  LobeSampleBlock b;
+  for (size_t first = 0; first < points.size(); first += kLobeBlock) {
+    const size_t count = std::min(kLobeBlock, points.size() - first);
+    lobe_samples(view, points.data() + first, count, b);
+    fn(std::as_const(b), count);
+  }
+}
+// fn(sample) for each point whose direction is above the horizon, in the order of `points`.
 template <class Fn>
 void for_each_lobe_sample(double nov, double alpha, const std::vector<brdf::DiskPoint>& points, Fn fn) {
-  const brdf::Vec3 v = brdf::view_from_nov(nov);
-  const brdf::GgxVndfSampler vndf(v, alpha);
-  const brdf::GgxVndfWeight weight(v.z, alpha);
-  for (const auto& d : points) {
-    const brdf::Vec3 h = vndf(d);
-    const brdf::Vec3 l = brdf::reflect(v, h);
-    const double w = weight(l.z);
-    if (w <= 0.0) continue;
-    fn(LobeSample{l, std::clamp(brdf::dot(v, h), 0.0, 1.0), w});
-  }
+  for_each_lobe_block(nov, alpha, points, [&](const LobeSampleBlock& b, size_t count) {
+    for (size_t k = 0; k < count; ++k) {
+      if (b.weight[k] <= 0.0) continue;
+      fn(LobeSample{{b.lx[k], b.ly[k], b.lz[k]}, b.voh[k], b.weight[k]});
+    }
+  });
 }
 template <class Fn>
 void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
