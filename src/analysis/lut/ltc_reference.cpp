@@ -151,27 +151,33 @@ void judge(const std::vector<JudgedPoint>& points, int samples, std::vector<doub
   });
 }
 
-// The largest difference of each texture entry between neighbouring cells (i, j)–(i + 1, j) and (i,
-// j)–(i, j + 1).
+// Every pair of neighbouring cells of an n × n grid, (i, j)–(i + 1, j) (along n·v) and
+// (i, j)–(i, j + 1), in row order: fn(i, j, i2, j2, along_nov).
+template <class Fn>
+void for_each_neighbour_pair(int n, Fn fn) {
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      for (const bool along_nov : {true, false}) {
+        const int i2 = i + (along_nov ? 1 : 0), j2 = j + (along_nov ? 0 : 1);
+        if (i2 < n && j2 < n) fn(i, j, i2, j2, along_nov);
+      }
+}
+
+// The largest difference of each texture entry between neighbouring cells.
 void fill_jumps(int n, const std::vector<std::array<double, 4>>& entries, bool reference,
                 std::array<LtcEntryJump, 4>& out) {
   for (int e = 0; e < 4; ++e) {
     double best = -1;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        for (const bool along_nov : {true, false}) {
-          const int i2 = i + (along_nov ? 1 : 0), j2 = j + (along_nov ? 0 : 1);
-          if (i2 >= n || j2 >= n) continue;
-          const double d = std::abs(entries[static_cast<size_t>(j) * n + i][e] -
-                                    entries[static_cast<size_t>(j2) * n + i2][e]);
-          if (d <= best) continue;
-          best = d;
-          if (reference)
-            out[e].reference_max = d, out[e].reference_i_nov = i, out[e].reference_j_roughness = j,
-            out[e].reference_along_nov = along_nov;
-          else
-            out[e].max = d, out[e].i_nov = i, out[e].j_roughness = j, out[e].along_nov = along_nov;
-        }
+    for_each_neighbour_pair(n, [&](int i, int j, int i2, int j2, bool along_nov) {
+      const double d = std::abs(entries[static_cast<size_t>(j) * n + i][e] - entries[static_cast<size_t>(j2) * n + i2][e]);
+      if (d <= best) return;
+      best = d;
+      if (reference)
+        out[e].reference_max = d, out[e].reference_i_nov = i, out[e].reference_j_roughness = j,
+        out[e].reference_along_nov = along_nov;
+      else
+        out[e].max = d, out[e].i_nov = i, out[e].j_roughness = j, out[e].along_nov = along_nov;
+    });
   }
 }
 
@@ -182,25 +188,21 @@ std::vector<JudgedPoint> midpoints(const LtcTable& table,
   const auto& g = table.grid;
   const int n = g.size;
   std::vector<JudgedPoint> out;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      for (const bool along_nov : {true, false}) {
-        const int i2 = i + (along_nov ? 1 : 0), j2 = j + (along_nov ? 0 : 1);
-        if (i2 >= n || j2 >= n) continue;
-        JudgedPoint p;
-        p.a = g.index(i, j), p.b = g.index(i2, j2);
-        p.nov = ltc_nov_at(0.5 * (i + i2) / (n - 1));
-        p.alpha = ltc_alpha_at(0.5 * (j + j2) / (n - 1));
-        p.last_row = i2 == n - 1;
-        std::array<double, 4> mine, theirs;
-        for (int e = 0; e < 4; ++e) {
-          mine[e] = 0.5 * (entries[p.a][e] + entries[p.b][e]);
-          theirs[e] = 0.5 * (reference_entries[p.a][e] + reference_entries[p.b][e]);
-        }
-        p.ours = lobe_of_entries(mine);
-        p.reference = lobe_of_entries(theirs);
-        out.push_back(p);
-      }
+  for_each_neighbour_pair(n, [&](int i, int j, int i2, int j2, bool) {
+    JudgedPoint p;
+    p.a = g.index(i, j), p.b = g.index(i2, j2);
+    p.nov = ltc_nov_at(0.5 * (i + i2) / (n - 1));
+    p.alpha = ltc_alpha_at(0.5 * (j + j2) / (n - 1));
+    p.last_row = i2 == n - 1;
+    std::array<double, 4> mine, theirs;
+    for (int e = 0; e < 4; ++e) {
+      mine[e] = 0.5 * (entries[p.a][e] + entries[p.b][e]);
+      theirs[e] = 0.5 * (reference_entries[p.a][e] + reference_entries[p.b][e]);
+    }
+    p.ours = lobe_of_entries(mine);
+    p.reference = lobe_of_entries(theirs);
+    out.push_back(p);
+  });
   parallel_for(out.size(), [&](size_t k) {
     out[k].n_d = integrate_moments(out[k].nov, out[k].alpha, moment_samples).n_d;
   });
