@@ -3,23 +3,14 @@
 #include <ceres/ceres.h>
 #include <ceres/gradient_checker.h>
 
+#include "fit/kept_evaluation.h"
 #include "fresnel/registry.h"
+#include "util/codegen.h"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 #include <cmath>
 #include <memory>
-
-// Flattening the cost evaluations inlines Eigen's small Jet-lane loops, which the compiler otherwise
-// leaves as calls (about a tenth of a fit's time). Under AddressSanitizer the flattened, instrumented
-// functions take GCC many minutes to compile with debug information, so the sanitizer build keeps
-// the calls.
-#if defined(__SANITIZE_ADDRESS__)
-#define FL_FLATTEN
-#else
-#define FL_FLATTEN [[gnu::flatten]]
-#endif
 
 namespace fl::fit {
 namespace {
@@ -41,30 +32,17 @@ class ModelCurveCost : public ceres::CostFunction {
   using ChannelJet = ceres::Jet<double, kChannelLanes>;
   using RgbJet = ceres::Jet<double, 3>;
 
-  explicit ModelCurveCost(const CurveTarget* target)
-      : target_(target), residuals_(3 * target->cos_thetas.size()), jacobian_(residuals_.size() * kParams) {
-    set_num_residuals(static_cast<int>(residuals_.size()));
+  explicit ModelCurveCost(const CurveTarget* target) : target_(target), kept_(3 * target->cos_thetas.size()) {
+    set_num_residuals(static_cast<int>(3 * target->cos_thetas.size()));
     mutable_parameter_block_sizes()->push_back(kParams);
   }
 
-  // Ceres' bounded trust-region step evaluates each accepted point three times (the projected
-  // line search's cost and gradient, the candidate's cost, then the Jacobian); the last point's
-  // residuals and Jacobian are kept and returned again for bit-identical parameters. Not for
-  // concurrent use: a solve runs single-threaded (num_threads = 1).
+  // The last point's evaluation is kept (KeptEvaluation).
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const double* p = parameters[0];
-    double* jac = jacobians ? jacobians[0] : nullptr;
-    if (!have_residuals_ || std::memcmp(p, at_, sizeof at_) != 0) {
-      std::memcpy(at_, p, sizeof at_);
-      residuals_at(p, residuals_.data());
-      have_residuals_ = true;
-      have_jacobian_ = false;
-    }
-    std::copy(residuals_.begin(), residuals_.end(), residuals);
-    if (!jac) return true;
-    if (!have_jacobian_) jacobian_at(p, jacobian_.data());
-    have_jacobian_ = true;
-    std::copy(jacobian_.begin(), jacobian_.end(), jac);
+    kept_.evaluate(
+        parameters[0], residuals, jacobians ? jacobians[0] : nullptr,
+        [this](const double* p, double* out) { residuals_at(p, out); },
+        [this](const double* p, double* out) { jacobian_at(p, out); });
     return true;
   }
 
@@ -109,9 +87,7 @@ class ModelCurveCost : public ceres::CostFunction {
   }
 
   const CurveTarget* target_;
-  mutable double at_[kParams] = {};
-  mutable bool have_residuals_ = false, have_jacobian_ = false;
-  mutable std::vector<double> residuals_, jacobian_;
+  mutable KeptEvaluation<kParams> kept_;
 };
 
 ceres::CostFunction* create_cost(Model m, const CurveTarget* target) {

@@ -5,11 +5,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
-#include "util/vector_clones.h"
+#include "fit/kept_evaluation.h"
+#include "util/codegen.h"
 
 namespace fl::fit {
 
@@ -312,40 +312,32 @@ double sum_squared_residuals(const LtcProblem& pr, const LtcParams& p) {
 
 // ½ Σ r² estimates ½ ∫ |ρ cos − n_D D_LTC|³ dω / B₃; the Jacobian is analytic (ltc_jacobian).
 // A step that would make A singular or flip it (β ≤ 0) is rejected as invalid.
-// Ceres' bounded trust-region step evaluates each accepted point up to three times (the projected
-// line search's cost and gradient, the candidate's cost, then the Jacobian); the last point's
-// residuals and Jacobian are kept and returned again for bit-identical parameters. Not for
-// concurrent use: a solve runs single-threaded (num_threads = 1).
+// The last point's evaluation is kept (KeptEvaluation); the Jacobian reuses the residual pass's terms
+// in columns_, which are always those of the same point.
 class LtcCost final : public ceres::CostFunction {
  public:
   explicit LtcCost(const LtcProblem& problem)
-      : magnitude_(problem.magnitude), columns_(ltc_columns(problem)), jacobian_(4 * problem.samples.size()) {
+      : magnitude_(problem.magnitude), columns_(ltc_columns(problem)), kept_(problem.samples.size()) {
     set_num_residuals(static_cast<int>(problem.samples.size()));
     mutable_parameter_block_sizes()->push_back(4);
   }
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     const double* p = parameters[0];
     if (!(p[0] - p[2] * p[3] > kLtcMinScale * p[0])) return false;
-    if (!have_residuals_ || std::memcmp(p, at_, sizeof at_) != 0) {
-      std::memcpy(at_, p, sizeof at_);
-      ltc_residuals(magnitude_, p, columns_);
-      have_residuals_ = true;
-      have_jacobian_ = false;
-    }
-    std::copy(columns_.residual.begin(), columns_.residual.end(), residuals);
-    if (!jacobians || !jacobians[0]) return true;
-    if (!have_jacobian_) ltc_jacobian(magnitude_, p, columns_, jacobian_.data());
-    have_jacobian_ = true;
-    std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
+    kept_.evaluate(
+        p, residuals, jacobians ? jacobians[0] : nullptr,
+        [this](const double* q, double* out) {
+          ltc_residuals(magnitude_, q, columns_);
+          std::copy(columns_.residual.begin(), columns_.residual.end(), out);
+        },
+        [this](const double* q, double* out) { ltc_jacobian(magnitude_, q, columns_, out); });
     return true;
   }
 
  private:
   double magnitude_;
   mutable LtcColumns columns_;
-  mutable double at_[4] = {};
-  mutable bool have_residuals_ = false, have_jacobian_ = false;
-  mutable std::vector<double> jacobian_;
+  mutable KeptEvaluation<4> kept_;
 };
 
 LtcParams clamp_to_bounds(const LtcParams& p) {
@@ -470,11 +462,12 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   const LtcFrame frame = ltc_frame_from_average_direction(average_dir);
   const LtcPointSet& set = points.fit;
   const Directions ggx = ggx_half(v, alpha, set.disk);
-  const LtcPointSet& heldout_set = points.heldout;
-  const Directions heldout_ggx = ggx_half(v, alpha, heldout_set.disk);
-  auto heldout = [&](const LtcParams& x) {
-    return l3_errors(v, alpha, magnitude, heldout_ggx, heldout_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
+  // The relative L3 error of an LTC on a point set whose GGX half is `judge_ggx`.
+  auto judged = [&](const Directions& judge_ggx, const LtcPointSet& judge_set, const LtcParams& x) {
+    return l3_errors(v, alpha, magnitude, judge_ggx, judge_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
   };
+  const Directions heldout_ggx = ggx_half(v, alpha, points.heldout.disk);
+  auto heldout = [&](const LtcParams& x) { return judged(heldout_ggx, points.heldout, x); };
   LtcCellFit out;
   LtcParams best_start;
   out.start_heldout_error = std::numeric_limits<double>::infinity();
@@ -496,11 +489,8 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   if (out.kept_start) out.params = best_start, out.heldout_error = out.start_heldout_error;
   if (out.kept_start || !(near_equal_margin > 0.0)) return out;
   // The near-equal choice, judged on kLtcNearEqualSamples fresh directions.
-  const LtcPointSet& near_set = points.near_equal;
-  const Directions near_ggx = ggx_half(v, alpha, near_set.disk);
-  auto near_error = [&](const LtcParams& x) {
-    return l3_errors(v, alpha, magnitude, near_ggx, near_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
-  };
+  const Directions near_ggx = ggx_half(v, alpha, points.near_equal.disk);
+  auto near_error = [&](const LtcParams& x) { return judged(near_ggx, points.near_equal, x); };
   const auto c = toward_continuation(out.params, clamp_to_bounds(starts.front()),
                                      near_error(out.params) * (1.0 + near_equal_margin), near_error);
   if (c.step > 0.0) out.params = c.params, out.heldout_error = heldout(c.params), out.continuation_step = c.step;

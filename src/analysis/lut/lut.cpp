@@ -12,7 +12,7 @@
 #include "spectral/errors.h"
 #include "util/median.h"
 #include "util/parallel.h"
-#include "util/vector_clones.h"
+#include "util/codegen.h"
 
 namespace fl::analysis {
 

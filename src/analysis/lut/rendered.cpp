@@ -86,21 +86,9 @@ class TexelCache {
 
 double as_stored(double v) { return static_cast<double>(static_cast<float>(v)); }
 
-// A texel as the engine tables store it, integrated over the shared point set.
-struct DfgCell {
-  const std::vector<brdf::DiskPoint>* points;
-  DfgTexel operator()(double nov, double alpha) const {
-    const auto t = integrate_dfg(nov, alpha, *points);
-    return {as_stored(t.dfg1), as_stored(t.dfg2), as_stored(t.dfg_f82)};
-  }
-};
-struct MomentsCell {
-  const std::vector<brdf::DiskPoint>* points;
-  GgxMoments operator()(double nov, double alpha) const {
-    const auto m = integrate_moments(nov, alpha, *points);
-    return {as_stored(m.n_d), as_stored(m.f_d), as_stored(m.l_d), m.average_dir};
-  }
-};
+// Texels as the engine tables store them.
+DfgTexel as_stored(const DfgTexel& t) { return {as_stored(t.dfg1), as_stored(t.dfg2), as_stored(t.dfg_f82)}; }
+GgxMoments as_stored(const GgxMoments& m) { return {as_stored(m.n_d), as_stored(m.f_d), as_stored(m.l_d), m.average_dir}; }
 
 // Texel coordinates of a point: DFG texel centres (i + ½)/N over n·v and roughness; LTC endpoints
 // i/(N − 1) over √(1 − n·v) and roughness.
@@ -136,8 +124,10 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
     }
   // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
   const auto disk = lobe_disk_points(kLutSamples);
-  TexelCache<DfgTexel, DfgCell> dfg(dfg_grid(kEngineLutSize), DfgCell{&disk});
-  TexelCache<GgxMoments, MomentsCell> ltc(ltc_grid(kEngineLutSize), MomentsCell{&disk});
+  const auto dfg_cell = [&disk](double nov, double alpha) { return as_stored(integrate_dfg(nov, alpha, disk)); };
+  const auto ltc_cell = [&disk](double nov, double alpha) { return as_stored(integrate_moments(nov, alpha, disk)); };
+  TexelCache<DfgTexel, decltype(dfg_cell)> dfg(dfg_grid(kEngineLutSize), dfg_cell);
+  TexelCache<GgxMoments, decltype(ltc_cell)> ltc(ltc_grid(kEngineLutSize), ltc_cell);
   for (const auto& p : points) {
     for_texels(dfg_read(p), [&](int i, int j, double) { dfg.request(i, j); });
     for_texels(ltc_read(p), [&](int i, int j, double) { ltc.request(i, j); });
