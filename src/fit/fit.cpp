@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 #include <ceres/gradient_checker.h>
 
+#include "color/dual.h"
 #include "fit/kept_evaluation.h"
 #include "fresnel/registry.h"
 #include "util/codegen.h"
@@ -18,10 +19,12 @@ namespace {
 using fresnel::Model;
 
 // Three residuals per angle whose squares sum to ΔE2000² between the ground truth and the model's
-// RGB (color::ciede2000_residuals), both in the working space's CIELAB. The Jacobian is formed by
-// the chain rule from two automatic derivatives: each channel over the parameters it reads (its
-// own block and the shared ones: Jets of kChannelLanes lanes; a channel never reads another
-// channel's block, so those entries are zero) and the residuals over RGB (Jets of 3 lanes).
+// RGB (color::ciede2000_residuals), both in the working space's CIELAB. Residuals and Jacobian come
+// from one pass (KeptEvaluation::evaluate_joint). The Jacobian is formed by the chain rule: each
+// channel differentiated over the parameters it reads (its own block and the shared ones: Ceres
+// Jets of kChannelLanes lanes; a channel never reads another channel's block, so those entries are
+// zero), and the residuals over RGB (color::Dual<3>). The residual values are the double path's bit
+// for bit: the model's channels are evaluated in double, and Dual rounds its values as double does.
 template <class Unit>
 class ModelCurveCost : public ceres::CostFunction {
  public:
@@ -30,7 +33,7 @@ class ModelCurveCost : public ceres::CostFunction {
   static constexpr int kParams = fresnel::unit_param_count<Unit>();
   static constexpr int kChannelLanes = kPer + kShared;
   using ChannelJet = ceres::Jet<double, kChannelLanes>;
-  using RgbJet = ceres::Jet<double, 3>;
+  using RgbDual = color::Dual<3>;
 
   explicit ModelCurveCost(const CurveTarget* target) : target_(target), kept_(3 * target->cos_thetas.size()) {
     set_num_residuals(static_cast<int>(3 * target->cos_thetas.size()));
@@ -39,27 +42,16 @@ class ModelCurveCost : public ceres::CostFunction {
 
   // The last point's evaluation is kept (KeptEvaluation).
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    kept_.evaluate(
-        parameters[0], residuals, jacobians ? jacobians[0] : nullptr,
-        [this](const double* p, double* out) { residuals_at(p, out); },
-        [this](const double* p, double* out) { jacobian_at(p, out); });
+    kept_.evaluate_joint(parameters[0], residuals, jacobians ? jacobians[0] : nullptr,
+                         [this](const double* p, double* r, double* jac) { evaluate_at(p, r, jac); });
     return true;
   }
 
   static ceres::CostFunction* Create(const CurveTarget* target) { return new ModelCurveCost(target); }
 
  private:
-  // Both evaluations are flattened (FL_FLATTEN).
-  // Residual values always come from the double path, so they do not depend on whether Jacobians
-  // were asked for (Jet arithmetic rounds differently near zero).
-  FL_FLATTEN void residuals_at(const double* p, double* residuals) const {
-    for (size_t i = 0; i < target_->cos_thetas.size(); ++i) {
-      const auto rgb = fresnel::evaluate_unit<Unit, double>(target_->cos_thetas[i], p);
-      color::ciede2000_residuals(target_->truth_lab[i], target_->to_lab(rgb), residuals + 3 * i);
-    }
-  }
-
-  FL_FLATTEN void jacobian_at(const double* p, double* jac) const {
+  // Flattened (FL_FLATTEN): the Jet and Dual lanes' loops are inlined.
+  FL_FLATTEN void evaluate_at(const double* p, double* residuals, double* jac) const {
     // Channel c's lanes: its own parameters, then the shared ones.
     ChannelJet pj[3][kChannelLanes];
     for (int c = 0; c < 3; ++c) {
@@ -68,22 +60,27 @@ class ModelCurveCost : public ceres::CostFunction {
     }
     for (size_t i = 0; i < target_->cos_thetas.size(); ++i) {
       const auto& t = target_->truth_lab[i];
-      const ChannelJet cos_theta(target_->cos_thetas[i]);
+      const double cos_theta = target_->cos_thetas[i];
+      const auto rgb = fresnel::evaluate_unit<Unit, double>(cos_theta, p);
       ChannelJet ch[3];
-      for (int c = 0; c < 3; ++c) ch[c] = Unit::channel(cos_theta, pj[c], pj[c] + kPer);
-      const color::RgbT<RgbJet> rgb{RgbJet(ch[0].a, 0), RgbJet(ch[1].a, 1), RgbJet(ch[2].a, 2)};
-      RgbJet rj[3];
-      color::ciede2000_residuals(color::LabT<RgbJet>{RgbJet(t.L), RgbJet(t.a), RgbJet(t.b)}, target_->to_lab(rgb), rj);
-      for (int q = 0; q < 3; ++q) chain_rule(rj[q], ch, jac + (3 * i + q) * kParams);
+      for (int c = 0; c < 3; ++c) ch[c] = Unit::channel(ChannelJet(cos_theta), pj[c], pj[c] + kPer);
+      const color::RgbT<RgbDual> rgb_d{RgbDual::variable(rgb.r, 0), RgbDual::variable(rgb.g, 1),
+                                       RgbDual::variable(rgb.b, 2)};
+      RgbDual rd[3];
+      color::ciede2000_residuals(color::LabT<RgbDual>{t.L, t.a, t.b}, target_->to_lab(rgb_d), rd);
+      for (int q = 0; q < 3; ++q) {
+        residuals[3 * i + q] = rd[q].v;
+        chain_rule(rd[q].d, ch, jac + (3 * i + q) * kParams);
+      }
     }
   }
 
   // One Jacobian row: d residual / d RGB times d RGB / d parameters.
-  static void chain_rule(const RgbJet& d_rgb, const ChannelJet (&ch)[3], double* row) {
+  static void chain_rule(const std::array<double, 3>& d_rgb, const ChannelJet (&ch)[3], double* row) {
     for (int c = 0; c < 3; ++c)
-      for (int k = 0; k < kPer; ++k) row[c * kPer + k] = d_rgb.v[c] * ch[c].v[k];
+      for (int k = 0; k < kPer; ++k) row[c * kPer + k] = d_rgb[c] * ch[c].v[k];
     for (int s = 0; s < kShared; ++s)
-      row[3 * kPer + s] = d_rgb.v[0] * ch[0].v[kPer + s] + d_rgb.v[1] * ch[1].v[kPer + s] + d_rgb.v[2] * ch[2].v[kPer + s];
+      row[3 * kPer + s] = d_rgb[0] * ch[0].v[kPer + s] + d_rgb[1] * ch[1].v[kPer + s] + d_rgb[2] * ch[2].v[kPer + s];
   }
 
   const CurveTarget* target_;

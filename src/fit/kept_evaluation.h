@@ -35,6 +35,21 @@ class KeptEvaluation {
     std::copy(jacobian_.begin(), jacobian_.end(), jacobian);
   }
 
+  // The same for a cost function that computes its residuals and Jacobian in one pass
+  // (compute(p, residuals, jacobian)): both are computed at each new point, since Ceres asks for
+  // the Jacobian at nearly every point whose residuals it asks for (the model fits of `reproduce`:
+  // 6,016 Jacobians at 6,129 points).
+  template <class Both>
+  void evaluate_joint(const double* p, double* residuals, double* jacobian, Both compute) {
+    if (!have_jacobian_ || std::memcmp(p, at_, sizeof at_) != 0) {
+      std::memcpy(at_, p, sizeof at_);
+      compute(p, residuals_.data(), jacobian_.data());
+      have_residuals_ = have_jacobian_ = true;
+    }
+    std::copy(residuals_.begin(), residuals_.end(), residuals);
+    if (jacobian) std::copy(jacobian_.begin(), jacobian_.end(), jacobian);
+  }
+
  private:
   double at_[kParams] = {};
   bool have_residuals_ = false, have_jacobian_ = false;

@@ -2,13 +2,39 @@
 
 #include "fresnel/exact.h"
 #include "spectral/spectrum.h"
+#include "util/codegen.h"
+
+#include <algorithm>
 
 namespace fl::fresnel {
 
+namespace {
+
+// Wavelengths per column pass: a few kilobytes on the stack; the 1 nm grid takes four passes.
+constexpr size_t kColumn = 128;
+
+// R(λ) at cosθ for n relative indices, eta_kappa interleaved (η₀, κ₀, η₁, κ₁, ...), each divided
+// by eta_outside: a column loop (FL_VECTOR_CLONES), each lane rounding as the scalar kernel does.
+FL_VECTOR_CLONES void reflectance_column(double cos_theta, const double* eta_kappa, double eta_outside, size_t n,
+                                         double* __restrict out) {
+  for (size_t i = 0; i < n; ++i)
+    out[i] = fresnel_conductor<double>(cos_theta, eta_kappa[2 * i] / eta_outside, eta_kappa[2 * i + 1] / eta_outside);
+}
+
+}  // namespace
+
 color::Rgb spectral_reflectance_rgb(const std::vector<color::Rgb>& w, const spectral::ComplexIorSpectrum& ior,
                                     double cos_theta, double eta_outside) {
+  // std::complex<double> is laid out as two doubles (real, imaginary).
+  const double* eta_kappa = reinterpret_cast<const double*>(ior.ior.data());
+  double r[kColumn];
   color::Rgb out;
-  for (size_t i = 0; i < w.size(); ++i) out = out + fresnel_conductor(cos_theta, ior.ior[i] / eta_outside) * w[i];
+  // The sum runs in wavelength order, one term at a time, as R(λ)·w(λ).
+  for (size_t start = 0; start < w.size(); start += kColumn) {
+    const size_t n = std::min(kColumn, w.size() - start);
+    reflectance_column(cos_theta, eta_kappa + 2 * start, eta_outside, n, r);
+    for (size_t i = 0; i < n; ++i) out = out + r[i] * w[start + i];
+  }
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <complex>
 
 #include "fresnel/exact.h"
+#include "fresnel/ground_truth.h"
 
 namespace fl::fresnel {
 namespace {
@@ -150,6 +151,32 @@ TEST(Exact, StokesRelationsAndReciprocity) {
       EXPECT_NEAR(fresnel_conductor(c, eta, 0.0), fresnel_conductor(a.cos_t, 1 / eta, 0.0), kReciprocityTolerance)
           << eta << " " << i;
     }
+}
+
+// Ground truth sums R(λ)·w(λ) over wavelengths; its column pass (vectorized) must give bit for bit
+// the scalar kernel's sum, in the same order, over every branch of the kernel: conductors,
+// lossless indices above and below 1 (total internal reflection), an index-matched wavelength,
+// normal and grazing incidence, and a 1 nm grid longer than one column pass.
+TEST(GroundTruth, ColumnPassEqualsTheScalarKernelBitForBit) {
+  for (double step_nm : {5.0, 1.0}) {
+    spectral::ComplexIorSpectrum ior;
+    ior.grid = spectral::SpectralGrid::visible(step_nm);
+    std::vector<color::Rgb> w;
+    for (int i = 0; i < ior.grid.count; ++i) {
+      const double t = double(i) / ior.grid.count;
+      const std::complex<double> kinds[] = {{0.2 + t, 3.0 - t}, {1.5 + 0.1 * t, 0.0}, {0.7, 0.0}, {1.0, 0.0},
+                                            {2.4, 1e-210}};
+      ior.ior.push_back(kinds[i % 5]);
+      w.push_back({0.01 * (1 + i % 7), 0.02 * t, 0.003 * (i % 3)});
+    }
+    for (double eta_outside : {1.0, 1.33})
+      for (double cos_theta : {1.0, 0.7, 0.2, 1e-3, 0.0}) {
+        color::Rgb scalar;
+        for (size_t i = 0; i < w.size(); ++i) scalar = scalar + fresnel_conductor(cos_theta, ior.ior[i] / eta_outside) * w[i];
+        const color::Rgb column = spectral_reflectance_rgb(w, ior, cos_theta, eta_outside);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(column[c], scalar[c]) << step_nm << " nm, cos " << cos_theta;
+      }
+  }
 }
 
 }  // namespace
