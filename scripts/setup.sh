@@ -13,7 +13,7 @@ PACKAGES=(
   libceres-dev libeigen3-dev
   libopencolorio-dev
   libopenexr-dev libimath-dev
-  libyaml-cpp-dev libyaml-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev libhwy-dev
+  libyaml-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev libhwy-dev
   colord-data
   googletest libgtest-dev libgmock-dev libbenchmark-dev libxml2-utils
   liblcms2-dev libcairo2-dev fonts-dejavu-core libgif-dev

@@ -1,6 +1,5 @@
 #include "spectral/material.h"
 
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,37 +43,37 @@ std::string database_file(const DataPaths& paths, const std::string& page) {
   return paths.database + "/data/" + page + ".yml";
 }
 
-std::string scalar(const YAML::Node& root, const char* key, const std::string& path, bool required) {
-  const YAML::Node n = root[key];
+std::string scalar(const YamlNode& root, const char* key, const std::string& path, bool required) {
+  const YamlNode& n = root[key];
   if (!n) {
     if (required) throw InputError(path, 0, fmt::format("missing field '{}'", key));
     return {};
   }
-  if (!n.IsScalar()) throw InputError(path, n.Mark().line + 1, fmt::format("field '{}' must be a string", key));
-  return n.as<std::string>();
+  if (!n.is_scalar()) throw InputError(path, n.line() + 1, fmt::format("field '{}' must be a string", key));
+  return n.scalar();
 }
 
 }  // namespace
 
 Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
-  const YAML::Node root = read_yaml_file(path);
-  if (!root.IsMap()) throw InputError(path, 1, "a catalog entry must be a YAML map");
+  const YamlNode root = read_yaml_file(path);
+  if (!root.is_map()) throw InputError(path, 1, "a catalog entry must be a YAML map");
   Material m;
   m.key = fs::path(path).stem().string();
   m.name = scalar(root, "name", path, true);
   const std::string cls = scalar(root, "class", path, true);
   if (cls == "metal") m.material_class = MaterialClass::Metal;
   else if (cls == "dielectric") m.material_class = MaterialClass::Dielectric;
-  else throw InputError(path, root["class"].Mark().line + 1, fmt::format("class '{}' must be metal or dielectric", cls));
+  else throw InputError(path, root["class"].line() + 1, fmt::format("class '{}' must be metal or dielectric", cls));
   m.reference = scalar(root, "reference", path, false);
   for (const char* key : {"order", "talk_schlick_rms_de00"}) {
     const std::string v = scalar(root, key, path, false);
     double x = 0;
     if (v.empty()) continue;
-    if (!parse_finite(v, x)) throw InputError(path, root[key].Mark().line + 1, fmt::format("field '{}' must be a number", key));
+    if (!parse_finite(v, x)) throw InputError(path, root[key].line() + 1, fmt::format("field '{}' must be a number", key));
     if (std::string(key) == "order") {
       if (x != std::floor(x) || std::abs(x) > 1e6)
-        throw InputError(path, root[key].Mark().line + 1, "field 'order' must be an integer between -1000000 and 1000000");
+        throw InputError(path, root[key].line() + 1, "field 'order' must be an integer between -1000000 and 1000000");
       m.order = static_cast<int>(x);
     }
     else m.talk_schlick_rms_de00 = x;
@@ -82,7 +81,7 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
   const std::string page = scalar(root, "source", path, false);
   const std::string file = scalar(root, "file", path, false);
   if (!page.empty() && !file.empty())
-    throw InputError(path, root["file"].Mark().line + 1, "give either 'source' (a database page) or 'file', not both");
+    throw InputError(path, root["file"].line() + 1, "give either 'source' (a database page) or 'file', not both");
   if (!page.empty()) {
     m.source = page;
     m.constants = read_refractiveindex_file(database_file(paths, page));
@@ -90,14 +89,14 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
     const fs::path f = fs::path(file).is_absolute() ? fs::path(file) : fs::path(path).parent_path() / file;
     m.source = file;
     m.constants = read_optical_file(f.string());
-  } else if (const YAML::Node c = root["constant"]) {
+  } else if (const YamlNode& c = root["constant"]) {
     double n = 0, k = 0;
     try {
-      if (!c.IsMap() || !c["n"]) throw InputError(path, c.Mark().line + 1, "'constant' needs n (and optional k)");
-      if (!parse_finite(c["n"].as<std::string>(), n) || (c["k"] && !parse_finite(c["k"].as<std::string>(), k)))
-        throw InputError(path, c.Mark().line + 1, "'constant' n and k must be finite numbers");
-    } catch (const YAML::Exception& e) {
-      throw InputError(path, e.mark.line + 1, "malformed 'constant': " + e.msg);
+      if (!c.is_map() || !c["n"]) throw InputError(path, c.line() + 1, "'constant' needs n (and optional k)");
+      if (!parse_finite(c["n"].as_string(), n) || (c["k"] && !parse_finite(c["k"].as_string(), k)))
+        throw InputError(path, c.line() + 1, "'constant' n and k must be finite numbers");
+    } catch (const YamlError& e) {
+      throw InputError(path, e.line + 1, std::string("malformed 'constant': ") + e.what());
     }
     m.source = k == 0 ? fmt::format("constant n={}", n) : fmt::format("constant n={} k={}", n, k);
     m.constants = constant_ior(n, k, path);
@@ -136,10 +135,11 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
       const auto ext = e.path().extension();
       if (ext != ".yml" && ext != ".yaml") continue;
       try {
-        const YAML::Node root = YAML::LoadFile(e.path().string());
-        if (root.IsMap() && root["name"] && lower(root["name"].as<std::string>()) == want)
+        const YamlNode root = read_yaml_file(e.path().string());
+        if (root.is_map() && root["name"] && lower(root["name"].as_string()) == want)
           return read_catalog_entry(e.path().string(), paths);
-      } catch (const YAML::Exception&) {
+      } catch (const YamlError&) {
+      } catch (const InputError&) {
       }
     }
   }
@@ -155,8 +155,8 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
     const auto ext = lower(fs::path(spec).extension().string());
     if (ext == ".yml" || ext == ".yaml") {
       // A catalog entry has 'class'; a database file has 'DATA'.
-      const YAML::Node root = read_yaml_file(spec);
-      if (root.IsMap() && root["class"] && !root["DATA"]) return read_catalog_entry(spec, paths);
+      const YamlNode root = read_yaml_file(spec);
+      if (root.is_map() && root["class"] && !root["DATA"]) return read_catalog_entry(spec, paths);
     }
     m.constants = read_optical_file(spec);
     m.material_class = classify(m.constants);

@@ -1,7 +1,5 @@
 #include "spectral/ri_database.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -59,13 +57,13 @@ void add_data_line(TabulatedRows& rows, const std::string& file, int line, std::
   rows.add(line, lambda_nm, v[1], nk ? v[2] : v[1]);
 }
 
-DispersionBlock parse_tabulated(const std::string& file, const YAML::Node& block, DispersionBlock::Kind kind,
+DispersionBlock parse_tabulated(const std::string& file, const YamlNode& block, DispersionBlock::Kind kind,
                                 int block_line, const UsedRange& used, std::vector<std::string>& warnings) {
-  const YAML::Node data = block["data"];
-  if (!data || !data.IsScalar()) throw InputError(file, block_line, "tabulated block without 'data'");
-  const std::string text = data.as<std::string>();
+  const YamlNode& data = block["data"];
+  if (!data.is_scalar()) throw InputError(file, block_line, "tabulated block without 'data'");
+  const std::string& text = data.scalar();
   // A literal block scalar starts on the line after its key.
-  const int first_line = data.Mark().line + 2;
+  const int first_line = data.line() + 2;
   const size_t columns = kind == DispersionBlock::Kind::TabulatedNK ? 3 : 2;
   TabulatedRows rows(file, kind, first_line);
   int i = 0;
@@ -95,25 +93,25 @@ void check_formula(const std::string& file, int line, const DispersionBlock& b, 
   }
 }
 
-DispersionBlock parse_formula(const std::string& file, const YAML::Node& block, int formula, int block_line,
+DispersionBlock parse_formula(const std::string& file, const YamlNode& block, int formula, int block_line,
                               const UsedRange& used) {
   DispersionBlock b;
   b.kind = DispersionBlock::Kind::Formula;
   b.formula = formula;
   b.line = block_line;
-  const YAML::Node coeffs = block["coefficients"];
-  const YAML::Node range = block["wavelength_range"];
-  if (!coeffs || !coeffs.IsScalar())
+  const YamlNode& coeffs = block["coefficients"];
+  const YamlNode& range = block["wavelength_range"];
+  if (!coeffs.is_scalar())
     throw InputError(file, block_line, fmt::format("formula {} block without 'coefficients'", formula));
-  if (!range || !range.IsScalar())
+  if (!range.is_scalar())
     throw InputError(file, block_line, fmt::format("formula {} block without 'wavelength_range'", formula));
-  const int cline = coeffs.Mark().line + 1;
-  b.coefficients = parse_numbers(file, cline, coeffs.as<std::string>(), "coefficients");
+  const int cline = coeffs.line() + 1;
+  b.coefficients = parse_numbers(file, cline, coeffs.scalar(), "coefficients");
   if (b.coefficients.empty() || static_cast<int>(b.coefficients.size()) > max_coefficients(formula))
     throw InputError(file, cline, fmt::format("formula {} takes 1 to {} coefficients, found {}", formula,
                                               max_coefficients(formula), b.coefficients.size()));
-  const int rline = range.Mark().line + 1;
-  auto r = parse_numbers(file, rline, range.as<std::string>(), "wavelength_range");
+  const int rline = range.line() + 1;
+  auto r = parse_numbers(file, rline, range.scalar(), "wavelength_range");
   if (r.size() != 2) throw InputError(file, rline, "wavelength_range needs two numbers");
   if (!(r[0] > 0.0) || !(r[1] > r[0]))
     throw InputError(file, rline, "wavelength_range must be positive and increasing");
@@ -124,12 +122,12 @@ DispersionBlock parse_formula(const std::string& file, const YAML::Node& block, 
 }
 
 // A page's REFERENCES as one line of plain text: HTML tags removed, whitespace runs collapsed.
-std::string plain_reference(const YAML::Node& root) {
-  const YAML::Node r = root["REFERENCES"];
-  if (!r || !r.IsScalar()) return {};
+std::string plain_reference(const YamlNode& root) {
+  const YamlNode& r = root["REFERENCES"];
+  if (!r.is_scalar()) return {};
   std::string out;
   bool in_tag = false, space = false;
-  for (const char c : r.as<std::string>()) {
+  for (const char c : r.scalar()) {
     if (c == '<') in_tag = true;
     else if (c == '>') in_tag = false;
     else if (!in_tag && std::isspace(static_cast<unsigned char>(c))) space = !out.empty();
@@ -202,13 +200,12 @@ double evaluate_formula(int formula, const std::vector<double>& coeffs, double w
 
 namespace {
 
-DispersionBlock parse_block(const std::string& path, const YAML::Node& block, const UsedRange& used,
+DispersionBlock parse_block(const std::string& path, const YamlNode& block, const UsedRange& used,
                             std::vector<std::string>& warnings) {
   using Kind = DispersionBlock::Kind;
-  const int line = block.Mark().line + 1;
-  if (!block.IsMap() || !block["type"] || !block["type"].IsScalar())
-    throw InputError(path, line, "DATA block without a 'type'");
-  const std::string type = block["type"].as<std::string>();
+  const int line = block.line() + 1;
+  if (!block.is_map() || !block["type"].is_scalar()) throw InputError(path, line, "DATA block without a 'type'");
+  const std::string& type = block["type"].scalar();
   if (type == "tabulated nk") return parse_tabulated(path, block, Kind::TabulatedNK, line, used, warnings);
   if (type == "tabulated n") return parse_tabulated(path, block, Kind::TabulatedN, line, used, warnings);
   if (type == "tabulated k") return parse_tabulated(path, block, Kind::TabulatedK, line, used, warnings);
@@ -226,20 +223,16 @@ DispersionBlock parse_block(const std::string& path, const YAML::Node& block, co
 }  // namespace
 
 OpticalConstants read_refractiveindex_file(const std::string& path, const UsedRange& used) {
-  const YAML::Node root = read_yaml_file(path);
-  if (!root.IsMap()) throw InputError(path, 1, "expected a refractiveindex.info YAML map with DATA");
-  const YAML::Node data = root["DATA"];
+  const YamlNode root = read_yaml_file(path);
+  if (!root.is_map()) throw InputError(path, 1, "expected a refractiveindex.info YAML map with DATA");
+  const YamlNode& data = root["DATA"];
   if (!data) throw InputError(path, 0, "no DATA section");
-  if (!data.IsSequence() || data.size() == 0)
-    throw InputError(path, data.Mark().line + 1, "DATA must be a non-empty list of blocks");
+  if (!data.is_sequence() || data.size() == 0)
+    throw InputError(path, data.line() + 1, "DATA must be a non-empty list of blocks");
   OpticalConstants oc;
   oc.file = path;
-  try {
-    for (const auto& block : data) oc.blocks.push_back(parse_block(path, block, used, oc.warnings));
-    oc.reference = plain_reference(root);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, e.mark.line + 1, "malformed DATA: " + e.msg);
-  }
+  for (const auto& block : data.items()) oc.blocks.push_back(parse_block(path, block, used, oc.warnings));
+  oc.reference = plain_reference(root);
   bool has_n = false;
   for (const auto& b : oc.blocks) has_n |= b.defines_n();
   if (!has_n) throw InputError(path, 0, "no block defines n (only k data)");
