@@ -1,5 +1,5 @@
 // Highway (hwy/foreach_target.h) compiles this file once per x86 instruction set and
-// HWY_DYNAMIC_DISPATCH picks the best one the CPU has; Highway's headers stay in this file.
+// batch_targets() below picks the best one the CPU has; Highway's headers stay in this file.
 #include "color/ciede2000_batch.h"
 
 #include <cstddef>
@@ -179,33 +179,93 @@ static_assert(sizeof(Lab) == 3 * sizeof(double), "Lab arrays are loaded as inter
 
 double detail::ciede2000_reference(const Lab& lab1, const Lab& lab2) { return ciede2000<double>(lab1, lab2); }
 
-HWY_EXPORT(ciede2000_batch_target);
+namespace {
 
-void ciede2000_batch(std::span<const Lab> lab1, std::span<const Lab> lab2, std::span<double> out) {
+// The instruction sets this file is compiled for (foreach_target), best first, each with the CPU
+// features Highway's own run-time check (hwy::SupportedTargets) requires of it. The choice is made
+// here rather than by HWY_DYNAMIC_DISPATCH so that the program does not load libhwy, whose static
+// initializer times the CPU's clock for about 12 ms at every start.
+using BatchFn = void (*)(const Lab*, const Lab*, double*, size_t);
+struct BatchTarget {
+  const char* name;  // Highway's name of the target
+  bool (*supported)();
+  BatchFn fn;
+};
+const std::vector<BatchTarget>& batch_targets() {
+  static const std::vector<BatchTarget> targets{
+#if HWY_TARGETS & HWY_AVX3
+      {"AVX3",
+       [] {
+         return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
+                __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2");
+       },
+       &N_AVX3::ciede2000_batch_target},
+#endif
+#if HWY_TARGETS & HWY_AVX2
+      {"AVX2",
+       [] {
+         return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+                __builtin_cpu_supports("bmi2");
+       },
+       &N_AVX2::ciede2000_batch_target},
+#endif
+#if HWY_TARGETS & HWY_SSE4
+      {"SSE4",
+       [] {
+         return __builtin_cpu_supports("sse4.2") && __builtin_cpu_supports("pclmul") && __builtin_cpu_supports("aes");
+       },
+       &N_SSE4::ciede2000_batch_target},
+#endif
+#if HWY_TARGETS & HWY_SSSE3
+      {"SSSE3", [] { return __builtin_cpu_supports("ssse3") != 0; }, &N_SSSE3::ciede2000_batch_target},
+#endif
+#if HWY_TARGETS & HWY_EMU128
+      {"EMU128", [] { return true; }, &N_EMU128::ciede2000_batch_target},
+#endif
+#if HWY_TARGETS & HWY_SCALAR
+      {"SCALAR", [] { return true; }, &N_SCALAR::ciede2000_batch_target},
+#endif
+  };
+  return targets;
+}
+
+// The supported targets, best first.
+const std::vector<const BatchTarget*>& supported_targets() {
+  static const std::vector<const BatchTarget*> supported = [] {
+    std::vector<const BatchTarget*> out;
+    for (const auto& t : batch_targets())
+      if (t.supported()) out.push_back(&t);
+    return out;
+  }();
+  return supported;
+}
+
+void check_lengths(std::span<const Lab> lab1, std::span<const Lab> lab2, std::span<double> out) {
   if (lab1.size() != lab2.size() || lab1.size() != out.size())
     throw std::invalid_argument("ciede2000_batch: lab1, lab2 and out differ in length");
+}
+
+}  // namespace
+
+void ciede2000_batch(std::span<const Lab> lab1, std::span<const Lab> lab2, std::span<double> out) {
+  check_lengths(lab1, lab2, out);
   if (out.empty()) return;
-  HWY_DYNAMIC_DISPATCH(ciede2000_batch_target)(lab1.data(), lab2.data(), out.data(), out.size());
+  supported_targets().front()->fn(lab1.data(), lab2.data(), out.data(), out.size());
 }
 
 std::vector<std::string> ciede2000_batch_targets() {
   std::vector<std::string> names;
-  for (const int64_t t : hwy::SupportedAndGeneratedTargets()) names.emplace_back(hwy::TargetName(t));
+  for (const auto* t : supported_targets()) names.emplace_back(t->name);
   return names;
 }
 
 void ciede2000_batch_on(const std::string& target, std::span<const Lab> lab1, std::span<const Lab> lab2,
                         std::span<double> out) {
-  for (const int64_t t : hwy::SupportedAndGeneratedTargets()) {
-    if (target != hwy::TargetName(t)) continue;
-    hwy::SetSupportedTargetsForTest(t);
-    try {
-      ciede2000_batch(lab1, lab2, out);
-    } catch (...) {
-      hwy::SetSupportedTargetsForTest(0);
-      throw;
-    }
-    hwy::SetSupportedTargetsForTest(0);
+  check_lengths(lab1, lab2, out);
+  for (const auto* t : supported_targets()) {
+    if (target != t->name) continue;
+    if (!out.empty()) t->fn(lab1.data(), lab2.data(), out.data(), out.size());
     return;
   }
   throw std::invalid_argument("ciede2000_batch_on: no instruction set " + target + " on this CPU");

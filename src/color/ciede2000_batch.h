@@ -18,8 +18,7 @@ void ciede2000_batch(std::span<const Lab> lab1, std::span<const Lab> lab2, std::
 // The instruction sets ciede2000_batch is compiled for that this CPU runs, by Highway's names
 // ("AVX3", "AVX2", "SSE4", "SSSE3", …), best first.
 std::vector<std::string> ciede2000_batch_targets();
-// ciede2000_batch on one of those instruction sets, for tests comparing them. It narrows Highway's
-// process-wide choice of instruction set for the duration of the call: not for concurrent use.
+// ciede2000_batch on one of those instruction sets, for tests comparing them.
 void ciede2000_batch_on(const std::string& target, std::span<const Lab> lab1, std::span<const Lab> lab2,
                         std::span<double> out);
 
