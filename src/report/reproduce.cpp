@@ -14,6 +14,8 @@
 namespace fl::report {
 namespace {
 
+using File = Files::value_type;
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -35,12 +37,18 @@ std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files,
     tables[i] = specs[i]->build(in);
     seconds[i] = seconds_since(t1);
   });
+  // Each table's CSV and Markdown, written concurrently into their slots.
+  const size_t first = files.size();
+  files.resize(first + 2 * specs.size());
+  parallel_for(2 * specs.size(), [&](size_t k) {
+    const size_t i = k / 2;
+    const std::string name(specs[i]->name);
+    files[first + k] = k % 2 == 0 ? File{name + ".csv", to_csv(tables[i])} : File{name + ".md", to_markdown(tables[i])};
+  });
   for (size_t i = 0; i < specs.size(); ++i) {
     const auto& spec = *specs[i];
     const auto& t = tables[i];
     log(fmt::format("reproduce: {} ({} rows, {:.2f} s)", spec.name, t.rows.size(), seconds[i]));
-    files.emplace_back(std::string(spec.name) + ".csv", to_csv(t));
-    files.emplace_back(std::string(spec.name) + ".md", to_markdown(t));
     index += fmt::format("| {} | {} | [{}.md]({}.md), [{}.csv]({}.csv) |\n", spec.name, spec.summary, spec.name,
                          spec.name, spec.name, spec.name);
   }
@@ -85,11 +93,31 @@ Files reproduce_files(analysis::TableInputs& in, bool figures, const std::functi
                       "\n\n| table | what it shows | files |\n|---|---|---|\n";
   auto tables = add_tables(in, files, index, log);
   const auto presets = *std::find_if(tables.begin(), tables.end(), [](const analysis::Table& t) { return t.name == "presets"; });
-  files.emplace_back("presets.json", to_json(presets));
-  files.emplace_back("presets.mtlx", presets_materialx(ctx, in.studies(), MaterialxShader::GeneralizedSchlick));
-  files.emplace_back("presets_openpbr.mtlx", presets_materialx(ctx, in.studies(), MaterialxShader::OpenPbrSurface));
-  files.emplace_back("presets_standard_surface.mtlx",
-                     presets_materialx(ctx, in.studies(), MaterialxShader::StandardSurface));
+  // The presets as JSON and three MaterialX documents, written concurrently into their slots; without
+  // figures, index.html beside them (it needs nothing else).
+  std::vector<std::function<File()>> writers{
+      [&] { return File{"presets.json", to_json(presets)}; },
+      [&] { return File{"presets.mtlx", presets_materialx(ctx, in.studies(), MaterialxShader::GeneralizedSchlick)}; },
+      [&] {
+        return File{"presets_openpbr.mtlx", presets_materialx(ctx, in.studies(), MaterialxShader::OpenPbrSurface)};
+      },
+      [&] {
+        return File{"presets_standard_surface.mtlx",
+                    presets_materialx(ctx, in.studies(), MaterialxShader::StandardSurface)};
+      }};
+  File page;
+  double page_seconds = 0;
+  const auto write_page = [&](const std::vector<Flip>& flips) {
+    const auto t0 = std::chrono::steady_clock::now();
+    File f{"index.html", report_page(ctx, in.studies(), presets, tables, figures, flips)};
+    page_seconds = seconds_since(t0);
+    return f;
+  };
+  if (!figures) writers.push_back([&] { return write_page({}); });
+  std::vector<File> written(writers.size());
+  parallel_for(writers.size(), [&](size_t i) { written[i] = writers[i](); });
+  if (!figures) page = std::move(written.back()), written.pop_back();
+  for (auto& f : written) files.push_back(std::move(f));
   index += "| presets (JSON, MaterialX) | the presets as JSON, and MaterialX documents: one generalized_schlick_bsdf, "
            "open_pbr_surface or standard_surface per material | [presets.json](presets.json), "
            "[presets.mtlx](presets.mtlx), [presets_openpbr.mtlx](presets_openpbr.mtlx), "
@@ -107,9 +135,9 @@ Files reproduce_files(analysis::TableInputs& in, bool figures, const std::functi
     index += "| figures | colour strips and reflectance / ΔE2000 curves per material (PNG), and the sphere flips index.html shows | "
              "[figures.md](figures.md) |\n";
   }
-  const auto t0 = std::chrono::steady_clock::now();
-  files.emplace_back("index.html", report_page(ctx, in.studies(), presets, std::move(tables), figures, flips));
-  log(fmt::format("reproduce: index.html ({} bytes, {:.2f} s)", files.back().second.size(), seconds_since(t0)));
+  if (figures) page = write_page(flips);
+  files.push_back(std::move(page));
+  log(fmt::format("reproduce: index.html ({} bytes, {:.2f} s)", files.back().second.size(), page_seconds));
   index += "| index.html | the HTML report: the gallery and every table, sortable and filterable | "
            "[index.html](index.html) |\n";
   index += "\nThe preset library of the whole database (every conductor page covering the visible range, with flags "
