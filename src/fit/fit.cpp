@@ -58,12 +58,22 @@ class ModelCurveCost : public ceres::CostFunction {
       for (int k = 0; k < kPer; ++k) pj[c][k] = ChannelJet(p[c * kPer + k], k);
       for (int s = 0; s < kShared; ++s) pj[c][kPer + s] = ChannelJet(p[3 * kPer + s], kPer + s);
     }
+    // Each channel's angle-independent part once (fresnel::prepare_channel), as values and as Jets.
+    using PreparedValue = decltype(fresnel::prepare_channel<Unit>(p, p));
+    using PreparedJet = decltype(fresnel::prepare_channel<Unit>(pj[0], pj[0]));
+    const PreparedValue qv[3] = {fresnel::prepare_channel<Unit>(p, p + 3 * kPer),
+                                 fresnel::prepare_channel<Unit>(p + kPer, p + 3 * kPer),
+                                 fresnel::prepare_channel<Unit>(p + 2 * kPer, p + 3 * kPer)};
+    const PreparedJet qj[3] = {fresnel::prepare_channel<Unit>(pj[0], pj[0] + kPer),
+                               fresnel::prepare_channel<Unit>(pj[1], pj[1] + kPer),
+                               fresnel::prepare_channel<Unit>(pj[2], pj[2] + kPer)};
     for (size_t i = 0; i < target_->cos_thetas.size(); ++i) {
       const auto& t = target_->truth_lab[i];
       const double cos_theta = target_->cos_thetas[i];
-      const auto rgb = fresnel::evaluate_unit<Unit, double>(cos_theta, p);
+      const color::Rgb rgb{fresnel::channel_at<Unit>(cos_theta, qv[0]), fresnel::channel_at<Unit>(cos_theta, qv[1]),
+                           fresnel::channel_at<Unit>(cos_theta, qv[2])};
       ChannelJet ch[3];
-      for (int c = 0; c < 3; ++c) ch[c] = Unit::channel(ChannelJet(cos_theta), pj[c], pj[c] + kPer);
+      for (int c = 0; c < 3; ++c) ch[c] = fresnel::channel_at<Unit>(ChannelJet(cos_theta), qj[c]);
       const color::RgbT<RgbDual> rgb_d{RgbDual::variable(rgb.r, 0), RgbDual::variable(rgb.g, 1),
                                        RgbDual::variable(rgb.b, 2)};
       RgbDual rd[3];

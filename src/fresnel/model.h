@@ -180,6 +180,29 @@ color::RgbT<T> evaluate_unit(T cos_theta, const T* params) {
           M::channel(cos_theta, params + 2 * kPer, shared)};
 }
 
+// A unit may split its channel at the angle: prepare(p, shared) does the work that does not depend
+// on it, channel_at(cos_theta, prepared) the rest, with the operations of channel() in its order,
+// so the values are channel()'s bit for bit. A fit evaluating every angle at one parameter point
+// then prepares each channel once. For a unit without the split, prepare_channel keeps the
+// pointers and channel_at calls channel().
+template <class T>
+struct UnpreparedChannel {
+  const T* p;
+  const T* shared;
+};
+template <class M, class T>
+concept PreparesChannel = requires(const T* p) { M::prepare(p, p); };
+template <class M, class T>
+auto prepare_channel(const T* p, const T* shared) {
+  if constexpr (PreparesChannel<M, T>) return M::prepare(p, shared);
+  else return UnpreparedChannel<T>{p, shared};
+}
+template <class M, class T, class P>
+T channel_at(T cos_theta, const P& prepared) {
+  if constexpr (PreparesChannel<M, T>) return M::channel_at(cos_theta, prepared);
+  else return M::channel(cos_theta, prepared.p, prepared.shared);
+}
+
 // Sizes of unit M's flat parameter vector.
 template <class M>
 constexpr int unit_param_count() {

@@ -12,13 +12,25 @@ namespace fl::fresnel {
 
 // Cook & Torrance 1982 colour interpolation in Hoffman's modified form: the scalar Fresnel curve
 // F′ of one representative index shapes the colour change from F0 to 1.
+// The part that does not depend on the angle: F0, the index and F′ at normal incidence.
+template <class T>
+struct CookTorranceShape {
+  T f0, eta_rep, kappa_rep, fp0;
+};
+template <class T>
+CookTorranceShape<T> cook_torrance_shape(T f0, T eta_rep, T kappa_rep) {
+  return {f0, eta_rep, kappa_rep, fresnel_conductor(T(1.0), eta_rep, kappa_rep)};
+}
+template <class T>
+T cook_torrance_at(T cos_theta, const CookTorranceShape<T>& s) {
+  const T fp = fresnel_conductor(cos_theta, s.eta_rep, s.kappa_rep);
+  T t = (fp - s.fp0) / (T(1.0) - s.fp0);
+  if (t < T(0.0)) t = T(0.0);
+  return s.f0 + (T(1.0) - s.f0) * t;
+}
 template <class T>
 T cook_torrance(T cos_theta, T f0, T eta_rep, T kappa_rep) {
-  const T fp = fresnel_conductor(cos_theta, eta_rep, kappa_rep);
-  const T fp0 = fresnel_conductor(T(1.0), eta_rep, kappa_rep);
-  T t = (fp - fp0) / (T(1.0) - fp0);
-  if (t < T(0.0)) t = T(0.0);
-  return f0 + (T(1.0) - f0) * t;
+  return cook_torrance_at(cos_theta, cook_torrance_shape(f0, eta_rep, kappa_rep));
 }
 
 namespace models {
@@ -49,6 +61,15 @@ struct CookTorrance {
   template <class T>
   static T channel(T cos_theta, const T* p, const T* shared) {
     return cook_torrance(cos_theta, p[0], shared[0], shared[1]);
+  }
+  // The channel split at the angle (prepare_channel, model.h).
+  template <class T>
+  static CookTorranceShape<T> prepare(const T* p, const T* shared) {
+    return cook_torrance_shape(p[0], shared[0], shared[1]);
+  }
+  template <class T>
+  static T channel_at(T cos_theta, const CookTorranceShape<T>& shape) {
+    return cook_torrance_at(cos_theta, shape);
   }
   // F0 and the luminance (Y) of the reflectance-processed η, κ.
   static std::vector<double> derive(const DerivedParameters& d) {

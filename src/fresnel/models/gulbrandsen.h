@@ -50,10 +50,24 @@ T gulbrandsen_g(T r, T eta) {
   const T n_min = gulbrandsen_n_min(r), n_max = gulbrandsen_n_max(r);
   return (n_max - eta) / (n_max - n_min);
 }
+// A channel's (F0, g) as the index they stand for: the part of Gulbrandsen's Fresnel that does not
+// depend on the angle.
+template <class T>
+struct GulbrandsenIndex {
+  T eta, kappa;
+};
+template <class T>
+GulbrandsenIndex<T> gulbrandsen_index(T f0, T g) {
+  const T eta = gulbrandsen_eta(f0, g);
+  return {eta, gulbrandsen_kappa(f0, eta)};
+}
+template <class T>
+T gulbrandsen_at(T cos_theta, const GulbrandsenIndex<T>& index) {
+  return fresnel_conductor(cos_theta, index.eta, index.kappa);
+}
 template <class T>
 T gulbrandsen(T cos_theta, T f0, T g) {
-  const T eta = gulbrandsen_eta(f0, g);
-  return fresnel_conductor(cos_theta, eta, gulbrandsen_kappa(f0, eta));
+  return gulbrandsen_at(cos_theta, gulbrandsen_index(f0, g));
 }
 
 // Gulbrandsen parameters (F0, g) with g clamped to [0, 1]; `clamped` counts channels moved.
@@ -91,6 +105,15 @@ struct Gulbrandsen {
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {
     return gulbrandsen(cos_theta, p[0], p[1]);
+  }
+  // The channel split at the angle (prepare_channel, model.h).
+  template <class T>
+  static GulbrandsenIndex<T> prepare(const T* p, const T*) {
+    return gulbrandsen_index(p[0], p[1]);
+  }
+  template <class T>
+  static T channel_at(T cos_theta, const GulbrandsenIndex<T>& index) {
+    return gulbrandsen_at(cos_theta, index);
   }
   // F0 and g from the reflectance-processed η, g clamped to [0, 1].
   static std::vector<double> derive(const DerivedParameters& d) { return gulbrandsen_params(d.f0, d.g_refl_eta); }
