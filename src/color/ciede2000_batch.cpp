@@ -191,40 +191,47 @@ struct BatchTarget {
   bool (*supported)();
   BatchFn fn;
 };
+// The features of each target, as hwy::SupportedTargets checks them (targets.cc, Highway 1.0):
+// each tier needs the one below it.
+bool has_ssse3() { return __builtin_cpu_supports("sse2") && __builtin_cpu_supports("sse3") && __builtin_cpu_supports("ssse3"); }
+bool has_sse4() {
+  return has_ssse3() && __builtin_cpu_supports("sse4.1") && __builtin_cpu_supports("sse4.2") &&
+         __builtin_cpu_supports("pclmul") && __builtin_cpu_supports("aes");
+}
+bool has_avx2() {
+  return has_sse4() && __builtin_cpu_supports("avx") && __builtin_cpu_supports("avx2") &&
+         __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("fma") &&
+         __builtin_cpu_supports("f16c");
+}
+bool has_avx3() {
+  return has_avx2() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+         __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
+}
+
 const std::vector<BatchTarget>& batch_targets() {
   static const std::vector<BatchTarget> targets{
 #if HWY_TARGETS & HWY_AVX3
-      {"AVX3",
-       [] {
-         return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-                __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
-                __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2");
-       },
-       &N_AVX3::ciede2000_batch_target},
+      {"AVX3", has_avx3, &N_AVX3::ciede2000_batch_target},
 #endif
 #if HWY_TARGETS & HWY_AVX2
-      {"AVX2",
-       [] {
-         return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
-                __builtin_cpu_supports("bmi2");
-       },
-       &N_AVX2::ciede2000_batch_target},
+      {"AVX2", has_avx2, &N_AVX2::ciede2000_batch_target},
 #endif
 #if HWY_TARGETS & HWY_SSE4
-      {"SSE4",
-       [] {
-         return __builtin_cpu_supports("sse4.2") && __builtin_cpu_supports("pclmul") && __builtin_cpu_supports("aes");
-       },
-       &N_SSE4::ciede2000_batch_target},
+      {"SSE4", has_sse4, &N_SSE4::ciede2000_batch_target},
 #endif
 #if HWY_TARGETS & HWY_SSSE3
-      {"SSSE3", [] { return __builtin_cpu_supports("ssse3") != 0; }, &N_SSSE3::ciede2000_batch_target},
+      {"SSSE3", has_ssse3, &N_SSSE3::ciede2000_batch_target},
 #endif
 #if HWY_TARGETS & HWY_EMU128
       {"EMU128", [] { return true; }, &N_EMU128::ciede2000_batch_target},
 #endif
 #if HWY_TARGETS & HWY_SCALAR
       {"SCALAR", [] { return true; }, &N_SCALAR::ciede2000_batch_target},
+#endif
+#if !(HWY_TARGETS & (HWY_AVX3 | HWY_AVX2 | HWY_SSE4 | HWY_SSSE3 | HWY_EMU128 | HWY_SCALAR))
+      // None of the above built (-march flags of a newer CPU): the target those flags select, which
+      // any CPU the program runs on has.
+      {"STATIC", [] { return true; }, &HWY_STATIC_DISPATCH(ciede2000_batch_target)},
 #endif
   };
   return targets;

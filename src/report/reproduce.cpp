@@ -82,6 +82,24 @@ std::string report_page(const analysis::Context& ctx, const std::vector<analysis
   return html_report(page);
 }
 
+// The presets as JSON and three MaterialX documents, written concurrently, each into its own slot;
+// with `page`, index.html (write_page) beside them.
+std::vector<File> preset_documents(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
+                                   const analysis::Table& presets, File* page, const std::function<File()>& write_page) {
+  std::vector<std::function<File()>> writers{
+      [&] { return File{"presets.json", to_json(presets)}; },
+      [&] { return File{"presets.mtlx", presets_materialx(ctx, studies, MaterialxShader::GeneralizedSchlick)}; },
+      [&] { return File{"presets_openpbr.mtlx", presets_materialx(ctx, studies, MaterialxShader::OpenPbrSurface)}; },
+      [&] {
+        return File{"presets_standard_surface.mtlx", presets_materialx(ctx, studies, MaterialxShader::StandardSurface)};
+      }};
+  if (page) writers.push_back(write_page);
+  std::vector<File> written(writers.size());
+  parallel_for(writers.size(), [&](size_t i) { written[i] = writers[i](); });
+  if (page) *page = std::move(written.back()), written.pop_back();
+  return written;
+}
+
 }  // namespace
 
 Files reproduce_files(analysis::TableInputs& in, bool figures, const std::function<void(const std::string&)>& log) {
@@ -93,18 +111,6 @@ Files reproduce_files(analysis::TableInputs& in, bool figures, const std::functi
                       "\n\n| table | what it shows | files |\n|---|---|---|\n";
   auto tables = add_tables(in, files, index, log);
   const auto presets = *std::find_if(tables.begin(), tables.end(), [](const analysis::Table& t) { return t.name == "presets"; });
-  // The presets as JSON and three MaterialX documents, written concurrently into their slots; without
-  // figures, index.html beside them (it needs nothing else).
-  std::vector<std::function<File()>> writers{
-      [&] { return File{"presets.json", to_json(presets)}; },
-      [&] { return File{"presets.mtlx", presets_materialx(ctx, in.studies(), MaterialxShader::GeneralizedSchlick)}; },
-      [&] {
-        return File{"presets_openpbr.mtlx", presets_materialx(ctx, in.studies(), MaterialxShader::OpenPbrSurface)};
-      },
-      [&] {
-        return File{"presets_standard_surface.mtlx",
-                    presets_materialx(ctx, in.studies(), MaterialxShader::StandardSurface)};
-      }};
   File page;
   double page_seconds = 0;
   const auto write_page = [&](const std::vector<Flip>& flips) {
@@ -113,11 +119,8 @@ Files reproduce_files(analysis::TableInputs& in, bool figures, const std::functi
     page_seconds = seconds_since(t0);
     return f;
   };
-  if (!figures) writers.push_back([&] { return write_page({}); });
-  std::vector<File> written(writers.size());
-  parallel_for(writers.size(), [&](size_t i) { written[i] = writers[i](); });
-  if (!figures) page = std::move(written.back()), written.pop_back();
-  for (auto& f : written) files.push_back(std::move(f));
+  for (auto& f : preset_documents(ctx, in.studies(), presets, figures ? nullptr : &page, [&] { return write_page({}); }))
+    files.push_back(std::move(f));
   index += "| presets (JSON, MaterialX) | the presets as JSON, and MaterialX documents: one generalized_schlick_bsdf, "
            "open_pbr_surface or standard_surface per material | [presets.json](presets.json), "
            "[presets.mtlx](presets.mtlx), [presets_openpbr.mtlx](presets_openpbr.mtlx), "

@@ -1,6 +1,5 @@
 #include "spectral/material.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -134,13 +133,16 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
     for (const auto& e : fs::directory_iterator(paths.materials)) {
       const auto ext = e.path().extension();
       if (ext != ".yml" && ext != ".yaml") continue;
+      // A file that cannot be read as YAML names nothing here; the entry that matches is then read
+      // with every error it has.
+      bool named = false;
       try {
         const YamlNode root = read_yaml_file(e.path().string());
-        if (root.is_map() && root["name"] && lower(root["name"].as_string()) == want)
-          return read_catalog_entry(e.path().string(), paths);
+        named = root.is_map() && root["name"] && lower(root["name"].as_string()) == want;
       } catch (const YamlError&) {
       } catch (const InputError&) {
       }
+      if (named) return read_catalog_entry(e.path().string(), paths);
     }
   }
   // A file path.

@@ -1,12 +1,12 @@
 #include "spectral/pages.h"
 
-#include "spectral/yaml_file.h"
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <mutex>
+
+#include "spectral/yaml_file.h"
 
 namespace fl::spectral {
 namespace fs = std::filesystem;

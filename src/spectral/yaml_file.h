@@ -15,9 +15,9 @@ struct YamlError : std::runtime_error {
   int line;
 };
 
-// One node of a YAML document: a scalar (kept as its text), a sequence, a map, a null (an empty,
-// ~ or null plain scalar) or, for a key a map lacks, undefined. Aliases are resolved to a copy of
-// their anchor's node.
+// One node of a YAML document: a scalar (kept as its text), a sequence, a map, a null (an untagged
+// empty, ~ or null plain scalar) or, for a key a map lacks, undefined. Aliases are resolved to a
+// copy of their anchor's node (at the alias's line).
 class YamlNode {
  public:
   enum class Kind { Undefined, Null, Scalar, Sequence, Map };
@@ -37,7 +37,7 @@ class YamlNode {
   const std::string& scalar() const { return text_; }
   // A scalar's text, "null" for a null; YamlError("bad conversion") for a list or map.
   std::string as_string() const;
-  const std::vector<YamlNode>& items() const { return items_; };                       // a sequence's
+  const std::vector<YamlNode>& items() const { return items_; }                       // a sequence's
   const std::vector<std::pair<YamlNode, YamlNode>>& fields() const { return fields_; }  // a map's, in order
   size_t size() const { return kind_ == Kind::Map ? fields_.size() : items_.size(); }
 
@@ -51,7 +51,11 @@ class YamlNode {
 };
 
 // The first document of `text` (a null node when there is none). A syntax error is a YamlError at
-// the line libyaml found it, its message libyaml's ("did not find expected ',' or '}'").
+// the line libyaml found it, its message libyaml's ("did not find expected ',' or '}'"); so is text
+// that is not UTF-8, collections nested deeper than kMaxYamlDepth, and a document of more than
+// kMaxYamlNodes nodes once its aliases are copied (a few aliases of aliases can stand for billions).
+inline constexpr int kMaxYamlDepth = 1000;
+inline constexpr size_t kMaxYamlNodes = 1'000'000;
 YamlNode parse_yaml(std::string_view text);
 
 // The file's YAML document (read_text_file's checks, then parse_yaml). A syntax error becomes an

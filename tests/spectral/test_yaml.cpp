@@ -2,7 +2,12 @@
 // files use, the lines errors name, and the conversions a document refuses.
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "spectral/errors.h"
+#include "spectral/material.h"
 #include "spectral/yaml_file.h"
+#include "test_util.h"
 
 namespace fl::spectral {
 namespace {
@@ -75,6 +80,54 @@ TEST(Yaml, SyntaxErrorsNameTheirLine) {
   } catch (const YamlError& e) {
     EXPECT_EQ(e.line, 2);  // 0-based: the line of "other: 1", where a , or ] was expected
     EXPECT_NE(std::string(e.what()).find("did not find expected ',' or ']'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Yaml, TaggedNullSpellingsAreText) {
+  const YamlNode root = parse_yaml("a: !!str null\nb: !!str ~\nc: ! ~\n");
+  for (const char* key : {"a", "b", "c"}) EXPECT_TRUE(root[key].is_scalar()) << key;
+  EXPECT_EQ(root["a"].scalar(), "null");
+}
+
+// Inputs that would exhaust the stack or memory are refused like any other broken document.
+TEST(Yaml, DeepNestingAndAliasBombsAreRefused) {
+  const std::string deep = std::string(kMaxYamlDepth + 5, '[') + std::string(kMaxYamlDepth + 5, ']');
+  EXPECT_THROW(parse_yaml(deep), YamlError);
+  const std::string fine = std::string(50, '[') + std::string(50, ']');
+  EXPECT_NO_THROW(parse_yaml(fine));
+  std::string lines = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i <= 9; ++i) {
+    std::string refs;
+    for (int k = 0; k < 10; ++k) refs += (k ? ", *a" : "*a") + std::to_string(i - 1);
+    lines += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [" + refs + "]\n";
+  }
+  try {
+    parse_yaml(lines);  // 10^10 nodes once copied; refused past kMaxYamlNodes
+    FAIL() << "an alias bomb";
+  } catch (const YamlError& e) {
+    EXPECT_NE(std::string(e.what()).find("nodes"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Yaml, TextThatIsNotUtf8NamesItsLine) {
+  try {
+    parse_yaml("name: ok\nreference: caf\xe9 1999\n");
+    FAIL() << "Latin-1 text";
+  } catch (const YamlError& e) {
+    EXPECT_EQ(e.line, 1);
+  }
+}
+
+// A catalog entry found by its display name is read with every error it has, not passed over.
+TEST(Yaml, ABrokenCatalogEntryFoundByNameReportsItsOwnError) {
+  test::TempDir tmp;
+  tmp.file("materials/shiny.yml", "name: Shiny Metal\nclass: metal\nsource: main/Xx/nk/Missing\n");
+  const DataPaths paths{tmp.path() + "/db", tmp.path() + "/materials"};
+  try {
+    resolve_material("shiny metal", paths);
+    FAIL() << "a missing page";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Missing.yml"), std::string::npos) << e.what();
   }
 }
 
