@@ -22,8 +22,7 @@ class KeptEvaluation {
   template <class Residuals, class Jacobian>
   void evaluate(const double* p, double* residuals, double* jacobian, Residuals compute_residuals,
                 Jacobian compute_jacobian) {
-    if (!have_residuals_ || std::memcmp(p, at_, sizeof at_) != 0) {
-      std::memcpy(at_, p, sizeof at_);
+    if (moved_to(p) || !have_residuals_) {
       compute_residuals(p, residuals_.data());
       have_residuals_ = true;
       have_jacobian_ = false;
@@ -41,8 +40,7 @@ class KeptEvaluation {
   // 6,016 Jacobians at 6,129 points).
   template <class Both>
   void evaluate_joint(const double* p, double* residuals, double* jacobian, Both compute) {
-    if (!have_jacobian_ || std::memcmp(p, at_, sizeof at_) != 0) {
-      std::memcpy(at_, p, sizeof at_);
+    if (moved_to(p) || !have_jacobian_) {
       compute(p, residuals_.data(), jacobian_.data());
       have_residuals_ = have_jacobian_ = true;
     }
@@ -51,6 +49,13 @@ class KeptEvaluation {
   }
 
  private:
+  // Whether p differs from the kept point (bit for bit); the kept point becomes p either way.
+  bool moved_to(const double* p) {
+    if (std::memcmp(p, at_, sizeof at_) == 0) return false;
+    std::memcpy(at_, p, sizeof at_);
+    return true;
+  }
+
   double at_[kParams] = {};
   bool have_residuals_ = false, have_jacobian_ = false;
   std::vector<double> residuals_, jacobian_;

@@ -20,6 +20,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The files of the writers, made concurrently, in the writers' order.
+std::vector<File> make_concurrently(const std::vector<std::function<File()>>& writers) {
+  std::vector<File> out(writers.size());
+  parallel_for(writers.size(), [&](size_t i) { out[i] = writers[i](); });
+  return out;
+}
+
 // The tables as CSV and Markdown, with their rows of the index; the tables themselves for the HTML.
 // The studies come first, then the tables are built concurrently (each logged with its own time).
 std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files, std::string& index,
@@ -37,14 +44,13 @@ std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files,
     tables[i] = specs[i]->build(in);
     seconds[i] = seconds_since(t1);
   });
-  // Each table's CSV and Markdown, written concurrently into their slots.
-  const size_t first = files.size();
-  files.resize(first + 2 * specs.size());
-  parallel_for(2 * specs.size(), [&](size_t k) {
-    const size_t i = k / 2;
+  std::vector<std::function<File()>> writers;
+  for (size_t i = 0; i < specs.size(); ++i) {
     const std::string name(specs[i]->name);
-    files[first + k] = k % 2 == 0 ? File{name + ".csv", to_csv(tables[i])} : File{name + ".md", to_markdown(tables[i])};
-  });
+    writers.push_back([&, i, name] { return File{name + ".csv", to_csv(tables[i])}; });
+    writers.push_back([&, i, name] { return File{name + ".md", to_markdown(tables[i])}; });
+  }
+  for (auto& f : make_concurrently(writers)) files.push_back(std::move(f));
   for (size_t i = 0; i < specs.size(); ++i) {
     const auto& spec = *specs[i];
     const auto& t = tables[i];
@@ -82,24 +88,6 @@ std::string report_page(const analysis::Context& ctx, const std::vector<analysis
   return html_report(page);
 }
 
-// The presets as JSON and three MaterialX documents, written concurrently, each into its own slot;
-// with `page`, index.html (write_page) beside them.
-std::vector<File> preset_documents(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
-                                   const analysis::Table& presets, File* page, const std::function<File()>& write_page) {
-  std::vector<std::function<File()>> writers{
-      [&] { return File{"presets.json", to_json(presets)}; },
-      [&] { return File{"presets.mtlx", presets_materialx(ctx, studies, MaterialxShader::GeneralizedSchlick)}; },
-      [&] { return File{"presets_openpbr.mtlx", presets_materialx(ctx, studies, MaterialxShader::OpenPbrSurface)}; },
-      [&] {
-        return File{"presets_standard_surface.mtlx", presets_materialx(ctx, studies, MaterialxShader::StandardSurface)};
-      }};
-  if (page) writers.push_back(write_page);
-  std::vector<File> written(writers.size());
-  parallel_for(writers.size(), [&](size_t i) { written[i] = writers[i](); });
-  if (page) *page = std::move(written.back()), written.pop_back();
-  return written;
-}
-
 }  // namespace
 
 Files reproduce_files(analysis::TableInputs& in, bool figures, const std::function<void(const std::string&)>& log) {
@@ -110,17 +98,28 @@ Files reproduce_files(analysis::TableInputs& in, bool figures, const std::functi
                       "[index.html](index.html) shows them all, sortable and filterable, with the material gallery."
                       "\n\n| table | what it shows | files |\n|---|---|---|\n";
   auto tables = add_tables(in, files, index, log);
+  const auto& studies = in.studies();
   const auto presets = *std::find_if(tables.begin(), tables.end(), [](const analysis::Table& t) { return t.name == "presets"; });
   File page;
   double page_seconds = 0;
   const auto write_page = [&](const std::vector<Flip>& flips) {
     const auto t0 = std::chrono::steady_clock::now();
-    File f{"index.html", report_page(ctx, in.studies(), presets, tables, figures, flips)};
+    File f{"index.html", report_page(ctx, studies, presets, tables, figures, flips)};
     page_seconds = seconds_since(t0);
     return f;
   };
-  for (auto& f : preset_documents(ctx, in.studies(), presets, figures ? nullptr : &page, [&] { return write_page({}); }))
-    files.push_back(std::move(f));
+  // The presets as JSON and three MaterialX documents, and without figures index.html beside them.
+  std::vector<std::function<File()>> writers{
+      [&] { return File{"presets.json", to_json(presets)}; },
+      [&] { return File{"presets.mtlx", presets_materialx(ctx, studies, MaterialxShader::GeneralizedSchlick)}; },
+      [&] { return File{"presets_openpbr.mtlx", presets_materialx(ctx, studies, MaterialxShader::OpenPbrSurface)}; },
+      [&] {
+        return File{"presets_standard_surface.mtlx", presets_materialx(ctx, studies, MaterialxShader::StandardSurface)};
+      }};
+  if (!figures) writers.push_back([&] { return write_page({}); });
+  auto documents = make_concurrently(writers);
+  if (!figures) page = std::move(documents.back()), documents.pop_back();
+  for (auto& f : documents) files.push_back(std::move(f));
   index += "| presets (JSON, MaterialX) | the presets as JSON, and MaterialX documents: one generalized_schlick_bsdf, "
            "open_pbr_surface or standard_surface per material | [presets.json](presets.json), "
            "[presets.mtlx](presets.mtlx), [presets_openpbr.mtlx](presets_openpbr.mtlx), "
@@ -128,8 +127,8 @@ Files reproduce_files(analysis::TableInputs& in, bool figures, const std::functi
   std::vector<Flip> flips;
   if (figures) {
     const auto t0 = std::chrono::steady_clock::now();
-    auto pictures = reproduce_figures(ctx, in.studies());
-    auto flip_files = reproduce_flips(ctx, in.studies());
+    auto pictures = reproduce_figures(ctx, studies);
+    auto flip_files = reproduce_flips(ctx, studies);
     log(fmt::format("reproduce: figures ({} PNGs, {:.2f} s)", pictures.size() - 1 + flip_files.files.size(),
                     seconds_since(t0)));
     for (auto& f : pictures) files.push_back(std::move(f));
