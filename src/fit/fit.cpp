@@ -3,7 +3,7 @@
 #include <ceres/ceres.h>
 #include <ceres/gradient_checker.h>
 
-#include "color/dual.h"
+#include "color/ciede2000_batch.h"
 #include "fit/kept_evaluation.h"
 #include "fresnel/registry.h"
 #include "util/codegen.h"
@@ -23,8 +23,8 @@ using fresnel::Model;
 // from one pass (KeptEvaluation::evaluate_joint). The Jacobian is formed by the chain rule: each
 // channel differentiated over the parameters it reads (its own block and the shared ones: Ceres
 // Jets of kChannelLanes lanes; a channel never reads another channel's block, so those entries are
-// zero), and the residuals over RGB (color::Dual<3>). The residual values are the double path's bit
-// for bit: the model's channels are evaluated in double, and Dual rounds its values as double does.
+// zero), and the residuals over RGB, for every angle at once in SIMD lanes
+// (color::ciede2000_residuals_batch).
 template <class Unit>
 class ModelCurveCost : public ceres::CostFunction {
  public:
@@ -33,9 +33,10 @@ class ModelCurveCost : public ceres::CostFunction {
   static constexpr int kParams = fresnel::unit_param_count<Unit>();
   static constexpr int kChannelLanes = kPer + kShared;
   using ChannelJet = ceres::Jet<double, kChannelLanes>;
-  using RgbDual = color::Dual<3>;
 
-  explicit ModelCurveCost(const CurveTarget* target) : target_(target), kept_(3 * target->cos_thetas.size()) {
+  explicit ModelCurveCost(const CurveTarget* target)
+      : target_(target), kept_(3 * target->cos_thetas.size()), rgb_(target->cos_thetas.size()),
+        channels_(target->cos_thetas.size()), d_rgb_(9 * target->cos_thetas.size()) {
     set_num_residuals(static_cast<int>(3 * target->cos_thetas.size()));
     mutable_parameter_block_sizes()->push_back(kParams);
   }
@@ -50,7 +51,7 @@ class ModelCurveCost : public ceres::CostFunction {
   static ceres::CostFunction* Create(const CurveTarget* target) { return new ModelCurveCost(target); }
 
  private:
-  // Flattened (FL_FLATTEN): the Jet and Dual lanes' loops are inlined.
+  // Flattened (FL_FLATTEN): the Jet lanes' loops are inlined.
   FL_FLATTEN void evaluate_at(const double* p, double* residuals, double* jac) const {
     // Channel c's lanes: its own parameters, then the shared ones.
     ChannelJet pj[3][kChannelLanes];
@@ -67,26 +68,23 @@ class ModelCurveCost : public ceres::CostFunction {
     const PreparedJet qj[3] = {fresnel::prepare_channel<Unit>(pj[0], pj[0] + kPer),
                                fresnel::prepare_channel<Unit>(pj[1], pj[1] + kPer),
                                fresnel::prepare_channel<Unit>(pj[2], pj[2] + kPer)};
-    for (size_t i = 0; i < target_->cos_thetas.size(); ++i) {
-      const auto& t = target_->truth_lab[i];
+    const size_t n = target_->cos_thetas.size();
+    for (size_t i = 0; i < n; ++i) {
       const double cos_theta = target_->cos_thetas[i];
-      const color::Rgb rgb{fresnel::channel_at<Unit>(cos_theta, qv[0]), fresnel::channel_at<Unit>(cos_theta, qv[1]),
-                           fresnel::channel_at<Unit>(cos_theta, qv[2])};
-      ChannelJet ch[3];
-      for (int c = 0; c < 3; ++c) ch[c] = fresnel::channel_at<Unit>(ChannelJet(cos_theta), qj[c]);
-      const color::RgbT<RgbDual> rgb_d{RgbDual::variable(rgb.r, 0), RgbDual::variable(rgb.g, 1),
-                                       RgbDual::variable(rgb.b, 2)};
-      RgbDual rd[3];
-      color::ciede2000_residuals(color::LabT<RgbDual>{t.L, t.a, t.b}, target_->to_lab(rgb_d), rd);
-      for (int q = 0; q < 3; ++q) {
-        residuals[3 * i + q] = rd[q].v;
-        chain_rule(rd[q].d, ch, jac + (3 * i + q) * kParams);
-      }
+      rgb_[i] = {fresnel::channel_at<Unit>(cos_theta, qv[0]), fresnel::channel_at<Unit>(cos_theta, qv[1]),
+                 fresnel::channel_at<Unit>(cos_theta, qv[2])};
+      for (int c = 0; c < 3; ++c) channels_[i][c] = fresnel::channel_at<Unit>(ChannelJet(cos_theta), qj[c]);
     }
+    color::ciede2000_residuals_batch(target_->to_lab, target_->truth_lab, rgb_, std::span(residuals, 3 * n), d_rgb_);
+    for (size_t i = 0; i < n; ++i)
+      for (int q = 0; q < 3; ++q) {
+        const std::array<double, 3> d{d_rgb_[(3 * q) * n + i], d_rgb_[(3 * q + 1) * n + i], d_rgb_[(3 * q + 2) * n + i]};
+        chain_rule(d, channels_[i], jac + (3 * i + q) * kParams);
+      }
   }
 
   // One Jacobian row: d residual / d RGB times d RGB / d parameters.
-  static void chain_rule(const std::array<double, 3>& d_rgb, const ChannelJet (&ch)[3], double* row) {
+  static void chain_rule(const std::array<double, 3>& d_rgb, const std::array<ChannelJet, 3>& ch, double* row) {
     for (int c = 0; c < 3; ++c)
       for (int k = 0; k < kPer; ++k) row[c * kPer + k] = d_rgb[c] * ch[c].v[k];
     for (int s = 0; s < kShared; ++s)
@@ -95,6 +93,10 @@ class ModelCurveCost : public ceres::CostFunction {
 
   const CurveTarget* target_;
   mutable KeptEvaluation<kParams> kept_;
+  // Per-angle scratch of evaluate_at (a cost function serves one single-threaded solve).
+  mutable std::vector<color::Rgb> rgb_;
+  mutable std::vector<std::array<ChannelJet, 3>> channels_;
+  mutable std::vector<double> d_rgb_;
 };
 
 ceres::CostFunction* create_cost(Model m, const CurveTarget* target) {
