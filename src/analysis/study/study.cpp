@@ -40,14 +40,16 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
   st.derived = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, m.ior, eta_e, o.point_sample_nm);
   const auto& d = st.derived;
   const auto& cos = ctx.cos_thetas();
-  const auto target = curve_target(ctx, st.truth);
+  const auto target = o.fit ? curve_target(ctx, st.truth) : fit::CurveTarget{};
   fit::FitOptions fit_options;
   fit_options.lossless = st.lossless = is_lossless(m.ior);
   // One slot per model, in registry order: the fits of a material run in parallel.
-  const auto& specs = fresnel::model_specs();
+  std::vector<const fresnel::ModelSpec*> specs;
+  for (const auto& spec : fresnel::model_specs())
+    if (o.studies(spec.model)) specs.push_back(&spec);
   st.models.resize(specs.size());
   parallel_for(specs.size(), [&](size_t k) {
-    const auto& spec = specs[k];
+    const auto& spec = *specs[k];
     ModelResult& r = st.models[k];
     r.model = spec.model;
     r.derived = fresnel::derived_model_params(spec.model, d);
@@ -59,6 +61,7 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
       r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);
     }
   }, o.threads);
+  if (!o.method_errors) return st;
   std::vector<double> ps;
   for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
   st.ps_eta_kappa = curve_error(ctx, st.truth, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::FresnelRgb>, ps, cos));

@@ -38,7 +38,15 @@ struct StudyOptions {
   bool fit = true;  // run the Ceres fits (fitted parameter sets)
   // With `fit`: the models to fit (empty: every model); the others' fitted results stay empty.
   std::vector<fresnel::Model> fitted_models;
+  // The models studied (empty: every model), in registry order; MaterialStudy::result throws for the others.
+  std::vector<fresnel::Model> models;
+  // The talk's method table's extra errors (MaterialStudy::ps_eta_kappa, refl_f0_ps_eta).
+  bool method_errors = true;
   int threads = 0;  // 0: hardware concurrency
+
+  bool studies(fresnel::Model m) const {
+    return models.empty() || std::find(models.begin(), models.end(), m) != models.end();
+  }
 
   bool fits(fresnel::Model m) const {
     return fit && (fitted_models.empty() || std::find(fitted_models.begin(), fitted_models.end(), m) != fitted_models.end());

@@ -31,8 +31,11 @@ PageStudies study_pages(const Context& ctx, const std::vector<std::string>& glob
   policy.min_coverage = kSpreadMinCoverage;
   policy.only = spectral::MaterialClass::Metal;
   out.set = load_materials(ctx, globs, policy, progress);
+  // What the spread reads of a page: the derived F0 and F82, and Schlick's error.
   StudyOptions o;
   o.fit = false;
+  o.models = {fresnel::model_of<fresnel::models::Schlick>};
+  o.method_errors = false;
   out.studies = study_materials(ctx, out.set.materials, o);
   return out;
 }
