@@ -6,11 +6,31 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "spectral/errors.h"
 
 namespace fl::spectral {
+
+namespace {
+
+// The file's bytes.
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot be opened for reading");
+  std::string raw;
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec) raw.reserve(size);
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) raw.append(chunk, static_cast<size_t>(in.gcount()));
+  return raw;
+}
+
+// Whether a byte needs read_text_file's attention: a carriage return or a control byte other than
+// a tab or a line feed.
+bool special(unsigned char c) { return c < 0x20 && c != '\n' && c != '\t'; }
+
+}  // namespace
 
 std::string read_text_file(const std::string& path) {
   namespace fs = std::filesystem;
@@ -18,29 +38,32 @@ std::string read_text_file(const std::string& path) {
   const auto status = fs::status(path, ec);
   if (ec || !fs::exists(status)) throw InputError(path, 0, "no such file");
   if (fs::is_directory(status)) throw InputError(path, 0, "is a directory, expected a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot be opened for reading");
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  std::string raw = buf.str();
-  if (raw.size() >= 3 && static_cast<unsigned char>(raw[0]) == 0xEF &&
-      static_cast<unsigned char>(raw[1]) == 0xBB && static_cast<unsigned char>(raw[2]) == 0xBF)
-    raw.erase(0, 3);
+  std::string raw = read_bytes(path);
+  const size_t bom = raw.size() >= 3 && static_cast<unsigned char>(raw[0]) == 0xEF &&
+                             static_cast<unsigned char>(raw[1]) == 0xBB && static_cast<unsigned char>(raw[2]) == 0xBF
+                         ? 3
+                         : 0;
+  size_t first = bom;
+  while (first < raw.size() && !special(static_cast<unsigned char>(raw[first]))) ++first;
   std::string text;
-  text.reserve(raw.size());
-  int line = 1;
-  for (size_t i = 0; i < raw.size(); ++i) {
-    const unsigned char c = static_cast<unsigned char>(raw[i]);
-    if (c == '\r') {
-      text.push_back('\n');
-      if (i + 1 < raw.size() && raw[i + 1] == '\n') ++i;
-      ++line;
-      continue;
+  if (first == raw.size()) {
+    // Nothing to convert or refuse (the usual case): the bytes as they are.
+    text = bom ? raw.substr(bom) : std::move(raw);
+  } else {
+    text.reserve(raw.size());
+    int line = 1;
+    for (size_t i = bom; i < raw.size(); ++i) {
+      const unsigned char c = static_cast<unsigned char>(raw[i]);
+      if (c == '\r') {
+        text.push_back('\n');
+        if (i + 1 < raw.size() && raw[i + 1] == '\n') ++i;
+        ++line;
+        continue;
+      }
+      if (c == '\n') ++line;
+      if (special(c)) throw InputError(path, line, "binary data (control byte " + std::to_string(c) + "), expected text");
+      text.push_back(static_cast<char>(c));
     }
-    if (c == '\n') ++line;
-    if (c == 0 || (c < 0x20 && c != '\n' && c != '\t'))
-      throw InputError(path, line, "binary data (control byte " + std::to_string(c) + "), expected text");
-    text.push_back(static_cast<char>(c));
   }
   if (trim(text).empty()) throw InputError(path, 0, "file is empty");
   return text;

@@ -138,7 +138,10 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       points.size(),
       [&](size_t k) {
         auto& p = points[k];
-        for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) { p.samples.push_back(s); });
+        p.samples.reserve(kLutSamples);
+        for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) {
+          if (s.weight != 0.0) p.samples.push_back({s.voh, s.weight});
+        });
         for_texels(dfg_read(p), [&](int i, int j, double w) {
           const auto& c = dfg.at(i, j);
           p.dfg.dfg1 += w * c.dfg1;

@@ -33,9 +33,15 @@ constexpr int kEngineLutSize = 64;
 // Ground truth RGB tabulated at cos θ = k/(K − 1) and interpolated linearly in cos θ per sample.
 constexpr int kTruthCurveSize = 513;
 
+// A lobe sample as the brute-force integral reads it.
+struct LobeTerm {
+  double voh = 0, weight = 0;
+};
 struct ShadingPoint {
   double roughness = 0, view_deg = 0, nov = 0, alpha = 0;
-  std::vector<LobeSample> samples;  // kLutSamples visible-normal samples of the lobe at (n·v, α)
+  // The kLutSamples visible-normal samples of the lobe at (n·v, α), less those below the horizon
+  // (weight 0, nothing to add).
+  std::vector<LobeTerm> samples;
   DfgTexel dfg;                     // the DFG texture read bilinearly here
   GgxMoments ltc;                   // the LTC moments texture (n_D, f_D, l_D) read bilinearly here
 };
