@@ -13,6 +13,7 @@
 
 #include "report/json.h"
 #include "spectral/errors.h"
+#include "util/parallel.h"
 
 namespace fl::report {
 
@@ -158,11 +159,14 @@ std::string write_temporary(const std::string& path, const std::string& content)
 }  // namespace
 
 void write_files_atomic(const Files& files) {
-  std::vector<std::string> temps;
+  // The temporaries are written concurrently; on any failure every one written is removed and the
+  // first failure in file order is reported.
+  std::vector<std::string> temps(files.size());
   try {
-    for (const auto& [path, content] : files) temps.push_back(write_temporary(path, content));
+    parallel_for_all(files.size(), [&](size_t i) { temps[i] = write_temporary(files[i].first, files[i].second); });
   } catch (...) {
-    for (const auto& t : temps) std::remove(t.c_str());
+    for (const auto& t : temps)
+      if (!t.empty()) std::remove(t.c_str());
     throw;
   }
   for (size_t i = 0; i < files.size(); ++i) {

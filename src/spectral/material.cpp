@@ -11,6 +11,7 @@
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
+#include "util/parallel.h"
 
 namespace fl::spectral {
 namespace fs = std::filesystem;
@@ -113,8 +114,9 @@ std::vector<Material> read_catalog(const DataPaths& paths) {
   for (const auto& e : fs::directory_iterator(paths.materials))
     if (e.path().extension() == ".yml" || e.path().extension() == ".yaml") files.push_back(e.path().string());
   std::sort(files.begin(), files.end());
-  std::vector<Material> out;
-  for (const auto& f : files) out.push_back(read_catalog_entry(f, paths));
+  // Read concurrently; the first broken entry in file order is the one reported.
+  std::vector<Material> out(files.size());
+  parallel_for_all(files.size(), [&](size_t i) { out[i] = read_catalog_entry(files[i], paths); });
   std::stable_sort(out.begin(), out.end(), [](const Material& a, const Material& b) { return a.order < b.order; });
   return out;
 }

@@ -1,5 +1,8 @@
 #include "util/parallel.h"
 
+#include <exception>
+#include <vector>
+
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -29,6 +32,22 @@ void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, i
   } else {
     loop();
   }
+}
+
+void parallel_for_all(std::size_t n, const std::function<void(std::size_t)>& body, int threads) {
+  std::vector<std::exception_ptr> errors(n);
+  parallel_for(
+      n,
+      [&](std::size_t i) {
+        try {
+          body(i);
+        } catch (...) {
+          errors[i] = std::current_exception();
+        }
+      },
+      threads);
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
 }
 
 void ProgressCounter::add(int units) {

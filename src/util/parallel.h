@@ -13,6 +13,10 @@ namespace fl {
 // skipped and the first exception is rethrown here once the running calls have finished.
 void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, int threads = 0);
 
+// parallel_for that makes every call, and when calls throw, rethrows the exception of the lowest i
+// once all have finished: the same error whatever the schedule (the first bad file of a list).
+void parallel_for_all(std::size_t n, const std::function<void(std::size_t)>& body, int threads = 0);
+
 // Counts finished work from any thread and passes (done, total) to `report` after each add(),
 // one call at a time, with done increasing.
 class ProgressCounter {

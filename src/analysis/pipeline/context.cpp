@@ -7,6 +7,7 @@
 #include "color/ciede2000_batch.h"
 #include "fresnel/ground_truth.h"
 #include "spectral/errors.h"
+#include "util/parallel.h"
 
 namespace fl::analysis {
 
@@ -119,8 +120,10 @@ LoadedMaterial load_material(const Context& ctx, spectral::Material m) {
 }
 
 std::vector<LoadedMaterial> load_catalog(const Context& ctx) {
-  std::vector<LoadedMaterial> out;
-  for (auto& m : spectral::read_catalog(ctx.settings().paths)) out.push_back(load_material(ctx, std::move(m)));
+  auto materials = spectral::read_catalog(ctx.settings().paths);
+  // Sampled concurrently; the first failure in catalog order is the one reported.
+  std::vector<LoadedMaterial> out(materials.size());
+  parallel_for_all(materials.size(), [&](size_t i) { out[i] = load_material(ctx, std::move(materials[i])); });
   return out;
 }
 
