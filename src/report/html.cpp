@@ -147,7 +147,8 @@ std::string strip_gradient(const std::vector<Rgb8>& strip) {
   std::string s = "linear-gradient(90deg";
   for (size_t i = 0; i < strip.size(); ++i)
     s += fmt::format(",{} {:.1f}%", hex(strip[i]), strip.size() > 1 ? 100.0 * i / (strip.size() - 1) : 0.0);
-  return s + ")";
+  s += ")";
+  return s;
 }
 
 std::string flip_html(const Flip& f) {
@@ -163,7 +164,8 @@ std::string flip_html(const Flip& f) {
   for (size_t i = 1; i < f.labels.size(); ++i)
     s += fmt::format("<button type=\"button\" data-frame=\"{}\" aria-pressed=\"false\">{}</button>", i,
                      html_escape(f.labels[i]));
-  return s + "</div></div>";
+  s += "</div></div>";
+  return s;
 }
 
 std::string search_text(const GalleryEntry& e) {
@@ -204,7 +206,8 @@ std::string card_html(const GalleryEntry& e) {
                        html_escape(caption));
     s += "</details>";
   }
-  return s + "</article>\n";
+  s += "</article>\n";
+  return s;
 }
 
 }  // namespace
@@ -247,7 +250,8 @@ std::string table_html(const analysis::Table& t, const std::string& id, int head
     for (const auto& n : t.notes) s += "<li>" + inline_markdown(n) + "</li>";
     s += "</ul>\n";
   }
-  return s + "</section>\n";
+  s += "</section>\n";
+  return s;
 }
 
 std::string gallery_html(const std::vector<GalleryEntry>& entries) {
@@ -257,7 +261,8 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries) {
       "<div class=\"gallery\">\n",
       entries.size());
   for (const auto& e : entries) s += card_html(e);
-  return s + "</div>\n";
+  s += "</div>\n";
+  return s;
 }
 
 std::string html_report(const HtmlReport& r) {
@@ -280,8 +285,15 @@ std::string html_report(const HtmlReport& r) {
                               "</summary>\n{2}</details>\n",
                               html_escape(t.name), t.rows.size(), table_html(t, "table-" + t.name, 3));
   });
+  // Appended in place into one buffer of the page's size: the page is most of reproduce's output.
+  size_t size = s.size() + std::char_traits<char>::length(kScript) + 64;
+  for (const auto& section : sections) size += section.size();
+  s.reserve(size);
   for (const auto& section : sections) s += section;
-  return s + "</section>\n</main>\n<script>" + kScript + "</script>\n</body></html>\n";
+  s += "</section>\n</main>\n<script>";
+  s += kScript;
+  s += "</script>\n</body></html>\n";
+  return s;
 }
 
 }  // namespace fl::report

@@ -4,6 +4,7 @@
 // Markdown files. Tables sort when a header is clicked and narrow to the rows matching a filter;
 // the gallery narrows to the materials matching its search; a flip toggles a sphere between the
 // ground truth and a model on click, previewing each model on hover.
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,7 +48,7 @@ struct HtmlReport {
   std::string title;
   std::vector<std::string> intro;  // paragraphs
   std::vector<GalleryEntry> gallery;
-  std::vector<analysis::Table> tables;
+  std::span<const analysis::Table> tables;  // the caller's, shown in order
   std::vector<std::pair<std::string, std::string>> links;  // (text, href): the other formats
 };
 

@@ -69,7 +69,7 @@ std::string settings_line(const analysis::Context& ctx) {
 
 // index.html: the gallery (with figures and flips when they were drawn) and every table.
 std::string report_page(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
-                        const analysis::Table& presets, std::vector<analysis::Table> tables, bool figures,
+                        const analysis::Table& presets, const std::vector<analysis::Table>& tables, bool figures,
                         const std::vector<Flip>& flips) {
   HtmlReport page;
   page.title = "Fresnel Lab reports";
@@ -82,7 +82,7 @@ std::string report_page(const analysis::Context& ctx, const std::vector<analysis
         "GGX roughness {:g} under the analytic sky and key light, {} px, derived parameters.",
         kFlipRoughness, kFlipSizePx));
   page.gallery = catalog_gallery(ctx, studies, presets, figures, flips);
-  page.tables = std::move(tables);
+  page.tables = tables;
   page.links = {{"README.md", "README.md"}, {"presets.json", "presets.json"}, {"presets.mtlx", "presets.mtlx"}};
   if (figures) page.links.emplace_back("figures.md", "figures.md");
   return html_report(page);
