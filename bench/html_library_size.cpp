@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
   const auto studies = analysis::study_materials(ctx, materials, options);
   report::HtmlReport page;
   page.title = "Database gallery";
-  page.tables = {analysis::presets_table(ctx, studies), analysis::models_table(ctx, studies)};
+  const std::vector<analysis::Table> tables{analysis::presets_table(ctx, studies), analysis::models_table(ctx, studies)};
+  page.tables = tables;
   page.gallery = report::catalog_gallery(ctx, studies, page.tables[0], false, {});
   const auto html = report::html_report(page);
   const auto gallery = report::gallery_html(page.gallery);

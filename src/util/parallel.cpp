@@ -1,5 +1,7 @@
 #include "util/parallel.h"
 
+#include "util/memory.h"
+
 #include <exception>
 #include <vector>
 
@@ -8,11 +10,26 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
+#include <oneapi/tbb/task_scheduler_observer.h>
 
 namespace fl {
+namespace {
+
+// Each worker thread, as it joins, puts its malloc arena on huge pages (util/memory.h).
+class WorkerSetup : public tbb::task_scheduler_observer {
+ public:
+  WorkerSetup() { observe(true); }
+  ~WorkerSetup() override { observe(false); }
+  void on_scheduler_entry(bool worker) override {
+    if (worker) huge_pages_for_this_thread();
+  }
+};
+
+}  // namespace
 
 void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, int threads) {
   if (n == 0) return;
+  static WorkerSetup setup;  // before the first loop starts the workers
   // One task per index: the bodies are long (a material, a row of cells or pixels).
   const auto loop = [&] {
     tbb::parallel_for(

@@ -118,12 +118,16 @@ report::HtmlReport sample_page() {
   e.facts = {{"RMS", "schlick 0.8"}};
   e.flip = {"figures/flip-gold.png", 97, {"truth", "schlick \"s\""}};
   r.gallery = {e};
-  analysis::Table t;
-  t.name = "schlick";
-  t.title = "Schlick";
-  t.columns = {{"material"}, {"rms", 3}};
-  t.rows = {{std::string("Gold"), 0.8}};
-  r.tables = {t};
+  // The page shows its caller's tables (a span): these live as long as the test program.
+  static const std::vector<analysis::Table> tables = [] {
+    analysis::Table t;
+    t.name = "schlick";
+    t.title = "Schlick";
+    t.columns = {{"material"}, {"rms", 3}};
+    t.rows = {{std::string("Gold"), 0.8}};
+    return std::vector<analysis::Table>{t};
+  }();
+  r.tables = tables;
   r.links = {{"README.md", "README.md"}};
   return r;
 }
