@@ -154,13 +154,18 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
   return r;
 }
 
+// ½ Σ ΔE2000² at `params`, from the residuals the solves minimize (ciede2000_residuals_batch).
 double start_cost(Model m, const CurveTarget& target, const std::vector<double>& params) {
   const auto& spec = fresnel::model_spec(m);
+  const size_t n = target.cos_thetas.size();
+  std::vector<color::Rgb> rgb(n);
+  for (size_t i = 0; i < n; ++i) rgb[i] = spec.evaluate(target.cos_thetas[i], params.data(), false);
+  std::vector<double> residuals(3 * n), d_rgb(9 * n);
+  color::ciede2000_residuals_batch(target.to_lab, target.truth_lab, rgb, residuals, d_rgb);
   double cost = 0;
-  for (size_t i = 0; i < target.cos_thetas.size(); ++i) {
-    const auto rgb = spec.evaluate(target.cos_thetas[i], params.data(), false);
-    const double de = color::ciede2000(target.truth_lab[i], target.to_lab(rgb));
-    cost += 0.5 * de * de;
+  for (size_t i = 0; i < n; ++i) {
+    const double* r = &residuals[3 * i];
+    cost += 0.5 * (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
   }
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
