@@ -140,21 +140,38 @@ std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::C
   return out;
 }
 
-std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,
+namespace {
+
+std::vector<color::Lab> to_lab(const Context& ctx, const std::vector<color::Rgb>& rgb) {
+  std::vector<color::Lab> out;
+  out.reserve(rgb.size());
+  for (const auto& c : rgb) out.push_back(ctx.rgb_to_lab(c));
+  return out;
+}
+
+std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Lab>& lab_a,
                                      const std::vector<color::Rgb>& b) {
-  std::vector<color::Lab> lab_a, lab_b;
-  lab_a.reserve(a.size());
-  lab_b.reserve(b.size());
-  for (const auto& c : a) lab_a.push_back(ctx.rgb_to_lab(c));
-  for (const auto& c : b) lab_b.push_back(ctx.rgb_to_lab(c));
-  std::vector<double> out(a.size());
+  const auto lab_b = to_lab(ctx, b);
+  std::vector<double> out(lab_a.size());
   color::ciede2000_batch(lab_a, lab_b, out);
   return out;
 }
 
+}  // namespace
+
+std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,
+                                     const std::vector<color::Rgb>& b) {
+  return de2000_per_angle(ctx, to_lab(ctx, a), b);
+}
+
 CurveError curve_error(const Context& ctx, const std::vector<color::Rgb>& truth,
                        const std::vector<color::Rgb>& approx) {
-  const auto de = de2000_per_angle(ctx, truth, approx);
+  return curve_error(ctx, to_lab(ctx, truth), approx);
+}
+
+CurveError curve_error(const Context& ctx, const std::vector<color::Lab>& truth_lab,
+                       const std::vector<color::Rgb>& approx) {
+  const auto de = de2000_per_angle(ctx, truth_lab, approx);
   CurveError e;
   double ss = 0, wss = 0;
   for (size_t i = 0; i < de.size(); ++i) {

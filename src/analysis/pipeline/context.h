@@ -101,5 +101,9 @@ std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color
                                      const std::vector<color::Rgb>& b);
 CurveError curve_error(const Context& ctx, const std::vector<color::Rgb>& truth,
                        const std::vector<color::Rgb>& approx);
+// The same with the truth already in CIELAB (rgb_to_lab at each angle), for a truth measured
+// against many curves.
+CurveError curve_error(const Context& ctx, const std::vector<color::Lab>& truth_lab,
+                       const std::vector<color::Rgb>& approx);
 
 }  // namespace fl::analysis

@@ -40,7 +40,9 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
   st.derived = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, m.ior, eta_e, o.point_sample_nm);
   const auto& d = st.derived;
   const auto& cos = ctx.cos_thetas();
-  const auto target = o.fit ? curve_target(ctx, st.truth) : fit::CurveTarget{};
+  // The truth in CIELAB once, for the fits and for every curve measured against it.
+  const auto target = curve_target(ctx, st.truth);
+  const auto& truth_lab = target.truth_lab;
   fit::FitOptions fit_options;
   fit_options.lossless = st.lossless = is_lossless(m.ior);
   // One slot per model, in registry order: the fits of a material run in parallel.
@@ -53,21 +55,21 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
     ModelResult& r = st.models[k];
     r.model = spec.model;
     r.derived = fresnel::derived_model_params(spec.model, d);
-    r.derived_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.derived, cos));
+    r.derived_error = curve_error(ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.derived, cos));
     r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
     if (o.fits(spec.model)) {
       r.fitted = fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d), fit_options);
-      r.fitted_error = curve_error(ctx, st.truth, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
+      r.fitted_error = curve_error(ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
       r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);
     }
   }, o.threads);
   if (!o.method_errors) return st;
   std::vector<double> ps;
   for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
-  st.ps_eta_kappa = curve_error(ctx, st.truth, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::FresnelRgb>, ps, cos));
+  st.ps_eta_kappa = curve_error(ctx, truth_lab, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::FresnelRgb>, ps, cos));
   const auto g_ps = fresnel::gulbrandsen_params(d.f0, d.g_ps_eta, &st.g_clamped_ps);
   fresnel::gulbrandsen_params(d.f0, d.g_refl_eta, &st.g_clamped_refl);
-  st.refl_f0_ps_eta = curve_error(ctx, st.truth, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Gulbrandsen>, g_ps, cos));
+  st.refl_f0_ps_eta = curve_error(ctx, truth_lab, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Gulbrandsen>, g_ps, cos));
   return st;
 }
 
