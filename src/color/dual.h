@@ -110,6 +110,10 @@ Dual<N> operator/(double s, const Dual<N>& x) {
 }
 
 template <int N>
+bool operator==(const Dual<N>& x, const Dual<N>& y) {
+  return x.v == y.v;
+}
+template <int N>
 bool operator<(const Dual<N>& x, const Dual<N>& y) {
   return x.v < y.v;
 }
@@ -148,6 +152,13 @@ Dual<N> sin(const Dual<N>& x) {
 template <int N>
 Dual<N> cos(const Dual<N>& x) {
   return detail::with_derivatives(std::cos(x.v), -std::sin(x.v), x);
+}
+// d xʸ = y·xʸ⁻¹ dx + ln(x)·xʸ dy, with xʸ⁻¹ as xʸ/x where x > 0 (one pow fewer).
+template <int N>
+Dual<N> pow(const Dual<N>& x, const Dual<N>& y) {
+  const double p = std::pow(x.v, y.v);
+  const double dx = x.v > 0.0 ? y.v * p / x.v : y.v * std::pow(x.v, y.v - 1.0);
+  return detail::with_derivatives(p, dx, x, x.v > 0.0 ? std::log(x.v) * p : 0.0, y);
 }
 // d atan2(y, x) = (x dy − y dx) / (x² + y²)
 template <int N>

@@ -4,6 +4,7 @@
 #include <ceres/gradient_checker.h>
 
 #include "color/ciede2000_batch.h"
+#include "color/dual.h"
 #include "fit/kept_evaluation.h"
 #include "fresnel/registry.h"
 #include "util/codegen.h"
@@ -21,10 +22,10 @@ using fresnel::Model;
 // Three residuals per angle whose squares sum to ΔE2000² between the ground truth and the model's
 // RGB (color::ciede2000_residuals), both in the working space's CIELAB. Residuals and Jacobian come
 // from one pass (KeptEvaluation::evaluate_joint). The Jacobian is formed by the chain rule: each
-// channel differentiated over the parameters it reads (its own block and the shared ones: Ceres
-// Jets of kChannelLanes lanes; a channel never reads another channel's block, so those entries are
-// zero), and the residuals over RGB, for every angle at once in SIMD lanes
-// (color::ciede2000_residuals_batch).
+// channel differentiated over the parameters it reads (its own block and the shared ones, as a
+// color::Dual of kChannelLanes lanes whose value is the double computation's, bit for bit; a
+// channel never reads another channel's block, so those entries are zero), and the residuals over
+// RGB, for every angle at once in SIMD lanes (color::ciede2000_residuals_batch).
 template <class Unit>
 class ModelCurveCost : public ceres::CostFunction {
  public:
@@ -32,7 +33,7 @@ class ModelCurveCost : public ceres::CostFunction {
   static constexpr int kShared = static_cast<int>(Unit::kSharedParams.size());
   static constexpr int kParams = fresnel::unit_param_count<Unit>();
   static constexpr int kChannelLanes = kPer + kShared;
-  using ChannelJet = ceres::Jet<double, kChannelLanes>;
+  using ChannelDual = color::Dual<kChannelLanes>;
 
   explicit ModelCurveCost(const CurveTarget* target)
       : target_(target), kept_(3 * target->cos_thetas.size()), rgb_(target->cos_thetas.size()),
@@ -51,29 +52,26 @@ class ModelCurveCost : public ceres::CostFunction {
   static ceres::CostFunction* Create(const CurveTarget* target) { return new ModelCurveCost(target); }
 
  private:
-  // Flattened (FL_FLATTEN): the Jet lanes' loops are inlined.
+  // Flattened (FL_FLATTEN): the Dual lanes' loops are inlined.
   FL_FLATTEN void evaluate_at(const double* p, double* residuals, double* jac) const {
     // Channel c's lanes: its own parameters, then the shared ones.
-    ChannelJet pj[3][kChannelLanes];
+    ChannelDual pd[3][kChannelLanes];
     for (int c = 0; c < 3; ++c) {
-      for (int k = 0; k < kPer; ++k) pj[c][k] = ChannelJet(p[c * kPer + k], k);
-      for (int s = 0; s < kShared; ++s) pj[c][kPer + s] = ChannelJet(p[3 * kPer + s], kPer + s);
+      for (int k = 0; k < kPer; ++k) pd[c][k] = ChannelDual::variable(p[c * kPer + k], k);
+      for (int s = 0; s < kShared; ++s) pd[c][kPer + s] = ChannelDual::variable(p[3 * kPer + s], kPer + s);
     }
-    // Each channel's angle-independent part once (fresnel::prepare_channel), as values and as Jets.
-    using PreparedValue = decltype(fresnel::prepare_channel<Unit>(p, p));
-    using PreparedJet = decltype(fresnel::prepare_channel<Unit>(pj[0], pj[0]));
-    const PreparedValue qv[3] = {fresnel::prepare_channel<Unit>(p, p + 3 * kPer),
-                                 fresnel::prepare_channel<Unit>(p + kPer, p + 3 * kPer),
-                                 fresnel::prepare_channel<Unit>(p + 2 * kPer, p + 3 * kPer)};
-    const PreparedJet qj[3] = {fresnel::prepare_channel<Unit>(pj[0], pj[0] + kPer),
-                               fresnel::prepare_channel<Unit>(pj[1], pj[1] + kPer),
-                               fresnel::prepare_channel<Unit>(pj[2], pj[2] + kPer)};
+    // Each channel's angle-independent part once (fresnel::prepare_channel).
+    using Prepared = decltype(fresnel::prepare_channel<Unit>(pd[0], pd[0]));
+    const Prepared q[3] = {fresnel::prepare_channel<Unit>(pd[0], pd[0] + kPer),
+                           fresnel::prepare_channel<Unit>(pd[1], pd[1] + kPer),
+                           fresnel::prepare_channel<Unit>(pd[2], pd[2] + kPer)};
     const size_t n = target_->cos_thetas.size();
     for (size_t i = 0; i < n; ++i) {
-      const double cos_theta = target_->cos_thetas[i];
-      rgb_[i] = {fresnel::channel_at<Unit>(cos_theta, qv[0]), fresnel::channel_at<Unit>(cos_theta, qv[1]),
-                 fresnel::channel_at<Unit>(cos_theta, qv[2])};
-      for (int c = 0; c < 3; ++c) channels_[i][c] = fresnel::channel_at<Unit>(ChannelJet(cos_theta), qj[c]);
+      const ChannelDual cos_theta(target_->cos_thetas[i]);
+      for (int c = 0; c < 3; ++c) {
+        channels_[i][c] = fresnel::channel_at<Unit>(cos_theta, q[c]);
+        rgb_[i][c] = channels_[i][c].v;
+      }
     }
     color::ciede2000_residuals_batch(target_->to_lab, target_->truth_lab, rgb_, std::span(residuals, 3 * n), d_rgb_);
     for (size_t i = 0; i < n; ++i)
@@ -84,18 +82,18 @@ class ModelCurveCost : public ceres::CostFunction {
   }
 
   // One Jacobian row: d residual / d RGB times d RGB / d parameters.
-  static void chain_rule(const std::array<double, 3>& d_rgb, const std::array<ChannelJet, 3>& ch, double* row) {
+  static void chain_rule(const std::array<double, 3>& d_rgb, const std::array<ChannelDual, 3>& ch, double* row) {
     for (int c = 0; c < 3; ++c)
-      for (int k = 0; k < kPer; ++k) row[c * kPer + k] = d_rgb[c] * ch[c].v[k];
+      for (int k = 0; k < kPer; ++k) row[c * kPer + k] = d_rgb[c] * ch[c].d[k];
     for (int s = 0; s < kShared; ++s)
-      row[3 * kPer + s] = d_rgb[0] * ch[0].v[kPer + s] + d_rgb[1] * ch[1].v[kPer + s] + d_rgb[2] * ch[2].v[kPer + s];
+      row[3 * kPer + s] = d_rgb[0] * ch[0].d[kPer + s] + d_rgb[1] * ch[1].d[kPer + s] + d_rgb[2] * ch[2].d[kPer + s];
   }
 
   const CurveTarget* target_;
   mutable KeptEvaluation<kParams> kept_;
   // Per-angle scratch of evaluate_at (a cost function serves one single-threaded solve).
   mutable std::vector<color::Rgb> rgb_;
-  mutable std::vector<std::array<ChannelJet, 3>> channels_;
+  mutable std::vector<std::array<ChannelDual, 3>> channels_;
   mutable std::vector<double> d_rgb_;
 };
 
@@ -141,6 +139,7 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
   so.parameter_tolerance = 1e-10;
   so.logging_type = ceres::SILENT;
   so.num_threads = 1;
+  if (std::getenv("FL_NOLS")) so.max_num_line_search_step_size_iterations = 0;
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   FitResult r;

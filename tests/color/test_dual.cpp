@@ -108,6 +108,11 @@ TEST(Dual, ElementaryRules) {
   EXPECT_DOUBLE_EQ(exp(y).d[1], std::exp(-1.3));
   EXPECT_DOUBLE_EQ(sin(x).d[0], std::cos(0.7));
   EXPECT_DOUBLE_EQ(cos(x).d[0], -std::sin(0.7));
+  const D3 p = pow(x, D3::variable(2.5, 1));
+  EXPECT_EQ(p.v, std::pow(0.7, 2.5));
+  EXPECT_DOUBLE_EQ(p.d[0], 2.5 * std::pow(0.7, 1.5));                // ∂/∂x xʸ = y·xʸ⁻¹
+  EXPECT_DOUBLE_EQ(p.d[1], std::log(0.7) * std::pow(0.7, 2.5));      // ∂/∂y xʸ = ln x·xʸ
+  EXPECT_TRUE(D3(1.5) == D3(1.5));
   EXPECT_EQ((2.0 - x).d[0], -1.0);
   EXPECT_EQ((x * y).d[2], 0.0);
 }
