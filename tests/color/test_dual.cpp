@@ -7,6 +7,7 @@
 
 #include "color/dual.h"
 #include "color/lab.h"
+#include "color/residual_fixtures.h"
 
 namespace {
 
@@ -18,10 +19,7 @@ using fl::color::Rgb;
 using fl::color::RgbT;
 using D3 = Dual<3>;
 
-// Linear Rec.709 → XYZ (IEC 61966-2-1) and the D65 white: a working space like the fits'.
-const LabConverter kToLab{{{0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522, 0.0721750, 0.0193339, 0.1191920,
-                            0.9503041}},
-                          {0.95047, 1.0, 1.08883}};
+const LabConverter& kToLab = fl::test::kRec709ToLab;
 
 // Five-point central differences, (8(f(x+h) − f(x−h)) − (f(x+2h) − f(x−2h))) / 12h, err by about
 // h⁴·f⁽⁵⁾/30 plus rounding of about 1e-16/h times the residuals' scale (up to 1e3 near grey, where the hue
@@ -33,10 +31,7 @@ void residuals_double(const Lab& truth, const Rgb& rgb, double* r) {
   fl::color::ciede2000_residuals(truth, kToLab(rgb), r);
 }
 
-void residuals_dual(const Lab& truth, const Rgb& rgb, D3* r) {
-  const RgbT<D3> v{D3::variable(rgb.r, 0), D3::variable(rgb.g, 1), D3::variable(rgb.b, 2)};
-  fl::color::ciede2000_residuals(LabT<D3>{truth.L, truth.a, truth.b}, kToLab(v), r);
-}
+void residuals_dual(const Lab& truth, const Rgb& rgb, D3* r) { fl::test::residuals_dual(truth, rgb, r); }
 
 // Reflectance-like RGB and a truth colour near the model's (the fits' situation), plus far pairs.
 struct Case {

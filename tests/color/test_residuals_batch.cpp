@@ -11,6 +11,7 @@
 #include "color/ciede2000_batch.h"
 #include "color/dual.h"
 #include "color/lab.h"
+#include "color/residual_fixtures.h"
 
 namespace {
 
@@ -22,10 +23,7 @@ using fl::color::Rgb;
 using fl::color::RgbT;
 using D3 = Dual<3>;
 
-// Linear Rec.709 → XYZ (IEC 61966-2-1) and the D65 white: a working space like the fits'.
-const LabConverter kToLab{{{0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522, 0.0721750, 0.0193339, 0.1191920,
-                            0.9503041}},
-                          {0.95047, 1.0, 1.08883}};
+const LabConverter& kToLab = fl::test::kRec709ToLab;
 
 // The vector formula differs from the template in its hue terms (hue vectors instead of atan2 and
 // four cosines) and in its cube root, exp, sin and cos (Highway's polynomials, within a few ulps of
@@ -43,9 +41,8 @@ struct Reference {
   double d[3][3];  // d[q][c]
 };
 Reference reference(const Lab& truth, const Rgb& rgb) {
-  const RgbT<D3> v{D3::variable(rgb.r, 0), D3::variable(rgb.g, 1), D3::variable(rgb.b, 2)};
   D3 rd[3];
-  fl::color::ciede2000_residuals(LabT<D3>{truth.L, truth.a, truth.b}, kToLab(v), rd);
+  fl::test::residuals_dual(truth, rgb, rd);
   Reference out{};
   for (int q = 0; q < 3; ++q) {
     out.r[q] = rd[q].v;
@@ -66,29 +63,33 @@ Batch batch(const std::vector<Lab>& truth, const std::vector<Rgb>& rgb, const st
 
 // Reflectance-like RGB with a truth colour near it (a fit's situation) or anywhere; grey, toe and
 // opposite-hue colours; an odd count, so that a tail is padded.
-void cases(std::vector<Lab>& truth, std::vector<Rgb>& rgb) {
+struct Cases {
+  std::vector<Lab> truth;
+  std::vector<Rgb> rgb;
+};
+Cases cases() {
   std::mt19937_64 rng(20261202);
   std::uniform_real_distribution<double> u(0.002, 1.0), near(-0.02, 0.02);
+  Cases out;
   for (int i = 0; i < 3001; ++i) {
     const Rgb x{u(rng), u(rng), u(rng)};
     const Rgb other = i % 2 ? Rgb{x.r + near(rng), x.g + near(rng), x.b + near(rng)} : Rgb{u(rng), u(rng), u(rng)};
-    truth.push_back(kToLab(other));
-    rgb.push_back(x);
+    out.truth.push_back(kToLab(other));
+    out.rgb.push_back(x);
   }
-  truth.push_back(Lab{50.0, 0.0, 0.0});  // an achromatic truth: the reference decides the lane
-  rgb.push_back(Rgb{0.3, 0.2, 0.1});
-  truth.push_back(Lab{1.0, 0.5, -0.3});  // the model in the cube root's linear toe
-  rgb.push_back(Rgb{0.001, 0.0015, 0.0008});
-  truth.push_back(Lab{40.0, -20.0, -10.0});  // hues nearly opposite to the model's
-  rgb.push_back(Rgb{0.4, 0.1, 0.05});
+  out.truth.push_back(Lab{50.0, 0.0, 0.0});  // an achromatic truth: the reference decides the lane
+  out.rgb.push_back(Rgb{0.3, 0.2, 0.1});
+  out.truth.push_back(Lab{1.0, 0.5, -0.3});  // the model in the cube root's linear toe
+  out.rgb.push_back(Rgb{0.001, 0.0015, 0.0008});
+  out.truth.push_back(Lab{40.0, -20.0, -10.0});  // hues nearly opposite to the model's
+  out.rgb.push_back(Rgb{0.4, 0.1, 0.05});
+  return out;
 }
 
 double relative(double a, double b) { return std::abs(a - b) / std::max(1.0, std::abs(b)); }
 
 TEST(ResidualsBatch, ValuesAndDerivativesMatchTheTemplate) {
-  std::vector<Lab> truth;
-  std::vector<Rgb> rgb;
-  cases(truth, rgb);
+  const auto [truth, rgb] = cases();
   const size_t n = rgb.size();
   const auto b = batch(truth, rgb);
   double worst_value = 0, worst_derivative = 0;
@@ -105,9 +106,7 @@ TEST(ResidualsBatch, ValuesAndDerivativesMatchTheTemplate) {
 
 // Their squares sum to ΔE00² (the residuals' definition), checked against the plain ΔE00.
 TEST(ResidualsBatch, SquaresSumToTheColourDifference) {
-  std::vector<Lab> truth;
-  std::vector<Rgb> rgb;
-  cases(truth, rgb);
+  const auto [truth, rgb] = cases();
   const auto b = batch(truth, rgb);
   for (size_t i = 0; i < rgb.size(); ++i) {
     const double de = fl::color::ciede2000(truth[i], kToLab(rgb[i]));
@@ -118,9 +117,7 @@ TEST(ResidualsBatch, SquaresSumToTheColourDifference) {
 
 // Near pairs only: far apart, the hue difference can cross ±180°, where ΔH' jumps.
 TEST(ResidualsBatch, DerivativesMatchCentralDifferences) {
-  std::vector<Lab> truth;
-  std::vector<Rgb> rgb;
-  cases(truth, rgb);
+  const auto [truth, rgb] = cases();
   const size_t n = rgb.size();
   const auto b = batch(truth, rgb);
   double worst = 0;
@@ -144,9 +141,7 @@ TEST(ResidualsBatch, DerivativesMatchCentralDifferences) {
 
 // Every instruction set, and every length up to two vectors of the widest (tails padded).
 TEST(ResidualsBatch, EveryInstructionSetAndLength) {
-  std::vector<Lab> all_truth;
-  std::vector<Rgb> all_rgb;
-  cases(all_truth, all_rgb);
+  const auto [all_truth, all_rgb] = cases();
   for (const auto& target : fl::color::ciede2000_batch_targets()) {
     for (size_t n = 1; n <= 17; ++n) {
       const std::vector<Lab> truth(all_truth.end() - n, all_truth.end());
