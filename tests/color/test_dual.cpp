@@ -14,9 +14,7 @@ namespace {
 using fl::color::Dual;
 using fl::color::Lab;
 using fl::color::LabConverter;
-using fl::color::LabT;
 using fl::color::Rgb;
-using fl::color::RgbT;
 using D3 = Dual<3>;
 
 const LabConverter& kToLab = fl::test::kRec709ToLab;

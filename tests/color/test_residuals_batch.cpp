@@ -17,13 +17,10 @@ namespace {
 
 using fl::color::Dual;
 using fl::color::Lab;
-using fl::color::LabConverter;
-using fl::color::LabT;
 using fl::color::Rgb;
-using fl::color::RgbT;
 using D3 = Dual<3>;
 
-const LabConverter& kToLab = fl::test::kRec709ToLab;
+const auto& kToLab = fl::test::kRec709ToLab;
 
 // The vector formula differs from the template in its hue terms (hue vectors instead of atan2 and
 // four cosines) and in its cube root, exp, sin and cos (Highway's polynomials, within a few ulps of
