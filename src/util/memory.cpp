@@ -44,6 +44,8 @@ void use_huge_pages_for_heap() {
   requested = true;
 }
 
+bool huge_pages_requested() { return requested; }
+
 void huge_pages_for_this_thread() {
   if (!requested) return;
   // A block of this thread's arena lies in its heap mapping; marking the whole mapping covers its

@@ -12,6 +12,9 @@ namespace fl {
 // for its own malloc arena (huge_pages_for_this_thread).
 void use_huge_pages_for_heap();
 
+// Whether use_huge_pages_for_heap asked for huge pages (it does nothing under the address sanitizer).
+bool huge_pages_requested();
+
 // The calling thread's malloc arena on huge pages, when use_huge_pages_for_heap was called.
 void huge_pages_for_this_thread();
 

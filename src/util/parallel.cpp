@@ -19,7 +19,6 @@ namespace {
 class WorkerSetup : public tbb::task_scheduler_observer {
  public:
   WorkerSetup() { observe(true); }
-  ~WorkerSetup() override { observe(false); }
   void on_scheduler_entry(bool worker) override {
     if (worker) huge_pages_for_this_thread();
   }
@@ -29,7 +28,12 @@ class WorkerSetup : public tbb::task_scheduler_observer {
 
 void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, int threads) {
   if (n == 0) return;
-  static WorkerSetup setup;  // before the first loop starts the workers
+  if (huge_pages_requested()) {
+    // Made once the program has asked for huge pages, before this loop's tasks run (a worker
+    // already running catches up with a new observer before its next task), and kept for the
+    // program's whole life: no observer to tear down at exit.
+    [[maybe_unused]] static const WorkerSetup* setup = new WorkerSetup;
+  }
   // One task per index: the bodies are long (a material, a row of cells or pixels).
   const auto loop = [&] {
     tbb::parallel_for(
