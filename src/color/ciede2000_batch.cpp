@@ -486,6 +486,13 @@ const std::vector<const BatchTarget*>& supported_targets() {
   return supported;
 }
 
+// A supported target by Highway's name; `caller` names the function in the error.
+const BatchTarget& target_named(const std::string& name, const char* caller) {
+  for (const auto* t : supported_targets())
+    if (name == t->name) return *t;
+  throw std::invalid_argument(std::string(caller) + ": no instruction set " + name + " on this CPU");
+}
+
 void check_lengths(std::span<const Lab> lab1, std::span<const Lab> lab2, std::span<double> out) {
   if (lab1.size() != lab2.size() || lab1.size() != out.size())
     throw std::invalid_argument("ciede2000_batch: lab1, lab2 and out differ in length");
@@ -516,12 +523,8 @@ void ciede2000_residuals_batch(const LabConverter& to_lab, std::span<const Lab> 
 void ciede2000_residuals_batch_on(const std::string& target, const LabConverter& to_lab, std::span<const Lab> truth,
                                   std::span<const Rgb> rgb, std::span<double> residuals, std::span<double> d_rgb) {
   check_lengths(truth, rgb, residuals, d_rgb);
-  for (const auto* t : supported_targets()) {
-    if (target != t->name) continue;
-    if (!rgb.empty()) t->residuals(to_lab, truth.data(), rgb.data(), residuals.data(), d_rgb.data(), rgb.size());
-    return;
-  }
-  throw std::invalid_argument("ciede2000_residuals_batch_on: no instruction set " + target + " on this CPU");
+  const auto& t = target_named(target, "ciede2000_residuals_batch_on");
+  if (!rgb.empty()) t.residuals(to_lab, truth.data(), rgb.data(), residuals.data(), d_rgb.data(), rgb.size());
 }
 
 std::vector<std::string> ciede2000_batch_targets() {
@@ -533,12 +536,8 @@ std::vector<std::string> ciede2000_batch_targets() {
 void ciede2000_batch_on(const std::string& target, std::span<const Lab> lab1, std::span<const Lab> lab2,
                         std::span<double> out) {
   check_lengths(lab1, lab2, out);
-  for (const auto* t : supported_targets()) {
-    if (target != t->name) continue;
-    if (!out.empty()) t->fn(lab1.data(), lab2.data(), out.data(), out.size());
-    return;
-  }
-  throw std::invalid_argument("ciede2000_batch_on: no instruction set " + target + " on this CPU");
+  const auto& t = target_named(target, "ciede2000_batch_on");
+  if (!out.empty()) t.fn(lab1.data(), lab2.data(), out.data(), out.size());
 }
 
 }  // namespace fl::color

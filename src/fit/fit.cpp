@@ -139,7 +139,6 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
   so.parameter_tolerance = 1e-10;
   so.logging_type = ceres::SILENT;
   so.num_threads = 1;
-  if (std::getenv("FL_NOLS")) so.max_num_line_search_step_size_iterations = 0;
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   FitResult r;

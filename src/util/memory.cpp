@@ -47,7 +47,6 @@ void use_huge_pages_for_heap() {
 bool huge_pages_requested() { return requested; }
 
 void huge_pages_for_this_thread() {
-  if (!requested) return;
   // A block of this thread's arena lies in its heap mapping; marking the whole mapping covers its
   // later growth too. Were the block in the main heap (marked already), the range is part of it or
   // unmapped, and madvise then fails harmlessly.

@@ -15,7 +15,8 @@ void use_huge_pages_for_heap();
 // Whether use_huge_pages_for_heap asked for huge pages (it does nothing under the address sanitizer).
 bool huge_pages_requested();
 
-// The calling thread's malloc arena on huge pages, when use_huge_pages_for_heap was called.
+// The calling thread's malloc arena on huge pages (parallel_for calls it on each worker once
+// use_huge_pages_for_heap has been called).
 void huge_pages_for_this_thread();
 
 }  // namespace fl

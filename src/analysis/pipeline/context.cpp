@@ -140,18 +140,18 @@ std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::C
   return out;
 }
 
-namespace {
-
-std::vector<color::Lab> to_lab(const Context& ctx, const std::vector<color::Rgb>& rgb) {
+std::vector<color::Lab> lab_curve(const Context& ctx, const std::vector<color::Rgb>& rgb) {
   std::vector<color::Lab> out;
   out.reserve(rgb.size());
   for (const auto& c : rgb) out.push_back(ctx.rgb_to_lab(c));
   return out;
 }
 
+namespace {
+
 std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Lab>& lab_a,
                                      const std::vector<color::Rgb>& b) {
-  const auto lab_b = to_lab(ctx, b);
+  const auto lab_b = lab_curve(ctx, b);
   std::vector<double> out(lab_a.size());
   color::ciede2000_batch(lab_a, lab_b, out);
   return out;
@@ -161,12 +161,12 @@ std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color
 
 std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,
                                      const std::vector<color::Rgb>& b) {
-  return de2000_per_angle(ctx, to_lab(ctx, a), b);
+  return de2000_per_angle(ctx, lab_curve(ctx, a), b);
 }
 
 CurveError curve_error(const Context& ctx, const std::vector<color::Rgb>& truth,
                        const std::vector<color::Rgb>& approx) {
-  return curve_error(ctx, to_lab(ctx, truth), approx);
+  return curve_error(ctx, lab_curve(ctx, truth), approx);
 }
 
 CurveError curve_error(const Context& ctx, const std::vector<color::Lab>& truth_lab,

@@ -101,6 +101,8 @@ std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color
                                      const std::vector<color::Rgb>& b);
 CurveError curve_error(const Context& ctx, const std::vector<color::Rgb>& truth,
                        const std::vector<color::Rgb>& approx);
+// Each colour of a curve in CIELAB (rgb_to_lab).
+std::vector<color::Lab> lab_curve(const Context& ctx, const std::vector<color::Rgb>& rgb);
 // The same with the truth already in CIELAB (rgb_to_lab at each angle), for a truth measured
 // against many curves.
 CurveError curve_error(const Context& ctx, const std::vector<color::Lab>& truth_lab,

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <exception>
 
 #include "spectral/errors.h"
 #include "spectral/pages.h"
@@ -14,8 +13,7 @@ namespace {
 
 struct Slot {
   std::optional<LoadedMaterial> material;
-  std::exception_ptr error;
-  std::string reason;  // the error's message, when it may be skipped
+  std::string reason;  // the error's message, when it is skipped
 };
 
 // A skip reason names the page's file relative to the database's data/ folder, so a library's
@@ -33,7 +31,7 @@ Slot load_request(const Context& ctx, const spectral::MaterialRequest& r, bool m
     auto m = r.pattern.empty() ? spectral::resolve_material(r.spec, paths) : spectral::read_database_page(r.spec, paths);
     s.material = load_material(ctx, std::move(m));
   } catch (const InputError& e) {
-    if (!may_skip) s.error = std::current_exception();
+    if (!may_skip) throw;
     s.reason = without_database_root(e.what(), ctx.settings().paths);
   }
   return s;
@@ -67,9 +65,9 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
                            const std::function<void(int, int)>& progress) {
   MaterialSet set;
   if (specs.empty()) {
-    for (auto& m : spectral::read_catalog(ctx.settings().paths)) {
-      const std::string key = m.key;
-      add(set, load_material(ctx, std::move(m)), key, policy, false);
+    for (auto& m : load_catalog(ctx)) {
+      const std::string key = m.material.key;
+      add(set, std::move(m), key, policy, false);
       ++set.requested;
     }
     return set;
@@ -82,15 +80,14 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
     spectral::page_entry(ctx.settings().paths.database, "");
   std::vector<Slot> slots(requests.size());
   ProgressCounter done(progress, set.requested);
-  parallel_for(
+  // Every request is loaded; the first error in request order is the one reported.
+  parallel_for_all(
       requests.size(),
       [&](size_t i) {
         slots[i] = load_request(ctx, requests[i], !requests[i].pattern.empty() && !policy.strict);
         done.add(1);
       },
       policy.threads);
-  for (const auto& s : slots)
-    if (s.error) std::rethrow_exception(s.error);
   const bool single = requests.size() == 1 && requests.front().pattern.empty();
   for (size_t i = 0; i < slots.size(); ++i) {
     if (slots[i].material) add(set, std::move(*slots[i].material), requests[i].spec, policy, single);

@@ -20,7 +20,7 @@ fit::CurveTarget curve_target(const Context& ctx, const std::vector<color::Rgb>&
   fit::CurveTarget t;
   t.cos_thetas = ctx.cos_thetas();
   t.to_lab = {ctx.space().rgb_to_xyz, ctx.space().white};
-  for (const auto& rgb : truth) t.truth_lab.push_back(t.to_lab(rgb));
+  t.truth_lab = lab_curve(ctx, truth);
   return t;
 }
 
