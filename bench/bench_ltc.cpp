@@ -1,7 +1,7 @@
 // LTC table fits: Ceres (Levenberg–Marquardt, the tool's fitter) against Nelder–Mead (the
-// derivative-free simplex of Heitz's reference fitLTC.cpp) as the solver of fit::fit_ltc_cell, on the
-// same cells, the same objective and the same warm starts. Prints time per table and the mean and
-// max held-out error (LtcCell::fit_error) of both.
+// derivative-free simplex of Heitz's reference fitLTC.cpp) as the solver of fit::fit_ltc_cell, on
+// the same cells, the same objective and the same warm starts. Prints time per table and the mean
+// and max held-out error (LtcCell::fit_error) of both.
 //   bench_ltc                       16×16 and 64×64
 //   bench_ltc --benchmark_filter=/16
 #include <benchmark/benchmark.h>
@@ -27,8 +27,9 @@ using fl::fit::LtcProblem;
 // shrink ½), on `dim` parameters. Stops when the simplex's values agree to a relative `tolerance`
 // or after `max_evaluations`.
 template <size_t N, class F>
-std::array<double, N> nelder_mead(const F& f, std::array<double, N> start, const std::array<double, N>& step,
-                                  double tolerance, int max_evaluations, int& evaluations, int& iterations) {
+std::array<double, N> nelder_mead(const F& f, std::array<double, N> start,
+                                  const std::array<double, N>& step, double tolerance,
+                                  int max_evaluations, int& evaluations, int& iterations) {
   using Point = std::array<double, N>;
   std::array<Point, N + 1> s;
   std::array<double, N + 1> fs;
@@ -45,7 +46,9 @@ std::array<double, N> nelder_mead(const F& f, std::array<double, N> start, const
     for (size_t i = 0; i <= N; ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return fs[a] < fs[b]; });
     const size_t lo = order[0], hi = order[N], nh = order[N - 1];
-    if (2.0 * std::abs(fs[hi] - fs[lo]) <= tolerance * (std::abs(fs[hi]) + std::abs(fs[lo])) + 1e-300) break;
+    if (2.0 * std::abs(fs[hi] - fs[lo]) <=
+        tolerance * (std::abs(fs[hi]) + std::abs(fs[lo])) + 1e-300)
+      break;
     Point o{};
     for (size_t i = 0; i <= N; ++i)
       if (i != hi)
@@ -101,10 +104,12 @@ FitResult fit_ltc_nelder_mead(const LtcProblem& pr, const LtcParams& start, bool
     p.m31 = std::clamp(p.m31, -fl::fit::kLtcMaxSkew, fl::fit::kLtcMaxSkew);
     return p;
   };
-  // Outside the bounds Ceres never goes; a singular or flipped A (m11 − m13 m31 ≤ 0) is infinitely bad.
+  // Outside the bounds Ceres never goes; a singular or flipped A (m11 − m13 m31 ≤ 0) is infinitely
+  // bad.
   auto objective = [&](const LtcParams& p) {
-    return p.m11 - p.m13 * p.m31 > fl::fit::kLtcMinScale * p.m11 ? fl::fit::ltc_objective(pr, p)
-                                                                   : std::numeric_limits<double>::infinity();
+    return p.m11 - p.m13 * p.m31 > fl::fit::kLtcMinScale * p.m11
+               ? fl::fit::ltc_objective(pr, p)
+               : std::numeric_limits<double>::infinity();
   };
   auto step = [](double x) { return x != 0.0 ? 0.1 * std::abs(x) : 0.05; };
   const LtcParams s0 = project(start);
@@ -113,15 +118,21 @@ FitResult fit_ltc_nelder_mead(const LtcProblem& pr, const LtcParams& start, bool
   int evaluations = 0, iterations = 0;
   LtcParams best;
   if (isotropic) {
-    auto f = [&](const std::array<double, 2>& x) { return objective(project({x[0], x[1], s0.m13, s0.m31})); };
-    const auto x = nelder_mead<2>(f, {s0.m11, s0.m22}, {step(s0.m11), step(s0.m22)}, kNelderMeadTolerance,
-                                  kNelderMeadMaxEvaluations, evaluations, iterations);
+    auto f = [&](const std::array<double, 2>& x) {
+      return objective(project({x[0], x[1], s0.m13, s0.m31}));
+    };
+    const auto x =
+        nelder_mead<2>(f, {s0.m11, s0.m22}, {step(s0.m11), step(s0.m22)}, kNelderMeadTolerance,
+                       kNelderMeadMaxEvaluations, evaluations, iterations);
     best = project({x[0], x[1], s0.m13, s0.m31});
   } else {
-    auto f = [&](const std::array<double, 4>& x) { return objective(project({x[0], x[1], x[2], x[3]})); };
-    const auto x = nelder_mead<4>(f, {s0.m11, s0.m22, s0.m13, s0.m31},
-                                  {step(s0.m11), step(s0.m22), step(s0.m13), step(s0.m31)}, kNelderMeadTolerance,
-                                  kNelderMeadMaxEvaluations, evaluations, iterations);
+    auto f = [&](const std::array<double, 4>& x) {
+      return objective(project({x[0], x[1], x[2], x[3]}));
+    };
+    const auto x =
+        nelder_mead<4>(f, {s0.m11, s0.m22, s0.m13, s0.m31},
+                       {step(s0.m11), step(s0.m22), step(s0.m13), step(s0.m31)},
+                       kNelderMeadTolerance, kNelderMeadMaxEvaluations, evaluations, iterations);
     best = project({x[0], x[1], x[2], x[3]});
   }
   r.parameters = {best.m11, best.m22, best.m13, best.m31};
@@ -156,8 +167,16 @@ void BM_LtcTableFit(benchmark::State& state, bool use_ceres) {
   g_results[{size, use_ceres}] = summary;
 }
 
-BENCHMARK_CAPTURE(BM_LtcTableFit, ceres, true)->Arg(16)->Arg(64)->Iterations(1)->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(BM_LtcTableFit, nelder_mead, false)->Arg(16)->Arg(64)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_LtcTableFit, ceres, true)
+    ->Arg(16)
+    ->Arg(64)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_LtcTableFit, nelder_mead, false)
+    ->Arg(16)
+    ->Arg(64)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 }  // namespace
 
@@ -180,9 +199,10 @@ int main(int argc, char** argv) {
       if (nm.errors[k] < ceres.errors[k] - 1e-4) ++nm_better;
     }
     const double n = static_cast<double>(ceres.errors.size());
-    std::printf("%dx%d cells: mean held-out error (relative L3) Ceres %.5f, Nelder-Mead %.5f; "
-                "cells better by >1e-4: Ceres %d, Nelder-Mead %d\n",
-                key.first, key.first, sum_c / n, sum_n / n, ceres_better, nm_better);
+    std::printf(
+        "%dx%d cells: mean held-out error (relative L3) Ceres %.5f, Nelder-Mead %.5f; "
+        "cells better by >1e-4: Ceres %d, Nelder-Mead %d\n",
+        key.first, key.first, sum_c / n, sum_n / n, ceres_better, nm_better);
   }
   return 0;
 }

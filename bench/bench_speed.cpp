@@ -1,5 +1,6 @@
 // What every Fresnel model costs, scalar and batched, float and double; the spectral
-// ground truth; our CIEDE2000 next to Little CMS's cmsCIE2000DeltaE; each report table's generation.
+// ground truth; our CIEDE2000 next to Little CMS's cmsCIE2000DeltaE; each report table's
+// generation.
 //   bench_speed                                   run everything, console output
 //   bench_speed --benchmark_filter=de2000         one group
 //   bench_speed --fl_write=REPO                   also write REPO/reports/bench.md and
@@ -39,7 +40,8 @@ constexpr std::size_t kLabPairs = 1024;
 template <class T>
 std::vector<T> angle_cosines() {
   std::vector<T> c(kAngles);
-  for (std::size_t i = 0; i < kAngles; ++i) c[i] = static_cast<T>(static_cast<double>(i) / (kAngles - 1));
+  for (std::size_t i = 0; i < kAngles; ++i)
+    c[i] = static_cast<T>(static_cast<double>(i) / (kAngles - 1));
   return c;
 }
 template <class T>
@@ -106,14 +108,16 @@ const LabPairs& lab_pairs() {
 void bm_de2000_template(benchmark::State& state) {
   const auto& p = lab_pairs();
   for (auto _ : state)
-    for (std::size_t i = 0; i < kLabPairs; ++i) benchmark::DoNotOptimize(fl::color::ciede2000<double>(p.a[i], p.b[i]));
+    for (std::size_t i = 0; i < kLabPairs; ++i)
+      benchmark::DoNotOptimize(fl::color::ciede2000<double>(p.a[i], p.b[i]));
   state.counters["evals"] = static_cast<double>(kLabPairs);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kLabPairs));
 }
 void bm_de2000_fast(benchmark::State& state) {
   const auto& p = lab_pairs();
   for (auto _ : state)
-    for (std::size_t i = 0; i < kLabPairs; ++i) benchmark::DoNotOptimize(fl::color::ciede2000_fast(p.a[i], p.b[i]));
+    for (std::size_t i = 0; i < kLabPairs; ++i)
+      benchmark::DoNotOptimize(fl::color::ciede2000_fast(p.a[i], p.b[i]));
   state.counters["evals"] = static_cast<double>(kLabPairs);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kLabPairs));
 }
@@ -176,7 +180,8 @@ void bm_ground_truth_rgb(benchmark::State& state) {
 void bm_ground_truth_curve(benchmark::State& state) {
   auto& c = catalog();
   const auto& gold = c.gold();
-  for (auto _ : state) benchmark::DoNotOptimize(fl::analysis::ground_truth_curve(*c.ctx, gold.ior, 1.0));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(fl::analysis::ground_truth_curve(*c.ctx, gold.ior, 1.0));
   state.counters["evals"] = static_cast<double>(c.ctx->cos_thetas().size());
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * c.ctx->cos_thetas().size()));
 }
@@ -206,18 +211,27 @@ void register_all() {
   for (const auto& spec : fl::fresnel::model_specs()) {
     const std::string n = spec.name;
     RegisterBenchmark(("model/" + n + "/float/scalar").c_str(), bm_model_scalar<float>, spec.model);
-    RegisterBenchmark(("model/" + n + "/float/batched").c_str(), bm_model_batched<float>, spec.model);
-    RegisterBenchmark(("model/" + n + "/double/scalar").c_str(), bm_model_scalar<double>, spec.model);
-    RegisterBenchmark(("model/" + n + "/double/batched").c_str(), bm_model_batched<double>, spec.model);
+    RegisterBenchmark(("model/" + n + "/float/batched").c_str(), bm_model_batched<float>,
+                      spec.model);
+    RegisterBenchmark(("model/" + n + "/double/scalar").c_str(), bm_model_scalar<double>,
+                      spec.model);
+    RegisterBenchmark(("model/" + n + "/double/batched").c_str(), bm_model_batched<double>,
+                      spec.model);
   }
   RegisterBenchmark("de2000/ours_template", bm_de2000_template);
   RegisterBenchmark("de2000/ours_fast", bm_de2000_fast);
   RegisterBenchmark("de2000/ours_batch", bm_de2000_batch);
   RegisterBenchmark("de2000/lcms", bm_de2000_lcms);
   RegisterBenchmark("ground_truth/rgb_one_angle", bm_ground_truth_rgb);
-  RegisterBenchmark("ground_truth/curve_91_angles", bm_ground_truth_curve)->Unit(benchmark::kMicrosecond);
-  RegisterBenchmark("tables/load_catalog", bm_load_catalog)->Unit(benchmark::kMillisecond)->UseRealTime();
-  RegisterBenchmark("tables/studies_all_fits", bm_studies)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+  RegisterBenchmark("ground_truth/curve_91_angles", bm_ground_truth_curve)
+      ->Unit(benchmark::kMicrosecond);
+  RegisterBenchmark("tables/load_catalog", bm_load_catalog)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+  RegisterBenchmark("tables/studies_all_fits", bm_studies)
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(1)
+      ->UseRealTime();
   for (const auto& spec : fl::analysis::table_specs())
     RegisterBenchmark(("tables/" + std::string(spec.name)).c_str(), bm_table, &spec)
         ->Unit(benchmark::kMillisecond)
@@ -260,75 +274,105 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 std::string machine_line() {
-  return fmt::format("{}, {} hardware threads, g++ {} ({}), Google Benchmark 1.7, Little CMS {}", cpu_model(),
-                     std::thread::hardware_concurrency(), __VERSION__, FL_BENCH_FLAGS, LCMS_VERSION);
+  return fmt::format("{}, {} hardware threads, g++ {} ({}), Google Benchmark 1.7, Little CMS {}",
+                     cpu_model(), std::thread::hardware_concurrency(), __VERSION__, FL_BENCH_FLAGS,
+                     LCMS_VERSION);
 }
 
-void write_reports(const std::string& repo, const std::map<std::string, Result>& r, int repetitions) {
+void write_reports(const std::string& repo, const std::map<std::string, Result>& r,
+                   int repetitions) {
   auto ns = [&](const std::string& name) {
     const auto it = r.find(name);
     return it == r.end() ? NAN : it->second.ns_per_eval();
   };
-  auto num = [](double v, int d) { return std::isfinite(v) ? fl::report::format_number(v, d) : std::string("n/a"); };
+  auto num = [](double v, int d) {
+    return std::isfinite(v) ? fl::report::format_number(v, d) : std::string("n/a");
+  };
   const std::string machine = machine_line();
   // bench/model_costs.csv: what `table speed` and `plan` read.
   std::string csv =
       "# Fresnel Lab model costs, written by bench_speed --fl_write (scripts/bench.sh); read by\n"
-      "# `table speed` and `plan`. ns per evaluation = one RGB value at one angle, over 4096 angles, median\n"
+      "# `table speed` and `plan`. ns per evaluation = one RGB value at one angle, over 4096 "
+      "angles, median\n"
       "# CPU time of the repetitions.\n";
   csv += "# machine: " + machine + "\n";
-  csv += "model,ns_per_eval_float_batched,ns_per_eval_double_batched,ns_per_eval_float_scalar,ns_per_eval_double_scalar\n";
+  csv +=
+      "model,ns_per_eval_float_batched,ns_per_eval_double_batched,ns_per_eval_float_scalar,ns_per_"
+      "eval_double_scalar\n";
   for (const auto& spec : fl::fresnel::model_specs()) {
     const std::string p = std::string("model/") + spec.name;
-    csv += fmt::format("{},{},{},{},{}\n", spec.name, num(ns(p + "/float/batched"), 3), num(ns(p + "/double/batched"), 3),
-                       num(ns(p + "/float/scalar"), 3), num(ns(p + "/double/scalar"), 3));
+    csv += fmt::format("{},{},{},{},{}\n", spec.name, num(ns(p + "/float/batched"), 3),
+                       num(ns(p + "/double/batched"), 3), num(ns(p + "/float/scalar"), 3),
+                       num(ns(p + "/double/scalar"), 3));
   }
   fl::report::write_file_atomic(repo + "/bench/model_costs.csv", csv);
 
   std::string md = "# Fresnel Lab benchmarks\n\n";
-  md += "Written by `scripts/bench.sh` (`bench_speed --fl_write=.`, Google Benchmark). Numbers are machine-dependent "
-        "and are not part of `reproduce`; `table speed` and `plan` read the model costs from the committed "
-        "`bench/model_costs.csv` written in the same run.\n\n";
+  md +=
+      "Written by `scripts/bench.sh` (`bench_speed --fl_write=.`, Google Benchmark). Numbers are "
+      "machine-dependent "
+      "and are not part of `reproduce`; `table speed` and `plan` read the model costs from the "
+      "committed "
+      "`bench/model_costs.csv` written in the same run.\n\n";
   md += fmt::format("Machine: {}. Median CPU time of {} repetition(s).\n\n", machine, repetitions);
   md += "## Fresnel models (ns per evaluation: one RGB value at one angle)\n\n";
-  md += "Scalar: one `evaluate_rgb` call per value (model switch inside). Batched: `evaluate_batch` over 4096 angles "
-        "(model switch hoisted, planar output).\n\n";
-  md += "| model | float batched | float scalar | double batched | double scalar |\n|---|---|---|---|---|\n";
+  md +=
+      "Scalar: one `evaluate_rgb` call per value (model switch inside). Batched: `evaluate_batch` "
+      "over 4096 angles "
+      "(model switch hoisted, planar output).\n\n";
+  md +=
+      "| model | float batched | float scalar | double batched | double scalar "
+      "|\n|---|---|---|---|---|\n";
   for (const auto& spec : fl::fresnel::model_specs()) {
     const std::string p = std::string("model/") + spec.name;
     md += fmt::format("| {} | {} | {} | {} | {} |\n", spec.name, num(ns(p + "/float/batched"), 2),
-                      num(ns(p + "/float/scalar"), 2), num(ns(p + "/double/batched"), 2), num(ns(p + "/double/scalar"), 2));
+                      num(ns(p + "/float/scalar"), 2), num(ns(p + "/double/batched"), 2),
+                      num(ns(p + "/double/scalar"), 2));
   }
   const double t = ns("de2000/ours_template"), f = ns("de2000/ours_fast"), l = ns("de2000/lcms");
   const double bt = ns("de2000/ours_batch");
   md += "\n## CIEDE2000 (ns per colour pair, 1024 pairs across CIELAB)\n\n";
   md += "| implementation | ns per pair | Little CMS time / this |\n|---|---|---|\n";
-  md += fmt::format("| Fresnel Lab `color::ciede2000_batch` (double, SIMD, Highway target {}) | {} | {}× |\n",
-                    fl::color::ciede2000_batch_targets().front(), num(bt, 1), num(l / bt, 2));
-  md += fmt::format("| Fresnel Lab `color::ciede2000_fast` (double) | {} | {}× |\n", num(f, 1), num(l / f, 2));
-  md += fmt::format("| Fresnel Lab `color::ciede2000<double>` (template, differentiable) | {} | {}× |\n", num(t, 1),
-                    num(l / t, 2));
+  md += fmt::format(
+      "| Fresnel Lab `color::ciede2000_batch` (double, SIMD, Highway target {}) | {} | {}× |\n",
+      fl::color::ciede2000_batch_targets().front(), num(bt, 1), num(l / bt, 2));
+  md += fmt::format("| Fresnel Lab `color::ciede2000_fast` (double) | {} | {}× |\n", num(f, 1),
+                    num(l / f, 2));
+  md += fmt::format(
+      "| Fresnel Lab `color::ciede2000<double>` (template, differentiable) | {} | {}× |\n",
+      num(t, 1), num(l / t, 2));
   md += fmt::format("| Little CMS `cmsCIE2000DeltaE` | {} | 1.00× |\n", num(l, 1));
-  md += "\nAgreement: tests/color/test_lcms_agreement.cpp checks all three of ours against Little CMS within 1e-9 on the "
-        "34 pairs of Sharma, Wu & Dalal 2005 (the batched kernel on every instruction set the CPU runs), and the fast "
-        "path and the batched kernel against the template within 1e-12 on random pairs across CIELAB.\n";
+  md +=
+      "\nAgreement: tests/color/test_lcms_agreement.cpp checks all three of ours against Little "
+      "CMS within 1e-9 on the "
+      "34 pairs of Sharma, Wu & Dalal 2005 (the batched kernel on every instruction set the CPU "
+      "runs), and the fast "
+      "path and the batched kernel against the template within 1e-12 on random pairs across "
+      "CIELAB.\n";
   md += "\n## Spectral ground truth (gold)\n\n| what | time |\n|---|---|\n";
-  md += fmt::format("| one RGB value at one angle | {} µs |\n", num(ns("ground_truth/rgb_one_angle") / 1e3, 2));
+  md += fmt::format("| one RGB value at one angle | {} µs |\n",
+                    num(ns("ground_truth/rgb_one_angle") / 1e3, 2));
   md += fmt::format("| one curve (91 angles) | {} µs |\n",
                     num(ns("ground_truth/curve_91_angles") * 91 / 1e3, 1));
-  md += "\n## Table generation (ms wall time; tables reuse the per-material studies, timed once on their own)\n\n";
+  md +=
+      "\n## Table generation (ms wall time; tables reuse the per-material studies, timed once on "
+      "their own)\n\n";
   md += "| step | ms |\n|---|---|\n";
   for (const auto& [name, res] : r)
-    if (name.rfind("tables/", 0) == 0) md += fmt::format("| {} | {} |\n", name.substr(7), num(res.median_seconds() * 1e3, 2));
+    if (name.rfind("tables/", 0) == 0)
+      md += fmt::format("| {} | {} |\n", name.substr(7), num(res.median_seconds() * 1e3, 2));
   md += "\n## Targets\n\n";
-  md += fmt::format("- ΔE2000: ours (fast path) {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 2×).\n", num(f, 1),
-                    num(l, 1), num(l / f, 2));
-  md += fmt::format("- ΔE2000 batched: ours {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 5×).\n", num(bt, 1),
-                    num(l, 1), num(l / bt, 2));
+  md += fmt::format(
+      "- ΔE2000: ours (fast path) {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 2×).\n",
+      num(f, 1), num(l, 1), num(l / f, 2));
+  md += fmt::format(
+      "- ΔE2000 batched: ours {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 5×).\n",
+      num(bt, 1), num(l, 1), num(l / bt, 2));
   md += fmt::format("- Batched Schlick in float: {} ns per evaluation (target < 1 ns).\n",
                     num(ns("model/schlick/float/batched"), 3));
   fl::report::write_file_atomic(repo + "/reports/bench.md", md);
-  fmt::print(stderr, "bench_speed: wrote {0}/reports/bench.md and {0}/bench/model_costs.csv\n", repo);
+  fmt::print(stderr, "bench_speed: wrote {0}/reports/bench.md and {0}/bench/model_costs.csv\n",
+             repo);
 }
 
 }  // namespace
@@ -339,9 +383,12 @@ int main(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a.rfind("--fl_write=", 0) == 0) write_repo = a.substr(11);
-    else args.push_back(argv[i]);
-    if (a.rfind("--benchmark_repetitions=", 0) == 0) repetitions = std::max(1, std::atoi(a.c_str() + 24));
+    if (a.rfind("--fl_write=", 0) == 0)
+      write_repo = a.substr(11);
+    else
+      args.push_back(argv[i]);
+    if (a.rfind("--benchmark_repetitions=", 0) == 0)
+      repetitions = std::max(1, std::atoi(a.c_str() + 24));
   }
   int n = static_cast<int>(args.size());
   benchmark::Initialize(&n, args.data());

@@ -29,14 +29,16 @@ int main(int argc, char** argv) {
   const std::filesystem::path root = std::filesystem::path(settings.paths.database) / pages;
   for (const auto& e : std::filesystem::recursive_directory_iterator(root))
     if (e.is_regular_file() && e.path().extension() == ".yml")
-      specs.push_back(std::filesystem::relative(e.path(), std::filesystem::path(settings.paths.database) / "data")
+      specs.push_back(std::filesystem::relative(
+                          e.path(), std::filesystem::path(settings.paths.database) / "data")
                           .replace_extension("")
                           .string());
   std::sort(specs.begin(), specs.end());
   std::vector<analysis::LoadedMaterial> materials;
   for (const auto& s : specs) {
     try {
-      materials.push_back(analysis::load_material(ctx, spectral::resolve_material(s, settings.paths)));
+      materials.push_back(
+          analysis::load_material(ctx, spectral::resolve_material(s, settings.paths)));
     } catch (const std::exception&) {
       // refused pages are not in the gallery
     }
@@ -46,16 +48,20 @@ int main(int argc, char** argv) {
   const auto studies = analysis::study_materials(ctx, materials, options);
   report::HtmlReport page;
   page.title = "Database gallery";
-  const std::vector<analysis::Table> tables{analysis::presets_table(ctx, studies), analysis::models_table(ctx, studies)};
+  const std::vector<analysis::Table> tables{analysis::presets_table(ctx, studies),
+                                            analysis::models_table(ctx, studies)};
   page.tables = tables;
   page.gallery = report::catalog_gallery(ctx, studies, page.tables[0], false, {});
   const auto html = report::html_report(page);
   const auto gallery = report::gallery_html(page.gallery);
-  const auto presets = report::table_html(page.tables[0], "p"), models = report::table_html(page.tables[1], "m");
-  fmt::print("{} pages under {}, {} loaded: index.html {} bytes (gallery {}, presets table {}, models table {} with {} "
-             "rows)\n",
-             specs.size(), pages, materials.size(), html.size(), gallery.size(), presets.size(), models.size(),
-             page.tables[1].rows.size());
+  const auto presets = report::table_html(page.tables[0], "p"),
+             models = report::table_html(page.tables[1], "m");
+  fmt::print(
+      "{} pages under {}, {} loaded: index.html {} bytes (gallery {}, presets table {}, models "
+      "table {} with {} "
+      "rows)\n",
+      specs.size(), pages, materials.size(), html.size(), gallery.size(), presets.size(),
+      models.size(), page.tables[1].rows.size());
   if (!out.empty()) report::write_file_atomic(out, html);
   return 0;
 }

@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -91,7 +91,8 @@ std::string report(const Timing& timing, const LtcReferenceTable& ref, const Ltc
   const auto tables = fl::analysis::ltc_comparison_tables(c);
   std::string s = fmt::format(
       "# LTC fit against ltc_code's published table\n\n"
-      "Written by `scripts/ltc_accuracy.sh` (`bench/ltc_accuracy`), not by `reproduce`: the fit and "
+      "Written by `scripts/ltc_accuracy.sh` (`bench/ltc_accuracy`), not by `reproduce`: the fit "
+      "and "
       "the evaluation take seconds, and the timing depends on the machine.\n\n"
       "- Tables: `fresnel-lab lut ltc --size 64` (this tool) and ltc_code's `fit/results/ltc.inc` "
       "(Heitz, Dupuy, Hill & Neubelt 2016), the same 64 × 64 cells (view x = sqrt(1 - cos θ), θ "
@@ -119,17 +120,22 @@ int main(int argc, char** argv) {
   int runs = 5;
   for (int k = 1; k + 1 < argc; k += 2) {
     const std::string flag = argv[k];
-    if (flag == "--out") out = argv[k + 1];
-    else if (flag == "--runs") runs = std::max(1, std::atoi(argv[k + 1]));
-    else if (flag == "--reference") reference = argv[k + 1];
+    if (flag == "--out")
+      out = argv[k + 1];
+    else if (flag == "--runs")
+      runs = std::max(1, std::atoi(argv[k + 1]));
+    else if (flag == "--reference")
+      reference = argv[k + 1];
   }
   try {
     const auto ref = fl::analysis::read_ltc_code_table(reference);
     const Timing timing = time_fits(runs);
     const auto c = fl::analysis::compare_ltc_tables(timing.table, ref, kHeldOutSamples);
     const std::string md = report(timing, ref, c);
-    if (out.empty()) std::fputs(md.c_str(), stdout);
-    else fl::report::write_file_atomic(out, md);
+    if (out.empty())
+      std::fputs(md.c_str(), stdout);
+    else
+      fl::report::write_file_atomic(out, md);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ltc_accuracy: %s\n", e.what());
     return 2;

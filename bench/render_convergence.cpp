@@ -2,7 +2,8 @@
 // materials under HDR environments at increasing sample counts and compares each heat map with one
 // rendered at a reference count, pixel by pixel (max and 99.9th percentile of |ΔE − ΔE_ref|),
 // and times each pass. Prints a Markdown table.
-//   render_convergence --env DIR [--size N] [--roughness R] [--reference N] [--counts a,b] [--materials a,b]
+//   render_convergence --env DIR [--size N] [--roughness R] [--reference N] [--counts a,b]
+//   [--materials a,b]
 //                      [--envs a,b]
 #include <fmt/format.h>
 
@@ -43,12 +44,18 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
-    if (k == "--env") o.env_dir = v;
-    else if (k == "--size") o.size = std::stoi(v);
-    else if (k == "--roughness") o.roughness = std::stod(v);
-    else if (k == "--reference") o.reference = std::stoi(v);
-    else if (k == "--materials") o.materials = v;
-    else if (k == "--envs") o.envs = v;
+    if (k == "--env")
+      o.env_dir = v;
+    else if (k == "--size")
+      o.size = std::stoi(v);
+    else if (k == "--roughness")
+      o.roughness = std::stod(v);
+    else if (k == "--reference")
+      o.reference = std::stoi(v);
+    else if (k == "--materials")
+      o.materials = v;
+    else if (k == "--envs")
+      o.envs = v;
     else if (k == "--counts") {
       o.counts.clear();
       for (const auto& c : split(v)) o.counts.push_back(std::stoi(c));
@@ -67,14 +74,17 @@ std::pair<double, double> difference(const std::vector<double>& a, const std::ve
   return {d.back(), d[static_cast<size_t>(0.999 * (d.size() - 1))]};
 }
 
-analysis::MaterialRender timed_render(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                                      const analysis::SceneLight& light, const Options& o, int samples, double& secs) {
+analysis::MaterialRender timed_render(const analysis::Context& ctx,
+                                      const analysis::LoadedMaterial& m,
+                                      const analysis::SceneLight& light, const Options& o,
+                                      int samples, double& secs) {
   analysis::RenderSettings rs;
   rs.size_px = o.size;
   rs.roughness = o.roughness;
   rs.samples = samples;
   const auto t0 = std::chrono::steady_clock::now();
-  auto r = analysis::render_material(ctx, m, light, report::parse_models("schlick,f82,gulbrandsen"), "derived", rs);
+  auto r = analysis::render_material(ctx, m, light, report::parse_models("schlick,f82,gulbrandsen"),
+                                     "derived", rs);
   secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
@@ -86,10 +96,14 @@ int main(int argc, char** argv) {
   analysis::Settings settings;
   settings.paths = {FRESNEL_LAB_DEFAULT_DB, FRESNEL_LAB_DEFAULT_MATERIALS};
   const analysis::Context ctx(settings);
-  fmt::print("Heat-map convergence: {}² px, roughness {:g}, reference {} samples per strategy; |ΔE2000 − reference| "
-             "over the models schlick, f82, gulbrandsen (max over the three)\n\n",
-             o.size, o.roughness, o.reference);
-  fmt::print("| material | environment | samples | max | p99.9 | seconds (4 images, one pass) |\n|---|---|---|---|---|---|\n");
+  fmt::print(
+      "Heat-map convergence: {}² px, roughness {:g}, reference {} samples per strategy; |ΔE2000 − "
+      "reference| "
+      "over the models schlick, f82, gulbrandsen (max over the three)\n\n",
+      o.size, o.roughness, o.reference);
+  fmt::print(
+      "| material | environment | samples | max | p99.9 | seconds (4 images, one pass) "
+      "|\n|---|---|---|---|---|---|\n");
   for (const auto& env_name : split(o.envs)) {
     const auto env = report::load_environment(ctx, o.env_dir + "/" + env_name + ".exr", "", 0, 0);
     const analysis::SceneLight light = env.map;
@@ -104,7 +118,8 @@ int main(int argc, char** argv) {
           const auto [mx, p] = difference(r.models[i].de2000, ref.models[i].de2000);
           worst = std::max(worst, mx), worst_p = std::max(worst_p, p);
         }
-        fmt::print("| {} | {} | {} | {:.3f} | {:.3f} | {:.2f} |\n", m.material.name, env_name, n, worst, worst_p, secs);
+        fmt::print("| {} | {} | {} | {:.3f} | {:.3f} | {:.2f} |\n", m.material.name, env_name, n,
+                   worst, worst_p, secs);
         std::fflush(stdout);
       }
     }

@@ -5,10 +5,8 @@
 
 #include "cli/app.h"
 #include "spectral/errors.h"
-#include "util/memory.h"
 
 int main(int argc, char** argv) {
-  fl::use_huge_pages_for_heap();
   try {
     return fl::cli::run(argc, argv);
   } catch (const fl::InputError& e) {

@@ -24,7 +24,9 @@ inline double lambda(double cos_t, double alpha) {
   return 0.5 * (-1 + std::sqrt(1 + alpha * alpha * tan2));
 }
 // Heitz 2014, eq. 99: the height-correlated masking-shadowing G₂ = 1 / (1 + Λ(v) + Λ(l)).
-inline double g2(double nov, double nol, double alpha) { return 1 / (1 + lambda(nov, alpha) + lambda(nol, alpha)); }
+inline double g2(double nov, double nol, double alpha) {
+  return 1 / (1 + lambda(nov, alpha) + lambda(nol, alpha));
+}
 // Cook–Torrance without Fresnel, times the cosine: f·(n·l) = D G₂ / (4 (n·v)).
 inline double lobe_cos(const brdf::Vec3& v, const brdf::Vec3& l, double alpha) {
   if (l.z <= 0 || v.z <= 0) return 0;

@@ -74,7 +74,8 @@ V integrate_panel(const F& f, double a, double b, const GaussRule& g) {
 // Panels on [0, end]: the given breakpoints, geometric steps from α/16 (where a GGX lobe of
 // width α varies), and at most 0.1 rad.
 template <class V = double, class F>
-V integrate_theta(const F& f, double end, double alpha, std::vector<double> breaks, const GaussRule& g) {
+V integrate_theta(const F& f, double end, double alpha, std::vector<double> breaks,
+                  const GaussRule& g) {
   for (double t = alpha / 16; t < end; t *= 2) breaks.push_back(t);
   for (double t = 0.1; t < end; t += 0.1) breaks.push_back(t);
   breaks.push_back(0);
@@ -90,28 +91,33 @@ V integrate_theta(const F& f, double end, double alpha, std::vector<double> brea
 
 // ∫ f(x, y, z) dω over the unit sphere's directions with polar angle θ ≤ theta_end from +Z,
 // panels in θ (refined near θ = 0 at the scale `alpha`), two panels in φ.
-inline double integrate_sphere(const std::function<double(double, double, double)>& f, double theta_end,
-                               double alpha = 0.05) {
+inline double integrate_sphere(const std::function<double(double, double, double)>& f,
+                               double theta_end, double alpha = 0.05) {
   static const GaussRule g_theta = gauss_legendre(16), g_phi = gauss_legendre(48);
   return integrate_theta(
       [&](double t) {
         const double st = std::sin(t), ct = std::cos(t);
         double s = 0;
         for (int half = 0; half < 2; ++half)
-          s += integrate_panel([&](double phi) { return f(st * std::cos(phi), st * std::sin(phi), ct); },
-                               half * std::numbers::pi, (half + 1) * std::numbers::pi, g_phi);
+          s += integrate_panel(
+              [&](double phi) { return f(st * std::cos(phi), st * std::sin(phi), ct); },
+              half * std::numbers::pi, (half + 1) * std::numbers::pi, g_phi);
         return s * st;
       },
       theta_end, alpha, {}, g_theta);
 }
 
-// ∫ f(ω) dω over the hemisphere ω·axis ≥ 0 (axis a unit vector in the xz-plane), in polar coordinates
-// about the axis, so a density whose support is that hemisphere has its edge on a panel boundary.
+// ∫ f(ω) dω over the hemisphere ω·axis ≥ 0 (axis a unit vector in the xz-plane), in polar
+// coordinates about the axis, so a density whose support is that hemisphere has its edge on a panel
+// boundary.
 inline double integrate_hemisphere_about(double axis_x, double axis_z,
-                                         const std::function<double(double, double, double)>& f, double alpha = 0.05) {
+                                         const std::function<double(double, double, double)>& f,
+                                         double alpha = 0.05) {
   // The frame (X, Y, A) with X = Y × A: a point (x, y, z) of it is x X + y Y + z A.
   return integrate_sphere(
-      [&](double x, double y, double z) { return f(x * axis_z + z * axis_x, y, -x * axis_x + z * axis_z); },
+      [&](double x, double y, double z) {
+        return f(x * axis_z + z * axis_x, y, -x * axis_x + z * axis_z);
+      },
       std::numbers::pi / 2, alpha);
 }
 

@@ -53,6 +53,9 @@ inline CommandResult run_command(const std::string& cmdline) {
   return r;
 }
 
-inline std::string cli() { return std::string("'") + FL_CLI + "' --db '" + FL_DEFAULT_DB + "' --materials '" + FL_MATERIALS + "'"; }
+inline std::string cli() {
+  return std::string("'") + FL_CLI + "' --db '" + FL_DEFAULT_DB + "' --materials '" + FL_MATERIALS +
+         "'";
+}
 
 }  // namespace fl::test

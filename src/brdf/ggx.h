@@ -3,7 +3,8 @@
 // low-discrepancy points used to integrate them. Pure functions; no third-party dependencies.
 //
 // Frame: the surface normal is n = (0, 0, 1); an isotropic lobe is evaluated with the view
-// vector in the xz-plane, v = (sinθ_v, 0, cosθ_v). alpha is the GGX width α = perceptual_roughness².
+// vector in the xz-plane, v = (sinθ_v, 0, cosθ_v). alpha is the GGX width α =
+// perceptual_roughness².
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -30,8 +31,11 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
-// max(0, x) for a number x as glibc's fmax(0.0, x) gives it (−0 stays −0), without the library call.
-inline double max0(double x) { return x < 0.0 ? 0.0 : x; }
+// max(0, x) for a number x as glibc's fmax(0.0, x) gives it (−0 stays −0), without the library
+// call.
+inline double max0(double x) {
+  return x < 0.0 ? 0.0 : x;
+}
 
 // The view vector of an isotropic lobe at cosθ_v = nov (clamped to [0, 1]).
 inline Vec3 view_from_nov(double nov) {
@@ -60,7 +64,8 @@ T smith_ggx_correlated_visibility(T nov, T nol, T alpha) {
   return 0.5 / (ggx_v + ggx_l);
 }
 
-// Heitz 2014, eq. 43 for GGX: Smith masking of one direction, G₁ = 2 (n·v) / ((n·v) + √(α² + (1 − α²)(n·v)²)).
+// Heitz 2014, eq. 43 for GGX: Smith masking of one direction, G₁ = 2 (n·v) / ((n·v) + √(α² + (1 −
+// α²)(n·v)²)).
 template <class T>
 T smith_ggx_g1(T nov, T alpha) {
   using std::sqrt;
@@ -103,7 +108,8 @@ struct GgxVndfSampler {
   GgxVndfSampler(const Vec3& v, double alpha_) : alpha(alpha_) {
     vh = normalize(Vec3{alpha * v.x, alpha * v.y, v.z});
     const double len2 = vh.x * vh.x + vh.y * vh.y;
-    t1 = len2 > 0.0 ? Vec3{-vh.y / std::sqrt(len2), vh.x / std::sqrt(len2), 0.0} : Vec3{1.0, 0.0, 0.0};
+    t1 = len2 > 0.0 ? Vec3{-vh.y / std::sqrt(len2), vh.x / std::sqrt(len2), 0.0}
+                    : Vec3{1.0, 0.0, 0.0};
     t2 = cross(vh, t1);
     s = 0.5 * (1.0 + vh.z);
   }
@@ -135,10 +141,12 @@ inline double ggx_vndf_reflection_pdf(double nov, double noh, double alpha) {
 }
 
 // Heitz 2018, eq. 17 applied to the lobe: with l from VNDF sampling the estimator of
-// ∫ D V (n·l) dω_l is D V (n·l) / p(l) = 4 V (n·v)(n·l) / G₁(v) = G₂(v, l) / G₁(v), and 0 below the horizon.
+// ∫ D V (n·l) dω_l is D V (n·l) / p(l) = 4 V (n·v)(n·l) / G₁(v) = G₂(v, l) / G₁(v), and 0 below the
+// horizon.
 inline double ggx_vndf_weight(double nov, double nol, double alpha) {
   if (nol <= 0.0) return 0.0;
-  return 4.0 * smith_ggx_correlated_visibility(nov, nol, alpha) * nov * nol / smith_ggx_g1(nov, alpha);
+  return 4.0 * smith_ggx_correlated_visibility(nov, nol, alpha) * nov * nol /
+         smith_ggx_g1(nov, alpha);
 }
 
 // ggx_vndf_weight at one view, with the view's factors (its Smith term √((n·v)²(1 − α²) + α²) and
@@ -146,9 +154,13 @@ inline double ggx_vndf_weight(double nov, double nol, double alpha) {
 struct GgxVndfWeight {
   double nov = 1, a2 = 1, view_root = 1, g1 = 1;
   GgxVndfWeight(double nov_, double alpha)
-      : nov(nov_), a2(alpha * alpha), view_root(std::sqrt(nov * nov * (1.0 - a2) + a2)), g1(smith_ggx_g1(nov, alpha)) {}
+      : nov(nov_),
+        a2(alpha * alpha),
+        view_root(std::sqrt(nov * nov * (1.0 - a2) + a2)),
+        g1(smith_ggx_g1(nov, alpha)) {}
   double operator()(double nol) const {
-    const double visibility = 0.5 / (nol * view_root + nov * std::sqrt(nol * nol * (1.0 - a2) + a2));
+    const double visibility =
+        0.5 / (nol * view_root + nov * std::sqrt(nol * nol * (1.0 - a2) + a2));
     return nol <= 0.0 ? 0.0 : 4.0 * visibility * nov * nol / g1;
   }
 };

@@ -17,6 +17,8 @@ inline double charlie_ndf(double noh, double alpha) {
 // Neubelt & Pettineo 2013, "Crafting a Next-Gen Material Pipeline for The Order: 1886": the sheen
 // visibility V = 1 / (4 (n·l + n·v − (n·l)(n·v))), which already holds the 1/(4 (n·l)(n·v)) of the
 // microfacet BRDF: f = D V.
-inline double neubelt_visibility(double nov, double nol) { return 1.0 / (4.0 * (nol + nov - nol * nov)); }
+inline double neubelt_visibility(double nov, double nol) {
+  return 1.0 / (4.0 * (nol + nov - nol * nov));
+}
 
 }  // namespace fl::brdf

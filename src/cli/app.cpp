@@ -23,10 +23,12 @@ void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMa
 }
 
 const char* const kMaterialsHelp =
-    "catalog names (gold), database pages (main/Au/nk/Johnson), page globs ('main/*/nk/*', '**') or files "
+    "catalog names (gold), database pages (main/Au/nk/Johnson), page globs ('main/*/nk/*', '**') "
+    "or files "
     "(refractiveindex.info .yml, CSV/text tables, SOPRA .nk, NAME.eta.spd + NAME.k.spd)";
 
-std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g, const analysis::Context& ctx,
+std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g,
+                                                const analysis::Context& ctx,
                                                 const std::vector<std::string>& specs) {
   analysis::LoadPolicy policy;
   policy.min_coverage = std::max(0.0, g.min_coverage);
@@ -35,7 +37,8 @@ std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g, const an
   for (const auto& s : set.skipped) progress(g, fmt::format("skipped {}: {}", s.spec, s.reason));
   if (!set.skipped.empty())
     progress(g, fmt::format("skipped {} of {} materials", set.skipped.size(), set.requested));
-  if (set.materials.empty()) throw InputError("no material left to work on (every one was skipped)");
+  if (set.materials.empty())
+    throw InputError("no material left to work on (every one was skipped)");
   return std::move(set.materials);
 }
 
@@ -43,14 +46,17 @@ std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::
   const bool tty = ::isatty(STDERR_FILENO);
   return [&g, what, tty](int done, int total) {
     if (g.quiet || (!tty && done != total)) return;
-    fmt::print(stderr, "{}{}{}/{} materials{}", tty ? "\r" : "", what, done, total, done == total ? "\n" : "");
+    fmt::print(stderr, "{}{}{}/{} materials{}", tty ? "\r" : "", what, done, total,
+               done == total ? "\n" : "");
   };
 }
 
-std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const std::string& what, double seconds) {
+std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const std::string& what,
+                                                double seconds) {
   const bool tty = ::isatty(STDERR_FILENO);
   const auto t0 = std::chrono::steady_clock::now();
-  auto last = std::make_shared<std::pair<int, double>>(0, 0.0);  // (tenths reported, seconds at the last line)
+  auto last = std::make_shared<std::pair<int, double>>(
+      0, 0.0);  // (tenths reported, seconds at the last line)
   return [&g, what, tty, t0, last, seconds](int done, int total) {
     if (g.quiet || total <= 0) return;
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -75,8 +81,9 @@ int write_output(const GlobalOptions& g, const report::Output& out) {
 analysis::Context make_context(const GlobalOptions& g) {
   std::error_code ec;
   if (!std::filesystem::is_directory(g.settings.paths.database + "/data", ec))
-    throw InputError(g.settings.paths.database, 0,
-                     "not a refractiveindex.info database (no data/ folder); set --db or FRESNEL_LAB_DB");
+    throw InputError(
+        g.settings.paths.database, 0,
+        "not a refractiveindex.info database (no data/ folder); set --db or FRESNEL_LAB_DB");
   return analysis::Context(g.settings);
 }
 
@@ -103,7 +110,9 @@ std::optional<std::string> unknown_command(int argc, char** argv) {
 }  // namespace
 
 int run(int argc, char** argv) {
-  CLI::App app{"Fresnel Lab: spectral ground truth, Fresnel approximations and their parameters, in CIEDE2000."};
+  CLI::App app{
+      "Fresnel Lab: spectral ground truth, Fresnel approximations and their parameters, in "
+      "CIEDE2000."};
   app.name("fresnel-lab");
   app.require_subcommand(1);
   GlobalOptions g;
@@ -113,25 +122,40 @@ int run(int argc, char** argv) {
   s.paths.materials = FRESNEL_LAB_DEFAULT_MATERIALS;
   if (const char* env_ocio = std::getenv("OCIO"); env_ocio && *env_ocio) s.ocio_config = env_ocio;
 
-  app.add_option("--db", s.paths.database, "refractiveindex.info database root (the folder holding data/); default $FRESNEL_LAB_DB")
+  app.add_option(
+         "--db", s.paths.database,
+         "refractiveindex.info database root (the folder holding data/); default $FRESNEL_LAB_DB")
       ->capture_default_str();
-  app.add_option("--materials", s.paths.materials, "material catalog folder")->capture_default_str();
-  app.add_option("--space", s.space, "working space: acescg, lin_rec709, aces2065-1, lin_rec2020, lin_p3d65 (or a space of --ocio-config)")
+  app.add_option("--materials", s.paths.materials, "material catalog folder")
       ->capture_default_str();
-  app.add_option("--illuminant", s.illuminant,
-                 "D50, D55, D60, D65, D75, A, E, or Dnnnn (daylight at nnnn K); default: the working space's reference "
-                 "white (D60 for acescg and aces2065-1, D65 for lin_rec709, lin_rec2020, lin_p3d65)");
-  app.add_option("--angles", s.angles, "incidence-angle samples over [0°, 90°]")->capture_default_str();
-  app.add_option("--adaptation", s.adaptation, "chromatic adaptation: bradford, cat02, none")->capture_default_str();
-  app.add_option("--step-nm", s.step_nm, "spectral step, 5 or 1 nm (360-830 nm)")->capture_default_str();
-  app.add_option("--ocio-config", s.ocio_config, "an OpenColorIO config whose colour-space names --space takes (default $OCIO; empty: built-in spaces)");
-  app.add_option("--ocio-xyz", s.ocio_xyz, "the config's CIE XYZ D65 space (default: role cie_xyz_d65_interchange)");
+  app.add_option("--space", s.space,
+                 "working space: acescg, lin_rec709, aces2065-1, lin_rec2020, lin_p3d65 (or a "
+                 "space of --ocio-config)")
+      ->capture_default_str();
+  app.add_option(
+      "--illuminant", s.illuminant,
+      "D50, D55, D60, D65, D75, A, E, or Dnnnn (daylight at nnnn K); default: the working space's "
+      "reference "
+      "white (D60 for acescg and aces2065-1, D65 for lin_rec709, lin_rec2020, lin_p3d65)");
+  app.add_option("--angles", s.angles, "incidence-angle samples over [0°, 90°]")
+      ->capture_default_str();
+  app.add_option("--adaptation", s.adaptation, "chromatic adaptation: bradford, cat02, none")
+      ->capture_default_str();
+  app.add_option("--step-nm", s.step_nm, "spectral step, 5 or 1 nm (360-830 nm)")
+      ->capture_default_str();
+  app.add_option("--ocio-config", s.ocio_config,
+                 "an OpenColorIO config whose colour-space names --space takes (default $OCIO; "
+                 "empty: built-in spaces)");
+  app.add_option("--ocio-xyz", s.ocio_xyz,
+                 "the config's CIE XYZ D65 space (default: role cie_xyz_d65_interchange)");
   app.add_option("--ocio-white", s.ocio_white,
-                 "white of the --space colour space of the config: ACES or an illuminant name (default: the built-in "
+                 "white of the --space colour space of the config: ACES or an illuminant name "
+                 "(default: the built-in "
                  "space whose matrix it has, else D65)");
   app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
   app.add_option("--min-coverage", g.min_coverage,
-                 "refuse (one material) or skip (several) materials whose data covers less than this share of the "
+                 "refuse (one material) or skip (several) materials whose data covers less than "
+                 "this share of the "
                  "visible range, weighted by the illuminant x ybar (0-1; default 0, library 0.99)")
       ->check(CLI::Range(0.0, 1.0));
 
@@ -146,7 +170,8 @@ int run(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "fresnel-lab: error: {} (see fresnel-lab --help)\n", unknown_command(argc, argv).value_or(e.what()));
+    fmt::print(stderr, "fresnel-lab: error: {} (see fresnel-lab --help)\n",
+               unknown_command(argc, argv).value_or(e.what()));
     return 2;
   }
   if (!selected) throw InputError("no command given (see --help)");

@@ -1,7 +1,6 @@
 #pragma once
 // The command line: a table of subcommands, each returning an exit code.
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <string>
 
@@ -13,7 +12,7 @@ namespace fl::cli {
 
 struct GlobalOptions {
   analysis::Settings settings;
-  bool quiet = false;  // no progress or warnings on stderr
+  bool quiet = false;            // no progress or warnings on stderr
   analysis::BlendOptions blend;  // `table blend` options
   double min_coverage = -1;      // --min-coverage (negative: not given)
 };
@@ -41,7 +40,8 @@ analysis::Context make_context(const GlobalOptions& g);
 void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms);
 // MATERIALS (catalog names, database pages, page globs, files; none: the catalog) loaded under
 // --min-coverage, their warnings and the skipped ones printed.
-std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g, const analysis::Context& ctx,
+std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g,
+                                                const analysis::Context& ctx,
                                                 const std::vector<std::string>& specs);
 // The help text of a MATERIALS argument.
 extern const char* const kMaterialsHelp;
@@ -50,7 +50,8 @@ extern const char* const kMaterialsHelp;
 std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::string& what);
 // Progress for long runs: a live counter on a terminal; when stderr is not a terminal, a line at
 // every tenth of the work (and at least every `seconds`), with the elapsed time.
-std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const std::string& what, double seconds = 30);
+std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const std::string& what,
+                                                double seconds = 30);
 // Writes out.files (all or nothing), then prints out.messages; returns exit status 0.
 int write_output(const GlobalOptions& g, const report::Output& out);
 

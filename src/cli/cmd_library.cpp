@@ -12,20 +12,24 @@
 namespace fl::cli {
 
 void add_pages_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand(
-      "pages", "list database pages: book, class (from the data), visible coverage of n and k, reference, status");
+  auto* sub = app.add_subcommand("pages",
+                                 "list database pages: book, class (from the data), visible "
+                                 "coverage of n and k, reference, status");
   struct Args {
     std::vector<std::string> globs;
     std::string format = "csv";
   };
   auto a = std::make_shared<Args>();
-  sub->add_option("GLOB", a->globs, "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
+  sub->add_option("GLOB", a->globs,
+                  "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
   sub->add_option("--format", a->format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
       const auto f = report::format_from_name(a->format);
       const auto ctx = make_context(g);
-      fmt::print("{}", report::render(analysis::pages_table(ctx, a->globs, periodic_progress(g, "pages: reading ")), f));
+      fmt::print("{}", report::render(analysis::pages_table(
+                                          ctx, a->globs, periodic_progress(g, "pages: reading ")),
+                                      f));
       return 0;
     };
   });
@@ -43,20 +47,24 @@ std::optional<spectral::MaterialClass> class_option(const std::string& name) {
 }  // namespace
 
 void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand(
-      "library",
-      "presets of every database page matching globs (default: every conductor page covering the visible range): "
-      "every model derived and fitted, quality flags, CSV/MD/JSON, MaterialX, spread table, gallery");
+  auto* sub = app.add_subcommand("library",
+                                 "presets of every database page matching globs (default: every "
+                                 "conductor page covering the visible range): "
+                                 "every model derived and fitted, quality flags, CSV/MD/JSON, "
+                                 "MaterialX, spread table, gallery");
   struct Args {
     std::vector<std::string> globs;
     std::string out, cls = "metal";
     bool strict = false, no_gallery = false;
   };
   auto a = std::make_shared<Args>();
-  sub->add_option("GLOB", a->globs, "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
+  sub->add_option("GLOB", a->globs,
+                  "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
   sub->add_option("--out", a->out, "output folder (created if missing)")->required();
-  sub->add_option("--class", a->cls, "metal (conductors, from the data), dielectric or all")->capture_default_str();
-  sub->add_flag("--strict", a->strict, "fail on the first page that cannot be read instead of skipping it");
+  sub->add_option("--class", a->cls, "metal (conductors, from the data), dielectric or all")
+      ->capture_default_str();
+  sub->add_flag("--strict", a->strict,
+                "fail on the first page that cannot be read instead of skipping it");
   sub->add_flag("--no-gallery", a->no_gallery, "skip gallery.md and its strips/");
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
@@ -77,9 +85,12 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       auto files = report::library_files(ctx, lib, !a->no_gallery, command);
       for (auto& f : files) f.first = a->out + "/" + f.first;
       report::write_files_atomic(files);
-      progress(g, fmt::format("library: {} of {} pages in the library, {} skipped; wrote {} files to {} ({:.1f} s)",
-                              lib.studies.size(), lib.set.requested, lib.set.skipped.size(), files.size(), a->out,
-                              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
+      progress(
+          g,
+          fmt::format(
+              "library: {} of {} pages in the library, {} skipped; wrote {} files to {} ({:.1f} s)",
+              lib.studies.size(), lib.set.requested, lib.set.skipped.size(), files.size(), a->out,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
       return 0;
     };
   });

@@ -12,22 +12,28 @@
 namespace fl::cli {
 
 void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand(
-      "plan", "per scene material the cheapest Fresnel model within a ΔE2000 budget, and the lookup tables it needs");
+  auto* sub = app.add_subcommand("plan",
+                                 "per scene material the cheapest Fresnel model within a ΔE2000 "
+                                 "budget, and the lookup tables it needs");
   struct Args {
     std::string scene, format = "md", costs, gpu_costs, lang = "glsl";
     bool shader = false;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("SCENE", a->scene,
-                  "scene YAML: materials (list; an entry may be {name, roughness}), max_de00 (default 1.0), space, "
+                  "scene YAML: materials (list; an entry may be {name, roughness}), max_de00 "
+                  "(default 1.0), space, "
                   "lighting (punctual, ibl, area), roughness")
       ->required();
   sub->add_option("--format", a->format, "json or md")->capture_default_str();
-  sub->add_option("--costs", a->costs, "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
-  sub->add_option("--gpu-costs", a->gpu_costs,
-                  "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the committed bench/gpu_costs.csv)");
-  sub->add_flag("--shader", a->shader, "print the scene-wide model's shader code instead of the plan");
+  sub->add_option(
+      "--costs", a->costs,
+      "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
+  sub->add_option(
+      "--gpu-costs", a->gpu_costs,
+      "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the committed bench/gpu_costs.csv)");
+  sub->add_flag("--shader", a->shader,
+                "print the scene-wide model's shader code instead of the plan");
   sub->add_option("--lang", a->lang, "with --shader: glsl or hlsl")->capture_default_str();
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
@@ -35,7 +41,8 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
         throw InputError(fmt::format("--format must be json or md, not '{}'", a->format));
       const auto lang = analysis::shader_language_from_name(a->lang);
       auto scene = analysis::read_scene(a->scene);
-      const analysis::PlanCosts costs{analysis::load_model_costs(a->costs), analysis::load_gpu_costs(a->gpu_costs)};
+      const analysis::PlanCosts costs{analysis::load_model_costs(a->costs),
+                                      analysis::load_gpu_costs(a->gpu_costs)};
       GlobalOptions run = g;
       if (!scene.space.empty()) run.settings.space = scene.space;
       const auto ctx = [&] {
@@ -48,10 +55,14 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       }();
       const auto ms = analysis::load_scene_materials(ctx, scene);
       print_warnings(g, ms);
-      const auto studies = analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
+      const auto studies =
+          analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
       const auto p = analysis::make_plan(scene, ctx, studies, costs);
-      if (a->shader) fmt::print("{}", report::plan_shader(p, lang));
-      else fmt::print("{}", a->format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs));
+      if (a->shader)
+        fmt::print("{}", report::plan_shader(p, lang));
+      else
+        fmt::print("{}",
+                   a->format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs));
       return 0;
     };
   });

@@ -8,18 +8,21 @@
 namespace fl::cli {
 namespace {
 
-void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, const char* name, const char* help,
-                         const char* default_models, const char* out_help) {
+void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, const char* name,
+                         const char* help, const char* default_models, const char* out_help) {
   auto* sub = plot.add_subcommand(name, help);
   auto r = std::make_shared<report::PlotRequest>();
   r->figure = name;
   r->models = default_models;
   sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
-  sub->add_option("--models", r->models, "comma-separated models, or all: " + analysis::model_names())
+  sub->add_option("--models", r->models,
+                  "comma-separated models, or all: " + analysis::model_names())
       ->capture_default_str();
   sub->add_option("--params", r->params, "derived (from the spectral procedure) or fitted (Ceres)")
       ->capture_default_str();
-  sub->add_option("--out", r->out, std::string(out_help) + "; with several materials '{name}' in it is replaced by each one's name")
+  sub->add_option("--out", r->out,
+                  std::string(out_help) +
+                      "; with several materials '{name}' in it is replaced by each one's name")
       ->required();
   sub->callback([&g, &selected, r] {
     selected = [&g, r] {
@@ -33,46 +36,63 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
 }  // namespace
 
 void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* plot = app.add_subcommand("plot", "figures: strip (colour strips) | curves (reflectance and ΔE2000 plots)");
+  auto* plot = app.add_subcommand(
+      "plot", "figures: strip (colour strips) | curves (reflectance and ΔE2000 plots)");
   plot->require_subcommand(1);
-  add_plot_subcommand(*plot, g, selected, "strip",
-                      "stacked colour strips over 0°–90° and 80°–90°: ground truth and each model (sRGB via OCIO)",
-                      "all", "output file (.png, .svg or .pdf)");
-  add_plot_subcommand(*plot, g, selected, "curves",
-                      "R, G, B reflectance against angle (truth and models) and ΔE2000 against angle",
-                      "schlick,f82,gulbrandsen", "output file (.png, .svg or .pdf)");
+  add_plot_subcommand(
+      *plot, g, selected, "strip",
+      "stacked colour strips over 0°–90° and 80°–90°: ground truth and each model (sRGB via OCIO)",
+      "all", "output file (.png, .svg or .pdf)");
+  add_plot_subcommand(
+      *plot, g, selected, "curves",
+      "R, G, B reflectance against angle (truth and models) and ΔE2000 against angle",
+      "schlick,f82,gulbrandsen", "output file (.png, .svg or .pdf)");
 }
 
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand(
-      "render",
-      "a GGX sphere under an analytic sky and key light or a latitude-longitude EXR environment: FILE.exr and "
-      "FILE.png; with a model also FILE.truth.png and the ΔE2000 heat map FILE.de2000.png; with --compare the truth "
-      "and every model, heat maps, an animated flip (FILE.flip.gif) and a contact sheet (FILE.sheet.png)");
+  auto* sub = app.add_subcommand("render",
+                                 "a GGX sphere under an analytic sky and key light or a "
+                                 "latitude-longitude EXR environment: FILE.exr and "
+                                 "FILE.png; with a model also FILE.truth.png and the ΔE2000 heat "
+                                 "map FILE.de2000.png; with --compare the truth "
+                                 "and every model, heat maps, an animated flip (FILE.flip.gif) and "
+                                 "a contact sheet (FILE.sheet.png)");
   auto r = std::make_shared<report::RenderRequest>();
   sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
-  sub->add_option("--model", r->model, "truth (spectral ground truth) or a model: " + analysis::model_names())
+  sub->add_option("--model", r->model,
+                  "truth (spectral ground truth) or a model: " + analysis::model_names())
       ->capture_default_str();
-  auto* compare = sub->add_option("--compare", r->compare,
-                                  "comma-separated models (or all) rendered against the truth in one pass");
+  auto* compare =
+      sub->add_option("--compare", r->compare,
+                      "comma-separated models (or all) rendered against the truth in one pass");
   sub->get_option("--model")->excludes(compare);
-  sub->add_option("--params", r->params, "derived or fitted model parameters")->capture_default_str();
-  sub->add_option("--env", r->env, "a latitude-longitude OpenEXR environment (default: the analytic sky)");
-  sub->add_option("--env-space", r->env_space,
-                  "the environment's colour space (default: its chromaticities attribute, else lin_rec709)");
-  sub->add_option("--env-rotate", r->env_rotate_deg, "environment rotation about the vertical axis, degrees")
+  sub->add_option("--params", r->params, "derived or fitted model parameters")
+      ->capture_default_str();
+  sub->add_option("--env", r->env,
+                  "a latitude-longitude OpenEXR environment (default: the analytic sky)");
+  sub->add_option(
+      "--env-space", r->env_space,
+      "the environment's colour space (default: its chromaticities attribute, else lin_rec709)");
+  sub->add_option("--env-rotate", r->env_rotate_deg,
+                  "environment rotation about the vertical axis, degrees")
       ->capture_default_str();
   sub->add_option("--env-exposure", r->env_exposure_ev,
-                  "stops above the environment's normalization (mean luminance 1: a white diffuse ball reads 1)")
+                  "stops above the environment's normalization (mean luminance 1: a white diffuse "
+                  "ball reads 1)")
       ->capture_default_str();
-  sub->add_option("--roughness", r->settings.roughness, "GGX perceptual roughness (0: perfect mirror)")
+  sub->add_option("--roughness", r->settings.roughness,
+                  "GGX perceptual roughness (0: perfect mirror)")
       ->capture_default_str();
-  sub->add_option("--size", r->settings.size_px, "image width and height in pixels (odd: a pixel at the centre)")
+  sub->add_option("--size", r->settings.size_px,
+                  "image width and height in pixels (odd: a pixel at the centre)")
       ->capture_default_str();
-  sub->add_option("--samples", r->settings.samples, "samples per strategy per shading point")->capture_default_str();
-  sub->add_option("--threads", r->settings.threads, "worker threads (0: all cores)")->capture_default_str();
+  sub->add_option("--samples", r->settings.samples, "samples per strategy per shading point")
+      ->capture_default_str();
+  sub->add_option("--threads", r->settings.threads, "worker threads (0: all cores)")
+      ->capture_default_str();
   sub->add_option("--out", r->out,
-                  "output .exr (PNGs are written beside it); with several materials '{name}' in it is replaced by each "
+                  "output .exr (PNGs are written beside it); with several materials '{name}' in it "
+                  "is replaced by each "
                   "one's name")
       ->required();
   sub->callback([&g, &selected, r] {

@@ -12,26 +12,35 @@
 namespace fl::cli {
 
 void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand(
-      "speed", "every Fresnel model's cost per evaluation against its ΔE2000 error (table speed), with a plot");
+  auto* sub = app.add_subcommand("speed",
+                                 "every Fresnel model's cost per evaluation against its ΔE2000 "
+                                 "error (table speed), with a plot");
   struct Args {
     std::string format = "csv", costs, gpu_costs, plot;
     bool measure = false;
     std::vector<std::string> materials;
   };
   auto a = std::make_shared<Args>();
-  sub->add_option("MATERIALS", a->materials, std::string(kMaterialsHelp) + "; default: the catalog");
+  sub->add_option("MATERIALS", a->materials,
+                  std::string(kMaterialsHelp) + "; default: the catalog");
   sub->add_option("--format", a->format, "csv, md or json")->capture_default_str();
-  sub->add_option("--costs", a->costs, "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
-  sub->add_option("--gpu-costs", a->gpu_costs,
-                  "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the committed bench/gpu_costs.csv)");
-  sub->add_flag("--measure", a->measure, "time the batched kernels now instead of reading the costs file (not reproducible)");
-  sub->add_option("--plot", a->plot, "also write the error-against-cost plot to this file (.png, .svg or .pdf)");
+  sub->add_option(
+      "--costs", a->costs,
+      "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
+  sub->add_option(
+      "--gpu-costs", a->gpu_costs,
+      "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the committed bench/gpu_costs.csv)");
+  sub->add_flag(
+      "--measure", a->measure,
+      "time the batched kernels now instead of reading the costs file (not reproducible)");
+  sub->add_option("--plot", a->plot,
+                  "also write the error-against-cost plot to this file (.png, .svg or .pdf)");
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
       const auto f = report::format_from_name(a->format);
       if (!a->plot.empty()) report::file_type(a->plot);
-      const auto costs = a->measure ? analysis::measure_model_costs() : analysis::load_model_costs(a->costs);
+      const auto costs =
+          a->measure ? analysis::measure_model_costs() : analysis::load_model_costs(a->costs);
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, a->materials);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));

@@ -11,11 +11,11 @@
 
 namespace fl::cli {
 
-void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected);     // cli/cmd_lut.cpp
-void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_plot.cpp
-void add_render(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_plot.cpp
-void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_speed.cpp
-void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_plan.cpp
+void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected);              // cli/cmd_lut.cpp
+void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected);             // cli/cmd_plot.cpp
+void add_render(CLI::App& app, GlobalOptions& g, Runner& selected);           // cli/cmd_plot.cpp
+void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_speed.cpp
+void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected);     // cli/cmd_plan.cpp
 void add_pages_command(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_library.cpp
 void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_library.cpp
 void add_shader_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_shader.cpp
@@ -36,14 +36,17 @@ void add_materials(CLI::App& app, GlobalOptions& g, Runner& selected) {
 }
 
 void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand("curve", "per-angle ground truth RGB, model RGB and ΔE2000 per material (CSV)");
+  auto* sub = app.add_subcommand(
+      "curve", "per-angle ground truth RGB, model RGB and ΔE2000 per material (CSV)");
   auto materials = std::make_shared<std::vector<std::string>>();
   auto model = std::make_shared<std::string>("schlick");
   auto format = std::make_shared<std::string>("csv");
   auto params = std::make_shared<std::string>("derived");
   sub->add_option("MATERIALS", *materials, kMaterialsHelp)->required();
-  sub->add_option("--model", *model, "Fresnel model: " + analysis::model_names())->capture_default_str();
-  sub->add_option("--params", *params, "derived (from the spectral procedure) or fitted (Ceres)")->capture_default_str();
+  sub->add_option("--model", *model, "Fresnel model: " + analysis::model_names())
+      ->capture_default_str();
+  sub->add_option("--params", *params, "derived (from the spectral procedure) or fitted (Ceres)")
+      ->capture_default_str();
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, materials, model, format, params] {
     selected = [&g, materials, model, format, params] {
@@ -59,7 +62,8 @@ void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
 
 void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
   std::string names;
-  for (const auto& t : analysis::table_specs()) names += (names.empty() ? "" : " | ") + std::string(t.name);
+  for (const auto& t : analysis::table_specs())
+    names += (names.empty() ? "" : " | ") + std::string(t.name);
   auto* sub = app.add_subcommand("table", "one report table to stdout: " + names);
   auto name = std::make_shared<std::string>();
   auto materials = std::make_shared<std::vector<std::string>>();
@@ -67,8 +71,10 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("NAME", *name, names)->required();
   sub->add_option("MATERIALS", *materials, std::string(kMaterialsHelp) + "; default: the catalog");
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
-  sub->add_option("--blend-weight", g.blend.weight, "blend tables: share of the second material")->capture_default_str();
-  sub->add_option("--blend-chain", g.blend.chain, "blend tables: materials per blend (2 = pairs; N blends N consecutive metals)")
+  sub->add_option("--blend-weight", g.blend.weight, "blend tables: share of the second material")
+      ->capture_default_str();
+  sub->add_option("--blend-chain", g.blend.chain,
+                  "blend tables: materials per blend (2 = pairs; N blends N consecutive metals)")
       ->capture_default_str();
   sub->callback([&g, &selected, name, materials, format] {
     selected = [&g, name, materials, format] {
@@ -84,15 +90,18 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
 }
 
 void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand("presets", "F0, F82, g, eta, kappa per material in the working space");
+  auto* sub =
+      app.add_subcommand("presets", "F0, F82, g, eta, kappa per material in the working space");
   struct Args {
     std::string format = "csv", shader;
     bool openpbr = false;
     std::vector<std::string> materials;
   };
   auto a = std::make_shared<Args>();
-  sub->add_option("MATERIALS", a->materials, std::string(kMaterialsHelp) + "; default: the catalog");
-  sub->add_option("--format", a->format, "csv, md, json, mtlx (a MaterialX document) or gltf (glTF 2.0 materials)")
+  sub->add_option("MATERIALS", a->materials,
+                  std::string(kMaterialsHelp) + "; default: the catalog");
+  sub->add_option("--format", a->format,
+                  "csv, md, json, mtlx (a MaterialX document) or gltf (glTF 2.0 materials)")
       ->capture_default_str();
   sub->add_flag("--openpbr", a->openpbr, "the OpenPBR Surface form (with mtlx: open_pbr_surface)");
   sub->add_option("--shader", a->shader,
@@ -101,24 +110,27 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
     selected = [&g, a] {
       const bool document = a->format == "mtlx" || a->format == "gltf";
       if (!document) report::format_from_name(a->format);  // validate before the work
-      const auto shader = report::materialx_shader_from_name(
-          !a->shader.empty() ? a->shader : a->openpbr ? "open_pbr_surface" : "generalized_schlick");
+      const auto shader = report::materialx_shader_from_name(!a->shader.empty() ? a->shader
+                                                             : a->openpbr       ? "open_pbr_surface"
+                                                                          : "generalized_schlick");
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, a->materials);
       if (document) {
         // Documents use the derived parameters only: no fits.
         analysis::StudyOptions derived_only;
         derived_only.fit = false;
-        const auto studies = analysis::study_materials(ctx, ms, derived_only, study_progress(g, "deriving: "));
+        const auto studies =
+            analysis::study_materials(ctx, ms, derived_only, study_progress(g, "deriving: "));
         fmt::print("{}", a->format == "mtlx" ? report::presets_materialx(ctx, studies, shader)
                                              : report::presets_gltf(ctx, studies));
         if (a->format == "mtlx" && !report::materialx_space(ctx).note.empty())
           progress(g, "presets: " + report::materialx_space(ctx).note);
         return 0;
       }
-      const auto studies =
-          analysis::study_materials(ctx, ms, analysis::presets_study_options(a->openpbr), study_progress(g, "fitting: "));
-      const auto t = a->openpbr ? analysis::openpbr_table(ctx, studies) : analysis::presets_table(ctx, studies);
+      const auto studies = analysis::study_materials(
+          ctx, ms, analysis::presets_study_options(a->openpbr), study_progress(g, "fitting: "));
+      const auto t = a->openpbr ? analysis::openpbr_table(ctx, studies)
+                                : analysis::presets_table(ctx, studies);
       fmt::print("{}", report::render(t, report::format_from_name(a->format)));
       return 0;
     };
@@ -126,18 +138,21 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
 }
 
 void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand("reproduce", "every table as DIR/NAME.csv and DIR/NAME.md, plus DIR/README.md");
+  auto* sub = app.add_subcommand("reproduce",
+                                 "every table as DIR/NAME.csv and DIR/NAME.md, plus DIR/README.md");
   auto out = std::make_shared<std::string>();
   sub->add_option("--out", *out, "output folder (created if missing)")->required();
   auto no_figures = std::make_shared<bool>(false);
-  sub->add_flag("--no-figures", *no_figures, "skip DIR/figures/ (colour strips and curve plots per material)");
+  sub->add_flag("--no-figures", *no_figures,
+                "skip DIR/figures/ (colour strips and curve plots per material)");
   sub->callback([&g, &selected, out, no_figures] {
     selected = [&g, out, no_figures] {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      auto files = report::reproduce_files(in, !*no_figures, [&g](const std::string& line) { progress(g, line); });
+      auto files = report::reproduce_files(in, !*no_figures,
+                                           [&g](const std::string& line) { progress(g, line); });
       for (auto& f : files) f.first = *out + "/" + f.first;
       report::write_files_atomic(files);
       progress(g, fmt::format("reproduce: wrote {} files to {}", files.size(), *out));

@@ -18,7 +18,8 @@ double pow7(double x) {
 // The mean hue h̄′ as (cos, sin): the midpoint of the shorter arc between the unit hue vectors, the
 // direction of m = u1 + u2, or, when the hues are more than 90° apart (u1 + u2 loses precision),
 // d = u2 − u1 turned by ∓90° (the sign of `cross` = u1 × u2).
-void mean_hue(double mx, double my, double m2, double dx, double dy, double d2, double cross, double& c, double& s) {
+void mean_hue(double mx, double my, double m2, double dx, double dy, double d2, double cross,
+              double& c, double& s) {
   double bx = mx, by = my, b2 = m2;
   if (m2 < d2) {
     bx = cross > 0.0 ? dy : -dy;
@@ -56,7 +57,8 @@ double rotation_term(double c, double s, double cp_bar) {
 }
 
 // ΔE00 from ΔL′, ΔC′, ΔH′, the means L̄′ and C̄′, and the T and R_T terms.
-double weighted_difference(double dl, double dc, double d_big_h, double l_bar, double cp_bar, double t, double rt) {
+double weighted_difference(double dl, double dc, double d_big_h, double l_bar, double cp_bar,
+                           double t, double rt) {
   const double l50 = (l_bar - 50.0) * (l_bar - 50.0);
   const double sl = 1.0 + 0.015 * l50 / std::sqrt(20.0 + l50);
   const double sc = 1.0 + 0.045 * cp_bar;
@@ -79,7 +81,8 @@ double ciede2000_fast(const Lab& lab1, const Lab& lab2) {
   if (!(c1p > 0.0) || !(c2p > 0.0)) return ciede2000<double>(lab1, lab2);
   // Unit hue vectors u = (a′, b)/C′.
   const double inv_c1p = 1.0 / c1p, inv_c2p = 1.0 / c2p;
-  const double u1x = a1p * inv_c1p, u1y = lab1.b * inv_c1p, u2x = a2p * inv_c2p, u2y = lab2.b * inv_c2p;
+  const double u1x = a1p * inv_c1p, u1y = lab1.b * inv_c1p, u2x = a2p * inv_c2p,
+               u2y = lab2.b * inv_c2p;
   // ΔH′ = 2·sqrt(C′1·C′2)·sin(Δh′/2) with Δh′ ∈ (−180°, 180°): |u2 − u1| = 2|sin(Δh′/2)|, and the
   // sign of Δh′ is the sign of u1 × u2.
   const double dx = u2x - u1x, dy = u2y - u1y;
@@ -92,8 +95,8 @@ double ciede2000_fast(const Lab& lab1, const Lab& lab2) {
   double c = 0, s = 0;
   mean_hue(mx, my, m2, dx, dy, d2, cross, c, s);
   const double cp_bar = 0.5 * (c1p + c2p);
-  return weighted_difference(lab2.L - lab1.L, c2p - c1p, d_big_h, 0.5 * (lab1.L + lab2.L), cp_bar, t_term(c, s),
-                             rotation_term(c, s, cp_bar));
+  return weighted_difference(lab2.L - lab1.L, c2p - c1p, d_big_h, 0.5 * (lab1.L + lab2.L), cp_bar,
+                             t_term(c, s), rotation_term(c, s, cp_bar));
 }
 
 }  // namespace fl::color

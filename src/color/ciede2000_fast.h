@@ -1,8 +1,8 @@
 #pragma once
 // A double-only CIEDE2000 for one pair at a time (optimizer costs, pairwise spreads); many pairs at
-// once go through ciede2000_batch (ciede2000_batch.h). Same result as the templated color::ciede2000
-// (lab.h) within 1e-12 (tests/color/test_lcms_agreement.cpp); the template stays the one Ceres
-// differentiates.
+// once go through ciede2000_batch (ciede2000_batch.h). Same result as the templated
+// color::ciede2000 (lab.h) within 1e-12 (tests/color/test_lcms_agreement.cpp); the template stays
+// the one Ceres differentiates.
 #include "color/types.h"
 
 namespace fl::color {

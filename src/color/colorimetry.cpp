@@ -10,14 +10,18 @@ Adaptation adaptation_from_name(const std::string& name) {
   if (name == "bradford") return Adaptation::Bradford;
   if (name == "cat02") return Adaptation::Cat02;
   if (name == "none") return Adaptation::None;
-  throw InputError(fmt::format("unknown chromatic adaptation '{}' (expected bradford, cat02 or none)", name));
+  throw InputError(
+      fmt::format("unknown chromatic adaptation '{}' (expected bradford, cat02 or none)", name));
 }
 
 const char* to_string(Adaptation a) {
   switch (a) {
-    case Adaptation::Bradford: return "bradford";
-    case Adaptation::Cat02: return "cat02";
-    default: return "none";
+    case Adaptation::Bradford:
+      return "bradford";
+    case Adaptation::Cat02:
+      return "cat02";
+    default:
+      return "none";
   }
 }
 

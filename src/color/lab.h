@@ -38,11 +38,11 @@ struct De2000Terms {
 // kL = kC = kH = 1. Hue angles in degrees; 25^7 is the formula's chroma constant.
 template <class T>
 De2000Terms<T> ciede2000_terms(const LabT<T>& lab1, const LabT<T>& lab2) {
+  using detail::kDegPerRad;
   using std::atan2;
   using std::cos;
   using std::exp;
   using std::sin;
-  using detail::kDegPerRad;
   constexpr double k25pow7 = 6103515625.0;  // 25^7
   const T c1 = safe_sqrt(lab1.a * lab1.a + lab1.b * lab1.b);
   const T c2 = safe_sqrt(lab2.a * lab2.a + lab2.b * lab2.b);
@@ -65,8 +65,10 @@ De2000Terms<T> ciede2000_terms(const LabT<T>& lab1, const LabT<T>& lab2) {
   T dh(0.0);
   if (cc > T(0.0)) {
     dh = h2p - h1p;
-    if (dh > T(180.0)) dh -= 360.0;
-    else if (dh < T(-180.0)) dh += 360.0;
+    if (dh > T(180.0))
+      dh -= 360.0;
+    else if (dh < T(-180.0))
+      dh += 360.0;
   }
   const T d_big_h = 2.0 * safe_sqrt(cc) * sin(dh / (2.0 * kDegPerRad));
   const T l_bar = 0.5 * (lab1.L + lab2.L);
@@ -74,9 +76,12 @@ De2000Terms<T> ciede2000_terms(const LabT<T>& lab1, const LabT<T>& lab2) {
   T hp_bar = h1p + h2p;
   if (cc > T(0.0)) {
     const T diff = h1p - h2p;
-    if (diff <= T(180.0) && diff >= T(-180.0)) hp_bar = 0.5 * (h1p + h2p);
-    else if (h1p + h2p < T(360.0)) hp_bar = 0.5 * (h1p + h2p + 360.0);
-    else hp_bar = 0.5 * (h1p + h2p - 360.0);
+    if (diff <= T(180.0) && diff >= T(-180.0))
+      hp_bar = 0.5 * (h1p + h2p);
+    else if (h1p + h2p < T(360.0))
+      hp_bar = 0.5 * (h1p + h2p + 360.0);
+    else
+      hp_bar = 0.5 * (h1p + h2p - 360.0);
   }
   const double r = 1.0 / kDegPerRad;
   const T t = 1.0 - 0.17 * cos((hp_bar - 30.0) * r) + 0.24 * cos(2.0 * hp_bar * r) +

@@ -1,10 +1,10 @@
 #include "color/ocio.h"
 
 #include <OpenColorIO/OpenColorIO.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "color/colorimetry.h"
 #include "spectral/errors.h"
@@ -20,7 +20,8 @@ struct SpaceLibrary::Impl {
 
 namespace {
 
-OCIO::TransformRcPtr ocio_builtin(const char* style, OCIO::TransformDirection dir = OCIO::TRANSFORM_DIR_FORWARD) {
+OCIO::TransformRcPtr ocio_builtin(const char* style,
+                                  OCIO::TransformDirection dir = OCIO::TRANSFORM_DIR_FORWARD) {
   auto t = OCIO::BuiltinTransform::Create();
   t->setStyle(style);
   t->setDirection(dir);
@@ -43,12 +44,14 @@ OCIO::TransformRcPtr builtin_to_xyz_d65(const std::string& name, OCIO::Transform
   if (name == "lin_rec709") {
     // Rec.709 → AP1 → XYZ-D65: the two Bradford adaptations (D65 → ACES → D65) cancel exactly.
     auto g = OCIO::GroupTransform::Create();
-    g->appendTransform(ocio_builtin("UTILITY - ACES-AP1_to_LINEAR-REC709_BFD", OCIO::TRANSFORM_DIR_INVERSE));
+    g->appendTransform(
+        ocio_builtin("UTILITY - ACES-AP1_to_LINEAR-REC709_BFD", OCIO::TRANSFORM_DIR_INVERSE));
     g->appendTransform(ocio_builtin("UTILITY - ACES-AP1_to_CIE-XYZ-D65_BFD"));
     g->setDirection(dir);
     return g;
   }
-  if (name == "lin_rec2020" || name == "lin_p3d65") return matrix_transform(builtin_space(name).rgb_to_xyz, dir);
+  if (name == "lin_rec2020" || name == "lin_p3d65")
+    return matrix_transform(builtin_space(name).rgb_to_xyz, dir);
   builtin_space(name);  // throws the helpful error
   return nullptr;
 }
@@ -60,7 +63,9 @@ Mat3 processor_matrix(const OCIO::ConstProcessorRcPtr& proc, const std::string& 
   for (int i = 0; i < group->getNumTransforms(); ++i) {
     const auto t = group->getTransform(i);
     const auto mt = OCIO::DynamicPtrCast<const OCIO::MatrixTransform>(t);
-    if (!mt) throw InputError(fmt::format("{} is not a linear (matrix-only) conversion in OpenColorIO", what));
+    if (!mt)
+      throw InputError(
+          fmt::format("{} is not a linear (matrix-only) conversion in OpenColorIO", what));
     double m44[16], off[4];
     mt->getMatrix(m44);
     mt->getOffset(off);
@@ -98,7 +103,9 @@ SpaceLibrary SpaceLibrary::from_config(const std::string& path, const std::strin
     else if (impl->config->getColorSpace("CIE-XYZ-D65"))
       xyz = "CIE-XYZ-D65";
     else
-      throw InputError(path, 0, "the config has no CIE XYZ D65 space (role cie_xyz_d65_interchange or a space CIE-XYZ-D65); name one with --ocio-xyz");
+      throw InputError(path, 0,
+                       "the config has no CIE XYZ D65 space (role cie_xyz_d65_interchange or a "
+                       "space CIE-XYZ-D65); name one with --ocio-xyz");
   } else if (!impl->config->getColorSpace(xyz.c_str())) {
     throw InputError(path, 0, fmt::format("no colour space '{}' in the config", xyz));
   }
@@ -116,7 +123,8 @@ std::vector<std::string> SpaceLibrary::names() const {
   return out;
 }
 
-std::string SpaceLibrary::space_with_chromaticities(const SpaceChromaticities& c, double tolerance) const {
+std::string SpaceLibrary::space_with_chromaticities(const SpaceChromaticities& c,
+                                                    double tolerance) const {
   for (const auto& n : names()) {
     try {
       if (chromaticity_distance(chromaticities_of(space(n)), c) <= tolerance) return n;
@@ -148,7 +156,8 @@ Mat3 SpaceLibrary::conversion(const std::string& from, const std::string& to) co
 std::optional<std::string> SpaceLibrary::matching_builtin(const Mat3& rgb_to_xyz_d65) {
   const auto raw = OCIO::Config::CreateRaw();
   for (const auto& b : builtin_space_names()) {
-    const Mat3 m = processor_matrix(raw->getProcessor(builtin_to_xyz_d65(b, OCIO::TRANSFORM_DIR_FORWARD)), b);
+    const Mat3 m =
+        processor_matrix(raw->getProcessor(builtin_to_xyz_d65(b, OCIO::TRANSFORM_DIR_FORWARD)), b);
     double diff = 0;
     for (int i = 0; i < 9; ++i) diff = std::max(diff, std::abs(m.m[i] - rgb_to_xyz_d65.m[i]));
     if (diff <= kBuiltinMatchTolerance) return b;
@@ -156,23 +165,26 @@ std::optional<std::string> SpaceLibrary::matching_builtin(const Mat3& rgb_to_xyz
   return std::nullopt;
 }
 
-Mat3 SpaceLibrary::conversion_to_builtin(const std::string& from, const std::string& builtin) const {
+Mat3 SpaceLibrary::conversion_to_builtin(const std::string& from,
+                                         const std::string& builtin) const {
   if (is_builtin()) return conversion(from, builtin);
   const auto raw = OCIO::Config::CreateRaw();
-  const Mat3 from_xyz = processor_matrix(raw->getProcessor(builtin_to_xyz_d65(builtin, OCIO::TRANSFORM_DIR_INVERSE)),
-                                         "CIE XYZ D65 -> " + builtin);
+  const Mat3 from_xyz =
+      processor_matrix(raw->getProcessor(builtin_to_xyz_d65(builtin, OCIO::TRANSFORM_DIR_INVERSE)),
+                       "CIE XYZ D65 -> " + builtin);
   return from_xyz * conversion(from, impl_->xyz_space);
 }
 
-RgbSpace SpaceLibrary::space(const std::string& name, const std::optional<SpaceWhite>& white) const {
+RgbSpace SpaceLibrary::space(const std::string& name,
+                             const std::optional<SpaceWhite>& white) const {
   if (is_builtin()) return builtin_space(name);
   const Mat3 to_xyz_d65 = conversion(name, impl_->xyz_space);
   RgbSpace s;
   const auto builtin = white ? std::nullopt : matching_builtin(to_xyz_d65);
   if (builtin) {
     s = builtin_space(*builtin);
-    s.white_source = fmt::format("white {} of built-in {}, whose matrix the config's equals", s.reference_illuminant,
-                                 *builtin);
+    s.white_source = fmt::format("white {} of built-in {}, whose matrix the config's equals",
+                                 s.reference_illuminant, *builtin);
   } else {
     const Xyz d65 = to_xyz_d65 * Rgb{1, 1, 1};
     s.white = white ? white->white : d65;

@@ -11,9 +11,9 @@
 
 namespace fl::color {
 
-// A white for a config space, given by the user (the config's matrices are adapted to D65 and do not
-// carry the space's own white): its XYZ (Y = 1), the illuminant it is the white of, and a phrase
-// naming where it came from.
+// A white for a config space, given by the user (the config's matrices are adapted to D65 and do
+// not carry the space's own white): its XYZ (Y = 1), the illuminant it is the white of, and a
+// phrase naming where it came from.
 struct SpaceWhite {
   Xyz white;
   std::string illuminant;
@@ -33,15 +33,17 @@ class SpaceLibrary {
   static SpaceLibrary builtin();
   // A studio config: spaces are its colour-space names; `xyz_space` names its CIE XYZ (D65)
   // space (default: the role cie_xyz_d65_interchange, else a space called CIE-XYZ-D65).
-  static SpaceLibrary from_config(const std::string& config_path, const std::string& xyz_space = "");
+  static SpaceLibrary from_config(const std::string& config_path,
+                                  const std::string& xyz_space = "");
 
   // The space's native matrices, white and reference illuminant (linear spaces only). A config's
   // conversion to its CIE XYZ D65 space includes the adaptation of the space's white to D65, so the
   // white is found in this order: `white` if given (the matrix is then Bradford-adapted from D65
-  // back to it); the built-in space whose matrix to XYZ D65 the config's equals (kBuiltinMatchTolerance
-  // per entry), whose primaries, white and illuminant it takes; otherwise D65, the white of the
-  // config's XYZ space.
-  RgbSpace space(const std::string& name, const std::optional<SpaceWhite>& white = std::nullopt) const;
+  // back to it); the built-in space whose matrix to XYZ D65 the config's equals
+  // (kBuiltinMatchTolerance per entry), whose primaries, white and illuminant it takes; otherwise
+  // D65, the white of the config's XYZ space.
+  RgbSpace space(const std::string& name,
+                 const std::optional<SpaceWhite>& white = std::nullopt) const;
   // The built-in space whose RGB → CIE XYZ D65 matrix (through OCIO's built-in transforms) equals
   // `rgb_to_xyz_d65` within kBuiltinMatchTolerance per entry.
   static std::optional<std::string> matching_builtin(const Mat3& rgb_to_xyz_d65);

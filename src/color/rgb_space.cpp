@@ -18,26 +18,32 @@ Mat3 rgb_to_xyz_from_primaries(Chromaticity r, Chromaticity g, Chromaticity b, C
 }
 
 SpaceChromaticities chromaticities_of(const RgbSpace& s) {
-  const auto column = [&](int c) { return xy_from_xyz({s.rgb_to_xyz(0, c), s.rgb_to_xyz(1, c), s.rgb_to_xyz(2, c)}); };
+  const auto column = [&](int c) {
+    return xy_from_xyz({s.rgb_to_xyz(0, c), s.rgb_to_xyz(1, c), s.rgb_to_xyz(2, c)});
+  };
   return {column(0), column(1), column(2), xy_from_xyz(s.rgb_to_xyz * Rgb{1, 1, 1})};
 }
 
 double chromaticity_distance(const SpaceChromaticities& a, const SpaceChromaticities& b) {
   double d = 0;
-  const Chromaticity pa[] = {a.red, a.green, a.blue, a.white}, pb[] = {b.red, b.green, b.blue, b.white};
-  for (int i = 0; i < 4; ++i) d = std::max({d, std::abs(pa[i].x - pb[i].x), std::abs(pa[i].y - pb[i].y)});
+  const Chromaticity pa[] = {a.red, a.green, a.blue, a.white},
+                     pb[] = {b.red, b.green, b.blue, b.white};
+  for (int i = 0; i < 4; ++i)
+    d = std::max({d, std::abs(pa[i].x - pb[i].x), std::abs(pa[i].y - pb[i].y)});
   return d;
 }
 
 const std::vector<std::string>& builtin_space_names() {
-  static const std::vector<std::string> names{"acescg", "lin_rec709", "aces2065-1", "lin_rec2020", "lin_p3d65"};
+  static const std::vector<std::string> names{"acescg", "lin_rec709", "aces2065-1", "lin_rec2020",
+                                              "lin_p3d65"};
   return names;
 }
 
 RgbSpace builtin_space(const std::string& name) {
   // Primaries: ACES S-2014-004 (AP1), S-2008-001 (AP0), ITU-R BT.709, BT.2020, SMPTE EG 432-1.
   const Chromaticity aces_white{0.32168, 0.33767}, d65{0.3127, 0.3290};
-  auto make = [&](const char* desc, Chromaticity r, Chromaticity g, Chromaticity b, Chromaticity w) {
+  auto make = [&](const char* desc, Chromaticity r, Chromaticity g, Chromaticity b,
+                  Chromaticity w) {
     RgbSpace s;
     s.reference_illuminant = w.x == aces_white.x ? "D60" : "D65";
     s.builtin_equivalent = name;
@@ -49,17 +55,23 @@ RgbSpace builtin_space(const std::string& name) {
     return s;
   };
   if (name == "acescg")
-    return make("ACEScg (AP1 primaries, ACES white)", {0.713, 0.293}, {0.165, 0.830}, {0.128, 0.044}, aces_white);
+    return make("ACEScg (AP1 primaries, ACES white)", {0.713, 0.293}, {0.165, 0.830},
+                {0.128, 0.044}, aces_white);
   if (name == "aces2065-1")
-    return make("ACES2065-1 (AP0 primaries, ACES white)", {0.7347, 0.2653}, {0.0, 1.0}, {0.0001, -0.0770}, aces_white);
+    return make("ACES2065-1 (AP0 primaries, ACES white)", {0.7347, 0.2653}, {0.0, 1.0},
+                {0.0001, -0.0770}, aces_white);
   if (name == "lin_rec709")
-    return make("linear Rec.709 / sRGB primaries, D65", {0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}, d65);
+    return make("linear Rec.709 / sRGB primaries, D65", {0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06},
+                d65);
   if (name == "lin_rec2020")
     return make("linear Rec.2020, D65", {0.708, 0.292}, {0.170, 0.797}, {0.131, 0.046}, d65);
   if (name == "lin_p3d65")
-    return make("linear Display P3 (P3 primaries, D65)", {0.680, 0.320}, {0.265, 0.690}, {0.150, 0.060}, d65);
-  throw InputError(fmt::format("unknown colour space '{}' (expected one of: {}; or a space of an OCIO config with --ocio-config)",
-                               name, fmt::join(builtin_space_names(), ", ")));
+    return make("linear Display P3 (P3 primaries, D65)", {0.680, 0.320}, {0.265, 0.690},
+                {0.150, 0.060}, d65);
+  throw InputError(
+      fmt::format("unknown colour space '{}' (expected one of: {}; or a space of an OCIO config "
+                  "with --ocio-config)",
+                  name, fmt::join(builtin_space_names(), ", ")));
 }
 
 }  // namespace fl::color

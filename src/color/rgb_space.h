@@ -8,11 +8,11 @@
 namespace fl::color {
 
 struct RgbSpace {
-  std::string name;        // our name: acescg, lin_rec709, ...
+  std::string name;  // our name: acescg, lin_rec709, ...
   std::string description;
-  Mat3 rgb_to_xyz;         // native: RGB (1,1,1) ↦ the space's white with Y = 1
+  Mat3 rgb_to_xyz;  // native: RGB (1,1,1) ↦ the space's white with Y = 1
   Mat3 xyz_to_rgb;
-  Xyz white;               // Y = 1
+  Xyz white;  // Y = 1
   // The space's reference white illuminant (the spectrum whose white the space's white is): D60 for
   // the ACES spaces, D65 for Rec.709, Rec.2020 and P3-D65.
   std::string reference_illuminant;

@@ -22,8 +22,12 @@ using Xyz = XyzT<double>;
 using Rgb = RgbT<double>;
 using Lab = LabT<double>;
 
-inline Rgb operator+(const Rgb& u, const Rgb& v) { return {u.r + v.r, u.g + v.g, u.b + v.b}; }
-inline Rgb operator*(double s, const Rgb& v) { return {s * v.r, s * v.g, s * v.b}; }
+inline Rgb operator+(const Rgb& u, const Rgb& v) {
+  return {u.r + v.r, u.g + v.g, u.b + v.b};
+}
+inline Rgb operator*(double s, const Rgb& v) {
+  return {s * v.r, s * v.g, s * v.b};
+}
 
 struct Chromaticity {
   double x = 0, y = 0;

@@ -3,16 +3,16 @@
 #include <ceres/ceres.h>
 #include <ceres/gradient_checker.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
 #include "color/ciede2000_batch.h"
 #include "color/dual.h"
 #include "fit/kept_evaluation.h"
 #include "fresnel/registry.h"
 #include "util/codegen.h"
-
-#include <algorithm>
-#include <limits>
-#include <cmath>
-#include <memory>
 
 namespace fl::fit {
 namespace {
@@ -36,20 +36,27 @@ class ModelCurveCost : public ceres::CostFunction {
   using ChannelDual = color::Dual<kChannelLanes>;
 
   explicit ModelCurveCost(const CurveTarget* target)
-      : target_(target), kept_(3 * target->cos_thetas.size()), rgb_(target->cos_thetas.size()),
-        channels_(target->cos_thetas.size()), d_rgb_(9 * target->cos_thetas.size()) {
+      : target_(target),
+        kept_(3 * target->cos_thetas.size()),
+        rgb_(target->cos_thetas.size()),
+        channels_(target->cos_thetas.size()),
+        d_rgb_(9 * target->cos_thetas.size()) {
     set_num_residuals(static_cast<int>(3 * target->cos_thetas.size()));
     mutable_parameter_block_sizes()->push_back(kParams);
   }
 
   // The last point's evaluation is kept (KeptEvaluation).
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    kept_.evaluate_joint(parameters[0], residuals, jacobians ? jacobians[0] : nullptr,
-                         [this](const double* p, double* r, double* jac) { evaluate_at(p, r, jac); });
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    kept_.evaluate_joint(
+        parameters[0], residuals, jacobians ? jacobians[0] : nullptr,
+        [this](const double* p, double* r, double* jac) { evaluate_at(p, r, jac); });
     return true;
   }
 
-  static ceres::CostFunction* Create(const CurveTarget* target) { return new ModelCurveCost(target); }
+  static ceres::CostFunction* Create(const CurveTarget* target) {
+    return new ModelCurveCost(target);
+  }
 
  private:
   // Flattened (FL_FLATTEN): the Dual lanes' loops are inlined.
@@ -58,7 +65,8 @@ class ModelCurveCost : public ceres::CostFunction {
     ChannelDual pd[3][kChannelLanes];
     for (int c = 0; c < 3; ++c) {
       for (int k = 0; k < kPer; ++k) pd[c][k] = ChannelDual::variable(p[c * kPer + k], k);
-      for (int s = 0; s < kShared; ++s) pd[c][kPer + s] = ChannelDual::variable(p[3 * kPer + s], kPer + s);
+      for (int s = 0; s < kShared; ++s)
+        pd[c][kPer + s] = ChannelDual::variable(p[3 * kPer + s], kPer + s);
     }
     // Each channel's angle-independent part once (fresnel::prepare_channel).
     using Prepared = decltype(fresnel::prepare_channel<Unit>(pd[0], pd[0]));
@@ -73,20 +81,24 @@ class ModelCurveCost : public ceres::CostFunction {
         rgb_[i][c] = channels_[i][c].v;
       }
     }
-    color::ciede2000_residuals_batch(target_->to_lab, target_->truth_lab, rgb_, std::span(residuals, 3 * n), d_rgb_);
+    color::ciede2000_residuals_batch(target_->to_lab, target_->truth_lab, rgb_,
+                                     std::span(residuals, 3 * n), d_rgb_);
     for (size_t i = 0; i < n; ++i)
       for (int q = 0; q < 3; ++q) {
-        const std::array<double, 3> d{d_rgb_[(3 * q) * n + i], d_rgb_[(3 * q + 1) * n + i], d_rgb_[(3 * q + 2) * n + i]};
+        const std::array<double, 3> d{d_rgb_[(3 * q) * n + i], d_rgb_[(3 * q + 1) * n + i],
+                                      d_rgb_[(3 * q + 2) * n + i]};
         chain_rule(d, channels_[i], jac + (3 * i + q) * kParams);
       }
   }
 
   // One Jacobian row: d residual / d RGB times d RGB / d parameters.
-  static void chain_rule(const std::array<double, 3>& d_rgb, const std::array<ChannelDual, 3>& ch, double* row) {
+  static void chain_rule(const std::array<double, 3>& d_rgb, const std::array<ChannelDual, 3>& ch,
+                         double* row) {
     for (int c = 0; c < 3; ++c)
       for (int k = 0; k < kPer; ++k) row[c * kPer + k] = d_rgb[c] * ch[c].d[k];
     for (int s = 0; s < kShared; ++s)
-      row[3 * kPer + s] = d_rgb[0] * ch[0].d[kPer + s] + d_rgb[1] * ch[1].d[kPer + s] + d_rgb[2] * ch[2].d[kPer + s];
+      row[3 * kPer + s] = d_rgb[0] * ch[0].d[kPer + s] + d_rgb[1] * ch[1].d[kPer + s] +
+                          d_rgb[2] * ch[2].d[kPer + s];
   }
 
   const CurveTarget* target_;
@@ -99,7 +111,8 @@ class ModelCurveCost : public ceres::CostFunction {
 
 ceres::CostFunction* create_cost(Model m, const CurveTarget* target) {
   ceres::CostFunction* cost = nullptr;
-  fresnel::visit_model(m, [&](auto unit) { cost = ModelCurveCost<decltype(unit)>::Create(target); });
+  fresnel::visit_model(m,
+                       [&](auto unit) { cost = ModelCurveCost<decltype(unit)>::Create(target); });
   return cost;
 }
 
@@ -109,13 +122,16 @@ std::vector<int> extinction_indices(Model m) {
   std::vector<int> out;
   for (int c = 0; c < 3; ++c)
     for (int j = 0; j < spec.per_channel(); ++j)
-      if (spec.channel_params[j].kind == fresnel::ParamKind::Extinction) out.push_back(c * spec.per_channel() + j);
+      if (spec.channel_params[j].kind == fresnel::ParamKind::Extinction)
+        out.push_back(c * spec.per_channel() + j);
   for (size_t j = 0; j < spec.shared_params.size(); ++j)
-    if (spec.shared_params[j].kind == fresnel::ParamKind::Extinction) out.push_back(3 * spec.per_channel() + int(j));
+    if (spec.shared_params[j].kind == fresnel::ParamKind::Extinction)
+      out.push_back(3 * spec.per_channel() + int(j));
   return out;
 }
 
-FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> params, const FitOptions& options) {
+FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> params,
+                     const FitOptions& options) {
   const auto bounds = fresnel::model_spec(m).bounds();
   for (size_t i = 0; i < params.size(); ++i) {
     // Strictly inside the bounds: some kernels have kinks exactly at the ends (g = 0, F0 = 0).
@@ -126,7 +142,9 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
   for (int i : held) params[i] = 0.0;
   ceres::Problem problem;
   problem.AddResidualBlock(create_cost(m, &target), nullptr, params.data());
-  if (!held.empty()) problem.SetManifold(params.data(), new ceres::SubsetManifold(static_cast<int>(params.size()), held));
+  if (!held.empty())
+    problem.SetManifold(params.data(),
+                        new ceres::SubsetManifold(static_cast<int>(params.size()), held));
   for (size_t i = 0; i < params.size(); ++i) {
     problem.SetParameterLowerBound(params.data(), static_cast<int>(i), bounds[i].lo);
     problem.SetParameterUpperBound(params.data(), static_cast<int>(i), bounds[i].hi);
@@ -173,7 +191,8 @@ double start_cost(Model m, const CurveTarget& target, const std::vector<double>&
 // kPinnedRms. A parameter that does next to nothing where it ended (Lazányi's α once a ≈ 0)
 // drifts to a bound without being pinned by it.
 constexpr double kPinnedRms = 1e-4;  // a fifth of the tables' last printed digit (3 decimals)
-std::vector<std::string> pinned_parameters(Model m, const CurveTarget& target, const std::vector<double>& p) {
+std::vector<std::string> pinned_parameters(Model m, const CurveTarget& target,
+                                           const std::vector<double>& p) {
   const auto& spec = fresnel::model_spec(m);
   const auto box = spec.bounds(), domain = spec.domain();
   const auto names = spec.param_names();
@@ -193,14 +212,14 @@ std::vector<std::string> pinned_parameters(Model m, const CurveTarget& target, c
 }
 }  // namespace
 
-
 FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<double>> starts,
                     const FitOptions& options) {
   // Rank the starts by their cost (cheap), then solve from the best few.
   std::vector<std::pair<double, size_t>> ranked;
   const auto held = options.lossless ? extinction_indices(m) : std::vector<int>{};
   for (size_t i = 0; i < starts.size(); ++i) {
-    if (static_cast<int>(starts[i].size()) != fresnel::model_spec(m).param_count()) throw std::invalid_argument("fit_model: wrong parameter count");
+    if (static_cast<int>(starts[i].size()) != fresnel::model_spec(m).param_count())
+      throw std::invalid_argument("fit_model: wrong parameter count");
     for (int h : held) starts[i][h] = 0.0;
     ranked.emplace_back(start_cost(m, target, starts[i]), i);
   }
@@ -242,9 +261,12 @@ std::string fit_flags(const FitResult& r) {
   return out;
 }
 
-double rms_from_cost(double cost, size_t angles) { return std::sqrt(2.0 * cost / static_cast<double>(angles)); }
+double rms_from_cost(double cost, size_t angles) {
+  return std::sqrt(2.0 * cost / static_cast<double>(angles));
+}
 
-GradientCheck check_model_gradients(Model m, const CurveTarget& target, const std::vector<double>& params) {
+GradientCheck check_model_gradients(Model m, const CurveTarget& target,
+                                    const std::vector<double>& params) {
   std::unique_ptr<ceres::CostFunction> cost(create_cost(m, &target));
   ceres::NumericDiffOptions nd;
   // The checker differentiates with Ridders' extrapolation, whose default first step (1 % of the
@@ -265,7 +287,8 @@ GradientCheck check_model_gradients(Model m, const CurveTarget& target, const st
   const auto& n = results.numeric_jacobians[0];
   for (int r = 0; r < a.rows(); ++r)
     for (int c = 0; c < a.cols(); ++c) {
-      const double e = std::abs(a(r, c) - n(r, c)) / std::max({1.0, std::abs(a(r, c)), std::abs(n(r, c))});
+      const double e =
+          std::abs(a(r, c) - n(r, c)) / std::max({1.0, std::abs(a(r, c)), std::abs(n(r, c))});
       out.max_relative_error = std::max(out.max_relative_error, e);
     }
   out.ok = true;

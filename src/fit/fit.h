@@ -18,8 +18,9 @@ struct FitResult {
   bool usable = false;      // the solver ended with a usable solution
   int starts = 1;           // how many starts were tried
   bool kept_start = false;  // no solve ended below the best start's cost: the best start itself
-  bool iteration_limit = false;           // the winning solve stopped at FitOptions::max_iterations
-  std::vector<std::string> at_bound;      // parameters ending on a fit-box bound that is not the domain's
+  bool iteration_limit = false;  // the winning solve stopped at FitOptions::max_iterations
+  std::vector<std::string>
+      at_bound;  // parameters ending on a fit-box bound that is not the domain's
 };
 
 // The quality flags of a fit, space-separated (empty when there are none): "at_bound:eta_g"
@@ -46,8 +47,8 @@ struct FitOptions {
 // model's bounds. The starts are ranked by cost, the best `max_solves` are solved, the lowest
 // final cost wins. Starts are clamped into the bounds. The result is never worse than the best
 // start: when no solve ends below its cost, the start itself is returned (kept_start).
-FitResult fit_model(fresnel::Model model, const CurveTarget& target, std::vector<std::vector<double>> starts,
-                    const FitOptions& options = {});
+FitResult fit_model(fresnel::Model model, const CurveTarget& target,
+                    std::vector<std::vector<double>> starts, const FitOptions& options = {});
 
 // The largest k (over the grid) of a material whose fits hold κ at 0: below it k changes a
 // reflectance by k²/(n − 1)² < 4e-6 relative at n = 1.5, nothing a colour difference can see.
@@ -64,6 +65,7 @@ struct GradientCheck {
   double max_relative_error = 0;
   std::string report;
 };
-GradientCheck check_model_gradients(fresnel::Model model, const CurveTarget& target, const std::vector<double>& params);
+GradientCheck check_model_gradients(fresnel::Model model, const CurveTarget& target,
+                                    const std::vector<double>& params);
 
 }  // namespace fl::fit

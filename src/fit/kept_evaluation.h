@@ -14,7 +14,8 @@ namespace fl::fit {
 template <int kParams>
 class KeptEvaluation {
  public:
-  explicit KeptEvaluation(size_t residuals) : residuals_(residuals), jacobian_(residuals * kParams) {}
+  explicit KeptEvaluation(size_t residuals)
+      : residuals_(residuals), jacobian_(residuals * kParams) {}
 
   // The residuals at p into `residuals` (compute_residuals(p, out) when p differs from the last
   // point), and, when `jacobian` is not null, the Jacobian (compute_jacobian(p, out), always after

@@ -1,7 +1,6 @@
 #include "fit/ltc_fit.h"
 
 #include <ceres/ceres.h>
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -20,7 +19,8 @@ LtcFrame ltc_frame_from_average_direction(const brdf::Vec3& average_dir) {
 
 LtcMatrix ltc_matrix(const LtcFrame& f, const LtcParams& p) {
   // [X Y Z] · [[m11, 0, m13], [0, m22, 0], [m31, 0, 1]]: columns m11·X + m31·Z, m22·Y, m13·X + Z.
-  const brdf::Vec3 c0{p.m11 * f.x.x + p.m31 * f.z.x, p.m11 * f.x.y + p.m31 * f.z.y, p.m11 * f.x.z + p.m31 * f.z.z};
+  const brdf::Vec3 c0{p.m11 * f.x.x + p.m31 * f.z.x, p.m11 * f.x.y + p.m31 * f.z.y,
+                      p.m11 * f.x.z + p.m31 * f.z.z};
   const brdf::Vec3 c1{p.m22 * f.y.x, p.m22 * f.y.y, p.m22 * f.y.z};
   const brdf::Vec3 c2{p.m13 * f.x.x + f.z.x, p.m13 * f.x.y + f.z.y, p.m13 * f.x.z + f.z.z};
   return {{c0.x, c1.x, c2.x, c0.y, c1.y, c2.y, c0.z, c1.z, c2.z}};
@@ -40,16 +40,19 @@ LtcMatrix inverse(const LtcMatrix& a) {
   const double c01 = m[5] * m[6] - m[3] * m[8];
   const double c02 = m[3] * m[7] - m[4] * m[6];
   const double inv_det = 1.0 / (m[0] * c00 + m[1] * c01 + m[2] * c02);
-  return {{c00 * inv_det, (m[2] * m[7] - m[1] * m[8]) * inv_det, (m[1] * m[5] - m[2] * m[4]) * inv_det,
-           c01 * inv_det, (m[0] * m[8] - m[2] * m[6]) * inv_det, (m[2] * m[3] - m[0] * m[5]) * inv_det,
-           c02 * inv_det, (m[1] * m[6] - m[0] * m[7]) * inv_det, (m[0] * m[4] - m[1] * m[3]) * inv_det}};
+  return {{c00 * inv_det, (m[2] * m[7] - m[1] * m[8]) * inv_det,
+           (m[1] * m[5] - m[2] * m[4]) * inv_det, c01 * inv_det,
+           (m[0] * m[8] - m[2] * m[6]) * inv_det, (m[2] * m[3] - m[0] * m[5]) * inv_det,
+           c02 * inv_det, (m[1] * m[6] - m[0] * m[7]) * inv_det,
+           (m[0] * m[4] - m[1] * m[3]) * inv_det}};
 }
 
 LtcLobe ltc_lobe(const LtcMatrix& m) {
   LtcLobe lobe{m, inverse(m), 1.0};
   const auto& a = lobe.m_inv.m;
-  lobe.abs_det_m_inv = std::abs(a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
-                                a[2] * (a[3] * a[7] - a[4] * a[6]));
+  lobe.abs_det_m_inv =
+      std::abs(a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+               a[2] * (a[3] * a[7] - a[4] * a[6]));
   return lobe;
 }
 
@@ -76,7 +79,8 @@ brdf::Vec3 cosine_direction(double u1, double u2) {
 // Heitz et al. 2016, eq. 1: the direction ω = M ω_o / ‖M ω_o‖ of the LTC for ω_o drawn from D_o.
 brdf::Vec3 ltc_direction(const LtcLobe& lobe, const brdf::Vec3& o) {
   const auto& m = lobe.m.m;
-  return brdf::normalize(brdf::Vec3{m[0] * o.x + m[1] * o.y + m[2] * o.z, m[3] * o.x + m[4] * o.y + m[5] * o.z,
+  return brdf::normalize(brdf::Vec3{m[0] * o.x + m[1] * o.y + m[2] * o.z,
+                                    m[3] * o.x + m[4] * o.y + m[5] * o.z,
                                     m[6] * o.x + m[7] * o.y + m[8] * o.z});
 }
 
@@ -133,7 +137,8 @@ struct Directions {
 };
 
 // The GGX half: l = reflect(v, h) for h drawn from the visible normals at each disk point.
-FL_VECTOR_CLONES Directions ggx_half(const brdf::Vec3& view, double alpha, const std::vector<brdf::DiskPoint>& disk) {
+FL_VECTOR_CLONES Directions ggx_half(const brdf::Vec3& view, double alpha,
+                                     const std::vector<brdf::DiskPoint>& disk) {
   Directions d(disk.size());
   const brdf::Vec3 v = view;
   const brdf::GgxVndfSampler vndf(v, alpha);
@@ -164,8 +169,8 @@ FL_VECTOR_CLONES Directions ltc_half(const brdf::Vec3& view, double alpha, const
 // One half's balance-heuristic terms for a lobe: with the LTC density d_ltc of each direction and
 // q = p_vndf + d_ltc, |ρ cos − n_D d_ltc|³ / (n q) of the error and (ρ cos)³ / (n q) of the lobe's
 // norm, both 0 where q ≤ 0.
-FL_VECTOR_CLONES void l3_terms(const LtcLobe& ltc, const Directions& d, double n, double magnitude, double* error,
-                               double* norm) {
+FL_VECTOR_CLONES void l3_terms(const LtcLobe& ltc, const Directions& d, double n, double magnitude,
+                               double* error, double* norm) {
   const LtcLobe lobe = ltc;
 #pragma GCC ivdep
   for (size_t k = 0; k < d.size(); ++k) {
@@ -176,15 +181,17 @@ FL_VECTOR_CLONES void l3_terms(const LtcLobe& ltc, const Directions& d, double n
   }
 }
 // Adds the terms to e in the half's order.
-void add_l3_terms(const LtcLobe& lobe, const Directions& d, double n, double magnitude, LtcL3Error& e) {
+void add_l3_terms(const LtcLobe& lobe, const Directions& d, double n, double magnitude,
+                  LtcL3Error& e) {
   std::vector<double> error(d.size()), norm(d.size());
   l3_terms(lobe, d, n, magnitude, error.data(), norm.data());
   for (size_t k = 0; k < d.size(); ++k) e.error += error[k], e.lobe += norm[k];
 }
 
 // The balance-heuristic sum over both halves of a direction set for each lobe.
-std::vector<LtcL3Error> l3_errors(const brdf::Vec3& v, double alpha, double magnitude, const Directions& ggx,
-                                  const LtcPointSet& set, const std::vector<LtcLobe>& lobes) {
+std::vector<LtcL3Error> l3_errors(const brdf::Vec3& v, double alpha, double magnitude,
+                                  const Directions& ggx, const LtcPointSet& set,
+                                  const std::vector<LtcLobe>& lobes) {
   std::vector<LtcL3Error> out(lobes.size());
   const double n = static_cast<double>(set.cosine.size());
   for (size_t c = 0; c < lobes.size(); ++c) {
@@ -200,8 +207,8 @@ struct SampleTerms {
   std::vector<double> x, y, z, q, weight, lobe3;
   explicit SampleTerms(size_t n) : x(n), y(n), z(n), q(n), weight(n), lobe3(n) {}
 };
-FL_VECTOR_CLONES void sample_terms(const LtcFrame& f, const LtcParams& p, const Directions& d, double count,
-                                   SampleTerms& out) {
+FL_VECTOR_CLONES void sample_terms(const LtcFrame& f, const LtcParams& p, const Directions& d,
+                                   double count, SampleTerms& out) {
   const LtcFrame frame = f;
   const LtcParams proposal = p;
 #pragma GCC ivdep
@@ -213,8 +220,8 @@ FL_VECTOR_CLONES void sample_terms(const LtcFrame& f, const LtcParams& p, const 
     out.weight[k] = 1.0 / std::sqrt(count * q), out.lobe3[k] = t * t * t / (count * q);
   }
 }
-void append_samples(const LtcFrame& frame, const LtcParams& proposal, const Directions& d, double count,
-                    std::vector<LtcSample>& samples, double& lobe3) {
+void append_samples(const LtcFrame& frame, const LtcParams& proposal, const Directions& d,
+                    double count, std::vector<LtcSample>& samples, double& lobe3) {
   SampleTerms t(d.size());
   sample_terms(frame, proposal, d, count, t);
   for (size_t k = 0; k < d.size(); ++k) {
@@ -225,16 +232,17 @@ void append_samples(const LtcFrame& frame, const LtcParams& proposal, const Dire
 }
 
 // The fitting directions of a cell: the GGX half (fixed) and the half drawn from the proposal.
-LtcProblem assemble_problem(double nov, double alpha, double magnitude, const LtcFrame& frame, const Directions& ggx,
-                            const LtcPointSet& set, const LtcParams& proposal) {
+LtcProblem assemble_problem(double nov, double alpha, double magnitude, const LtcFrame& frame,
+                            const Directions& ggx, const LtcPointSet& set,
+                            const LtcParams& proposal) {
   LtcProblem pr{nov, alpha, magnitude, frame, proposal, {}};
   const double count = static_cast<double>(set.cosine.size());
   double lobe3 = 0.0;  // Σ target³ w², the estimate of B₃
   pr.samples.reserve(2 * set.cosine.size());
   append_samples(frame, proposal, ggx, count, pr.samples, lobe3);
   const LtcLobe lobe = ltc_lobe(ltc_matrix(frame, proposal));
-  append_samples(frame, proposal, ltc_half(brdf::view_from_nov(nov), alpha, lobe, set.cosine), count, pr.samples,
-                 lobe3);
+  append_samples(frame, proposal, ltc_half(brdf::view_from_nov(nov), alpha, lobe, set.cosine),
+                 count, pr.samples, lobe3);
   const double scale = lobe3 > 0.0 ? 1.0 / std::sqrt(lobe3) : 1.0;
   for (auto& smp : pr.samples) smp.weight *= scale;
   return pr;
@@ -254,11 +262,13 @@ LtcColumns ltc_columns(const LtcProblem& pr) {
     c.target.push_back(s.target), c.weight.push_back(s.weight);
   }
   const size_t n = pr.samples.size();
-  for (auto* col : {&c.ox, &c.oy, &c.oz, &c.inv_len2, &c.dens, &c.root, &c.residual}) col->resize(n);
+  for (auto* col : {&c.ox, &c.oy, &c.oz, &c.inv_len2, &c.dens, &c.root, &c.residual})
+    col->resize(n);
   return c;
 }
 
-// Residual k = d √|d| w with d = target − n_D D_LTC (ltc_density with θ = p = (m11, m22, m13, m31)).
+// Residual k = d √|d| w with d = target − n_D D_LTC (ltc_density with θ = p = (m11, m22, m13,
+// m31)).
 FL_VECTOR_CLONES void ltc_residuals(double magnitude, const double* p, LtcColumns& c) {
   const double inv_beta = 1.0 / (p[0] - p[2] * p[3]), inv_m22 = 1.0 / p[1];
   const double p0 = p[0], p2 = p[2], p3 = p[3];
@@ -268,10 +278,12 @@ FL_VECTOR_CLONES void ltc_residuals(double magnitude, const double* p, LtcColumn
     const double ox = (c.x[k] - p2 * c.z[k]) * inv_beta, oy = c.y[k] * inv_m22;
     const double oz = (p0 * c.z[k] - p3 * c.x[k]) * inv_beta;
     const double inv_len2 = 1.0 / (ox * ox + oy * oy + oz * oz);
-    const double dens = oz > 0.0 ? oz * inv_beta * inv_m22 * inv_len2 * inv_len2 / std::numbers::pi : 0.0;
+    const double dens =
+        oz > 0.0 ? oz * inv_beta * inv_m22 * inv_len2 * inv_len2 / std::numbers::pi : 0.0;
     const double d = c.target[k] - magnitude * dens;
     const double root = std::sqrt(std::abs(d));
-    c.ox[k] = ox, c.oy[k] = oy, c.oz[k] = oz, c.inv_len2[k] = inv_len2, c.dens[k] = dens, c.root[k] = root;
+    c.ox[k] = ox, c.oy[k] = oy, c.oz[k] = oz, c.inv_len2[k] = inv_len2, c.dens[k] = dens,
+    c.root[k] = root;
     c.residual[k] = d * root * c.weight[k];
   }
 }
@@ -280,9 +292,10 @@ FL_VECTOR_CLONES void ltc_residuals(double magnitude, const double* p, LtcColumn
 // With u = x − m13 z, t = m11 z − m31 x, β = m11 − m13 m31, o = (u/β, y/m22, t/β), L = ‖o‖²:
 // D = t / (π m22 β² L²), so ∂ln D = ∂t/t − ∂m22/m22 − 2 ∂β/β − 2 ∂L/L with
 // ∂L = 2 (o_x ∂u + o_z ∂t)/β − 2 (o_x² + o_z²) ∂β/β − 2 o_y² ∂m22/m22, where (∂u, ∂t, ∂β, ∂m22) is
-// (0, z, 1, 0) for m11, (0, 0, 0, 1) for m22, (−z, 0, −m31, 0) for m13 and (0, −x, −m13, 0) for m31;
-// and ∂r/∂D = −1.5 √|d| w n_D.
-FL_VECTOR_CLONES void ltc_jacobian(double magnitude, const double* p, const LtcColumns& c, double* jac) {
+// (0, z, 1, 0) for m11, (0, 0, 0, 1) for m22, (−z, 0, −m31, 0) for m13 and (0, −x, −m13, 0) for
+// m31; and ∂r/∂D = −1.5 √|d| w n_D.
+FL_VECTOR_CLONES void ltc_jacobian(double magnitude, const double* p, const LtcColumns& c,
+                                   double* jac) {
   const double inv_beta = 1.0 / (p[0] - p[2] * p[3]), inv_m22 = 1.0 / p[1];
   const double p2 = p[2], p3 = p[3];
   const size_t n = c.x.size();
@@ -290,13 +303,16 @@ FL_VECTOR_CLONES void ltc_jacobian(double magnitude, const double* p, const LtcC
   for (size_t k = 0; k < n; ++k) {
     const double ox = c.ox[k], oy = c.oy[k], oz = c.oz[k], x = c.x[k], z = c.z[k];
     const double g = -1.5 * c.root[k] * c.weight[k] * magnitude * c.dens[k];
-    const double inv_t = inv_beta / oz, s2 = 2.0 * (ox * ox + oz * oz) * inv_beta, two_l = 2.0 * c.inv_len2[k];
+    const double inv_t = inv_beta / oz, s2 = 2.0 * (ox * ox + oz * oz) * inv_beta,
+                 two_l = 2.0 * c.inv_len2[k];
     const double j0 = g * (z * inv_t - 2.0 * inv_beta - two_l * (2.0 * oz * z * inv_beta - s2));
     const double j1 = g * inv_m22 * (2.0 * two_l * oy * oy - 1.0);
     const double j2 = g * (2.0 * p3 * inv_beta - two_l * (s2 * p3 - 2.0 * ox * z * inv_beta));
-    const double j3 = g * (-x * inv_t + 2.0 * p2 * inv_beta - two_l * (s2 * p2 - 2.0 * oz * x * inv_beta));
+    const double j3 =
+        g * (-x * inv_t + 2.0 * p2 * inv_beta - two_l * (s2 * p2 - 2.0 * oz * x * inv_beta));
     const bool zero = c.dens[k] == 0.0;
-    const double r0 = zero ? 0.0 : j0, r1 = zero ? 0.0 : j1, r2 = zero ? 0.0 : j2, r3 = zero ? 0.0 : j3;
+    const double r0 = zero ? 0.0 : j0, r1 = zero ? 0.0 : j1, r2 = zero ? 0.0 : j2,
+                 r3 = zero ? 0.0 : j3;
     jac[4 * k] = r0, jac[4 * k + 1] = r1, jac[4 * k + 2] = r2, jac[4 * k + 3] = r3;
   }
 }
@@ -312,16 +328,19 @@ double sum_squared_residuals(const LtcProblem& pr, const LtcParams& p) {
 
 // ½ Σ r² estimates ½ ∫ |ρ cos − n_D D_LTC|³ dω / B₃; the Jacobian is analytic (ltc_jacobian).
 // A step that would make A singular or flip it (β ≤ 0) is rejected as invalid.
-// The last point's evaluation is kept (KeptEvaluation); the Jacobian reuses the residual pass's terms
-// in columns_, which are always those of the same point.
+// The last point's evaluation is kept (KeptEvaluation); the Jacobian reuses the residual pass's
+// terms in columns_, which are always those of the same point.
 class LtcCost final : public ceres::CostFunction {
  public:
   explicit LtcCost(const LtcProblem& problem)
-      : magnitude_(problem.magnitude), columns_(ltc_columns(problem)), kept_(problem.samples.size()) {
+      : magnitude_(problem.magnitude),
+        columns_(ltc_columns(problem)),
+        kept_(problem.samples.size()) {
     set_num_residuals(static_cast<int>(problem.samples.size()));
     mutable_parameter_block_sizes()->push_back(4);
   }
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
     const double* p = parameters[0];
     if (!(p[0] - p[2] * p[3] > kLtcMinScale * p[0])) return false;
     kept_.evaluate(
@@ -341,8 +360,9 @@ class LtcCost final : public ceres::CostFunction {
 };
 
 LtcParams clamp_to_bounds(const LtcParams& p) {
-  return {std::clamp(p.m11, kLtcMinScale, kLtcMaxScale), std::clamp(p.m22, kLtcMinScale, kLtcMaxScale),
-          std::clamp(p.m13, -kLtcMaxSkew, kLtcMaxSkew), std::clamp(p.m31, -kLtcMaxSkew, kLtcMaxSkew)};
+  return {
+      std::clamp(p.m11, kLtcMinScale, kLtcMaxScale), std::clamp(p.m22, kLtcMinScale, kLtcMaxScale),
+      std::clamp(p.m13, -kLtcMaxSkew, kLtcMaxSkew), std::clamp(p.m31, -kLtcMaxSkew, kLtcMaxSkew)};
 }
 
 // The largest parameter change, relative to the lobe's scale.
@@ -359,30 +379,35 @@ LtcParams params_of(const FitResult& r) {
 
 }  // namespace
 
-std::vector<LtcL3Error> ltc_l3_errors(double nov, double alpha, double magnitude, const std::vector<LtcLobe>& lobes,
-                                      int samples) {
+std::vector<LtcL3Error> ltc_l3_errors(double nov, double alpha, double magnitude,
+                                      const std::vector<LtcLobe>& lobes, int samples) {
   const brdf::Vec3 v = brdf::view_from_nov(nov);
   const LtcPointSet set = point_set(hammersley_points(std::max(1, samples)));
   return l3_errors(v, alpha, magnitude, ggx_half(v, alpha, set.disk), set, lobes);
 }
 
-LtcL3Error ltc_l3_error(double nov, double alpha, double magnitude, const LtcLobe& lobe, int samples) {
+LtcL3Error ltc_l3_error(double nov, double alpha, double magnitude, const LtcLobe& lobe,
+                        int samples) {
   return ltc_l3_errors(nov, alpha, magnitude, {lobe}, samples)[0];
 }
 
-LtcProblem make_ltc_problem(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
-                            const LtcParams& proposal, int sample_sqrt) {
+LtcProblem make_ltc_problem(double nov, double alpha, double magnitude,
+                            const brdf::Vec3& average_dir, const LtcParams& proposal,
+                            int sample_sqrt) {
   const LtcPointSet set = point_set(stratified_midpoints(std::max(1, sample_sqrt)));
   return assemble_problem(nov, alpha, magnitude, ltc_frame_from_average_direction(average_dir),
                           ggx_half(brdf::view_from_nov(nov), alpha, set.disk), set, proposal);
 }
 
-double ltc_objective(const LtcProblem& problem, const LtcParams& p) { return 0.5 * sum_squared_residuals(problem, p); }
+double ltc_objective(const LtcProblem& problem, const LtcParams& p) {
+  return 0.5 * sum_squared_residuals(problem, p);
+}
 
 LtcParams extrapolate_ltc_start(const LtcParams& prev, const LtcParams& prev2) {
-  const LtcParams e{2.0 * prev.m11 - prev2.m11, 2.0 * prev.m22 - prev2.m22, 2.0 * prev.m13 - prev2.m13,
-                    2.0 * prev.m31 - prev2.m31};
-  const bool valid = e.m11 > kLtcMinScale && e.m22 > kLtcMinScale && e.m11 - e.m13 * e.m31 > kLtcMinScale * e.m11;
+  const LtcParams e{2.0 * prev.m11 - prev2.m11, 2.0 * prev.m22 - prev2.m22,
+                    2.0 * prev.m13 - prev2.m13, 2.0 * prev.m31 - prev2.m31};
+  const bool valid =
+      e.m11 > kLtcMinScale && e.m22 > kLtcMinScale && e.m11 - e.m13 * e.m31 > kLtcMinScale * e.m11;
   return valid ? clamp_to_bounds(e) : prev;
 }
 
@@ -394,8 +419,9 @@ struct Rounds {
   FitResult fit;
   int rounds = 0;
 };
-Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& frame, const Directions& ggx,
-                  const LtcPointSet& set, const LtcParams& start, bool isotropic, const LtcSolver& solver) {
+Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& frame,
+                  const Directions& ggx, const LtcPointSet& set, const LtcParams& start,
+                  bool isotropic, const LtcSolver& solver) {
   Rounds out{start, {}, 0};
   while (out.rounds < kLtcMaxRounds) {
     const auto problem = assemble_problem(nov, alpha, magnitude, frame, ggx, set, out.params);
@@ -409,8 +435,8 @@ Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& fr
   return out;
 }
 
-// The point of the segment from `best` (held-out error `best_error`) to `target` nearest `target` whose
-// error stays within `bound`: `target` itself when it is; otherwise the last of the steps of
+// The point of the segment from `best` (held-out error `best_error`) to `target` nearest `target`
+// whose error stays within `bound`: `target` itself when it is; otherwise the last of the steps of
 // 1/kLtcContinuationSteps from `best` that is, refined by kLtcContinuationBisections bisections
 // towards the first that is not (the walk stays in `best`'s valley).
 struct Chosen {
@@ -421,7 +447,8 @@ Chosen toward_continuation(const LtcParams& best, const LtcParams& target, doubl
                            const std::function<double(const LtcParams&)>& error) {
   auto at = [&](double s) {
     return LtcParams{best.m11 + s * (target.m11 - best.m11), best.m22 + s * (target.m22 - best.m22),
-                     best.m13 + s * (target.m13 - best.m13), best.m31 + s * (target.m31 - best.m31)};
+                     best.m13 + s * (target.m13 - best.m13),
+                     best.m31 + s * (target.m31 - best.m31)};
   };
   if (error(target) <= bound) return {target, 1.0};
   double lo = 0.0, hi = 1.0;
@@ -443,20 +470,22 @@ Chosen toward_continuation(const LtcParams& best, const LtcParams& target, doubl
 }  // namespace
 
 LtcCellPoints ltc_cell_points(int sample_sqrt) {
-  return {point_set(stratified_midpoints(std::max(1, sample_sqrt))), point_set(hammersley_points(kLtcHeldOutSamples)),
+  return {point_set(stratified_midpoints(std::max(1, sample_sqrt))),
+          point_set(hammersley_points(kLtcHeldOutSamples)),
           point_set(hammersley_points(kLtcNearEqualSamples))};
 }
 
 LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
-                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver, int sample_sqrt,
-                        double near_equal_margin) {
-  return fit_ltc_cell(nov, alpha, magnitude, average_dir, starts, isotropic, solver, ltc_cell_points(sample_sqrt),
-                      near_equal_margin);
+                        const std::vector<LtcParams>& starts, bool isotropic,
+                        const LtcSolver& solver, int sample_sqrt, double near_equal_margin) {
+  return fit_ltc_cell(nov, alpha, magnitude, average_dir, starts, isotropic, solver,
+                      ltc_cell_points(sample_sqrt), near_equal_margin);
 }
 
 LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::Vec3& average_dir,
-                        const std::vector<LtcParams>& starts, bool isotropic, const LtcSolver& solver,
-                        const LtcCellPoints& points, double near_equal_margin) {
+                        const std::vector<LtcParams>& starts, bool isotropic,
+                        const LtcSolver& solver, const LtcCellPoints& points,
+                        double near_equal_margin) {
   if (starts.empty()) throw std::invalid_argument("fit_ltc_cell needs a start");
   const brdf::Vec3 v = brdf::view_from_nov(nov);
   const LtcFrame frame = ltc_frame_from_average_direction(average_dir);
@@ -464,7 +493,8 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   const Directions ggx = ggx_half(v, alpha, set.disk);
   // The relative L3 error of an LTC on a point set whose GGX half is `judge_ggx`.
   auto judged = [&](const Directions& judge_ggx, const LtcPointSet& judge_set, const LtcParams& x) {
-    return l3_errors(v, alpha, magnitude, judge_ggx, judge_set, {ltc_lobe(ltc_matrix(frame, x))})[0].relative();
+    return l3_errors(v, alpha, magnitude, judge_ggx, judge_set, {ltc_lobe(ltc_matrix(frame, x))})[0]
+        .relative();
   };
   const Directions heldout_ggx = ggx_half(v, alpha, points.heldout.disk);
   auto heldout = [&](const LtcParams& x) { return judged(heldout_ggx, points.heldout, x); };
@@ -478,10 +508,12 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   }
   out.heldout_error = std::numeric_limits<double>::infinity();
   for (const auto& s : starts) {
-    const auto r = fit_rounds(nov, alpha, magnitude, frame, ggx, set, clamp_to_bounds(s), isotropic, solver);
+    const auto r =
+        fit_rounds(nov, alpha, magnitude, frame, ggx, set, clamp_to_bounds(s), isotropic, solver);
     const double e = heldout(r.params);
     ++out.fits;
-    if (e < out.heldout_error) out.params = r.params, out.fit = r.fit, out.rounds = r.rounds, out.heldout_error = e;
+    if (e < out.heldout_error)
+      out.params = r.params, out.fit = r.fit, out.rounds = r.rounds, out.heldout_error = e;
     const bool rejected = out.heldout_error > out.start_heldout_error * (1.0 + kLtcHeldOutMargin);
     if (r.rounds < kLtcRetryRounds && !rejected) break;
   }
@@ -491,9 +523,11 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   // The near-equal choice, judged on kLtcNearEqualSamples fresh directions.
   const Directions near_ggx = ggx_half(v, alpha, points.near_equal.disk);
   auto near_error = [&](const LtcParams& x) { return judged(near_ggx, points.near_equal, x); };
-  const auto c = toward_continuation(out.params, clamp_to_bounds(starts.front()),
-                                     near_error(out.params) * (1.0 + near_equal_margin), near_error);
-  if (c.step > 0.0) out.params = c.params, out.heldout_error = heldout(c.params), out.continuation_step = c.step;
+  const auto c =
+      toward_continuation(out.params, clamp_to_bounds(starts.front()),
+                          near_error(out.params) * (1.0 + near_equal_margin), near_error);
+  if (c.step > 0.0)
+    out.params = c.params, out.heldout_error = heldout(c.params), out.continuation_step = c.step;
   return out;
 }
 
@@ -543,8 +577,10 @@ GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p)
     out.report = "the cost function rejected the parameters";
     return out;
   }
-  // Central differences of Σ r² with steps of 1e-5 of each parameter's scale, Richardson-extrapolated.
-  const double scale[4] = {p.m11, p.m22, std::max(p.m11, std::abs(p.m13)), std::max(p.m11, std::abs(p.m31))};
+  // Central differences of Σ r² with steps of 1e-5 of each parameter's scale,
+  // Richardson-extrapolated.
+  const double scale[4] = {p.m11, p.m22, std::max(p.m11, std::abs(p.m13)),
+                           std::max(p.m11, std::abs(p.m31))};
   double analytic[4] = {0, 0, 0, 0}, numeric[4], largest = 0.0;
   for (int c = 0; c < 4; ++c) {
     for (size_t k = 0; k < n; ++k) analytic[c] += 2.0 * r[k] * jac[4 * k + c];
@@ -552,15 +588,18 @@ GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p)
       double a[4] = {q[0], q[1], q[2], q[3]}, b[4] = {q[0], q[1], q[2], q[3]};
       a[c] += h, b[c] -= h;
       return (sum_squared_residuals(problem, {a[0], a[1], a[2], a[3]}) -
-              sum_squared_residuals(problem, {b[0], b[1], b[2], b[3]})) / (2.0 * h);
+              sum_squared_residuals(problem, {b[0], b[1], b[2], b[3]})) /
+             (2.0 * h);
     };
     const double h = 1e-5 * scale[c];
     numeric[c] = (4.0 * diff(h) - diff(2.0 * h)) / 3.0;
     largest = std::max({largest, std::abs(analytic[c]), std::abs(numeric[c])});
   }
   for (int c = 0; c < 4; ++c) {
-    out.max_relative_error = std::max(out.max_relative_error, std::abs(analytic[c] - numeric[c]) / std::max(largest, 1e-300));
-    out.report += fmt::format("d/dθ{}: analytic {:.10g}, numeric {:.10g}\n", c, analytic[c], numeric[c]);
+    out.max_relative_error = std::max(
+        out.max_relative_error, std::abs(analytic[c] - numeric[c]) / std::max(largest, 1e-300));
+    out.report +=
+        fmt::format("d/dθ{}: analytic {:.10g}, numeric {:.10g}\n", c, analytic[c], numeric[c]);
   }
   out.ok = true;
   return out;

@@ -19,10 +19,12 @@ inline color::RgbT<float> evaluate_rgb(Model m, float cos_theta, const float* pa
 
 // Evaluates model m (flat parameter layout) at the n cosines; writes planar RGB: out[0..n) red,
 // out[n..2n) green, out[2n..3n) blue.
-inline void evaluate_batch(Model m, const float* params, const float* cos_theta, std::size_t n, float* out) {
+inline void evaluate_batch(Model m, const float* params, const float* cos_theta, std::size_t n,
+                           float* out) {
   model_spec(m).batch_float(params, cos_theta, n, out);
 }
-inline void evaluate_batch(Model m, const double* params, const double* cos_theta, std::size_t n, double* out) {
+inline void evaluate_batch(Model m, const double* params, const double* cos_theta, std::size_t n,
+                           double* out) {
   model_spec(m).batch_double(params, cos_theta, n, out);
 }
 

@@ -1,16 +1,16 @@
 #include "fresnel/derive.h"
 
-#include "fresnel/models/gulbrandsen.h"
-#include "fresnel/models/schlick.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "fresnel/models/gulbrandsen.h"
+#include "fresnel/models/schlick.h"
 
 namespace fl::fresnel {
 
 DerivedParameters derive_parameters(const std::vector<color::Rgb>& w, const color::Mat3& rgb_to_xyz,
-                                    const spectral::ComplexIorSpectrum& ior_absolute, double eta_outside,
-                                    const std::array<double, 3>& ps_nm) {
+                                    const spectral::ComplexIorSpectrum& ior_absolute,
+                                    double eta_outside, const std::array<double, 3>& ps_nm) {
   spectral::ComplexIorSpectrum ior = ior_absolute;
   for (auto& v : ior.ior) v /= eta_outside;
   DerivedParameters d;

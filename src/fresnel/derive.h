@@ -10,17 +10,19 @@
 namespace fl::fresnel {
 
 struct DerivedParameters {
-  color::Rgb f0, f82;             // the spectral procedure at 0° and at arccos(1/7)
-  color::Rgb f82_tint;            // F82 / Schlick(F0) at arccos(1/7): OpenPBR's specular_color
-  color::Rgb eta_ps, kappa_ps;    // point-sampled
+  color::Rgb f0, f82;               // the spectral procedure at 0° and at arccos(1/7)
+  color::Rgb f82_tint;              // F82 / Schlick(F0) at arccos(1/7): OpenPBR's specular_color
+  color::Rgb eta_ps, kappa_ps;      // point-sampled
   color::Rgb eta_refl, kappa_refl;  // processed as reflectances
   color::Rgb g_refl_eta, g_ps_eta;  // Gulbrandsen g from (F0, Refl. η) and (F0, PS η), unclamped
-  double eta_rep = 1, kappa_rep = 0;  // Cook-Torrance representative index: luminance (Y) of Refl. η, κ
+  double eta_rep = 1,
+         kappa_rep = 0;  // Cook-Torrance representative index: luminance (Y) of Refl. η, κ
 };
 
 // Every index is taken relative to the outside medium eta_outside. `rgb_to_xyz` gives the
 // luminance row for the representative index.
-DerivedParameters derive_parameters(const std::vector<color::Rgb>& rgb_weights, const color::Mat3& rgb_to_xyz,
+DerivedParameters derive_parameters(const std::vector<color::Rgb>& rgb_weights,
+                                    const color::Mat3& rgb_to_xyz,
                                     const spectral::ComplexIorSpectrum& ior, double eta_outside,
                                     const std::array<double, 3>& point_sample_nm);
 

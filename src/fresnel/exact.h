@@ -58,7 +58,8 @@ inline double fresnel_conductor(double cos_theta_i, std::complex<double> eta) {
 }
 
 // Born & Wolf, Principles of Optics §1.5.2: dielectric Fresnel equations for the real relative
-// index eta = η_t/η_i (Snell's law; total internal reflection when eta < 1 past the critical angle).
+// index eta = η_t/η_i (Snell's law; total internal reflection when eta < 1 past the critical
+// angle).
 template <class T>
 Polarized<T> fresnel_dielectric_polarized(T cos_theta_i, T eta) {
   using std::sqrt;

@@ -10,7 +10,8 @@ namespace fl::fresnel {
 // a² = (a² + b² + t0)/2 = (t⁺(t⁺ + a² + b²) + 2η²κ²)/(a² + b² + |t0|) (every term non-negative),
 // so float keeps its precision for κ > η (silver, gold) and η < 1. |t0| is written max(t0, −t0).
 // The 1e-30 floors only keep 0/0 (an index-matched interface) finite.
-inline constexpr ShaderHelper kConductorShader{"fl_fresnel_conductor", R"(vec3 fl_fresnel_conductor(float cos_theta, vec3 eta, vec3 kappa) {
+inline constexpr ShaderHelper kConductorShader{
+    "fl_fresnel_conductor", R"(vec3 fl_fresnel_conductor(float cos_theta, vec3 eta, vec3 kappa) {
   float c = clamp(cos_theta, 0.0, 1.0);
   float c2 = c * c;
   float s2 = 1.0 - c2;

@@ -1,10 +1,10 @@
 #include "fresnel/ground_truth.h"
 
+#include <algorithm>
+
 #include "fresnel/exact.h"
 #include "spectral/spectrum.h"
 #include "util/codegen.h"
-
-#include <algorithm>
 
 namespace fl::fresnel {
 
@@ -15,16 +15,18 @@ constexpr size_t kColumn = 128;
 
 // R(λ) at cosθ for n relative indices, eta_kappa interleaved (η₀, κ₀, η₁, κ₁, ...), each divided
 // by eta_outside: a column loop (FL_VECTOR_CLONES), each lane rounding as the scalar kernel does.
-FL_VECTOR_CLONES void reflectance_column(double cos_theta, const double* eta_kappa, double eta_outside, size_t n,
-                                         double* __restrict out) {
+FL_VECTOR_CLONES void reflectance_column(double cos_theta, const double* eta_kappa,
+                                         double eta_outside, size_t n, double* __restrict out) {
   for (size_t i = 0; i < n; ++i)
-    out[i] = fresnel_conductor<double>(cos_theta, eta_kappa[2 * i] / eta_outside, eta_kappa[2 * i + 1] / eta_outside);
+    out[i] = fresnel_conductor<double>(cos_theta, eta_kappa[2 * i] / eta_outside,
+                                       eta_kappa[2 * i + 1] / eta_outside);
 }
 
 }  // namespace
 
-color::Rgb spectral_reflectance_rgb(const std::vector<color::Rgb>& w, const spectral::ComplexIorSpectrum& ior,
-                                    double cos_theta, double eta_outside) {
+color::Rgb spectral_reflectance_rgb(const std::vector<color::Rgb>& w,
+                                    const spectral::ComplexIorSpectrum& ior, double cos_theta,
+                                    double eta_outside) {
   // std::complex<double> is laid out as two doubles (real, imaginary).
   const double* eta_kappa = reinterpret_cast<const double*>(ior.ior.data());
   double r[kColumn];
@@ -38,14 +40,16 @@ color::Rgb spectral_reflectance_rgb(const std::vector<color::Rgb>& w, const spec
   return out;
 }
 
-color::Rgb process_as_reflectance(const std::vector<color::Rgb>& w, const spectral::ComplexIorSpectrum& ior,
-                                  bool kappa) {
+color::Rgb process_as_reflectance(const std::vector<color::Rgb>& w,
+                                  const spectral::ComplexIorSpectrum& ior, bool kappa) {
   color::Rgb out;
-  for (size_t i = 0; i < w.size(); ++i) out = out + (kappa ? ior.ior[i].imag() : ior.ior[i].real()) * w[i];
+  for (size_t i = 0; i < w.size(); ++i)
+    out = out + (kappa ? ior.ior[i].imag() : ior.ior[i].real()) * w[i];
   return out;
 }
 
-PointSampled point_sample(const spectral::ComplexIorSpectrum& ior, const std::array<double, 3>& lambda_nm) {
+PointSampled point_sample(const spectral::ComplexIorSpectrum& ior,
+                          const std::array<double, 3>& lambda_nm) {
   std::vector<double> x(ior.grid.count), n(ior.grid.count), k(ior.grid.count);
   for (int i = 0; i < ior.grid.count; ++i) {
     x[i] = ior.grid.lambda_nm(i);

@@ -1,6 +1,6 @@
 #pragma once
-// Spectral ground truth and the spectral procedures that derive RGB parameters (docs/conventions.md,
-// "Fresnel definitions" and "Deriving RGB parameters").
+// Spectral ground truth and the spectral procedures that derive RGB parameters
+// (docs/conventions.md, "Fresnel definitions" and "Deriving RGB parameters").
 #include <array>
 #include <vector>
 
@@ -23,7 +23,8 @@ color::Rgb process_as_reflectance(const std::vector<color::Rgb>& rgb_weights,
 struct PointSampled {
   color::Rgb eta, kappa;
 };
-PointSampled point_sample(const spectral::ComplexIorSpectrum& ior, const std::array<double, 3>& lambda_nm);
+PointSampled point_sample(const spectral::ComplexIorSpectrum& ior,
+                          const std::array<double, 3>& lambda_nm);
 
 // Default point-sampling wavelengths: 630, 532 and 467 nm, the monochromatic primaries of
 // Rec.2020 — the nearest thing a wide-gamut RGB space has to one wavelength per channel.

@@ -27,8 +27,8 @@ inline double f0_in_medium_metal(double f0, double eta_e) {
   return (a * one_minus + 4.0 * f0) / (b * one_minus + 4.0 * f0);
 }
 
-// The real index whose normal-incidence reflectance ((η − 1)/(η + 1))² is f0: η = (1 + √f0)/(1 − √f0),
-// with f0 held below 1 so that η stays finite.
+// The real index whose normal-incidence reflectance ((η − 1)/(η + 1))² is f0: η = (1 + √f0)/(1 −
+// √f0), with f0 held below 1 so that η stays finite.
 inline double ior_from_f0(double f0) {
   const double s = std::sqrt(std::clamp(f0, 0.0, 0.999999));
   return (1.0 + s) / (1.0 - s);

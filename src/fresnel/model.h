@@ -35,8 +35,9 @@ struct ParamSpec {
   const char* name;  // column name without the channel suffix: "f0", "eta_rep"
   const char* unit;  // for people: "reflectance", "relative index", ...
   ParamKind kind;
-  ParamRange fit;     // the box a fit searches
-  ParamRange domain;  // where the kernel is defined; converted or blended values are clamped into it
+  ParamRange fit;  // the box a fit searches
+  ParamRange
+      domain;  // where the kernel is defined; converted or blended values are clamped into it
 };
 
 // What an engine needs to shade a model under one kind of lighting: the lookup-table channels it
@@ -58,9 +59,9 @@ struct PreIntegration {
 };
 
 // The channels the lookup tables provide. dfg1, dfg2: the split-sum scale and bias, ∫(1 − Fc)ρ cos
-// and ∫Fc ρ cos with Fc = (1 − v·h)⁵; dfg_f82: ∫ μ(1 − μ)⁶ ρ cos (μ = v·h), the F82 term's analogue.
-// ltc_matrix: the four entries of M⁻¹; n_d, f_d, l_d: the lobe's norm, Schlick moment and F82
-// moment (Hill's n_D, f_D and their F82 analogue).
+// and ∫Fc ρ cos with Fc = (1 − v·h)⁵; dfg_f82: ∫ μ(1 − μ)⁶ ρ cos (μ = v·h), the F82 term's
+// analogue. ltc_matrix: the four entries of M⁻¹; n_d, f_d, l_d: the lobe's norm, Schlick moment and
+// F82 moment (Hill's n_D, f_D and their F82 analogue).
 namespace lut_channel {
 inline constexpr const char* kDfgScale = "dfg1";
 inline constexpr const char* kDfgBias = "dfg2";
@@ -130,7 +131,8 @@ struct ModelSpec {
   std::vector<ParamSpec> shared_params;
   PreIntegration pre_integration;
   ShaderCode shader;
-  bool can_leave_unit_range;  // the curve can leave [0, 1] for some parameters (reported, not clamped)
+  bool can_leave_unit_range;  // the curve can leave [0, 1] for some parameters (reported, not
+                              // clamped)
   bool has_output_clamp;      // the kernel clamps its output; evaluate(..., unclamped) skips that
 
   // Evaluations over the flat parameter layout.
@@ -191,16 +193,22 @@ struct UnpreparedChannel {
   const T* shared;
 };
 template <class M, class T>
-concept PreparesChannel = requires(const T* p) { M::prepare(p, p); };
+concept PreparesChannel = requires(const T* p) {
+  M::prepare(p, p);
+};
 template <class M, class T>
 auto prepare_channel(const T* p, const T* shared) {
-  if constexpr (PreparesChannel<M, T>) return M::prepare(p, shared);
-  else return UnpreparedChannel<T>{p, shared};
+  if constexpr (PreparesChannel<M, T>)
+    return M::prepare(p, shared);
+  else
+    return UnpreparedChannel<T>{p, shared};
 }
 template <class M, class T, class P>
 T channel_at(T cos_theta, const P& prepared) {
-  if constexpr (PreparesChannel<M, T>) return M::channel_at(cos_theta, prepared);
-  else return M::channel(cos_theta, prepared.p, prepared.shared);
+  if constexpr (PreparesChannel<M, T>)
+    return M::channel_at(cos_theta, prepared);
+  else
+    return M::channel(cos_theta, prepared.p, prepared.shared);
 }
 
 // Sizes of unit M's flat parameter vector.

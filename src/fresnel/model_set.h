@@ -24,7 +24,8 @@ std::vector<color::Rgb> evaluate_curve_unclamped(Model m, const std::vector<doub
                                                  const std::vector<double>& cos_thetas);
 
 // The kernel's output clamp changed the curve somewhere (false for models without one).
-bool output_clamped(Model m, const std::vector<double>& params, const std::vector<double>& cos_thetas);
+bool output_clamped(Model m, const std::vector<double>& params,
+                    const std::vector<double>& cos_thetas);
 
 // How many reflectance parameters (F0, F82, F90) lie outside [0, 1].
 int reflectances_outside_unit(Model m, const std::vector<double>& params);

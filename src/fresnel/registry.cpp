@@ -11,22 +11,30 @@ namespace fl::fresnel {
 namespace {
 
 template <class Unit>
-constexpr bool kHasOutputClamp = requires(const double* p) { Unit::channel_unclamped(0.0, p, p); };
+constexpr bool kHasOutputClamp = requires(const double* p) {
+  Unit::channel_unclamped(0.0, p, p);
+};
 
 // Unit with its output clamp removed (where it has one).
 template <class Unit>
 struct Unclamped : Unit {
   template <class T>
   static T channel(T cos_theta, const T* p, const T* shared) {
-    if constexpr (kHasOutputClamp<Unit>) return Unit::channel_unclamped(cos_theta, p, shared);
-    else return Unit::channel(cos_theta, p, shared);
+    if constexpr (kHasOutputClamp<Unit>)
+      return Unit::channel_unclamped(cos_theta, p, shared);
+    else
+      return Unit::channel(cos_theta, p, shared);
   }
 };
 
 template <class Unit>
-constexpr bool kHasTableTerms = requires(const double* p) { Unit::table_terms(p, p); };
+constexpr bool kHasTableTerms = requires(const double* p) {
+  Unit::table_terms(p, p);
+};
 template <class Unit>
-constexpr bool kHasAverage = requires(const double* p) { Unit::average(p, p); };
+constexpr bool kHasAverage = requires(const double* p) {
+  Unit::average(p, p);
+};
 
 // Channel c's parameters and the shared ones, from the flat layout.
 template <class Unit>
@@ -48,13 +56,17 @@ double average_flat(const double* params, int c) {
 
 template <class Unit>
 constexpr TableTerms (*table_terms_of())(const double*, int) {
-  if constexpr (kHasTableTerms<Unit>) return &table_terms_flat<Unit>;
-  else return nullptr;
+  if constexpr (kHasTableTerms<Unit>)
+    return &table_terms_flat<Unit>;
+  else
+    return nullptr;
 }
 template <class Unit>
 constexpr double (*average_of())(const double*, int) {
-  if constexpr (kHasAverage<Unit>) return &average_flat<Unit>;
-  else return nullptr;
+  if constexpr (kHasAverage<Unit>)
+    return &average_flat<Unit>;
+  else
+    return nullptr;
 }
 
 template <class Unit>
@@ -87,11 +99,12 @@ std::vector<ModelSpec> make_specs(ModelList<Units...>) {
   return {make_spec<Units>()...};
 }
 
-std::vector<color::Rgb> curve(Model m, const std::vector<double>& params, const std::vector<double>& cos_thetas,
-                              bool unclamped) {
+std::vector<color::Rgb> curve(Model m, const std::vector<double>& params,
+                              const std::vector<double>& cos_thetas, bool unclamped) {
   const auto& spec = model_spec(m);
   if (static_cast<int>(params.size()) != spec.param_count())
-    throw std::invalid_argument(fmt::format("{}: {} parameters, expected {}", spec.name, params.size(), spec.param_count()));
+    throw std::invalid_argument(fmt::format("{}: {} parameters, expected {}", spec.name,
+                                            params.size(), spec.param_count()));
   std::vector<color::Rgb> out;
   out.reserve(cos_thetas.size());
   for (double c : cos_thetas) out.push_back(spec.evaluate(c, params.data(), unclamped));
@@ -131,7 +144,8 @@ const std::vector<ModelSpec>& model_specs() {
 
 const ModelSpec& model_spec(Model m) {
   const auto& specs = model_specs();
-  if (m.index() < 0 || m.index() >= static_cast<int>(specs.size())) throw std::logic_error("unknown model");
+  if (m.index() < 0 || m.index() >= static_cast<int>(specs.size()))
+    throw std::logic_error("unknown model");
   return specs[static_cast<size_t>(m.index())];
 }
 
@@ -154,11 +168,13 @@ std::vector<color::Rgb> evaluate_curve_unclamped(Model m, const std::vector<doub
   return curve(m, params, cos_thetas, true);
 }
 
-bool output_clamped(Model m, const std::vector<double>& params, const std::vector<double>& cos_thetas) {
+bool output_clamped(Model m, const std::vector<double>& params,
+                    const std::vector<double>& cos_thetas) {
   const auto& spec = model_spec(m);
   if (!spec.has_output_clamp) return false;
   for (double c : cos_thetas) {
-    const auto a = spec.evaluate(c, params.data(), false), b = spec.evaluate(c, params.data(), true);
+    const auto a = spec.evaluate(c, params.data(), false),
+               b = spec.evaluate(c, params.data(), true);
     if (a.r != b.r || a.g != b.g || a.b != b.b) return true;
   }
   return false;

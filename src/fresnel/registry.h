@@ -18,8 +18,8 @@ struct ModelList {
   static constexpr int kSize = sizeof...(Units);
 };
 
-using Registry = ModelList<models::Schlick, models::GeneralizedSchlick, models::CookTorrance, models::Lazanyi,
-                           models::F82, models::Gulbrandsen, models::FresnelRgb>;
+using Registry = ModelList<models::Schlick, models::GeneralizedSchlick, models::CookTorrance,
+                           models::Lazanyi, models::F82, models::Gulbrandsen, models::FresnelRgb>;
 
 namespace detail {
 template <class Unit, class... Units>

@@ -4,8 +4,8 @@
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <cairo.h>
-#include <fontconfig/fontconfig.h>
 #include <fmt/format.h>
+#include <fontconfig/fontconfig.h>
 
 #include <cctype>
 #include <cstdlib>
@@ -28,14 +28,16 @@ constexpr const char* kLabelFamily = "DejaVu Sans";
 // font would change every figure).
 std::string dejavu_file() {
   const auto fail = [] {
-    return InputError(kLabelFamily, 0, "label font not found (install fonts-dejavu-core or set FRESNEL_LAB_FONT)");
+    return InputError(kLabelFamily, 0,
+                      "label font not found (install fonts-dejavu-core or set FRESNEL_LAB_FONT)");
   };
-  std::unique_ptr<FcPattern, void (*)(FcPattern*)> want(FcNameParse(reinterpret_cast<const FcChar8*>(kLabelFamily)),
-                                                         FcPatternDestroy);
+  std::unique_ptr<FcPattern, void (*)(FcPattern*)> want(
+      FcNameParse(reinterpret_cast<const FcChar8*>(kLabelFamily)), FcPatternDestroy);
   if (!want || !FcConfigSubstitute(nullptr, want.get(), FcMatchPattern)) throw fail();
   FcDefaultSubstitute(want.get());
   FcResult result = FcResultNoMatch;
-  std::unique_ptr<FcPattern, void (*)(FcPattern*)> got(FcFontMatch(nullptr, want.get(), &result), FcPatternDestroy);
+  std::unique_ptr<FcPattern, void (*)(FcPattern*)> got(FcFontMatch(nullptr, want.get(), &result),
+                                                       FcPatternDestroy);
   FcChar8 *family = nullptr, *file = nullptr;
   if (!got || FcPatternGetString(got.get(), FC_FAMILY, 0, &family) != FcResultMatch ||
       FcPatternGetString(got.get(), FC_FILE, 0, &file) != FcResultMatch ||
@@ -47,7 +49,9 @@ std::string dejavu_file() {
 // A Cairo FreeType face for one font file. The pattern holds only the file, so no fontconfig
 // rendering preferences of this machine apply: set_font_options decides.
 cairo_font_face_t* load_face(const std::string& path) {
-  const auto fail = [&] { return InputError(path, 0, "cannot load the label font (a TrueType or OpenType file)"); };
+  const auto fail = [&] {
+    return InputError(path, 0, "cannot load the label font (a TrueType or OpenType file)");
+  };
   if (!std::filesystem::is_regular_file(path)) throw fail();
   FcPattern* pattern = FcPatternCreate();
   FcPatternAddString(pattern, FC_FILE, reinterpret_cast<const FcChar8*>(path.c_str()));
@@ -78,7 +82,9 @@ cairo_font_face_t* label_face() {
   return face;
 }
 
-void set_colour(cairo_t* cr, Rgb8 c) { cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
+void set_colour(cairo_t* cr, Rgb8 c) {
+  cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0);
+}
 
 void paint(cairo_t* cr, const Rect& r) {
   set_colour(cr, r.fill);
@@ -169,13 +175,15 @@ void set_font_options(cairo_t* cr, FileType type) {
 }
 
 void check(cairo_status_t status) {
-  if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(status));
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(status));
 }
 
 using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 
 void paint_drawing(cairo_surface_t* surface, const Drawing& d, FileType type) {
-  const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> owner(cairo_create(surface), cairo_destroy);
+  const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> owner(cairo_create(surface),
+                                                                 cairo_destroy);
   cairo_t* cr = owner.get();
   set_font_options(cr, type);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
@@ -200,7 +208,8 @@ std::string renumber_svg_ids(const std::string& svg) {
   auto last = svg.cbegin();
   for (std::sregex_iterator it(svg.begin(), svg.end(), kId), end; it != end; ++it) {
     const auto& m = *it;
-    const auto [entry, added] = numbers.try_emplace(m[2].str() + m[3].str(), static_cast<int>(numbers.size()) + 1);
+    const auto [entry, added] =
+        numbers.try_emplace(m[2].str() + m[3].str(), static_cast<int>(numbers.size()) + 1);
     out.append(last, m[0].first);
     out += m[1].str() + m[2].str() + std::to_string(entry->second);
     last = m[0].second;
@@ -230,14 +239,17 @@ FileType file_type(const std::string& path) {
   if (ext == ".svg") return FileType::Svg;
   if (ext == ".pdf") return FileType::Pdf;
   throw InputError(path, 0,
-                   fmt::format("unknown output type '{}' (expected .png, .svg or .pdf)", ext.empty() ? "(none)" : ext));
+                   fmt::format("unknown output type '{}' (expected .png, .svg or .pdf)",
+                               ext.empty() ? "(none)" : ext));
 }
 
 std::string encode(const Drawing& d, FileType type) {
-  if (d.width <= 0 || d.height <= 0) throw std::logic_error("encode: a drawing needs a positive size");
+  if (d.width <= 0 || d.height <= 0)
+    throw std::logic_error("encode: a drawing needs a positive size");
   std::string out;
-  const SurfacePtr s(type == FileType::Png ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height)
-                                           : vector_surface(type, d, out),
+  const SurfacePtr s(type == FileType::Png
+                         ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height)
+                         : vector_surface(type, d, out),
                      cairo_surface_destroy);
   paint_drawing(s.get(), d, type);
   if (type == FileType::Png) check(cairo_surface_write_to_png_stream(s.get(), append_bytes, &out));
@@ -247,8 +259,10 @@ std::string encode(const Drawing& d, FileType type) {
 }
 
 Image8 rasterize(const Drawing& d) {
-  if (d.width <= 0 || d.height <= 0) throw std::logic_error("rasterize: a drawing needs a positive size");
-  const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height), cairo_surface_destroy);
+  if (d.width <= 0 || d.height <= 0)
+    throw std::logic_error("rasterize: a drawing needs a positive size");
+  const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height),
+                     cairo_surface_destroy);
   paint_drawing(s.get(), d, FileType::Png);
   cairo_surface_flush(s.get());
   check(cairo_surface_status(s.get()));
@@ -256,10 +270,12 @@ Image8 rasterize(const Drawing& d) {
   const unsigned char* data = cairo_image_surface_get_data(s.get());
   const int stride = cairo_image_surface_get_stride(s.get());
   for (int y = 0; y < d.height; ++y) {
-    const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
+    const auto* row =
+        reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
     for (int x = 0; x < d.width; ++x)
-      img.set(x, y, {static_cast<std::uint8_t>(row[x] >> 16), static_cast<std::uint8_t>(row[x] >> 8),
-                     static_cast<std::uint8_t>(row[x])});
+      img.set(x, y,
+              {static_cast<std::uint8_t>(row[x] >> 16), static_cast<std::uint8_t>(row[x] >> 8),
+               static_cast<std::uint8_t>(row[x])});
   }
   return img;
 }
@@ -276,6 +292,8 @@ double text_width_px(const std::string& utf8, double size_px) {
   return te.x_advance;
 }
 
-void write_drawing(const std::string& path, const Drawing& d) { write_file_atomic(path, encode(d, file_type(path))); }
+void write_drawing(const std::string& path, const Drawing& d) {
+  write_file_atomic(path, encode(d, file_type(path)));
+}
 
 }  // namespace fl::report

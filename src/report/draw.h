@@ -68,12 +68,14 @@ struct Drawing {
 
 enum class FileType { Png, Svg, Pdf };
 
-// From the file name's extension (.png, .svg, .pdf, any case); InputError naming the file otherwise.
+// From the file name's extension (.png, .svg, .pdf, any case); InputError naming the file
+// otherwise.
 FileType file_type(const std::string& path);
 
 // The file's bytes. PNG: 8-bit RGB, greyscale-antialiased text and lines, no time or text chunks;
 // SVG and PDF: vector shapes, text as outlines (SVG) or an embedded font subset (PDF), no creation
-// date. The same Drawing gives the same bytes. Throws InputError when the label font cannot be loaded.
+// date. The same Drawing gives the same bytes. Throws InputError when the label font cannot be
+// loaded.
 std::string encode(const Drawing& d, FileType type);
 
 // The drawing's pixels as PNG output paints them (for frames of an animation, or a picture inside

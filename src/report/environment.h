@@ -9,10 +9,12 @@ namespace fl::report {
 struct LoadedEnvironment {
   analysis::EnvironmentMap map;
   std::string space;        // the file's colour space (a SpaceLibrary name)
-  std::string space_basis;  // how it was decided: "--env-space", "the file's chromaticities", or OpenEXR's default
+  std::string space_basis;  // how it was decided: "--env-space", "the file's chromaticities", or
+                            // OpenEXR's default
   int width = 0, height = 0;
   long long clamped_negative = 0;  // pixel values below 0 read as 0
-  double exposure_ev = 0, scale = 1;  // analysis::environment_map's exposure and the factor it applied
+  double exposure_ev = 0,
+         scale = 1;  // analysis::environment_map's exposure and the factor it applied
   std::string description() const;
 };
 
@@ -21,9 +23,11 @@ struct LoadedEnvironment {
 // and white the file's chromaticities attribute states (within 1e-3 in x and y), or, without that
 // attribute, linear Rec.709 (OpenEXR's default chromaticities); converted into the working space
 // through OpenColorIO (analysis::environment_map). Negative values (lossy compression's ringing)
-// are read as 0 and counted; exposed as analysis::environment_map says. InputError naming the file for an unreadable file, missing R, G or B
-// channels, a non-finite value, a shape that is not 2:1, or chromaticities no known space has.
-LoadedEnvironment load_environment(const analysis::Context& ctx, const std::string& path, const std::string& space,
-                                   double rotation_deg, double exposure_ev);
+// are read as 0 and counted; exposed as analysis::environment_map says. InputError naming the file
+// for an unreadable file, missing R, G or B channels, a non-finite value, a shape that is not 2:1,
+// or chromaticities no known space has.
+LoadedEnvironment load_environment(const analysis::Context& ctx, const std::string& path,
+                                   const std::string& space, double rotation_deg,
+                                   double exposure_ev);
 
 }  // namespace fl::report

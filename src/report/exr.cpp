@@ -1,17 +1,16 @@
 #include "report/exr.h"
 
-#include <fmt/format.h>
-
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfChromaticitiesAttribute.h>
-#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <Imath/half.h>
+#include <fmt/format.h>
 
 #include <cstring>
 
@@ -41,23 +40,27 @@ class MemoryStream : public Imf::OStream {
 
 }  // namespace
 
-std::uint16_t half_bits(float v) { return Imath::half(v).bits(); }
+std::uint16_t half_bits(float v) {
+  return Imath::half(v).bits();
+}
 
 std::string encode_exr(const ExrImage& image) {
   const size_t nc = image.channels.size();
   if (image.width <= 0 || image.height <= 0 || nc == 0 ||
       image.pixels.size() != static_cast<size_t>(image.width) * image.height * nc)
-    throw std::runtime_error(fmt::format("inconsistent EXR image ({}x{}, {} channels, {} values)", image.width,
-                                         image.height, nc, image.pixels.size()));
+    throw std::runtime_error(fmt::format("inconsistent EXR image ({}x{}, {} channels, {} values)",
+                                         image.width, image.height, nc, image.pixels.size()));
   MemoryStream stream;
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
-    for (const auto& [name, value] : image.string_attributes) header.insert(name, Imf::StringAttribute(value));
-    for (const auto& [name, value] : image.float_attributes) header.insert(name, Imf::FloatAttribute(value));
+    for (const auto& [name, value] : image.string_attributes)
+      header.insert(name, Imf::StringAttribute(value));
+    for (const auto& [name, value] : image.float_attributes)
+      header.insert(name, Imf::FloatAttribute(value));
     if (const auto& c = image.chromaticities)
-      Imf::addChromaticities(header, Imf::Chromaticities({(*c)[0], (*c)[1]}, {(*c)[2], (*c)[3]}, {(*c)[4], (*c)[5]},
-                                                         {(*c)[6], (*c)[7]}));
+      Imf::addChromaticities(header, Imf::Chromaticities({(*c)[0], (*c)[1]}, {(*c)[2], (*c)[3]},
+                                                         {(*c)[4], (*c)[5]}, {(*c)[6], (*c)[7]}));
     Imf::FrameBuffer fb;
     const size_t x_stride = sizeof(float) * nc;
     const size_t y_stride = x_stride * image.width;
@@ -76,7 +79,9 @@ std::string encode_exr(const ExrImage& image) {
   return std::move(stream.bytes);
 }
 
-void write_exr_atomic(const std::string& path, const ExrImage& image) { write_file_atomic(path, encode_exr(image)); }
+void write_exr_atomic(const std::string& path, const ExrImage& image) {
+  write_file_atomic(path, encode_exr(image));
+}
 
 ExrImage read_exr(const std::string& path) {
   try {
@@ -86,7 +91,8 @@ ExrImage read_exr(const std::string& path) {
     ExrImage image;
     image.width = dw.max.x - dw.min.x + 1;
     image.height = dw.max.y - dw.min.y + 1;
-    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) image.channels.push_back(it.name());
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+      image.channels.push_back(it.name());
     for (auto it = header.begin(); it != header.end(); ++it) {
       if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
         image.string_attributes.emplace_back(it.name(), s->value());

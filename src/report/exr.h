@@ -1,7 +1,7 @@
 #pragma once
 // Float EXR images for lookup tables (OpenEXR stays inside exr.cpp).
-#include <cstdint>
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>

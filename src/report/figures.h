@@ -22,8 +22,8 @@ Drawing curves_drawing(const analysis::CurveData& d);
 
 // ΔE2000 per pixel (row-major, NaN: no surface) as a heat map on the inferno ramp, with a colour
 // bar from 0 to `scale` (0: heatmap_scale(de)), its ticks labelled.
-Drawing heatmap_drawing(const std::vector<double>& de, int width, int height, const std::string& title,
-                        double scale = 0);
+Drawing heatmap_drawing(const std::vector<double>& de, int width, int height,
+                        const std::string& title, double scale = 0);
 // The nice ceiling of the largest finite ΔE (at least 1).
 double heatmap_scale(const std::vector<double>& de);
 // The map's pixels: inferno(ΔE / scale), light grey where there is no surface.
@@ -41,7 +41,7 @@ struct ContactSheetRow {
 struct ContactSheet {
   std::string title;
   std::vector<std::string> notes;  // lines under the title
-  Image8 truth;  // square
+  Image8 truth;                    // square
   std::vector<ContactSheetRow> rows;
 };
 // heatmap_scale over every row's ΔE2000: the one scale of the sheet and of its models' heat maps.

@@ -12,13 +12,15 @@ namespace fl::report {
 namespace {
 
 int append_bytes(GifFileType* gif, const GifByteType* data, int length) {
-  static_cast<std::string*>(gif->UserData)->append(reinterpret_cast<const char*>(data), static_cast<size_t>(length));
+  static_cast<std::string*>(gif->UserData)
+      ->append(reinterpret_cast<const char*>(data), static_cast<size_t>(length));
   return length;
 }
 
 void check(int status, GifFileType* gif, const char* step) {
   if (status == GIF_OK) return;
-  throw std::runtime_error(std::string("GIF encoding failed at ") + step + ": " + GifErrorString(gif->Error));
+  throw std::runtime_error(std::string("GIF encoding failed at ") + step + ": " +
+                           GifErrorString(gif->Error));
 }
 
 // Every frame's pixels as palette indices (frame after frame), with the shared palette.
@@ -35,8 +37,10 @@ std::vector<GifByteType> quantize(const std::vector<Image8>& frames, ColorMapObj
   int colours = 256;
   palette = GifMakeMapObject(256, nullptr);
   if (!palette) throw std::bad_alloc();
-  if (GifQuantizeBuffer(static_cast<unsigned>(frames[0].width), static_cast<unsigned>(per_frame / frames[0].width * frames.size()),
-                        &colours, r.data(), g.data(), b.data(), indices.data(), palette->Colors) != GIF_OK) {
+  if (GifQuantizeBuffer(static_cast<unsigned>(frames[0].width),
+                        static_cast<unsigned>(per_frame / frames[0].width * frames.size()),
+                        &colours, r.data(), g.data(), b.data(), indices.data(),
+                        palette->Colors) != GIF_OK) {
     GifFreeMapObject(palette);
     throw std::runtime_error("GIF encoding failed: colour quantization");
   }
@@ -53,7 +57,8 @@ void put_loop_forever(GifFileType* gif) {
   check(EGifPutExtensionTrailer(gif), gif, "loop extension");
 }
 
-void put_frames(GifFileType* gif, const std::vector<Image8>& frames, const std::vector<GifByteType>& indices, int delay_cs) {
+void put_frames(GifFileType* gif, const std::vector<Image8>& frames,
+                const std::vector<GifByteType>& indices, int delay_cs) {
   const int w = frames[0].width, h = frames[0].height;
   GraphicsControlBlock gcb{};
   gcb.DisposalMode = DISPOSE_DO_NOT;
@@ -63,7 +68,8 @@ void put_frames(GifFileType* gif, const std::vector<Image8>& frames, const std::
   const size_t ext_len = EGifGCBToExtension(&gcb, ext);
   std::vector<GifByteType> row(static_cast<size_t>(w));
   for (size_t f = 0; f < frames.size(); ++f) {
-    check(EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, static_cast<int>(ext_len), ext), gif, "frame delay");
+    check(EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, static_cast<int>(ext_len), ext), gif,
+          "frame delay");
     check(EGifPutImageDesc(gif, 0, 0, w, h, false, nullptr), gif, "frame");
     for (int y = 0; y < h; ++y) {
       std::memcpy(row.data(), &indices[(f * h + y) * w], row.size());
@@ -99,7 +105,8 @@ std::string encode_gif(const std::vector<Image8>& frames, int delay_cs) {
     throw;
   }
   GifFreeMapObject(palette);
-  if (EGifCloseFile(gif, &error) != GIF_OK) throw std::runtime_error(std::string("GIF encoding failed: ") + GifErrorString(error));
+  if (EGifCloseFile(gif, &error) != GIF_OK)
+    throw std::runtime_error(std::string("GIF encoding failed: ") + GifErrorString(error));
   return out;
 }
 
@@ -124,7 +131,8 @@ Image8 frame_colours(const GifFileType* gif, const SavedImage& img) {
   Image8 out(img.ImageDesc.Width, img.ImageDesc.Height);
   for (int y = 0; y < out.height; ++y)
     for (int x = 0; x < out.width; ++x) {
-      const GifColorType c = map->Colors[img.RasterBits[static_cast<size_t>(y) * out.width + x] % map->ColorCount];
+      const GifColorType c =
+          map->Colors[img.RasterBits[static_cast<size_t>(y) * out.width + x] % map->ColorCount];
       out.set(x, y, {c.Red, c.Green, c.Blue});
     }
   return out;
@@ -145,9 +153,12 @@ GifAnimation decode_gif(const std::string& bytes, const std::string& what) {
     GraphicsControlBlock gcb{};
     a.delays_cs.push_back(DGifSavedExtensionToGCB(gif, i, &gcb) == GIF_OK ? gcb.DelayTime : 0);
     for (int e = 0; e + 1 < img.ExtensionBlockCount; ++e)
-      if (img.ExtensionBlocks[e].Function == APPLICATION_EXT_FUNC_CODE && img.ExtensionBlocks[e].ByteCount == 11 &&
-          std::memcmp(img.ExtensionBlocks[e].Bytes, "NETSCAPE2.0", 11) == 0 && img.ExtensionBlocks[e + 1].ByteCount >= 3)
-        a.loop_count = img.ExtensionBlocks[e + 1].Bytes[1] | (img.ExtensionBlocks[e + 1].Bytes[2] << 8);
+      if (img.ExtensionBlocks[e].Function == APPLICATION_EXT_FUNC_CODE &&
+          img.ExtensionBlocks[e].ByteCount == 11 &&
+          std::memcmp(img.ExtensionBlocks[e].Bytes, "NETSCAPE2.0", 11) == 0 &&
+          img.ExtensionBlocks[e + 1].ByteCount >= 3)
+        a.loop_count =
+            img.ExtensionBlocks[e + 1].Bytes[1] | (img.ExtensionBlocks[e + 1].Bytes[2] << 8);
   }
   if (ok) a.palette_size = gif->SColorMap->ColorCount;
   const std::string message = ok ? "" : GifErrorString(gif->Error);

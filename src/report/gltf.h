@@ -8,14 +8,16 @@
 namespace fl::report {
 
 // glTF's colours are linear Rec.709 (sRGB primaries, D65), so the working space must be lin_rec709
-// (or an OCIO space equal to it); InputError otherwise. Metals: baseColorFactor = F0, metallicFactor 1.
-// Dielectrics: metallicFactor 0, KHR_materials_ior with the index of analysis::ShadingPreset,
-// KHR_materials_specular's specularColorFactor = F0 / ((η − 1)/(η + 1))² when that differs from
-// white by more than kSpecularColorMin in a channel, and KHR_materials_transmission (factor 1, white
-// base colour) when clear; opaque ones have a black base colour (no diffuse). A factor outside
-// [0, 1] is stored through analysis::into_unit_range; each material's extras give the true value,
-// the out_of_range list and the ΔE2000 the stored colour costs at normal incidence.
+// (or an OCIO space equal to it); InputError otherwise. Metals: baseColorFactor = F0,
+// metallicFactor 1. Dielectrics: metallicFactor 0, KHR_materials_ior with the index of
+// analysis::ShadingPreset, KHR_materials_specular's specularColorFactor = F0 / ((η − 1)/(η + 1))²
+// when that differs from white by more than kSpecularColorMin in a channel, and
+// KHR_materials_transmission (factor 1, white base colour) when clear; opaque ones have a black
+// base colour (no diffuse). A factor outside [0, 1] is stored through analysis::into_unit_range;
+// each material's extras give the true value, the out_of_range list and the ΔE2000 the stored
+// colour costs at normal incidence.
 inline constexpr double kSpecularColorMin = 1e-3;
-std::string presets_gltf(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies);
+std::string presets_gltf(const analysis::Context& ctx,
+                         const std::vector<analysis::MaterialStudy>& studies);
 
 }  // namespace fl::report

@@ -125,7 +125,9 @@ constexpr const char* kScript = R"JS(
 })();
 )JS";
 
-std::string hex(Rgb8 c) { return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b); }
+std::string hex(Rgb8 c) {
+  return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b);
+}
 
 // Markdown's inline code and links in a table's reading and notes, the rest escaped.
 std::string inline_markdown(const std::string& text) {
@@ -136,34 +138,41 @@ std::string inline_markdown(const std::string& text) {
 }
 
 std::string cell_html(const analysis::Cell& cell, int precision) {
-  if (const auto* text = std::get_if<std::string>(&cell)) return "<td class=\"t\">" + html_escape(*text) + "</td>";
-  if (const auto* n = std::get_if<long long>(&cell)) return fmt::format("<td data-v=\"{}\">{}</td>", *n, *n);
+  if (const auto* text = std::get_if<std::string>(&cell))
+    return "<td class=\"t\">" + html_escape(*text) + "</td>";
+  if (const auto* n = std::get_if<long long>(&cell))
+    return fmt::format("<td data-v=\"{}\">{}</td>", *n, *n);
   const double v = std::get<double>(cell);
   if (!std::isfinite(v)) return "<td data-v=\"\">n/a</td>";
-  return fmt::format("<td data-v=\"{}\">{}</td>", format_number(v, 12), format_number(v, precision));
+  return fmt::format("<td data-v=\"{}\">{}</td>", format_number(v, 12),
+                     format_number(v, precision));
 }
 
 std::string strip_gradient(const std::vector<Rgb8>& strip) {
   std::string s = "linear-gradient(90deg";
   for (size_t i = 0; i < strip.size(); ++i)
-    s += fmt::format(",{} {:.1f}%", hex(strip[i]), strip.size() > 1 ? 100.0 * i / (strip.size() - 1) : 0.0);
+    s += fmt::format(",{} {:.1f}%", hex(strip[i]),
+                     strip.size() > 1 ? 100.0 * i / (strip.size() - 1) : 0.0);
   s += ")";
   return s;
 }
 
 std::string flip_html(const Flip& f) {
   std::string labels = "[";
-  for (size_t i = 0; i < f.labels.size(); ++i) labels += (i ? "," : "") + fmt::format("\"{}\"", f.labels[i]);
+  for (size_t i = 0; i < f.labels.size(); ++i)
+    labels += (i ? "," : "") + fmt::format("\"{}\"", f.labels[i]);
   labels += "]";
   std::string s = fmt::format(
       "<div class=\"flip\" data-frame=\"0\" data-model=\"1\" data-size=\"{}\" data-labels=\"{}\">"
-      "<div class=\"flip-img\" role=\"img\" aria-label=\"sphere render\" title=\"click: truth / model\" "
+      "<div class=\"flip-img\" role=\"img\" aria-label=\"sphere render\" title=\"click: truth / "
+      "model\" "
       "style=\"width:{}px;height:{}px;background-image:url('{}');background-position:0 0\"></div>"
       "<div class=\"flip-label\">{}</div><div class=\"flip-models\">",
-      f.frame_px, html_escape(labels), f.frame_px, f.frame_px, html_escape(f.image), html_escape(f.labels.at(0)));
+      f.frame_px, html_escape(labels), f.frame_px, f.frame_px, html_escape(f.image),
+      html_escape(f.labels.at(0)));
   for (size_t i = 1; i < f.labels.size(); ++i)
-    s += fmt::format("<button type=\"button\" data-frame=\"{}\" aria-pressed=\"false\">{}</button>", i,
-                     html_escape(f.labels[i]));
+    s += fmt::format("<button type=\"button\" data-frame=\"{}\" aria-pressed=\"false\">{}</button>",
+                     i, html_escape(f.labels[i]));
   s += "</div></div>";
   return s;
 }
@@ -177,17 +186,21 @@ std::string search_text(const GalleryEntry& e) {
 
 std::string card_html(const GalleryEntry& e) {
   std::string s = fmt::format(
-      "<article class=\"card\" id=\"m-{}\" data-search=\"{}\"><h3>{}<span class=\"cls\">{}</span></h3>"
+      "<article class=\"card\" id=\"m-{}\" data-search=\"{}\"><h3>{}<span "
+      "class=\"cls\">{}</span></h3>"
       "<div class=\"src\">{}</div>",
-      html_escape(e.key), html_escape(search_text(e)), html_escape(e.name), html_escape(e.material_class),
-      html_escape(e.source));
+      html_escape(e.key), html_escape(search_text(e)), html_escape(e.name),
+      html_escape(e.material_class), html_escape(e.source));
   if (!e.strip.empty())
-    s += fmt::format("<div class=\"strip\" title=\"ground truth, 0° to 90°\" style=\"background:{}\"></div>"
-                     "<div class=\"strip-axis\"><span>0°</span><span>45°</span><span>90°</span></div>",
-                     strip_gradient(e.strip));
-  s += fmt::format("<div class=\"sws\"><span class=\"sw\" style=\"background:{}\"></span><span class=\"swl\">F0</span>"
-                   "<span class=\"sw\" style=\"background:{}\"></span><span class=\"swl\">F82</span></div>",
-                   hex(e.f0), hex(e.f82));
+    s += fmt::format(
+        "<div class=\"strip\" title=\"ground truth, 0° to 90°\" style=\"background:{}\"></div>"
+        "<div class=\"strip-axis\"><span>0°</span><span>45°</span><span>90°</span></div>",
+        strip_gradient(e.strip));
+  s += fmt::format(
+      "<div class=\"sws\"><span class=\"sw\" style=\"background:{}\"></span><span "
+      "class=\"swl\">F0</span>"
+      "<span class=\"sw\" style=\"background:{}\"></span><span class=\"swl\">F82</span></div>",
+      hex(e.f0), hex(e.f82));
   if (!e.flags.empty()) {
     s += "<div class=\"flags\">";
     for (const auto& f : e.flags) s += "<span class=\"flag\">" + html_escape(f) + "</span>";
@@ -195,15 +208,17 @@ std::string card_html(const GalleryEntry& e) {
   }
   if (!e.facts.empty()) {
     s += "<dl class=\"facts\">";
-    for (const auto& [label, value] : e.facts) s += "<dt>" + html_escape(label) + "</dt><dd>" + html_escape(value) + "</dd>";
+    for (const auto& [label, value] : e.facts)
+      s += "<dt>" + html_escape(label) + "</dt><dd>" + html_escape(value) + "</dd>";
     s += "</dl>";
   }
   if (!e.flip.image.empty()) s += flip_html(e.flip);
   if (!e.figures.empty()) {
     s += "<details><summary>figures</summary>";
     for (const auto& [caption, path] : e.figures)
-      s += fmt::format("<a href=\"{0}\"><img class=\"fig\" loading=\"lazy\" src=\"{0}\" alt=\"{1}\"></a>", html_escape(path),
-                       html_escape(caption));
+      s += fmt::format(
+          "<a href=\"{0}\"><img class=\"fig\" loading=\"lazy\" src=\"{0}\" alt=\"{1}\"></a>",
+          html_escape(path), html_escape(caption));
     s += "</details>";
   }
   s += "</article>\n";
@@ -217,23 +232,38 @@ std::string html_escape(const std::string& text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
 }
 
 std::string table_html(const analysis::Table& t, const std::string& id, int heading_level) {
-  std::string s = fmt::format("<section class=\"table\"><h{0}>{1}</h{0}>\n", heading_level, html_escape(t.title));
+  std::string s = fmt::format("<section class=\"table\"><h{0}>{1}</h{0}>\n", heading_level,
+                              html_escape(t.title));
   if (!t.reading.empty()) s += "<p>" + inline_markdown(t.reading) + "</p>\n";
-  s += fmt::format("<input type=\"search\" placeholder=\"filter rows\" aria-label=\"filter {0}\" data-table=\"{0}\">"
-                   "<span class=\"count\">{1} rows</span>\n<div class=\"tablewrap\"><table id=\"{0}\"><thead><tr>",
-                   html_escape(id), t.rows.size());
+  s += fmt::format(
+      "<input type=\"search\" placeholder=\"filter rows\" aria-label=\"filter {0}\" "
+      "data-table=\"{0}\">"
+      "<span class=\"count\">{1} rows</span>\n<div class=\"tablewrap\"><table "
+      "id=\"{0}\"><thead><tr>",
+      html_escape(id), t.rows.size());
   for (size_t c = 0; c < t.columns.size(); ++c) {
     const bool text = !t.rows.empty() && std::holds_alternative<std::string>(t.rows[0][c]);
     s += fmt::format("<th{}>{}</th>", text ? " class=\"t\"" : "", html_escape(t.columns[c].name));
@@ -256,8 +286,10 @@ std::string table_html(const analysis::Table& t, const std::string& id, int head
 
 std::string gallery_html(const std::vector<GalleryEntry>& entries) {
   std::string s = fmt::format(
-      "<input type=\"search\" id=\"gallery-filter\" placeholder=\"search materials, classes, pages, flags\" "
-      "aria-label=\"search the gallery\"><span class=\"count\" id=\"gallery-count\">{0} of {0} materials</span>\n"
+      "<input type=\"search\" id=\"gallery-filter\" placeholder=\"search materials, classes, "
+      "pages, flags\" "
+      "aria-label=\"search the gallery\"><span class=\"count\" id=\"gallery-count\">{0} of {0} "
+      "materials</span>\n"
       "<div class=\"gallery\">\n",
       entries.size());
   for (const auto& e : entries) s += card_html(e);
@@ -268,22 +300,26 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries) {
 std::string html_report(const HtmlReport& r) {
   std::string s = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>{}</title><style>{}</style>"
+      "<meta name=\"viewport\" content=\"width=device-width, "
+      "initial-scale=1\"><title>{}</title><style>{}</style>"
       "</head>\n<body><header><h1>{}</h1>\n",
       html_escape(r.title), kStyle, html_escape(r.title));
   for (const auto& p : r.intro) s += "<p>" + inline_markdown(p) + "</p>\n";
   s += "<nav><a href=\"#gallery\">Gallery</a><a href=\"#tables\">Tables</a>";
-  for (const auto& [text, href] : r.links) s += fmt::format("<a href=\"{}\">{}</a>", html_escape(href), html_escape(text));
+  for (const auto& [text, href] : r.links)
+    s += fmt::format("<a href=\"{}\">{}</a>", html_escape(href), html_escape(text));
   s += "</nav></header>\n<main>\n";
-  if (!r.gallery.empty()) s += "<section id=\"gallery\"><h2>Gallery</h2>\n" + gallery_html(r.gallery) + "</section>\n";
+  if (!r.gallery.empty())
+    s += "<section id=\"gallery\"><h2>Gallery</h2>\n" + gallery_html(r.gallery) + "</section>\n";
   s += "<section id=\"tables\"><h2>Tables</h2>\n";
   // The tables' sections are made concurrently (most of the page), then joined in order.
   std::vector<std::string> sections(r.tables.size());
   parallel_for(r.tables.size(), [&](size_t i) {
     const auto& t = r.tables[i];
-    sections[i] = fmt::format("<details class=\"tbl\" id=\"t-{0}\"><summary>{0} <span class=\"sum\">{1} rows</span>"
-                              "</summary>\n{2}</details>\n",
-                              html_escape(t.name), t.rows.size(), table_html(t, "table-" + t.name, 3));
+    sections[i] = fmt::format(
+        "<details class=\"tbl\" id=\"t-{0}\"><summary>{0} <span class=\"sum\">{1} rows</span>"
+        "</summary>\n{2}</details>\n",
+        html_escape(t.name), t.rows.size(), table_html(t, "table-" + t.name, 3));
   });
   // Appended in place into one buffer of the page's size: the page is most of reproduce's output.
   size_t size = s.size() + std::char_traits<char>::length(kScript) + 64;

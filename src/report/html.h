@@ -48,7 +48,7 @@ struct HtmlReport {
   std::string title;
   std::vector<std::string> intro;  // paragraphs
   std::vector<GalleryEntry> gallery;
-  std::span<const analysis::Table> tables;  // the caller's, shown in order
+  std::span<const analysis::Table> tables;                 // the caller's, shown in order
   std::vector<std::pair<std::string, std::string>> links;  // (text, href): the other formats
 };
 

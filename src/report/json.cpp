@@ -9,7 +9,9 @@ namespace {
 
 using Decimals = std::function<int(const std::string& key)>;
 
-std::string string_text(const std::string& s) { return Json(s).dump(-1, ' ', false, Json::error_handler_t::replace); }
+std::string string_text(const std::string& s) {
+  return Json(s).dump(-1, ' ', false, Json::error_handler_t::replace);
+}
 
 std::string scalar_text(const Json& v, const std::string& key, const Decimals& decimals) {
   if (v.is_number_float()) {
@@ -56,7 +58,8 @@ std::string write_json(const Json& document, const Decimals& decimals) {
       continue;
     }
     out += "[";
-    for (size_t i = 0; i < v.size(); ++i) out += (i ? ",\n    " : "\n    ") + inline_text(v[i], it.key(), decimals);
+    for (size_t i = 0; i < v.size(); ++i)
+      out += (i ? ",\n    " : "\n    ") + inline_text(v[i], it.key(), decimals);
     out += "\n  ]";
   }
   return out + "\n}\n";

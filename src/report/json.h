@@ -8,15 +8,15 @@
 //   - a float member is written with a fixed number of decimals, `decimals(key)` (elements of an
 //     array take the array's key), "-0.000" as "0.000" (format_number), non-finite as null;
 //   - strings are escaped by nlohmann/json (UTF-8 kept; invalid UTF-8 replaced by U+FFFD).
-#include <nlohmann/json.hpp>
-
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace fl::report {
 
 using Json = nlohmann::ordered_json;
 
-std::string write_json(const Json& document, const std::function<int(const std::string& key)>& decimals);
+std::string write_json(const Json& document,
+                       const std::function<int(const std::string& key)>& decimals);
 
 }  // namespace fl::report

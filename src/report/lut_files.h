@@ -14,7 +14,8 @@ namespace fl::report {
 // table as its shaders read it, R = dfg2 = ∫ Fc ρ cos, G = dfg1 + dfg2 = ∫ ρ cos, B = the sheen
 // albedo; E = mix(dfg.xxx, dfg.yyy, F0), energy compensation 1 + F0 (1/dfg.y − 1).
 enum class DfgLayout { SplitSum, Filament };
-DfgLayout dfg_layout_from_name(const std::string& name);  // split-sum | filament (InputError otherwise)
+DfgLayout dfg_layout_from_name(
+    const std::string& name);  // split-sum | filament (InputError otherwise)
 // Filament's DFG_LUT_SIZE: the table its engine compiles in (128 × 128 RGB16F).
 inline constexpr int kFilamentDfgSize = 128;
 
@@ -22,7 +23,7 @@ struct LutRequest {
   int size = 0;  // cells per axis; 0: 64, or kFilamentDfgSize for the Filament layout
   std::string out;
   int samples = analysis::kLutSamples;
-  int threads = 0;  // 0: every hardware thread
+  int threads = 0;                   // 0: every hardware thread
   std::string layout = "split-sum";  // dfg only
 };
 
@@ -31,7 +32,8 @@ struct LutRequest {
 // DFG in `request.layout`: out.exr (RGB), out.csv, out.h (a C++ header: float for split-sum,
 // half-float bit patterns for Filament) or, Filament only, out.inc (Filament's dfg.inc form: the
 // array's initializer list). Rows run from smooth to rough (GL order: the first row is texture
-// v = 0), texels within a row from n·v = 0 to 1, at texel centres; uv = (n·v, perceptual roughness).
+// v = 0), texels within a row from n·v = 0 to 1, at texel centres; uv = (n·v, perceptual
+// roughness).
 Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // LTC moments: out.exr (RGB = n_D, f_D, l_D) or out.csv.
 Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
@@ -42,6 +44,7 @@ Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress 
 // The C++ header of a split-sum DFG table: constexpr float kDfgLut[size * size * 3].
 std::string dfg_header(const analysis::DfgTable& table);
 // Filament's layout as texel values, 3 per texel in file order (the half floats are these rounded).
-std::vector<float> filament_dfg_values(const analysis::DfgTable& table, const std::vector<double>& sheen);
+std::vector<float> filament_dfg_values(const analysis::DfgTable& table,
+                                       const std::vector<double>& sheen);
 
 }  // namespace fl::report

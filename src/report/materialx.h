@@ -20,7 +20,8 @@ const char* to_string(MaterialxShader s);
 // The colour space a document's values are in: MaterialX 1.39's name for it and the matrix from
 // the working space. MaterialX's colour management knows acescg, lin_rec709 and lin_displayp3 (=
 // our lin_p3d65) among linear spaces; values in any other working space (aces2065-1, lin_rec2020,
-// an OCIO space that is none of these) are converted to acescg through OpenColorIO, and `note` says so.
+// an OCIO space that is none of these) are converted to acescg through OpenColorIO, and `note` says
+// so.
 struct MaterialxSpace {
   std::string name;
   color::Mat3 from_working;
@@ -30,7 +31,8 @@ MaterialxSpace materialx_space(const analysis::Context& ctx);
 
 // Every material of `studies` as a surfacematerial; each carries a `doc` attribute with its data
 // source and its out_of_range list (analysis/tables/shading_presets.h).
-std::string presets_materialx(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
+std::string presets_materialx(const analysis::Context& ctx,
+                              const std::vector<analysis::MaterialStudy>& studies,
                               MaterialxShader shader);
 
 }  // namespace fl::report

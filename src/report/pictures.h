@@ -23,14 +23,16 @@ struct PlotRequest {
 // does not exist, checked before any work.
 void check_plot_request(const PlotRequest& request);
 // The figure of `m` with the request's models and parameter set, as request.out.
-Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m, const PlotRequest& request);
+Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                   const PlotRequest& request);
 
 struct RenderRequest {
   std::vector<std::string> materials;
   std::string model = "schlick", params = "derived", out;
   std::string compare;  // a model list (parse_models): every model against the truth in one pass
   std::string env;      // a latitude-longitude .exr (empty: the analytic environment)
-  std::string env_space;  // the environment's colour space (empty: its chromaticities, else lin_rec709)
+  std::string
+      env_space;  // the environment's colour space (empty: its chromaticities, else lin_rec709)
   double env_rotate_deg = 0;
   double env_exposure_ev = 0;  // analysis::environment_map's exposure
   analysis::RenderSettings settings;
@@ -44,12 +46,14 @@ void check_render_request(const RenderRequest& request);
 // MODEL.de2000; FILE.truth.png, FILE.MODEL.png and FILE.MODEL.de2000.png per model (heat maps on
 // one scale), the animated flip FILE.flip.gif (truth, then each model, each after the truth
 // again) and the contact sheet FILE.sheet.png.
-Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m, const RenderRequest& request);
+Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                     const RenderRequest& request);
 
 // Several materials write one output each: `out` must then hold "{name}", replaced per material by
 // a file-safe form of its name (the catalog key, the page path or the file's stem, with characters
 // other than letters, digits, '.', '-' and '_' turned into '_'); InputError otherwise.
-std::string material_output(const std::string& out, const analysis::LoadedMaterial& m, size_t count);
+std::string material_output(const std::string& out, const analysis::LoadedMaterial& m,
+                            size_t count);
 // plot_output / render_output for every material, to material_output paths.
 Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
                     const PlotRequest& request);
@@ -58,8 +62,8 @@ Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::
 
 // The flip every gallery card of `reproduce` shows: figures/flip-KEY.png per material, the ground
 // truth and then Schlick, F82 and Gulbrandsen (derived parameters) side by side, each a sphere of
-// kFlipSizePx pixels at roughness kFlipRoughness under the analytic environment (rendered in one pass
-// per material, materials in parallel).
+// kFlipSizePx pixels at roughness kFlipRoughness under the analytic environment (rendered in one
+// pass per material, materials in parallel).
 constexpr int kFlipSizePx = 97;
 constexpr double kFlipRoughness = 0.3;
 constexpr int kFlipSamples = 32;
@@ -67,27 +71,33 @@ struct FlipFiles {
   Files files;
   std::vector<Flip> flips;  // one per study, in order
 };
-FlipFiles reproduce_flips(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies);
+FlipFiles reproduce_flips(const analysis::Context& ctx,
+                          const std::vector<analysis::MaterialStudy>& studies);
 
 // A gallery card of any material (a catalog entry, a database page, a file; no renders): name,
 // class, page, the ground-truth colour strip (19 angles) and F0/F82 swatches, with the flags and
 // facts given. What a preset library's gallery is made of.
-GalleryEntry material_card(const analysis::Context& ctx, const analysis::LoadedMaterial& m, std::vector<std::string> flags,
+GalleryEntry material_card(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                           std::vector<std::string> flags,
                            std::vector<std::pair<std::string, std::string>> facts);
 
 // material_card with the study's facts: the RMS ΔE2000 of Schlick, F82 and Gulbrandsen (derived
 // parameters) and the best fitted model.
-GalleryEntry study_card(const analysis::Context& ctx, const analysis::MaterialStudy& st, std::vector<std::string> flags);
+GalleryEntry study_card(const analysis::Context& ctx, const analysis::MaterialStudy& st,
+                        std::vector<std::string> flags);
 
 // A gallery card per study: name, class, page, ground-truth strip and F0/F82 swatches, flags (data
 // extrapolated, presets outside [0, 1] from `presets`' out_of_range column, the F82 model's output
 // clamp), the RMS ΔE2000 of Schlick, F82 and Gulbrandsen and the best fitted model; `figures` and
 // `flips` (either may be empty) add the figure links and the flip.
-std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
-                                          const analysis::Table& presets, bool figures, const std::vector<Flip>& flips);
+std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx,
+                                          const std::vector<analysis::MaterialStudy>& studies,
+                                          const analysis::Table& presets, bool figures,
+                                          const std::vector<Flip>& flips);
 
 // figures/strip-KEY.png and figures/curves-KEY.png per material (derived parameters), rendered in
 // parallel, and their Markdown gallery as figures.md.
-Files reproduce_figures(const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies);
+Files reproduce_figures(const analysis::Context& ctx,
+                        const std::vector<analysis::MaterialStudy>& studies);
 
 }  // namespace fl::report

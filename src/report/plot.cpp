@@ -47,14 +47,20 @@ std::string tick_label(double v, int decimals) {
   return s;
 }
 
-double pixel_centre(double v) { return std::floor(v) + 0.5; }
-
-Polyline hairline(Point a, Point b, Rgb8 colour) {
-  return {{{pixel_centre(a.x), pixel_centre(a.y)}, {pixel_centre(b.x), pixel_centre(b.y)}}, colour, 1.0, {}};
+double pixel_centre(double v) {
+  return std::floor(v) + 0.5;
 }
 
-void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks, const std::vector<double>& y_ticks,
-              const std::string& x_label, const std::string& y_label, int x_decimals, int y_decimals) {
+Polyline hairline(Point a, Point b, Rgb8 colour) {
+  return {{{pixel_centre(a.x), pixel_centre(a.y)}, {pixel_centre(b.x), pixel_centre(b.y)}},
+          colour,
+          1.0,
+          {}};
+}
+
+void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks,
+              const std::vector<double>& y_ticks, const std::string& x_label,
+              const std::string& y_label, int x_decimals, int y_decimals) {
   const Rgb8 grid{225, 225, 225}, frame{60, 60, 60};
   const double right = a.left + a.width, bottom = a.top + a.height;
   for (double x : x_ticks) {
@@ -72,12 +78,14 @@ void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks, con
   const double l = pixel_centre(a.left), t = pixel_centre(a.top);
   const double r = pixel_centre(right - 0.5), b = pixel_centre(bottom - 0.5);
   d.add(Polyline{{{l, t}, {r, t}, {r, b}, {l, b}, {l, t}}, frame, 1.0, {}});
-  if (!x_label.empty()) d.add(Text{a.left + 0.5 * a.width, bottom + 36, x_label, 13, kInk, Align::Center, false});
-  if (!y_label.empty()) d.add(Text{a.left - 48, a.top + 0.5 * a.height, y_label, 13, kInk, Align::Center, true});
+  if (!x_label.empty())
+    d.add(Text{a.left + 0.5 * a.width, bottom + 36, x_label, 13, kInk, Align::Center, false});
+  if (!y_label.empty())
+    d.add(Text{a.left - 48, a.top + 0.5 * a.height, y_label, 13, kInk, Align::Center, true});
 }
 
-Polyline data_line(const Axes& a, const std::vector<double>& xs, const std::vector<double>& ys, Rgb8 colour,
-                   double width_px, Dash dash) {
+Polyline data_line(const Axes& a, const std::vector<double>& xs, const std::vector<double>& ys,
+                   Rgb8 colour, double width_px, Dash dash) {
   Polyline l{{}, colour, width_px, std::move(dash)};
   for (size_t i = 0; i < xs.size() && i < ys.size(); ++i) {
     if (!std::isfinite(ys[i])) continue;

@@ -14,7 +14,8 @@ struct Axes {
   double left = 0, top = 0, width = 0, height = 0;  // pixels
   double x_min = 0, x_max = 1, y_min = 0, y_max = 1;
   Point map(double x, double y) const {
-    return {left + (x - x_min) / (x_max - x_min) * width, top + (y_max - y) / (y_max - y_min) * height};
+    return {left + (x - x_min) / (x_max - x_min) * width,
+            top + (y_max - y) / (y_max - y_min) * height};
   }
 };
 
@@ -34,10 +35,11 @@ double pixel_centre(double v);
 Polyline hairline(Point a, Point b, Rgb8 colour);
 
 // Frame, light grid lines at the ticks, tick labels and axis labels.
-void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks, const std::vector<double>& y_ticks,
-              const std::string& x_label, const std::string& y_label, int x_decimals = 0, int y_decimals = 1);
+void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks,
+              const std::vector<double>& y_ticks, const std::string& x_label,
+              const std::string& y_label, int x_decimals = 0, int y_decimals = 1);
 // A data polyline clipped to the panel's y range (points outside are clamped to the frame).
-Polyline data_line(const Axes& a, const std::vector<double>& xs, const std::vector<double>& ys, Rgb8 colour,
-                   double width_px, Dash dash = {});
+Polyline data_line(const Axes& a, const std::vector<double>& xs, const std::vector<double>& ys,
+                   Rgb8 colour, double width_px, Dash dash = {});
 
 }  // namespace fl::report

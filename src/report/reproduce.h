@@ -12,6 +12,7 @@ namespace fl::report {
 // presets.mtlx, the figures (reproduce_figures) when `figures` is set, and README.md indexing
 // them; paths relative to the output folder. `log` gets one progress line per table and one for the
 // figures.
-Files reproduce_files(analysis::TableInputs& in, bool figures, const std::function<void(const std::string&)>& log);
+Files reproduce_files(analysis::TableInputs& in, bool figures,
+                      const std::function<void(const std::string&)>& log);
 
 }  // namespace fl::report

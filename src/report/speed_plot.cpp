@@ -16,13 +16,15 @@ constexpr double kLeft = 90, kRight = 660, kTop = 50, kBottom = 480;
 constexpr double kMarkerRadius = 6, kFloorDe = 1e-3;  // errors below the floor are drawn at it
 const Rgb8 kFrame{60, 60, 60}, kGrid{225, 225, 225}, kFront{90, 90, 90};
 // One colour per model (model_specs() order), distinguishable on white.
-const Rgb8 kModelColours[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
-                              {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {127, 127, 127}};
+const Rgb8 kModelColours[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
+                              {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127}};
 
 // A log-scale axis range covering [lo, hi], its ends on 1-2-5 values.
 struct LogAxis {
   double lo, hi;  // log10 of the range ends
-  double to_pixel(double v, double p0, double p1) const { return p0 + (std::log10(v) - lo) / (hi - lo) * (p1 - p0); }
+  double to_pixel(double v, double p0, double p1) const {
+    return p0 + (std::log10(v) - lo) / (hi - lo) * (p1 - p0);
+  }
 };
 
 LogAxis log_axis(double lo, double hi) {
@@ -53,7 +55,8 @@ std::vector<double> log_ticks(const LogAxis& a) {
 }
 
 std::string log_tick_label(double v) {
-  return v >= 1 ? fmt::format("{:g}", v) : tick_label(v, -static_cast<int>(std::floor(std::log10(v) + 1e-9)));
+  return v >= 1 ? fmt::format("{:g}", v)
+                : tick_label(v, -static_cast<int>(std::floor(std::log10(v) + 1e-9)));
 }
 
 struct SpeedAxes {
@@ -85,11 +88,16 @@ void add_speed_axes(Drawing& d, const SpeedAxes& a) {
     d.add(hairline({kLeft, py}, {kRight, py}, kGrid));
     d.add(Text{kLeft - 8, pixel_centre(py) + 4, log_tick_label(t), 12, kInk, Align::Right});
   }
-  d.add(Polyline{{{kLeft + 0.5, kTop}, {kLeft + 0.5, kBottom - 0.5}, {kRight, kBottom - 0.5}}, kFrame, 1.0, {}});
-  d.add(Text{0.5 * (kLeft + kRight), 28, "Median RMS ΔE2000 against cost (batched float)", 15, kInk, Align::Center});
-  d.add(Text{0.5 * (kLeft + kRight), kBottom + 40, "ns per evaluation (log scale)", 13, kInk, Align::Center});
-  d.add(Text{28, 0.5 * (kTop + kBottom), "median RMS ΔE2000 over the catalog (log scale)", 13, kInk, Align::Center,
-             true});
+  d.add(Polyline{{{kLeft + 0.5, kTop}, {kLeft + 0.5, kBottom - 0.5}, {kRight, kBottom - 0.5}},
+                 kFrame,
+                 1.0,
+                 {}});
+  d.add(Text{0.5 * (kLeft + kRight), 28, "Median RMS ΔE2000 against cost (batched float)", 15, kInk,
+             Align::Center});
+  d.add(Text{0.5 * (kLeft + kRight), kBottom + 40, "ns per evaluation (log scale)", 13, kInk,
+             Align::Center});
+  d.add(Text{28, 0.5 * (kTop + kBottom), "median RMS ΔE2000 over the catalog (log scale)", 13, kInk,
+             Align::Center, true});
 }
 
 // The Pareto front, cheapest first, as a staircase.
@@ -98,7 +106,8 @@ void add_pareto_front(Drawing& d, const SpeedAxes& a, const std::vector<analysis
   for (const auto& r : rows)
     if (r.pareto) front.push_back(r);
   std::sort(front.begin(), front.end(), [](const auto& p, const auto& q) {
-    return p.ns_per_eval != q.ns_per_eval ? p.ns_per_eval < q.ns_per_eval : p.median_rms_de00 > q.median_rms_de00;
+    return p.ns_per_eval != q.ns_per_eval ? p.ns_per_eval < q.ns_per_eval
+                                          : p.median_rms_de00 > q.median_rms_de00;
   });
   Polyline line{{}, kFront, 2.0, {}};
   for (size_t i = 0; i < front.size(); ++i) {
@@ -111,11 +120,15 @@ void add_pareto_front(Drawing& d, const SpeedAxes& a, const std::vector<analysis
 
 Rgb8 model_colour(fresnel::Model m) {
   const auto& specs = fresnel::model_specs();
-  const auto k = std::find_if(specs.begin(), specs.end(), [&](const auto& s) { return s.model == m; }) - specs.begin();
+  const auto k =
+      std::find_if(specs.begin(), specs.end(), [&](const auto& s) { return s.model == m; }) -
+      specs.begin();
   return kModelColours[static_cast<size_t>(k) % std::size(kModelColours)];
 }
 
-Circle marker(Point p, Rgb8 colour, bool filled) { return {p.x, p.y, kMarkerRadius, colour, filled ? 0.0 : 2.0}; }
+Circle marker(Point p, Rgb8 colour, bool filled) {
+  return {p.x, p.y, kMarkerRadius, colour, filled ? 0.0 : 2.0};
+}
 
 void add_speed_legend(Drawing& d) {
   const double lx = kRight + 30;
@@ -125,7 +138,8 @@ void add_speed_legend(Drawing& d) {
     d.add(Text{lx + 18, y + 5, label, 13, kInk});
     y += 24;
   };
-  for (const auto& s : fresnel::model_specs()) entry(marker({lx + 6, y}, model_colour(s.model), true), s.name);
+  for (const auto& s : fresnel::model_specs())
+    entry(marker({lx + 6, y}, model_colour(s.model), true), s.name);
   y += 10;
   entry(marker({lx + 6, y}, kFront, true), "fitted parameters");
   entry(marker({lx + 6, y}, kFront, false), "derived parameters");
@@ -141,7 +155,8 @@ Drawing speed_plot(const std::vector<analysis::SpeedRow>& rows) {
   const SpeedAxes a = speed_axes(rows);
   add_speed_axes(d, a);
   add_pareto_front(d, a, rows);
-  for (const auto& r : rows) d.add(marker(a.map(r.ns_per_eval, r.median_rms_de00), model_colour(r.model), r.fitted));
+  for (const auto& r : rows)
+    d.add(marker(a.map(r.ns_per_eval, r.median_rms_de00), model_colour(r.model), r.fitted));
   add_speed_legend(d);
   return d;
 }

@@ -1,12 +1,12 @@
 #include "report/writer.h"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <stdexcept>
@@ -26,9 +26,12 @@ Format format_from_name(const std::string& name) {
 
 const char* extension(Format f) {
   switch (f) {
-    case Format::Csv: return "csv";
-    case Format::Markdown: return "md";
-    default: return "json";
+    case Format::Csv:
+      return "csv";
+    case Format::Markdown:
+      return "md";
+    default:
+      return "json";
   }
 }
 
@@ -40,12 +43,14 @@ std::string format_number(double v, int precision) {
 
 namespace {
 
-std::string cell_text(const analysis::Cell& c, const analysis::Column& col, const char* non_finite) {
+std::string cell_text(const analysis::Cell& c, const analysis::Column& col,
+                      const char* non_finite) {
   if (const auto* s = std::get_if<std::string>(&c)) return *s;
   if (const auto* i = std::get_if<long long>(&c)) return std::to_string(*i);
   const double v = std::get<double>(c);
   if (!std::isfinite(v)) return non_finite;
-  return col.significant ? fmt::format("{:.{}g}", v == 0.0 ? 0.0 : v, col.precision) : format_number(v, col.precision);
+  return col.significant ? fmt::format("{:.{}g}", v == 0.0 ? 0.0 : v, col.precision)
+                         : format_number(v, col.precision);
 }
 
 std::string csv_quote(const std::string& s) {
@@ -96,7 +101,8 @@ std::string to_markdown(const analysis::Table& t, int level) {
     out += "|";
     for (size_t c = 0; c < row.size(); ++c) {
       std::string s = cell_text(row[c], t.columns[c], "n/a");
-      for (size_t p = s.find('|'); p != std::string::npos; p = s.find('|', p + 2)) s.replace(p, 1, "\\|");
+      for (size_t p = s.find('|'); p != std::string::npos; p = s.find('|', p + 2))
+        s.replace(p, 1, "\\|");
       out += " " + s + " |";
     }
     out += "\n";
@@ -120,7 +126,8 @@ std::string to_json(const analysis::Table& t) {
       std::visit([&](const auto& v) { r[t.columns[c].name] = v; }, row[c]);
     rows.push_back(std::move(r));
   }
-  const Json doc = {{"name", t.name}, {"title", t.title}, {"rows", std::move(rows)}, {"notes", t.notes}};
+  const Json doc = {
+      {"name", t.name}, {"title", t.title}, {"rows", std::move(rows)}, {"notes", t.notes}};
   return write_json(doc, [&](const std::string& key) {
     const auto it = decimals.find(key);
     return it == decimals.end() ? 0 : it->second;
@@ -129,9 +136,12 @@ std::string to_json(const analysis::Table& t) {
 
 std::string render(const analysis::Table& t, Format f) {
   switch (f) {
-    case Format::Csv: return to_csv(t);
-    case Format::Markdown: return to_markdown(t);
-    default: return to_json(t);
+    case Format::Csv:
+      return to_csv(t);
+    case Format::Markdown:
+      return to_markdown(t);
+    default:
+      return to_json(t);
   }
 }
 
@@ -143,7 +153,8 @@ std::string write_temporary(const std::string& path, const std::string& content)
   const fs::path p(path);
   std::error_code ec;
   if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
-  if (fs::is_directory(p, ec)) throw InputError(path, 0, "is a directory, cannot write a file there");
+  if (fs::is_directory(p, ec))
+    throw InputError(path, 0, "is a directory, cannot write a file there");
   const std::string tmp = fmt::format("{}.tmp.{}", path, static_cast<long>(::getpid()));
   std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
   if (!out) throw InputError(path, 0, "cannot write (folder missing or not writable)");
@@ -163,7 +174,9 @@ void write_files_atomic(const Files& files) {
   // first failure in file order is reported.
   std::vector<std::string> temps(files.size());
   try {
-    parallel_for_all(files.size(), [&](size_t i) { temps[i] = write_temporary(files[i].first, files[i].second); });
+    parallel_for_all(files.size(), [&](size_t i) {
+      temps[i] = write_temporary(files[i].first, files[i].second);
+    });
   } catch (...) {
     for (const auto& t : temps)
       if (!t.empty()) std::remove(t.c_str());
@@ -174,12 +187,15 @@ void write_files_atomic(const Files& files) {
     std::filesystem::rename(temps[i], files[i].first, ec);
     if (ec) {
       for (size_t j = i; j < temps.size(); ++j) std::remove(temps[j].c_str());
-      throw std::runtime_error(fmt::format("{}: cannot move the finished file into place: {}", files[i].first, ec.message()));
+      throw std::runtime_error(fmt::format("{}: cannot move the finished file into place: {}",
+                                           files[i].first, ec.message()));
     }
   }
 }
 
-void write_file_atomic(const std::string& path, const std::string& content) { write_files_atomic({{path, content}}); }
+void write_file_atomic(const std::string& path, const std::string& content) {
+  write_files_atomic({{path, content}});
+}
 
 std::string file_list(const Files& files) {
   std::string out;
@@ -201,7 +217,9 @@ std::string output_extension(const std::string& path, std::initializer_list<cons
     if (ext == a) return ext;
     list += (list.empty() ? "" : ", ") + std::string(a);
   }
-  throw InputError(path, 0, fmt::format("unknown output type '{}' (expected {})", ext.empty() ? "(none)" : ext, list));
+  throw InputError(
+      path, 0,
+      fmt::format("unknown output type '{}' (expected {})", ext.empty() ? "(none)" : ext, list));
 }
 
 }  // namespace fl::report

@@ -1,10 +1,11 @@
 #include "spectral/cie.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <fmt/format.h>
 
 #include "spectral/errors.h"
 #include "spectral/text_file.h"
@@ -25,20 +26,28 @@ CgatsSpectra read_cgats_spectra(const std::string& path) {
     auto fields = split_fields(t, " \t");
     const std::string key(fields[0]);
     if (in_format) {
-      if (key == "END_DATA_FORMAT") { in_format = false; continue; }
+      if (key == "END_DATA_FORMAT") {
+        in_format = false;
+        continue;
+      }
       columns += fields.size();
       continue;
     }
     if (in_data) {
-      if (key == "END_DATA") { in_data = false; continue; }
+      if (key == "END_DATA") {
+        in_data = false;
+        continue;
+      }
       std::vector<double> row;
       for (auto f : fields) {
         double v;
-        if (!parse_finite(f, v)) throw InputError(path, line, fmt::format("'{}' is not a finite number", f));
+        if (!parse_finite(f, v))
+          throw InputError(path, line, fmt::format("'{}' is not a finite number", f));
         row.push_back(v);
       }
       if (columns != 0 && row.size() != columns)
-        throw InputError(path, line, fmt::format("expected {} values, found {}", columns, row.size()));
+        throw InputError(path, line,
+                         fmt::format("expected {} values, found {}", columns, row.size()));
       out.sets.push_back(std::move(row));
       continue;
     }
@@ -47,26 +56,37 @@ CgatsSpectra read_cgats_spectra(const std::string& path) {
         throw InputError(path, line, fmt::format("{} needs a number", key));
       have = true;
     };
-    if (key == "SPECTRAL_START_NM") number(start, have_start);
-    else if (key == "SPECTRAL_END_NM") number(end, have_end);
-    else if (key == "SPECTRAL_BANDS") number(bands, have_bands);
-    else if (key == "BEGIN_DATA_FORMAT") in_format = true;
-    else if (key == "BEGIN_DATA") in_data = true;
+    if (key == "SPECTRAL_START_NM")
+      number(start, have_start);
+    else if (key == "SPECTRAL_END_NM")
+      number(end, have_end);
+    else if (key == "SPECTRAL_BANDS")
+      number(bands, have_bands);
+    else if (key == "BEGIN_DATA_FORMAT")
+      in_format = true;
+    else if (key == "BEGIN_DATA")
+      in_data = true;
   }
   if (!have_start || !have_end || !have_bands)
-    throw InputError(path, 0, "not a spectral CGATS file (SPECTRAL_START_NM, SPECTRAL_END_NM, SPECTRAL_BANDS)");
-  if (in_data || in_format) throw InputError(path, static_cast<int>(lines.size()), "truncated: missing END_DATA");
+    throw InputError(
+        path, 0, "not a spectral CGATS file (SPECTRAL_START_NM, SPECTRAL_END_NM, SPECTRAL_BANDS)");
+  if (in_data || in_format)
+    throw InputError(path, static_cast<int>(lines.size()), "truncated: missing END_DATA");
   if (bands < 2 || bands > 100000 || !(end > start) || bands != std::floor(bands))
     throw InputError(path, 0, "SPECTRAL_BANDS / range are inconsistent");
-  if (!(start > 0.0)) throw InputError(path, 0, fmt::format("SPECTRAL_START_NM {:g} must be positive", start));
+  if (!(start > 0.0))
+    throw InputError(path, 0, fmt::format("SPECTRAL_START_NM {:g} must be positive", start));
   // Every spectrum read here is resampled onto 360-830 nm: a file that misses it is not usable.
   if (end < 360.0 || start > 830.0)
-    throw InputError(path, 0, fmt::format("range {:g}-{:g} nm misses the visible range 360-830 nm entirely", start, end));
+    throw InputError(
+        path, 0,
+        fmt::format("range {:g}-{:g} nm misses the visible range 360-830 nm entirely", start, end));
   if (out.sets.empty()) throw InputError(path, 0, "no data");
   const int n = static_cast<int>(bands);
   for (const auto& s : out.sets)
     if (static_cast<int>(s.size()) != n)
-      throw InputError(path, 0, fmt::format("SPECTRAL_BANDS is {} but a data set has {} values", n, s.size()));
+      throw InputError(
+          path, 0, fmt::format("SPECTRAL_BANDS is {} but a data set has {} values", n, s.size()));
   for (int i = 0; i < n; ++i) out.lambda_nm.push_back(start + (end - start) * i / (n - 1));
   return out;
 }
@@ -104,9 +124,11 @@ Spectrum daylight_spd(double cct, const SpectralGrid& grid, const std::string& c
   return resample(c.lambda_nm, s, grid);
 }
 
-Spectrum illuminant_spd(const std::string& name_in, const SpectralGrid& grid, const std::string& colord_dir) {
+Spectrum illuminant_spd(const std::string& name_in, const SpectralGrid& grid,
+                        const std::string& colord_dir) {
   std::string name = name_in;
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::toupper(c); });
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return std::toupper(c); });
   // c2 = 1.4388e-2 m·K today; the D-series were defined with 1.4380e-2, hence the rescaling.
   constexpr double kC2Ratio = 1.4388 / 1.4380;
   auto tabulated = [&](const char* file) {
@@ -126,7 +148,10 @@ Spectrum illuminant_spd(const std::string& name_in, const SpectralGrid& grid, co
     if (parse_finite(std::string_view(name).substr(1), cct) && cct >= 4000 && cct <= 25000)
       return daylight_spd(cct, grid, colord_dir);
   }
-  throw InputError(fmt::format("unknown illuminant '{}' (expected D50, D55, D60, D65, D75, A, E or Dnnnn with 4000 <= nnnn <= 25000)", name_in));
+  throw InputError(
+      fmt::format("unknown illuminant '{}' (expected D50, D55, D60, D65, D75, A, E or Dnnnn with "
+                  "4000 <= nnnn <= 25000)",
+                  name_in));
 }
 
 }  // namespace fl::spectral

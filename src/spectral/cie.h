@@ -29,7 +29,8 @@ Spectrum daylight_spd(double cct_kelvin, const SpectralGrid& grid, const std::st
 // D50, D55, D60, D65, D75, A, E, or Dnnnn (daylight at nnnn K). D60 is daylight at
 // 6000·1.4388/1.4380 K (the nominal CCT rescaled to the current c2 constant); D65, D50, D55, A
 // and E use colord's tabulated CIE spectra. Throws InputError for an unknown name.
-Spectrum illuminant_spd(const std::string& name, const SpectralGrid& grid, const std::string& colord_dir);
+Spectrum illuminant_spd(const std::string& name, const SpectralGrid& grid,
+                        const std::string& colord_dir);
 
 // The colord-data folder: $FRESNEL_LAB_COLORD if set, else the build's default.
 std::string default_colord_dir();

@@ -9,7 +9,8 @@ class InputError : public std::runtime_error {
  public:
   InputError(std::string file, int line, const std::string& problem)
       : std::runtime_error(format(file, line, problem)), file_(std::move(file)), line_(line) {}
-  explicit InputError(const std::string& problem) : std::runtime_error(one_line(problem)), line_(0) {}
+  explicit InputError(const std::string& problem)
+      : std::runtime_error(one_line(problem)), line_(0) {}
   const std::string& file() const { return file_; }
   int line() const { return line_; }
 
@@ -27,10 +28,14 @@ class InputError : public std::runtime_error {
     out.reserve(s.size());
     for (const char ch : s) {
       const auto c = static_cast<unsigned char>(ch);
-      if (c == '\n') out += "\\n";
-      else if (c == '\r') out += "\\r";
-      else if (c < 0x20 || c == 0x7f) out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
-      else out += ch;
+      if (c == '\n')
+        out += "\\n";
+      else if (c == '\r')
+        out += "\\r";
+      else if (c < 0x20 || c == 0x7f)
+        out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+      else
+        out += ch;
     }
     return out;
   }

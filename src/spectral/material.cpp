@@ -1,10 +1,11 @@
 #include "spectral/material.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <fmt/format.h>
 
 #include "spectral/errors.h"
 #include "spectral/nk_text.h"
@@ -16,7 +17,9 @@
 namespace fl::spectral {
 namespace fs = std::filesystem;
 
-const char* to_string(MaterialClass c) { return c == MaterialClass::Metal ? "metal" : "dielectric"; }
+const char* to_string(MaterialClass c) {
+  return c == MaterialClass::Metal ? "metal" : "dielectric";
+}
 
 MaterialClass classify(const OpticalConstants& oc) {
   // Sampled on the whole visible grid so that a range error names 360-830 nm.
@@ -49,7 +52,8 @@ std::string scalar(const YamlNode& root, const char* key, const std::string& pat
     if (required) throw InputError(path, 0, fmt::format("missing field '{}'", key));
     return {};
   }
-  if (!n.is_scalar()) throw InputError(path, n.line() + 1, fmt::format("field '{}' must be a string", key));
+  if (!n.is_scalar())
+    throw InputError(path, n.line() + 1, fmt::format("field '{}' must be a string", key));
   return n.scalar();
 }
 
@@ -62,37 +66,46 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
   m.key = fs::path(path).stem().string();
   m.name = scalar(root, "name", path, true);
   const std::string cls = scalar(root, "class", path, true);
-  if (cls == "metal") m.material_class = MaterialClass::Metal;
-  else if (cls == "dielectric") m.material_class = MaterialClass::Dielectric;
-  else throw InputError(path, root["class"].line() + 1, fmt::format("class '{}' must be metal or dielectric", cls));
+  if (cls == "metal")
+    m.material_class = MaterialClass::Metal;
+  else if (cls == "dielectric")
+    m.material_class = MaterialClass::Dielectric;
+  else
+    throw InputError(path, root["class"].line() + 1,
+                     fmt::format("class '{}' must be metal or dielectric", cls));
   m.reference = scalar(root, "reference", path, false);
   for (const char* key : {"order", "talk_schlick_rms_de00"}) {
     const std::string v = scalar(root, key, path, false);
     double x = 0;
     if (v.empty()) continue;
-    if (!parse_finite(v, x)) throw InputError(path, root[key].line() + 1, fmt::format("field '{}' must be a number", key));
+    if (!parse_finite(v, x))
+      throw InputError(path, root[key].line() + 1, fmt::format("field '{}' must be a number", key));
     if (std::string(key) == "order") {
       if (x != std::floor(x) || std::abs(x) > 1e6)
-        throw InputError(path, root[key].line() + 1, "field 'order' must be an integer between -1000000 and 1000000");
+        throw InputError(path, root[key].line() + 1,
+                         "field 'order' must be an integer between -1000000 and 1000000");
       m.order = static_cast<int>(x);
-    }
-    else m.talk_schlick_rms_de00 = x;
+    } else
+      m.talk_schlick_rms_de00 = x;
   }
   const std::string page = scalar(root, "source", path, false);
   const std::string file = scalar(root, "file", path, false);
   if (!page.empty() && !file.empty())
-    throw InputError(path, root["file"].line() + 1, "give either 'source' (a database page) or 'file', not both");
+    throw InputError(path, root["file"].line() + 1,
+                     "give either 'source' (a database page) or 'file', not both");
   if (!page.empty()) {
     m.source = page;
     m.constants = read_refractiveindex_file(database_file(paths, page));
   } else if (!file.empty()) {
-    const fs::path f = fs::path(file).is_absolute() ? fs::path(file) : fs::path(path).parent_path() / file;
+    const fs::path f =
+        fs::path(file).is_absolute() ? fs::path(file) : fs::path(path).parent_path() / file;
     m.source = file;
     m.constants = read_optical_file(f.string());
   } else if (const YamlNode& c = root["constant"]) {
     double n = 0, k = 0;
     try {
-      if (!c.is_map() || !c["n"]) throw InputError(path, c.line() + 1, "'constant' needs n (and optional k)");
+      if (!c.is_map() || !c["n"])
+        throw InputError(path, c.line() + 1, "'constant' needs n (and optional k)");
       if (!parse_finite(c["n"].as_string(), n) || (c["k"] && !parse_finite(c["k"].as_string(), k)))
         throw InputError(path, c.line() + 1, "'constant' n and k must be finite numbers");
     } catch (const YamlError& e) {
@@ -112,12 +125,14 @@ std::vector<Material> read_catalog(const DataPaths& paths) {
     throw InputError(paths.materials, 0, "material catalog folder not found");
   std::vector<std::string> files;
   for (const auto& e : fs::directory_iterator(paths.materials))
-    if (e.path().extension() == ".yml" || e.path().extension() == ".yaml") files.push_back(e.path().string());
+    if (e.path().extension() == ".yml" || e.path().extension() == ".yaml")
+      files.push_back(e.path().string());
   std::sort(files.begin(), files.end());
   // Read concurrently; the first broken entry in file order is the one reported.
   std::vector<Material> out(files.size());
   parallel_for_all(files.size(), [&](size_t i) { out[i] = read_catalog_entry(files[i], paths); });
-  std::stable_sort(out.begin(), out.end(), [](const Material& a, const Material& b) { return a.order < b.order; });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Material& a, const Material& b) { return a.order < b.order; });
   return out;
 }
 
@@ -130,7 +145,8 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
     for (const auto& e : fs::directory_iterator(paths.materials)) {
       const auto ext = e.path().extension();
       if (ext != ".yml" && ext != ".yaml") continue;
-      if (lower(e.path().stem().string()) == want) return read_catalog_entry(e.path().string(), paths);
+      if (lower(e.path().stem().string()) == want)
+        return read_catalog_entry(e.path().string(), paths);
     }
     for (const auto& e : fs::directory_iterator(paths.materials)) {
       const auto ext = e.path().extension();
@@ -167,15 +183,21 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
     return m;
   }
   // A database page.
-  const std::string page = spec.size() > 4 && spec.substr(spec.size() - 4) == ".yml" ? spec.substr(0, spec.size() - 4) : spec;
+  const std::string page = spec.size() > 4 && spec.substr(spec.size() - 4) == ".yml"
+                               ? spec.substr(0, spec.size() - 4)
+                               : spec;
   if (page.find('/') != std::string::npos && fs::exists(database_file(paths, page), ec))
     return read_database_page(page, paths);
   if (const auto ext = lower(fs::path(spec).extension().string());
-      ext == ".csv" || ext == ".yml" || ext == ".yaml" || ext == ".txt" || ext == ".tsv" || ext == ".nk" || ext == ".spd")
-    throw InputError(spec, 0, fmt::format("no such file (nor a catalog name in {} or a database page under {}/data)",
-                                          paths.materials, paths.database));
-  throw InputError(fmt::format("unknown material '{}': not a catalog name in {}, a file, or a database page under {}/data",
-                               spec, paths.materials, paths.database));
+      ext == ".csv" || ext == ".yml" || ext == ".yaml" || ext == ".txt" || ext == ".tsv" ||
+      ext == ".nk" || ext == ".spd")
+    throw InputError(
+        spec, 0,
+        fmt::format("no such file (nor a catalog name in {} or a database page under {}/data)",
+                    paths.materials, paths.database));
+  throw InputError(fmt::format(
+      "unknown material '{}': not a catalog name in {}, a file, or a database page under {}/data",
+      spec, paths.materials, paths.database));
 }
 
 Material read_database_page(const std::string& page, const DataPaths& paths) {
@@ -193,9 +215,11 @@ Material read_database_page(const std::string& page, const DataPaths& paths) {
   return m;
 }
 
-std::vector<MaterialRequest> expand_materials(const std::vector<std::string>& specs, const DataPaths& paths) {
+std::vector<MaterialRequest> expand_materials(const std::vector<std::string>& specs,
+                                              const DataPaths& paths) {
   std::vector<MaterialRequest> out;
-  std::map<std::string, std::vector<std::string>> pages;  // by folder: only what the globs can match is listed
+  std::map<std::string, std::vector<std::string>>
+      pages;  // by folder: only what the globs can match is listed
   for (const auto& spec : specs) {
     if (!is_glob(spec)) {
       out.push_back({spec, ""});
@@ -203,10 +227,12 @@ std::vector<MaterialRequest> expand_materials(const std::vector<std::string>& sp
     }
     const std::string folder = glob_folder(spec);
     auto listed = pages.find(folder);
-    if (listed == pages.end()) listed = pages.emplace(folder, list_pages(paths.database, folder)).first;
+    if (listed == pages.end())
+      listed = pages.emplace(folder, list_pages(paths.database, folder)).first;
     const auto matched = match_pages(listed->second, spec);
     if (matched.empty())
-      throw InputError(fmt::format("'{}' matches no database page under {}/data", spec, paths.database));
+      throw InputError(
+          fmt::format("'{}' matches no database page under {}/data", spec, paths.database));
     for (const auto& p : matched) out.push_back({p, spec});
   }
   return out;

@@ -13,15 +13,16 @@ const char* to_string(MaterialClass c);
 struct Material {
   enum class Origin { Catalog, Page, File };
   Origin origin = Origin::Catalog;
-  std::string key;        // catalog file stem ("gold"), or the argument it was loaded from
-  std::string name;       // display name ("Gold")
+  std::string key;   // catalog file stem ("gold"), or the argument it was loaded from
+  std::string name;  // display name ("Gold")
   MaterialClass material_class = MaterialClass::Metal;
   std::string source;     // database page, file path or "constant n=…"
   std::string reference;  // citation of the data
   std::string book_name;  // a page's book in the database's catalog ("Au (Gold)"), if listed
   std::string section;    // a page's catalog section ("Experimental data: thin film"), if listed
-  bool bulk_measurement = false;  // a page measuring the bulk material (pages.h, is_bulk_measurement)
-  int order = 0;          // catalog order (the talk's table order)
+  bool bulk_measurement =
+      false;      // a page measuring the bulk material (pages.h, is_bulk_measurement)
+  int order = 0;  // catalog order (the talk's table order)
   double talk_schlick_rms_de00 = -1.0;  // Hoffman 2020's Schlick RMS ΔE2000, when the talk lists it
   OpticalConstants constants;
 };
@@ -32,9 +33,9 @@ struct DataPaths {
   std::string materials;  // the catalog folder
 };
 
-// One catalog entry (materials/<key>.yml): its data from a database page (`source: main/Au/nk/Johnson`),
-// a file (`file: PATH`, relative to the entry's folder unless absolute; any format nk_text.h reads)
-// or a constant index (`constant: {n: 1.64, k: 0}`).
+// One catalog entry (materials/<key>.yml): its data from a database page (`source:
+// main/Au/nk/Johnson`), a file (`file: PATH`, relative to the entry's folder unless absolute; any
+// format nk_text.h reads) or a constant index (`constant: {n: 1.64, k: 0}`).
 Material read_catalog_entry(const std::string& path, const DataPaths& paths);
 
 // Every catalog entry, in catalog order: the `order` field, then the key.
@@ -64,6 +65,7 @@ struct MaterialRequest {
 };
 // Expands page globs (pages.h: 'main/*/nk/*', '**') into the matching database pages, sorted, in
 // argument order; other arguments stay as given. A glob that matches no page is an InputError.
-std::vector<MaterialRequest> expand_materials(const std::vector<std::string>& specs, const DataPaths& paths);
+std::vector<MaterialRequest> expand_materials(const std::vector<std::string>& specs,
+                                              const DataPaths& paths);
 
 }  // namespace fl::spectral

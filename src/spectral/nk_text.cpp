@@ -24,7 +24,7 @@ enum class Separator { Comma, Tab, Whitespace };
 
 struct HeaderColumn {
   Role role;
-  std::string name;       // as written (trimmed)
+  std::string name;        // as written (trimmed)
   double nm_per_unit = 0;  // wavelength column: 1 (nm), 1000 (µm); 0 when the name gives no unit
 };
 
@@ -41,9 +41,12 @@ std::vector<std::string> name_words(std::string_view name) {
   for (size_t i = 0; i < name.size(); ++i) {
     const auto c = static_cast<unsigned char>(name[i]);
     const auto next = i + 1 < name.size() ? static_cast<unsigned char>(name[i + 1]) : 0;
-    if ((c == 0xC2 && next == 0xB5) || (c == 0xCE && next == 0xBC)) s += 'u', ++i;
-    else if (c == 0xCE && next == 0xBB) s += " lambda ", ++i;
-    else s += std::isalnum(c) ? static_cast<char>(std::tolower(c)) : ' ';
+    if ((c == 0xC2 && next == 0xB5) || (c == 0xCE && next == 0xBC))
+      s += 'u', ++i;
+    else if (c == 0xCE && next == 0xBB)
+      s += " lambda ", ++i;
+    else
+      s += std::isalnum(c) ? static_cast<char>(std::tolower(c)) : ' ';
   }
   std::vector<std::string> words;
   for (auto w : split_fields(s, " ")) words.emplace_back(w);
@@ -52,7 +55,8 @@ std::vector<std::string> name_words(std::string_view name) {
 
 // nm per unit for a unit word, 0 for anything else.
 double unit_word(const std::string& w) {
-  if (w == "nm" || w == "nanometer" || w == "nanometers" || w == "nanometre" || w == "nanometres") return 1.0;
+  if (w == "nm" || w == "nanometer" || w == "nanometers" || w == "nanometre" || w == "nanometres")
+    return 1.0;
   if (w == "um" || w == "micron" || w == "microns" || w == "micrometer" || w == "micrometers" ||
       w == "micrometre" || w == "micrometres")
     return kNmPerUm;
@@ -67,7 +71,8 @@ std::optional<HeaderColumn> header_column(std::string_view field) {
   if (w == "wl" || w == "lambda" || w == "wavelength" || w == "wavelengths" || w == "wave") {
     for (size_t i = 1; i < words.size(); ++i)
       if (const double u = unit_word(words[i]); u > 0) c.nm_per_unit = u;
-    if (w == "wl" && c.nm_per_unit == 0) c.nm_per_unit = kNmPerUm;  // refractiveindex.info's convention
+    if (w == "wl" && c.nm_per_unit == 0)
+      c.nm_per_unit = kNmPerUm;  // refractiveindex.info's convention
     return c;
   }
   for (const auto& [role, names] : {std::pair{Role::N, std::vector<std::string>{"n", "eta"}},
@@ -91,9 +96,12 @@ std::vector<std::string> split_line(std::string_view line, Separator sep) {
   std::string cur;
   bool quoted = false;
   for (const char c : line) {
-    if (c == '"' && sep == Separator::Comma) quoted = !quoted;
-    else if (c == delim && !quoted) out.emplace_back(trim(cur)), cur.clear();
-    else cur += c;
+    if (c == '"' && sep == Separator::Comma)
+      quoted = !quoted;
+    else if (c == delim && !quoted)
+      out.emplace_back(trim(cur)), cur.clear();
+    else
+      cur += c;
   }
   out.emplace_back(trim(cur));
   return out;
@@ -118,21 +126,30 @@ Header parse_header(const std::string& file, int line, std::string_view text) {
   h.separator = separator_of(text);
   std::vector<std::string> fields;
   for (auto& f : split_line(text, h.separator)) {
-    if (unit_only(f) && !fields.empty()) fields.back() += " " + f;
-    else fields.push_back(std::move(f));
+    if (unit_only(f) && !fields.empty())
+      fields.back() += " " + f;
+    else
+      fields.push_back(std::move(f));
   }
   for (const auto& f : fields) {
     const auto c = header_column(f);
     if (!c)
-      throw InputError(file, line, fmt::format("column '{}' is not a wavelength, n or k (header names: wl, lambda or "
-                                               "wavelength with its unit, n, k)", f));
+      throw InputError(
+          file, line,
+          fmt::format("column '{}' is not a wavelength, n or k (header names: wl, lambda or "
+                      "wavelength with its unit, n, k)",
+                      f));
     int& slot = c->role == Role::Wavelength ? h.wavelength : c->role == Role::N ? h.n : h.k;
-    if (slot >= 0) throw InputError(file, line, fmt::format("two columns give the same quantity ('{}')", f));
+    if (slot >= 0)
+      throw InputError(file, line, fmt::format("two columns give the same quantity ('{}')", f));
     slot = static_cast<int>(h.columns.size());
     h.columns.push_back(*c);
   }
-  if (h.wavelength < 0) throw InputError(file, line, "the header names no wavelength column (wl, lambda or wavelength)");
-  if (h.n < 0 && h.k < 0) throw InputError(file, line, "the header names neither an n nor a k column");
+  if (h.wavelength < 0)
+    throw InputError(file, line,
+                     "the header names no wavelength column (wl, lambda or wavelength)");
+  if (h.n < 0 && h.k < 0)
+    throw InputError(file, line, "the header names neither an n nor a k column");
   return h;
 }
 
@@ -165,31 +182,37 @@ void add_table_row(Section& s, const std::string& file, int line, std::string_vi
   const auto field = [&](int c) { return c < static_cast<int>(f.size()) ? f[c] : std::string(); };
   double v[3] = {0, 0, 0};  // wavelength, n, k
   if (!parse_finite(field(h.wavelength), v[0]))
-    throw InputError(file, line, fmt::format("column '{}': '{}' is not a finite number", h.columns[h.wavelength].name,
-                                             field(h.wavelength)));
+    throw InputError(file, line,
+                     fmt::format("column '{}': '{}' is not a finite number",
+                                 h.columns[h.wavelength].name, field(h.wavelength)));
   const double lambda_nm = v[0] * nm_per_unit(h);
   if (f.size() != h.columns.size())
-    return s.rows.add_defect(line, lambda_nm, fmt::format("expected {} columns, found {}", h.columns.size(), f.size()));
+    return s.rows.add_defect(
+        line, lambda_nm, fmt::format("expected {} columns, found {}", h.columns.size(), f.size()));
   for (const auto& [c, out] : {std::pair{h.n, &v[1]}, std::pair{h.k, &v[2]}})
     if (c >= 0 && !parse_finite(field(c), *out))
-      return s.rows.add_defect(line, lambda_nm, fmt::format("column '{}': '{}' is not a finite number",
-                                                            h.columns[c].name, field(c)));
+      return s.rows.add_defect(
+          line, lambda_nm,
+          fmt::format("column '{}': '{}' is not a finite number", h.columns[c].name, field(c)));
   s.rows.add(line, lambda_nm, v[1], v[2]);
 }
 
 // Wavelengths that miss the used range in the header's unit but would overlap it in the other.
-void check_units(const std::string& file, const Header& h, const DispersionBlock& b, const UsedRange& used) {
+void check_units(const std::string& file, const Header& h, const DispersionBlock& b,
+                 const UsedRange& used) {
   if (b.max_nm >= used.min_nm && b.min_nm <= used.max_nm) return;
   const auto& col = h.columns[h.wavelength];
   const double unit = nm_per_unit(h), other = unit == 1.0 ? kNmPerUm : 1.0;
   if (b.max_nm / unit * other < used.min_nm || b.min_nm / unit * other > used.max_nm) return;
-  const std::string why = col.nm_per_unit > 0 ? fmt::format("the header '{}' says {}", col.name, unit == 1.0 ? "nm" : "um")
+  const std::string why = col.nm_per_unit > 0 ? fmt::format("the header '{}' says {}", col.name,
+                                                            unit == 1.0 ? "nm" : "um")
                                               : fmt::format("'{}' names no unit, so nm", col.name);
-  throw InputError(file, h.line, fmt::format("wavelengths {:g}-{:g} read in {} ({}) miss {:g}-{:g} nm, but in {} they "
-                                             "would overlap it: write the unit in the header (e.g. 'wavelength_{}')",
-                                             b.min_nm / unit, b.max_nm / unit, unit == 1.0 ? "nm" : "um", why,
-                                             used.min_nm, used.max_nm, other == 1.0 ? "nm" : "um",
-                                             other == 1.0 ? "nm" : "um"));
+  throw InputError(
+      file, h.line,
+      fmt::format("wavelengths {:g}-{:g} read in {} ({}) miss {:g}-{:g} nm, but in {} they "
+                  "would overlap it: write the unit in the header (e.g. 'wavelength_{}')",
+                  b.min_nm / unit, b.max_nm / unit, unit == 1.0 ? "nm" : "um", why, used.min_nm,
+                  used.max_nm, other == 1.0 ? "nm" : "um", other == 1.0 ? "nm" : "um"));
 }
 
 }  // namespace
@@ -206,9 +229,12 @@ OpticalConstants read_nk_table(const std::string& path, const UsedRange& used) {
       const Header h = parse_header(path, line, t);
       sections.push_back({h, TabulatedRows(path, kind_of(h), line)});
     } else if (sections.empty()) {
-      throw InputError(path, line, "expected a header line naming the columns (e.g. 'wavelength_nm,n,k'), found numbers");
+      throw InputError(
+          path, line,
+          "expected a header line naming the columns (e.g. 'wavelength_nm,n,k'), found numbers");
     } else {
-      add_table_row(sections.back(), path, line, lines[i]);  // untrimmed: a trailing tab ends an empty field
+      add_table_row(sections.back(), path, line,
+                    lines[i]);  // untrimmed: a trailing tab ends an empty field
     }
   }
   if (sections.empty()) throw InputError(path, 0, "no header line");
@@ -219,7 +245,8 @@ OpticalConstants read_nk_table(const std::string& path, const UsedRange& used) {
     oc.blocks.push_back(s.rows.finish(used, oc.warnings));
     check_units(path, s.header, oc.blocks.back(), used);
   }
-  if (std::none_of(oc.blocks.begin(), oc.blocks.end(), [](const DispersionBlock& b) { return b.defines_n(); }))
+  if (std::none_of(oc.blocks.begin(), oc.blocks.end(),
+                   [](const DispersionBlock& b) { return b.defines_n(); }))
     throw InputError(path, 0, "no column gives n (only k)");
   return oc;
 }
@@ -253,10 +280,14 @@ constexpr double kHcEvNm = 1239.841984;
 
 double sopra_lambda_nm(int unit, double x) {
   switch (unit) {
-    case 1: return kHcEvNm / x;
-    case 2: return x * kNmPerUm;
-    case 3: return 1e7 / x;  // cm⁻¹: 10⁷ nm per cm
-    default: return x;
+    case 1:
+      return kHcEvNm / x;
+    case 2:
+      return x * kNmPerUm;
+    case 3:
+      return 1e7 / x;  // cm⁻¹: 10⁷ nm per cm
+    default:
+      return x;
   }
 }
 
@@ -273,16 +304,23 @@ SopraHeader sopra_header(const std::string& path, std::string_view text) {
     if (tok.line != t.front().line) break;
     double x;
     if (!parse_finite(tok.text, x))
-      throw InputError(path, tok.line, fmt::format("SOPRA first line: '{}' is not a number", tok.text));
+      throw InputError(path, tok.line,
+                       fmt::format("SOPRA first line: '{}' is not a number", tok.text));
     v.push_back(x);
   }
   h.line = t.front().line;
-  const char* form = "expected the SOPRA first line 'UNIT FIRST LAST INTERVALS' (UNIT 1 eV, 2 um, 3 1/cm, 4 nm)";
-  if (v.size() != 4) throw InputError(path, h.line, fmt::format("{}, found {} numbers", form, v.size()));
+  const char* form =
+      "expected the SOPRA first line 'UNIT FIRST LAST INTERVALS' (UNIT 1 eV, 2 um, 3 1/cm, 4 nm)";
+  if (v.size() != 4)
+    throw InputError(path, h.line, fmt::format("{}, found {} numbers", form, v.size()));
   if (v[0] != std::floor(v[0]) || v[0] < 1 || v[0] > 4)
-    throw InputError(path, h.line, fmt::format("SOPRA unit code {:g} must be 1 (eV), 2 (um), 3 (1/cm) or 4 (nm)", v[0]));
+    throw InputError(
+        path, h.line,
+        fmt::format("SOPRA unit code {:g} must be 1 (eV), 2 (um), 3 (1/cm) or 4 (nm)", v[0]));
   if (v[3] != std::floor(v[3]) || v[3] < 1 || v[3] > 1e6)
-    throw InputError(path, h.line, fmt::format("SOPRA interval count {:g} must be an integer from 1 to 1000000", v[3]));
+    throw InputError(
+        path, h.line,
+        fmt::format("SOPRA interval count {:g} must be an integer from 1 to 1000000", v[3]));
   if (!(v[1] > 0) || !(v[2] > 0) || v[1] == v[2])
     throw InputError(path, h.line, "SOPRA first and last values must be positive and different");
   h.unit = static_cast<int>(v[0]);
@@ -304,18 +342,21 @@ OpticalConstants read_sopra_nk(const std::string& path, const UsedRange& used) {
   const size_t points = static_cast<size_t>(h.intervals) + 1;
   if (values.size() != 2 * points)
     throw InputError(path, values.empty() ? h.line : values.back().line,
-                     fmt::format("expected {} values ({} n, k pairs), found {}", 2 * points, points, values.size()));
+                     fmt::format("expected {} values ({} n, k pairs), found {}", 2 * points, points,
+                                 values.size()));
   // Rows in increasing wavelength: energies and wavenumbers list them the other way.
   const bool reverse = sopra_lambda_nm(h.unit, h.last) < sopra_lambda_nm(h.unit, h.first);
   TabulatedRows rows(path, DispersionBlock::Kind::TabulatedNK, h.line);
   for (size_t j = 0; j < points; ++j) {
     const size_t i = reverse ? points - 1 - j : j;
-    const double lambda_nm = sopra_lambda_nm(h.unit, h.first + (h.last - h.first) * double(i) / h.intervals);
+    const double lambda_nm =
+        sopra_lambda_nm(h.unit, h.first + (h.last - h.first) * double(i) / h.intervals);
     double n, k;
     const auto& tn = values[2 * i];
     const auto& tk = values[2 * i + 1];
     if (!parse_finite(tn.text, n) || !parse_finite(tk.text, k))
-      rows.add_defect(tn.line, lambda_nm, fmt::format("'{} {}' is not a pair of numbers", tn.text, tk.text));
+      rows.add_defect(tn.line, lambda_nm,
+                      fmt::format("'{} {}' is not a pair of numbers", tn.text, tk.text));
     else
       rows.add(tn.line, lambda_nm, n, k);
   }
@@ -328,21 +369,26 @@ OpticalConstants read_sopra_nk(const std::string& path, const UsedRange& used) {
 namespace {
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 DispersionBlock read_spd(const std::string& path, DispersionBlock::Kind kind, const UsedRange& used,
                          std::vector<std::string>& warnings) {
   const auto t = tokens(read_text_file(path), 0, " \t,");
   if (t.empty()) throw InputError(path, 0, "no wavelength, value pairs");
-  if (t.size() % 2) throw InputError(path, t.back().line, "odd number of values: expected wavelength (nm), value pairs");
+  if (t.size() % 2)
+    throw InputError(path, t.back().line,
+                     "odd number of values: expected wavelength (nm), value pairs");
   TabulatedRows rows(path, kind, t.front().line);
   for (size_t i = 0; i < t.size(); i += 2) {
     double lambda_nm, v;
     if (!parse_finite(t[i].text, lambda_nm))
-      throw InputError(path, t[i].line, fmt::format("wavelength '{}' is not a finite number", t[i].text));
+      throw InputError(path, t[i].line,
+                       fmt::format("wavelength '{}' is not a finite number", t[i].text));
     if (!parse_finite(t[i + 1].text, v))
-      rows.add_defect(t[i + 1].line, lambda_nm, fmt::format("'{}' is not a finite number", t[i + 1].text));
+      rows.add_defect(t[i + 1].line, lambda_nm,
+                      fmt::format("'{}' is not a finite number", t[i + 1].text));
     else
       rows.add(t[i].line, lambda_nm, v, v);
   }
@@ -353,22 +399,29 @@ DispersionBlock read_spd(const std::string& path, DispersionBlock::Kind kind, co
 
 OpticalConstants read_spd_pair(const std::string& path, const UsedRange& used) {
   std::string stem;
-  if (ends_with(path, ".eta.spd")) stem = path.substr(0, path.size() - 8);
-  else if (ends_with(path, ".k.spd")) stem = path.substr(0, path.size() - 6);
-  else throw InputError(path, 0, "an .spd input is one file of a pair: NAME.eta.spd (n) and NAME.k.spd (k)");
+  if (ends_with(path, ".eta.spd"))
+    stem = path.substr(0, path.size() - 8);
+  else if (ends_with(path, ".k.spd"))
+    stem = path.substr(0, path.size() - 6);
+  else
+    throw InputError(path, 0,
+                     "an .spd input is one file of a pair: NAME.eta.spd (n) and NAME.k.spd (k)");
   const std::string eta = stem + ".eta.spd", k = stem + ".k.spd";
   std::error_code ec;
-  if (!std::filesystem::exists(eta, ec)) throw InputError(eta, 0, "no such file (the n half of the .spd pair)");
+  if (!std::filesystem::exists(eta, ec))
+    throw InputError(eta, 0, "no such file (the n half of the .spd pair)");
   OpticalConstants oc;
   oc.file = eta;
   oc.blocks.push_back(read_spd(eta, DispersionBlock::Kind::TabulatedN, used, oc.warnings));
-  if (std::filesystem::exists(k, ec)) oc.blocks.push_back(read_spd(k, DispersionBlock::Kind::TabulatedK, used, oc.warnings));
+  if (std::filesystem::exists(k, ec))
+    oc.blocks.push_back(read_spd(k, DispersionBlock::Kind::TabulatedK, used, oc.warnings));
   return oc;
 }
 
 OpticalConstants read_optical_file(const std::string& path, const UsedRange& used) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".yml" || ext == ".yaml") return read_refractiveindex_file(path, used);
   if (ext == ".nk") return read_sopra_nk(path, used);
   if (ext == ".spd") return read_spd_pair(path, used);

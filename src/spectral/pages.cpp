@@ -16,11 +16,13 @@ std::vector<std::string> list_pages(const std::string& database, const std::stri
   const fs::path root = folder.empty() ? data : data / folder;
   std::error_code ec;
   if (!fs::is_directory(root, ec)) return out;
-  for (auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
+  for (auto it = fs::recursive_directory_iterator(
+           root, fs::directory_options::skip_permission_denied, ec);
        it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (ec) break;
     const auto& p = it->path();
-    if (!it->is_regular_file(ec) || p.extension() != ".yml" || p.filename() == "about.yml") continue;
+    if (!it->is_regular_file(ec) || p.extension() != ".yml" || p.filename() == "about.yml")
+      continue;
     // The iterator's paths start with `data`: lexical, without resolving each file's path.
     std::string rel = p.lexically_relative(data).generic_string();
     out.push_back(rel.substr(0, rel.size() - 4));
@@ -54,13 +56,18 @@ std::string glob_folder(std::string_view pattern) {
   if (slash == std::string_view::npos) return {};
   const fs::path folder(pattern.substr(0, slash));
   // A folder outside data/ holds no page: the whole listing is matched (and matches nothing).
-  if (folder.is_absolute() || std::find(folder.begin(), folder.end(), fs::path("..")) != folder.end()) return {};
+  if (folder.is_absolute() ||
+      std::find(folder.begin(), folder.end(), fs::path("..")) != folder.end())
+    return {};
   return folder.generic_string();
 }
 
-bool is_glob(std::string_view spec) { return spec.find_first_of("*?") != std::string_view::npos; }
+bool is_glob(std::string_view spec) {
+  return spec.find_first_of("*?") != std::string_view::npos;
+}
 
-std::vector<std::string> match_pages(const std::vector<std::string>& pages, const std::string& pattern) {
+std::vector<std::string> match_pages(const std::vector<std::string>& pages,
+                                     const std::string& pattern) {
   std::vector<std::string> out;
   for (const auto& p : pages)
     if (glob_match(pattern, p)) out.push_back(p);
@@ -75,7 +82,9 @@ std::string book_of(const std::string& page) {
 
 namespace {
 
-std::string text(const YamlNode& n, const char* key) { return n[key].scalar(); }
+std::string text(const YamlNode& n, const char* key) {
+  return n[key].scalar();
+}
 
 void add_book(const YamlNode& book, std::map<std::string, PageEntry>& out) {
   const YamlNode& content = book["content"];

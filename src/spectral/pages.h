@@ -20,7 +20,8 @@ bool glob_match(std::string_view pattern, std::string_view path);
 bool is_glob(std::string_view spec);  // contains '*' or '?'
 
 // The pages matching `pattern`, sorted.
-std::vector<std::string> match_pages(const std::vector<std::string>& pages, const std::string& pattern);
+std::vector<std::string> match_pages(const std::vector<std::string>& pages,
+                                     const std::string& pattern);
 // The folder every match of `pattern` lies in: its segments before the first one holding a
 // wildcard ("main/Au/**" → "main/Au", "**" → ""); empty for a folder outside data/ ("../x/*").
 std::string glob_folder(std::string_view pattern);

@@ -1,9 +1,10 @@
 #include "spectral/ri_database.h"
 
-#include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include "spectral/errors.h"
 #include "spectral/tabulated.h"
@@ -18,11 +19,16 @@ constexpr double kNmPerUm = 1000.0;
 // How many coefficients each formula accepts at most (refractiveindex.info uses up to C17).
 int max_coefficients(int formula) {
   switch (formula) {
-    case 7: return 6;
-    case 8: return 4;
-    case 9: return 6;
-    case 6: return 11;
-    default: return 17;
+    case 7:
+      return 6;
+    case 8:
+      return 4;
+    case 9:
+      return 6;
+    case 6:
+      return 11;
+    default:
+      return 17;
   }
 }
 
@@ -41,24 +47,28 @@ std::vector<double> parse_numbers(const std::string& file, int line, std::string
 // One data line into `rows`: the first field is the wavelength (in µm; an error when it is not a
 // number), the others the values; a wrong column count or a value that is not a number is a
 // defect of the row, judged where its wavelength lies.
-void add_data_line(TabulatedRows& rows, const std::string& file, int line, std::string_view raw, size_t columns) {
+void add_data_line(TabulatedRows& rows, const std::string& file, int line, std::string_view raw,
+                   size_t columns) {
   const auto fields = split_fields(raw, " \t,");
   double lambda_um = 0;
   if (!parse_finite(fields.front(), lambda_um))
     throw InputError(file, line, fmt::format("data: '{}' is not a finite number", fields.front()));
   const double lambda_nm = lambda_um * kNmPerUm;
   if (fields.size() != columns)
-    return rows.add_defect(line, lambda_nm, fmt::format("expected {} columns, found {}", columns, fields.size()));
+    return rows.add_defect(line, lambda_nm,
+                           fmt::format("expected {} columns, found {}", columns, fields.size()));
   double v[3] = {lambda_um, 0, 0};
   for (size_t c = 1; c < columns; ++c)
     if (!parse_finite(fields[c], v[c]))
-      return rows.add_defect(line, lambda_nm, fmt::format("data: '{}' is not a finite number", fields[c]));
+      return rows.add_defect(line, lambda_nm,
+                             fmt::format("data: '{}' is not a finite number", fields[c]));
   const bool nk = columns == 3;
   rows.add(line, lambda_nm, v[1], nk ? v[2] : v[1]);
 }
 
-DispersionBlock parse_tabulated(const std::string& file, const YamlNode& block, DispersionBlock::Kind kind,
-                                int block_line, const UsedRange& used, std::vector<std::string>& warnings) {
+DispersionBlock parse_tabulated(const std::string& file, const YamlNode& block,
+                                DispersionBlock::Kind kind, int block_line, const UsedRange& used,
+                                std::vector<std::string>& warnings) {
   const YamlNode& data = block["data"];
   if (!data.is_scalar()) throw InputError(file, block_line, "tabulated block without 'data'");
   const std::string& text = data.scalar();
@@ -80,7 +90,8 @@ DispersionBlock parse_tabulated(const std::string& file, const YamlNode& block, 
 // The formula must give a physical index wherever it is read: over its range's overlap with the
 // used range at every nm (the finest grid step) and at the overlap's ends, or at the one end of its
 // range that the nearest-value rule reads when they do not overlap.
-void check_formula(const std::string& file, int line, const DispersionBlock& b, const UsedRange& used) {
+void check_formula(const std::string& file, int line, const DispersionBlock& b,
+                   const UsedRange& used) {
   double lo = std::max(b.min_nm, used.min_nm), hi = std::min(b.max_nm, used.max_nm);
   if (lo > hi) lo = hi = b.max_nm < used.min_nm ? b.max_nm : b.min_nm;
   std::vector<double> at{lo, hi};
@@ -88,13 +99,14 @@ void check_formula(const std::string& file, int line, const DispersionBlock& b, 
   for (double nm : at) {
     const double n = evaluate_formula(b.formula, b.coefficients, nm / kNmPerUm);
     if (!std::isfinite(n) || !(n > 0.0) || n > kMaxOpticalConstant)
-      throw InputError(file, line, fmt::format("formula {} gives n = {} at {:g} um (not physical)", b.formula,
-                                               std::isnan(n) ? "nan" : fmt::format("{}", n), nm / kNmPerUm));
+      throw InputError(file, line,
+                       fmt::format("formula {} gives n = {} at {:g} um (not physical)", b.formula,
+                                   std::isnan(n) ? "nan" : fmt::format("{}", n), nm / kNmPerUm));
   }
 }
 
-DispersionBlock parse_formula(const std::string& file, const YamlNode& block, int formula, int block_line,
-                              const UsedRange& used) {
+DispersionBlock parse_formula(const std::string& file, const YamlNode& block, int formula,
+                              int block_line, const UsedRange& used) {
   DispersionBlock b;
   b.kind = DispersionBlock::Kind::Formula;
   b.formula = formula;
@@ -102,14 +114,17 @@ DispersionBlock parse_formula(const std::string& file, const YamlNode& block, in
   const YamlNode& coeffs = block["coefficients"];
   const YamlNode& range = block["wavelength_range"];
   if (!coeffs.is_scalar())
-    throw InputError(file, block_line, fmt::format("formula {} block without 'coefficients'", formula));
+    throw InputError(file, block_line,
+                     fmt::format("formula {} block without 'coefficients'", formula));
   if (!range.is_scalar())
-    throw InputError(file, block_line, fmt::format("formula {} block without 'wavelength_range'", formula));
+    throw InputError(file, block_line,
+                     fmt::format("formula {} block without 'wavelength_range'", formula));
   const int cline = coeffs.line() + 1;
   b.coefficients = parse_numbers(file, cline, coeffs.scalar(), "coefficients");
   if (b.coefficients.empty() || static_cast<int>(b.coefficients.size()) > max_coefficients(formula))
-    throw InputError(file, cline, fmt::format("formula {} takes 1 to {} coefficients, found {}", formula,
-                                              max_coefficients(formula), b.coefficients.size()));
+    throw InputError(file, cline,
+                     fmt::format("formula {} takes 1 to {} coefficients, found {}", formula,
+                                 max_coefficients(formula), b.coefficients.size()));
   const int rline = range.line() + 1;
   auto r = parse_numbers(file, rline, range.scalar(), "wavelength_range");
   if (r.size() != 2) throw InputError(file, rline, "wavelength_range needs two numbers");
@@ -128,9 +143,12 @@ std::string plain_reference(const YamlNode& root) {
   std::string out;
   bool in_tag = false, space = false;
   for (const char c : r.scalar()) {
-    if (c == '<') in_tag = true;
-    else if (c == '>') in_tag = false;
-    else if (!in_tag && std::isspace(static_cast<unsigned char>(c))) space = !out.empty();
+    if (c == '<')
+      in_tag = true;
+    else if (c == '>')
+      in_tag = false;
+    else if (!in_tag && std::isspace(static_cast<unsigned char>(c)))
+      space = !out.empty();
     else if (!in_tag) {
       if (space) out += ' ';
       out += c;
@@ -151,39 +169,46 @@ double evaluate_formula(int formula, const std::vector<double>& coeffs, double w
   switch (formula) {
     case 1: {  // Sellmeier: n² − 1 = C1 + Σ Ci λ² / (λ² − Ci+1²)
       double s = 1 + C[1];
-      for (int i = 2; i <= 16; i += 2) if (C[i] != 0) s += C[i] / (1 - (C[i + 1] / wl) * (C[i + 1] / wl));
+      for (int i = 2; i <= 16; i += 2)
+        if (C[i] != 0) s += C[i] / (1 - (C[i + 1] / wl) * (C[i + 1] / wl));
       return std::sqrt(s);
     }
     case 2: {  // Sellmeier-2: n² − 1 = C1 + Σ Ci λ² / (λ² − Ci+1)
       double s = 1 + C[1];
-      for (int i = 2; i <= 16; i += 2) if (C[i] != 0) s += C[i] / (1 - C[i + 1] / wl2);
+      for (int i = 2; i <= 16; i += 2)
+        if (C[i] != 0) s += C[i] / (1 - C[i + 1] / wl2);
       return std::sqrt(s);
     }
     case 3: {  // Polynomial: n² = C1 + Σ Ci λ^Ci+1
       double s = C[1];
-      for (int i = 2; i <= 16; i += 2) if (C[i] != 0) s += C[i] * std::pow(wl, C[i + 1]);
+      for (int i = 2; i <= 16; i += 2)
+        if (C[i] != 0) s += C[i] * std::pow(wl, C[i + 1]);
       return std::sqrt(s);
     }
     case 4: {  // RefractiveIndex.INFO: two Sellmeier-like terms plus a polynomial
       double s = C[1];
       if (C[2] != 0) s += C[2] * std::pow(wl, C[3]) / (wl2 - std::pow(C[4], C[5]));
       if (C[6] != 0) s += C[6] * std::pow(wl, C[7]) / (wl2 - std::pow(C[8], C[9]));
-      for (int i = 10; i <= 16; i += 2) if (C[i] != 0) s += C[i] * std::pow(wl, C[i + 1]);
+      for (int i = 10; i <= 16; i += 2)
+        if (C[i] != 0) s += C[i] * std::pow(wl, C[i + 1]);
       return std::sqrt(s);
     }
     case 5: {  // Cauchy: n = C1 + Σ Ci λ^Ci+1
       double s = C[1];
-      for (int i = 2; i <= 16; i += 2) if (C[i] != 0) s += C[i] * std::pow(wl, C[i + 1]);
+      for (int i = 2; i <= 16; i += 2)
+        if (C[i] != 0) s += C[i] * std::pow(wl, C[i + 1]);
       return s;
     }
     case 6: {  // Gases: n − 1 = C1 + Σ Ci / (Ci+1 − λ⁻²)
       double s = 1 + C[1];
-      for (int i = 2; i <= 10; i += 2) if (C[i] != 0) s += C[i] / (C[i + 1] - 1.0 / wl2);
+      for (int i = 2; i <= 10; i += 2)
+        if (C[i] != 0) s += C[i] / (C[i + 1] - 1.0 / wl2);
       return s;
     }
     case 7: {  // Herzberger; 0.028 µm² is the formula's fixed pole
       const double d = wl2 - 0.028;
-      return C[1] + C[2] / d + C[3] / (d * d) + C[4] * wl2 + C[5] * wl2 * wl2 + C[6] * wl2 * wl2 * wl2;
+      return C[1] + C[2] / d + C[3] / (d * d) + C[4] * wl2 + C[5] * wl2 * wl2 +
+             C[6] * wl2 * wl2 * wl2;
     }
     case 8: {  // Retro: (n² − 1)/(n² + 2) = C1 + C2 λ²/(λ² − C3) + C4 λ²
       const double t = C[1] + C[2] * wl2 / (wl2 - C[3]) + C[4] * wl2;
@@ -204,19 +229,25 @@ DispersionBlock parse_block(const std::string& path, const YamlNode& block, cons
                             std::vector<std::string>& warnings) {
   using Kind = DispersionBlock::Kind;
   const int line = block.line() + 1;
-  if (!block.is_map() || !block["type"].is_scalar()) throw InputError(path, line, "DATA block without a 'type'");
+  if (!block.is_map() || !block["type"].is_scalar())
+    throw InputError(path, line, "DATA block without a 'type'");
   const std::string& type = block["type"].scalar();
-  if (type == "tabulated nk") return parse_tabulated(path, block, Kind::TabulatedNK, line, used, warnings);
-  if (type == "tabulated n") return parse_tabulated(path, block, Kind::TabulatedN, line, used, warnings);
-  if (type == "tabulated k") return parse_tabulated(path, block, Kind::TabulatedK, line, used, warnings);
+  if (type == "tabulated nk")
+    return parse_tabulated(path, block, Kind::TabulatedNK, line, used, warnings);
+  if (type == "tabulated n")
+    return parse_tabulated(path, block, Kind::TabulatedN, line, used, warnings);
+  if (type == "tabulated k")
+    return parse_tabulated(path, block, Kind::TabulatedK, line, used, warnings);
   if (type.rfind("formula ", 0) == 0) {
     const std::string num = type.substr(8);
     if (num.size() != 1 || num[0] < '1' || num[0] > '9')
-      throw InputError(path, line, fmt::format("unknown formula type '{}' (expected formula 1 to 9)", type));
+      throw InputError(path, line,
+                       fmt::format("unknown formula type '{}' (expected formula 1 to 9)", type));
     return parse_formula(path, block, num[0] - '0', line, used);
   }
   if (type == "tabulated n2")
-    throw InputError(path, line, "DATA block type 'tabulated n2' is a nonlinear index, not n, k data");
+    throw InputError(path, line,
+                     "DATA block type 'tabulated n2' is a nonlinear index, not n, k data");
   throw InputError(path, line, fmt::format("unknown DATA block type '{}'", type));
 }
 
@@ -224,14 +255,16 @@ DispersionBlock parse_block(const std::string& path, const YamlNode& block, cons
 
 OpticalConstants read_refractiveindex_file(const std::string& path, const UsedRange& used) {
   const YamlNode root = read_yaml_file(path);
-  if (!root.is_map()) throw InputError(path, 1, "expected a refractiveindex.info YAML map with DATA");
+  if (!root.is_map())
+    throw InputError(path, 1, "expected a refractiveindex.info YAML map with DATA");
   const YamlNode& data = root["DATA"];
   if (!data) throw InputError(path, 0, "no DATA section");
   if (!data.is_sequence() || data.size() == 0)
     throw InputError(path, data.line() + 1, "DATA must be a non-empty list of blocks");
   OpticalConstants oc;
   oc.file = path;
-  for (const auto& block : data.items()) oc.blocks.push_back(parse_block(path, block, used, oc.warnings));
+  for (const auto& block : data.items())
+    oc.blocks.push_back(parse_block(path, block, used, oc.warnings));
   oc.reference = plain_reference(root);
   bool has_n = false;
   for (const auto& b : oc.blocks) has_n |= b.defines_n();
@@ -240,7 +273,8 @@ OpticalConstants read_refractiveindex_file(const std::string& path, const UsedRa
 }
 
 OpticalConstants constant_ior(double n, double k, const std::string& label) {
-  if (const auto problem = value_problem(n, k, true, true); !problem.empty()) throw InputError(label, 0, problem);
+  if (const auto problem = value_problem(n, k, true, true); !problem.empty())
+    throw InputError(label, 0, problem);
   DispersionBlock b;
   b.kind = DispersionBlock::Kind::Constant;
   b.min_nm = 0.0;
@@ -263,20 +297,28 @@ struct QuantitySource {
 
   double value_in(const DispersionBlock& b, double lambda_nm) const {
     switch (b.kind) {
-      case DispersionBlock::Kind::Constant: return want_n ? b.n[0] : b.k[0];
+      case DispersionBlock::Kind::Constant:
+        return want_n ? b.n[0] : b.k[0];
       case DispersionBlock::Kind::Formula:
         return evaluate_formula(b.formula, b.coefficients,
                                 std::clamp(lambda_nm, b.min_nm, b.max_nm) / kNmPerUm);
-      default: return interpolate_linear(b.lambda_nm, want_n ? b.n : b.k, lambda_nm);
+      default:
+        return interpolate_linear(b.lambda_nm, want_n ? b.n : b.k, lambda_nm);
     }
   }
   double at(double lambda_nm, bool& clamped) const {
     const DispersionBlock* nearest = nullptr;
     double best = 1e300;
     for (const auto* b : blocks) {
-      if (lambda_nm >= b->min_nm && lambda_nm <= b->max_nm) { clamped = false; return value_in(*b, lambda_nm); }
+      if (lambda_nm >= b->min_nm && lambda_nm <= b->max_nm) {
+        clamped = false;
+        return value_in(*b, lambda_nm);
+      }
       const double d = lambda_nm < b->min_nm ? b->min_nm - lambda_nm : lambda_nm - b->max_nm;
-      if (!nearest || d < best) { best = d; nearest = b; }  // d can exceed any bound (λ = 1e300)
+      if (!nearest || d < best) {
+        best = d;
+        nearest = b;
+      }  // d can exceed any bound (λ = 1e300)
     }
     clamped = true;
     return value_in(*nearest, lambda_nm);
@@ -304,7 +346,8 @@ std::vector<std::string> sample_quantity(const QuantitySource& src, const Spectr
     if (clamped && run_start < 0) run_start = i;
     if (!clamped && run_start >= 0) {
       runs.push_back(run_start == i - 1 ? fmt::format("{:g}", grid.lambda_nm(run_start))
-                                        : fmt::format("{:g}-{:g}", grid.lambda_nm(run_start), grid.lambda_nm(i - 1)));
+                                        : fmt::format("{:g}-{:g}", grid.lambda_nm(run_start),
+                                                      grid.lambda_nm(i - 1)));
       run_start = -1;
     }
   }
@@ -313,7 +356,8 @@ std::vector<std::string> sample_quantity(const QuantitySource& src, const Spectr
 
 }  // namespace
 
-SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, const std::string& label) {
+SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid,
+                      const std::string& label) {
   SampledIor out;
   out.ior.grid = grid;
   out.ior.ior.resize(grid.count);
@@ -333,13 +377,19 @@ SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, cons
   if (std::none_of(n_src.blocks.begin(), n_src.blocks.end(), [&](const DispersionBlock* b) {
         return b->max_nm >= grid.start_nm && b->min_nm <= grid.end_nm();
       }))
-    throw InputError(oc.file, 0, fmt::format("n data does not cover any of {:g}-{:g} nm", grid.start_nm, grid.end_nm()));
+    throw InputError(
+        oc.file, 0,
+        fmt::format("n data does not cover any of {:g}-{:g} nm", grid.start_nm, grid.end_nm()));
   auto describe = [](const char* what, const std::vector<std::string>& runs) {
-    return runs.empty() ? std::string() : fmt::format("{} data does not cover {} nm", what, fmt::join(runs, " and "));
+    return runs.empty()
+               ? std::string()
+               : fmt::format("{} data does not cover {} nm", what, fmt::join(runs, " and "));
   };
   std::vector<std::string> parts;
-  if (n_runs == k_runs) parts.push_back(describe("n and k", n_runs));
-  else parts = {describe("n", n_runs), describe("k", k_runs)};
+  if (n_runs == k_runs)
+    parts.push_back(describe("n and k", n_runs));
+  else
+    parts = {describe("n", n_runs), describe("k", k_runs)};
   for (const auto& p : parts)
     if (!p.empty()) {
       out.warnings.push_back(fmt::format("{}: {}; using the nearest value there", label, p));
@@ -347,7 +397,8 @@ SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, cons
     }
   for (int i = 0; i < grid.count; ++i) {
     if (!(n[i] > 0.0) || !std::isfinite(n[i]))
-      throw InputError(oc.file, 0, fmt::format("n = {} at {:g} nm is not physical", n[i], grid.lambda_nm(i)));
+      throw InputError(oc.file, 0,
+                       fmt::format("n = {} at {:g} nm is not physical", n[i], grid.lambda_nm(i)));
     out.ior.ior[i] = {n[i], std::max(0.0, k[i])};
   }
   return out;

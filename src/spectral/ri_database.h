@@ -26,13 +26,14 @@ struct SampledIor {
   // Per grid wavelength: whether the data measures n (k) there, or holds the nearest value.
   std::vector<bool> n_measured, k_measured;
   bool has_k_data = false;  // some block defines k (otherwise k = 0 everywhere)
-  std::string uncovered;    // what is held: "n and k data does not cover 360-385 nm" (empty: nothing)
+  std::string uncovered;  // what is held: "n and k data does not cover 360-385 nm" (empty: nothing)
 };
 
 // n and k on the grid. Outside the data's range the nearest value is used and a warning names
 // the uncovered range; n data that misses the grid entirely is an InputError (k data that does is
 // held at its nearest value, like any uncovered stretch). Without k data, k = 0. `label` names the
 // material in messages.
-SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid, const std::string& label);
+SampledIor sample_ior(const OpticalConstants& oc, const SpectralGrid& grid,
+                      const std::string& label);
 
 }  // namespace fl::spectral

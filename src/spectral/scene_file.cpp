@@ -9,7 +9,9 @@
 namespace fl::spectral {
 namespace {
 
-int line_of(const YamlNode& n) { return n.line() + 1; }
+int line_of(const YamlNode& n) {
+  return n.line() + 1;
+}
 
 std::string scalar_text(const std::string& path, const YamlNode& n, const std::string& what) {
   if (!n.is_scalar()) throw InputError(path, line_of(n), fmt::format("{} must be a string", what));
@@ -19,16 +21,19 @@ std::string scalar_text(const std::string& path, const YamlNode& n, const std::s
 // A roughness or a list of them, each in (0, 1].
 std::vector<double> roughness_list(const std::string& path, const YamlNode& v, int line) {
   std::vector<const YamlNode*> items;
-  if (v.is_scalar()) items.push_back(&v);
+  if (v.is_scalar())
+    items.push_back(&v);
   else if (v.is_sequence())
     for (const auto& x : v.items()) items.push_back(&x);
-  if (items.empty()) throw InputError(path, line, "'roughness' must be a number or a list of numbers in (0, 1]");
+  if (items.empty())
+    throw InputError(path, line, "'roughness' must be a number or a list of numbers in (0, 1]");
   std::vector<double> out;
   for (const YamlNode* x : items) {
     double r = 0;
     if (!x->is_scalar() || !parse_finite(x->scalar(), r) || !(r > 0.0 && r <= 1.0))
-      throw InputError(path, line_of(*x), fmt::format("'roughness' must be a perceptual roughness in (0, 1], not '{}'",
-                                                      x->is_scalar() ? x->scalar() : std::string("a list or map")));
+      throw InputError(path, line_of(*x),
+                       fmt::format("'roughness' must be a perceptual roughness in (0, 1], not '{}'",
+                                   x->is_scalar() ? x->scalar() : std::string("a list or map")));
     out.push_back(r);
   }
   return out;
@@ -44,11 +49,16 @@ SceneFileMaterial scene_material(const std::string& path, const YamlNode& m) {
   SceneFileMaterial out{"", line_of(m), {}};
   for (const auto& kv : m.fields()) {
     const std::string key = kv.first.is_scalar() ? kv.first.scalar() : std::string("?");
-    if (key == "name") out.spec = scalar_text(path, kv.second, "a material's 'name'");
-    else if (key == "roughness") out.roughness = roughness_list(path, kv.second, line_of(kv.first));
-    else throw InputError(path, line_of(kv.first), fmt::format("unknown material key '{}' (expected name, roughness)", key));
+    if (key == "name")
+      out.spec = scalar_text(path, kv.second, "a material's 'name'");
+    else if (key == "roughness")
+      out.roughness = roughness_list(path, kv.second, line_of(kv.first));
+    else
+      throw InputError(path, line_of(kv.first),
+                       fmt::format("unknown material key '{}' (expected name, roughness)", key));
   }
-  if (out.spec.empty()) throw InputError(path, out.line, "a material given as a map needs a 'name'");
+  if (out.spec.empty())
+    throw InputError(path, out.line, "a material given as a map needs a 'name'");
   return out;
 }
 
@@ -59,7 +69,8 @@ SceneFile read_scene_file(const std::string& path) {
   s.path = path;
   const YamlNode root = read_yaml_file(path);  // missing, directory, empty, binary, invalid YAML
   if (root.is_null()) throw InputError(path, 1, "scene is empty (expected a map with 'materials')");
-  if (!root.is_map()) throw InputError(path, line_of(root), "a scene must be a YAML map with 'materials'");
+  if (!root.is_map())
+    throw InputError(path, line_of(root), "a scene must be a YAML map with 'materials'");
   bool have_materials = false;
   for (const auto& kv : root.fields()) {
     const std::string key = kv.first.is_scalar() ? kv.first.scalar() : std::string("?");
@@ -68,13 +79,17 @@ SceneFile read_scene_file(const std::string& path) {
     if (key == "materials") {
       have_materials = true;
       if (!v.is_sequence() || v.size() == 0)
-        throw InputError(path, line, "'materials' must be a non-empty list of material names, database pages or files");
+        throw InputError(
+            path, line,
+            "'materials' must be a non-empty list of material names, database pages or files");
       for (const auto& m : v.items()) s.materials.push_back(scene_material(path, m));
     } else if (key == "max_de00") {
       double x = 0;
       if (!v.is_scalar() || !parse_finite(v.scalar(), x) || !(x > 0.0))
-        throw InputError(path, line, fmt::format("'max_de00' must be a positive number (a ΔE2000 budget), not '{}'",
-                                                 v.is_scalar() ? v.scalar() : std::string("a list or map")));
+        throw InputError(
+            path, line,
+            fmt::format("'max_de00' must be a positive number (a ΔE2000 budget), not '{}'",
+                        v.is_scalar() ? v.scalar() : std::string("a list or map")));
       s.max_de00 = x;
     } else if (key == "space") {
       s.space = scalar_text(path, v, "'space'");
@@ -82,25 +97,37 @@ SceneFile read_scene_file(const std::string& path) {
       s.space_line = line;
     } else if (key == "lighting") {
       std::vector<const YamlNode*> items;
-      if (v.is_scalar()) items.push_back(&v);
+      if (v.is_scalar())
+        items.push_back(&v);
       else if (v.is_sequence())
         for (const auto& x : v.items()) items.push_back(&x);
-      if (items.empty()) throw InputError(path, line, "'lighting' must list any of punctual, ibl, area");
+      if (items.empty())
+        throw InputError(path, line, "'lighting' must list any of punctual, ibl, area");
       for (const YamlNode* x : items) {
         const std::string l = scalar_text(path, *x, "each lighting");
-        if (l == "punctual") s.punctual = true;
-        else if (l == "ibl") s.ibl = true;
-        else if (l == "area") s.area = true;
-        else throw InputError(path, line_of(*x), fmt::format("unknown lighting '{}' (expected punctual, ibl or area)", l));
+        if (l == "punctual")
+          s.punctual = true;
+        else if (l == "ibl")
+          s.ibl = true;
+        else if (l == "area")
+          s.area = true;
+        else
+          throw InputError(
+              path, line_of(*x),
+              fmt::format("unknown lighting '{}' (expected punctual, ibl or area)", l));
       }
     } else if (key == "roughness") {
       s.roughness = roughness_list(path, v, line);
     } else {
-      throw InputError(path, line,
-                       fmt::format("unknown key '{}' (expected materials, max_de00, space, lighting, roughness)", key));
+      throw InputError(
+          path, line,
+          fmt::format("unknown key '{}' (expected materials, max_de00, space, lighting, roughness)",
+                      key));
     }
   }
-  if (!have_materials) throw InputError(path, 1, "missing 'materials' (a list of material names, database pages or files)");
+  if (!have_materials)
+    throw InputError(path, 1,
+                     "missing 'materials' (a list of material names, database pages or files)");
   return s;
 }
 

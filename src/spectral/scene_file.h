@@ -1,7 +1,9 @@
 #pragma once
 // Scene files for `plan`, read as written (the defaults are analysis/plan.h's). A YAML map:
-//   materials: [gold, main/Cu/nk/Johnson, my_glass.yml]   # catalog names, database pages, page globs
-//                                                        # or files, or {name: gold, roughness: 0.3 | [0.2, 0.5]}
+//   materials: [gold, main/Cu/nk/Johnson, my_glass.yml]   # catalog names, database pages, page
+//   globs
+//                                                        # or files, or {name: gold, roughness: 0.3
+//                                                        | [0.2, 0.5]}
 //   max_de00: 1.0                                        # optional RMS ΔE2000 budget
 //   space: acescg                                        # optional working space
 //   lighting: [punctual, ibl, area]                      # optional, any of these (or one of them)
@@ -14,16 +16,16 @@
 namespace fl::spectral {
 
 struct SceneFileMaterial {
-  std::string spec;  // as written
-  int line = 0;      // 1-based line in the scene file
+  std::string spec;               // as written
+  int line = 0;                   // 1-based line in the scene file
   std::vector<double> roughness;  // empty: not given
 };
 
 struct SceneFile {
   std::string path;
   std::vector<SceneFileMaterial> materials;  // at least one
-  std::optional<double> max_de00;           // positive when given
-  std::string space;                        // empty: not given
+  std::optional<double> max_de00;            // positive when given
+  std::string space;                         // empty: not given
   int space_line = 0;
   bool punctual = false, ibl = false, area = false;  // the lighting listed
   std::vector<double> roughness;                     // empty: not given

@@ -23,7 +23,8 @@ TabulatedRows::TabulatedRows(std::string file, DispersionBlock::Kind kind, int b
 
 void TabulatedRows::add(int line, double lambda_nm, double n, double k) {
   if (!(lambda_nm > 0.0)) throw InputError(file_, line, "wavelength must be positive");
-  const bool has_n = kind_ != DispersionBlock::Kind::TabulatedK, has_k = kind_ != DispersionBlock::Kind::TabulatedN;
+  const bool has_n = kind_ != DispersionBlock::Kind::TabulatedK,
+             has_k = kind_ != DispersionBlock::Kind::TabulatedN;
   if (!has_n) n = 0.0;
   if (!has_k) k = 0.0;
   std::string problem = value_problem(n, k, has_n, has_k);
@@ -37,7 +38,9 @@ void TabulatedRows::add_defect(int line, double lambda_nm, const std::string& pr
 
 namespace {
 
-std::string nm_text(double nm) { return fmt::format("{:g} nm", nm); }
+std::string nm_text(double nm) {
+  return fmt::format("{:g} nm", nm);
+}
 
 // The rows in file order split into those kept (strictly increasing wavelengths) and the defects
 // (with their problem filled in); exact duplicates of a kept row are counted, not kept.
@@ -57,8 +60,9 @@ Split split_rows(const std::vector<TabulatedRow>& rows) {
       s.kept.push_back(r);
       continue;
     }
-    const auto it = std::lower_bound(s.kept.begin(), s.kept.end(), r.lambda_nm,
-                                     [](const TabulatedRow& a, double x) { return a.lambda_nm < x; });
+    const auto it =
+        std::lower_bound(s.kept.begin(), s.kept.end(), r.lambda_nm,
+                         [](const TabulatedRow& a, double x) { return a.lambda_nm < x; });
     const bool same_wavelength = it != s.kept.end() && it->lambda_nm == r.lambda_nm;
     if (same_wavelength && it->n == r.n && it->k == r.k) {
       if (s.merged++ == 0) s.first_merged_line = r.line;
@@ -66,11 +70,14 @@ Split split_rows(const std::vector<TabulatedRow>& rows) {
     }
     TabulatedRow d = r;
     d.misplaced = !same_wavelength;
-    d.problem = same_wavelength
-                    ? fmt::format("wavelengths are not strictly increasing ({} repeats line {} with other values)",
-                                  nm_text(r.lambda_nm), it->line)
-                    : fmt::format("wavelengths are not strictly increasing ({} after {} at line {})",
-                                  nm_text(r.lambda_nm), nm_text(s.kept.back().lambda_nm), s.kept.back().line);
+    d.problem =
+        same_wavelength
+            ? fmt::format(
+                  "wavelengths are not strictly increasing ({} repeats line {} with other values)",
+                  nm_text(r.lambda_nm), it->line)
+            : fmt::format("wavelengths are not strictly increasing ({} after {} at line {})",
+                          nm_text(r.lambda_nm), nm_text(s.kept.back().lambda_nm),
+                          s.kept.back().line);
     s.defects.push_back(std::move(d));
   }
   return s;
@@ -99,18 +106,24 @@ bool place(std::vector<TabulatedRow>& kept, const TabulatedRow& r, const std::st
                                    [](const TabulatedRow& a, double x) { return a.lambda_nm < x; });
   if (it != kept.end() && it->lambda_nm == r.lambda_nm) {
     if (it->n == r.n && it->k == r.k) return false;
-    throw InputError(file, r.line, fmt::format("wavelengths are not strictly increasing ({} repeats line {} with other "
-                                               "values)", nm_text(r.lambda_nm), it->line));
+    throw InputError(
+        file, r.line,
+        fmt::format("wavelengths are not strictly increasing ({} repeats line {} with other "
+                    "values)",
+                    nm_text(r.lambda_nm), it->line));
   }
   kept.insert(it, r);
   return true;
 }
 
-std::string rows_text(size_t n) { return n == 1 ? "1 row" : fmt::format("{} rows", n); }
+std::string rows_text(size_t n) {
+  return n == 1 ? "1 row" : fmt::format("{} rows", n);
+}
 
 }  // namespace
 
-DispersionBlock TabulatedRows::finish(const UsedRange& used, std::vector<std::string>& warnings) const {
+DispersionBlock TabulatedRows::finish(const UsedRange& used,
+                                      std::vector<std::string>& warnings) const {
   Split s = split_rows(rows_);
   if (s.kept.empty()) {
     if (s.defects.empty()) throw InputError(file_, block_line_, "tabulated block has no rows");
@@ -121,19 +134,22 @@ DispersionBlock TabulatedRows::finish(const UsedRange& used, std::vector<std::st
   for (const auto& d : s.defects) {
     const bool inside = d.lambda_nm >= lo && d.lambda_nm <= hi;
     if (inside && !d.misplaced) throw InputError(file_, d.line, d.problem);
-    if (!inside) dropped.push_back(&d);
-    else if (place(s.kept, d, file_)) placed.push_back(&d);
+    if (!inside)
+      dropped.push_back(&d);
+    else if (place(s.kept, d, file_))
+      placed.push_back(&d);
   }
   if (!dropped.empty())
-    warnings.push_back(fmt::format("{}:{}: {} outside the used {:g}-{:g} nm dropped (first: {})", file_,
-                                   dropped.front()->line, rows_text(dropped.size()), used.min_nm, used.max_nm,
-                                   dropped.front()->problem));
+    warnings.push_back(fmt::format("{}:{}: {} outside the used {:g}-{:g} nm dropped (first: {})",
+                                   file_, dropped.front()->line, rows_text(dropped.size()),
+                                   used.min_nm, used.max_nm, dropped.front()->problem));
   if (!placed.empty())
-    warnings.push_back(fmt::format("{}:{}: {} out of order placed in wavelength order (first: {})", file_,
-                                   placed.front()->line, rows_text(placed.size()), placed.front()->problem));
+    warnings.push_back(fmt::format("{}:{}: {} out of order placed in wavelength order (first: {})",
+                                   file_, placed.front()->line, rows_text(placed.size()),
+                                   placed.front()->problem));
   if (s.merged)
-    warnings.push_back(fmt::format("{}:{}: {} exact duplicate row{} merged", file_, s.first_merged_line, s.merged,
-                                   s.merged == 1 ? "" : "s"));
+    warnings.push_back(fmt::format("{}:{}: {} exact duplicate row{} merged", file_,
+                                   s.first_merged_line, s.merged, s.merged == 1 ? "" : "s"));
   DispersionBlock b;
   b.kind = kind_;
   b.line = block_line_;

@@ -7,8 +7,8 @@
 //   defect: inside the used span it is an error naming file and line; outside it the row is dropped
 //   and one warning per block names the first such line;
 // - a row out of order (a wavelength no other row has, listed after a longer one) is placed in
-//   wavelength order inside the used span (the wavelength says where it goes; one warning per block)
-//   and dropped outside it, like a defect;
+//   wavelength order inside the used span (the wavelength says where it goes; one warning per
+//   block) and dropped outside it, like a defect;
 // - a negative k above −kNegligibleNegativeK is read as 0.
 // The used span is [UsedRange.min_nm, UsedRange.max_nm] widened to the nearest rows outside it,
 // since interpolation at the range's ends reads them.

@@ -22,13 +22,16 @@ std::string read_bytes(const std::string& path) {
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec) raw.reserve(size);
   char chunk[1 << 16];
-  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) raw.append(chunk, static_cast<size_t>(in.gcount()));
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0)
+    raw.append(chunk, static_cast<size_t>(in.gcount()));
   return raw;
 }
 
 // Whether a byte needs read_text_file's attention: a carriage return or a control byte other than
 // a tab or a line feed.
-bool special(unsigned char c) { return c < 0x20 && c != '\n' && c != '\t'; }
+bool special(unsigned char c) {
+  return c < 0x20 && c != '\n' && c != '\t';
+}
 
 }  // namespace
 
@@ -40,7 +43,8 @@ std::string read_text_file(const std::string& path) {
   if (fs::is_directory(status)) throw InputError(path, 0, "is a directory, expected a file");
   std::string raw = read_bytes(path);
   const size_t bom = raw.size() >= 3 && static_cast<unsigned char>(raw[0]) == 0xEF &&
-                             static_cast<unsigned char>(raw[1]) == 0xBB && static_cast<unsigned char>(raw[2]) == 0xBF
+                             static_cast<unsigned char>(raw[1]) == 0xBB &&
+                             static_cast<unsigned char>(raw[2]) == 0xBF
                          ? 3
                          : 0;
   size_t first = bom;
@@ -61,7 +65,9 @@ std::string read_text_file(const std::string& path) {
         continue;
       }
       if (c == '\n') ++line;
-      if (special(c)) throw InputError(path, line, "binary data (control byte " + std::to_string(c) + "), expected text");
+      if (special(c))
+        throw InputError(path, line,
+                         "binary data (control byte " + std::to_string(c) + "), expected text");
       text.push_back(static_cast<char>(c));
     }
   }

@@ -29,7 +29,8 @@ class YamlBuilder {
  public:
   explicit YamlBuilder(std::string_view text) : text_(text) {
     if (!yaml_parser_initialize(&parser_)) throw std::bad_alloc();
-    yaml_parser_set_input_string(&parser_, reinterpret_cast<const unsigned char*>(text.data()), text.size());
+    yaml_parser_set_input_string(&parser_, reinterpret_cast<const unsigned char*>(text.data()),
+                                 text.size());
   }
   ~YamlBuilder() {
     if (have_event_) yaml_event_delete(&event_);
@@ -64,13 +65,15 @@ class YamlBuilder {
     int line = static_cast<int>(parser_.problem_mark.line);
     if (parser_.error == YAML_READER_ERROR) {
       const size_t end = std::min(parser_.problem_offset, text_.size());
-      line = static_cast<int>(std::count(text_.begin(), text_.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+      line = static_cast<int>(
+          std::count(text_.begin(), text_.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
     }
     throw YamlError(line, what);
   }
   void count(size_t nodes, int line) {
     nodes_ += nodes;
-    if (nodes_ > kMaxYamlNodes) throw YamlError(line, "more than " + std::to_string(kMaxYamlNodes) + " nodes");
+    if (nodes_ > kMaxYamlNodes)
+      throw YamlError(line, "more than " + std::to_string(kMaxYamlNodes) + " nodes");
   }
 
   // The node whose first event is the current one, `depth` collections deep; its anchor, if any,
@@ -86,7 +89,8 @@ class YamlBuilder {
       out.line_ = line;
       return;
     }
-    if (depth > kMaxYamlDepth) throw YamlError(out.line_, "nested deeper than " + std::to_string(kMaxYamlDepth));
+    if (depth > kMaxYamlDepth)
+      throw YamlError(out.line_, "nested deeper than " + std::to_string(kMaxYamlDepth));
     const size_t first = nodes_;
     count(1, out.line_);
     std::string anchor;
@@ -99,14 +103,15 @@ class YamlBuilder {
       out.text_.assign(reinterpret_cast<const char*>(s.value), s.length);
       // YAML's core schema: an untagged plain scalar spelled as null is a null.
       const bool null = s.tag == nullptr && s.style == YAML_PLAIN_SCALAR_STYLE &&
-                        (out.text_.empty() || out.text_ == "~" || out.text_ == "null" || out.text_ == "Null" ||
-                         out.text_ == "NULL");
+                        (out.text_.empty() || out.text_ == "~" || out.text_ == "null" ||
+                         out.text_ == "Null" || out.text_ == "NULL");
       out.kind_ = null ? YamlNode::Kind::Null : YamlNode::Kind::Scalar;
       if (null) out.text_.clear();
     } else if (event_.type == YAML_SEQUENCE_START_EVENT) {
       take_anchor(event_.data.sequence_start.anchor);
       out.kind_ = YamlNode::Kind::Sequence;
-      for (next(); event_.type != YAML_SEQUENCE_END_EVENT; next()) node(out.items_.emplace_back(), depth + 1);
+      for (next(); event_.type != YAML_SEQUENCE_END_EVENT; next())
+        node(out.items_.emplace_back(), depth + 1);
     } else if (event_.type == YAML_MAPPING_START_EVENT) {
       take_anchor(event_.data.mapping_start.anchor);
       out.kind_ = YamlNode::Kind::Map;
@@ -127,10 +132,13 @@ class YamlBuilder {
   yaml_event_t event_{};
   bool have_event_ = false;
   size_t nodes_ = 0;
-  std::map<std::string, std::pair<YamlNode, size_t>> anchors_;  // an anchor's node and its node count
+  std::map<std::string, std::pair<YamlNode, size_t>>
+      anchors_;  // an anchor's node and its node count
 };
 
-YamlNode parse_yaml(std::string_view text) { return YamlBuilder(text).document(); }
+YamlNode parse_yaml(std::string_view text) {
+  return YamlBuilder(text).document();
+}
 
 YamlNode read_yaml_file(const std::string& path) {
   const std::string text = read_text_file(path);

@@ -37,8 +37,10 @@ class YamlNode {
   const std::string& scalar() const { return text_; }
   // A scalar's text, "null" for a null; YamlError("bad conversion") for a list or map.
   std::string as_string() const;
-  const std::vector<YamlNode>& items() const { return items_; }                       // a sequence's
-  const std::vector<std::pair<YamlNode, YamlNode>>& fields() const { return fields_; }  // a map's, in order
+  const std::vector<YamlNode>& items() const { return items_; }  // a sequence's
+  const std::vector<std::pair<YamlNode, YamlNode>>& fields() const {
+    return fields_;
+  }  // a map's, in order
   size_t size() const { return kind_ == Kind::Map ? fields_.size() : items_.size(); }
 
  private:
@@ -53,7 +55,8 @@ class YamlNode {
 // The first document of `text` (a null node when there is none). A syntax error is a YamlError at
 // the line libyaml found it, its message libyaml's ("did not find expected ',' or '}'"); so is text
 // that is not UTF-8, collections nested deeper than kMaxYamlDepth, and a document of more than
-// kMaxYamlNodes nodes once its aliases are copied (a few aliases of aliases can stand for billions).
+// kMaxYamlNodes nodes once its aliases are copied (a few aliases of aliases can stand for
+// billions).
 inline constexpr int kMaxYamlDepth = 1000;
 inline constexpr size_t kMaxYamlNodes = 1'000'000;
 YamlNode parse_yaml(std::string_view text);

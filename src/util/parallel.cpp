@@ -1,39 +1,18 @@
 #include "util/parallel.h"
 
-#include "util/memory.h"
-
-#include <exception>
-#include <vector>
-
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
-#include <oneapi/tbb/task_scheduler_observer.h>
+
+#include <exception>
+#include <vector>
 
 namespace fl {
-namespace {
-
-// Each worker thread, as it joins, puts its malloc arena on huge pages (util/memory.h).
-class WorkerSetup : public tbb::task_scheduler_observer {
- public:
-  WorkerSetup() { observe(true); }
-  void on_scheduler_entry(bool worker) override {
-    if (worker) huge_pages_for_this_thread();
-  }
-};
-
-}  // namespace
 
 void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, int threads) {
   if (n == 0) return;
-  if (huge_pages_requested()) {
-    // Made once the program has asked for huge pages, before this loop's tasks run (a worker
-    // already running catches up with a new observer before its next task), and kept for the
-    // program's whole life: no observer to tear down at exit.
-    [[maybe_unused]] static const WorkerSetup* setup = new WorkerSetup;
-  }
   // One task per index: the bodies are long (a material, a row of cells or pixels).
   const auto loop = [&] {
     tbb::parallel_for(

@@ -1,4 +1,5 @@
-// The Schlick table of Hoffman's talk (ACEScg, D60) reproduced: values, tolerance counts and rank order.
+// The Schlick table of Hoffman's talk (ACEScg, D60) reproduced: values, tolerance counts and rank
+// order.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -70,9 +71,11 @@ TEST(Calibration, TalksSchlickTable) {
     ours[c].push_back(rms);
     talk[c].push_back(ref);
   }
-  const double rho_metals = spearman(ours[0], talk[0]), rho_dielectrics = spearman(ours[1], talk[1]);
-  std::printf("within ±%.2f: %d of 28; largest difference %.3f; Spearman metals %.3f, dielectrics %.3f\n", kCloseDe,
-              close, worst, rho_metals, rho_dielectrics);
+  const double rho_metals = spearman(ours[0], talk[0]),
+               rho_dielectrics = spearman(ours[1], talk[1]);
+  std::printf(
+      "within ±%.2f: %d of 28; largest difference %.3f; Spearman metals %.3f, dielectrics %.3f\n",
+      kCloseDe, close, worst, rho_metals, rho_dielectrics);
   EXPECT_GE(close, kMinClose);
   EXPECT_LE(worst, kMaxOffDe);
   EXPECT_GE(rho_metals, kMinSpearman);

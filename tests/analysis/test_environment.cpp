@@ -2,9 +2,8 @@
 // density against pixel weights written here, importance-sampled shading against quadrature, the
 // colour conversion against the published Rec.709 → ACEScg matrix, exposure, and where the heat
 // map statistics put pixels.
-#include <gtest/gtest.h>
-
 #include <OpenEXR/ImfEnvmap.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
@@ -37,7 +36,8 @@ LatLongImage image(int w, int h, const std::function<color::Rgb(int, int)>& f) {
     for (int x = 0; x < w; ++x) {
       const auto c = f(x, y);
       float* p = &img.rgb[3 * (static_cast<size_t>(y) * w + x)];
-      p[0] = static_cast<float>(c.r), p[1] = static_cast<float>(c.g), p[2] = static_cast<float>(c.b);
+      p[0] = static_cast<float>(c.r), p[1] = static_cast<float>(c.g),
+      p[2] = static_cast<float>(c.b);
     }
   return img;
 }
@@ -49,7 +49,8 @@ LatLongImage test_sky(int w, int h) {
   return image(w, h, [&](int x, int y) {
     if (x >= w / 3 && x < w / 3 + 3 && y >= h / 4 && y < h / 4 + 2) return color::Rgb{40, 30, 20};
     const double t = (y + 0.5) / h;
-    return color::Rgb{0.2 + 0.6 * t, 0.3 + 0.3 * t, 0.9 - 0.5 * t + 0.1 * std::sin(2 * kPi * x / w)};
+    return color::Rgb{0.2 + 0.6 * t, 0.3 + 0.3 * t,
+                      0.9 - 0.5 * t + 0.1 * std::sin(2 * kPi * x / w)};
   });
 }
 
@@ -60,7 +61,8 @@ TEST(Environment, OrientationIsOpenExrsLatLongMap) {
   for (double px : {0.0, 5.5, 16.0, 31.5, 40.25, 63.0})
     for (double py : {0.5, 8.0, 15.5, 24.75, 31.0}) {
       // OpenEXR puts pixel centres at the ends of the ranges: pixel position p ↔ u = p / (w − 1).
-      const Imath::V3f d = Imf::LatLongMap::direction(dw, Imath::V2f(float(px), float(py))).normalized();
+      const Imath::V3f d =
+          Imf::LatLongMap::direction(dw, Imath::V2f(float(px), float(py))).normalized();
       const Vec3 ours = map.uv_to_direction(px / (w - 1), py / (h - 1));
       EXPECT_NEAR(ours.x, d.x, kDirectionTol) << px << "," << py;
       EXPECT_NEAR(ours.y, d.y, kDirectionTol) << px << "," << py;
@@ -72,7 +74,11 @@ TEST(Environment, OrientationIsOpenExrsLatLongMap) {
       EXPECT_NEAR(v * (h - 1), p.y, 1e-3);
     }
   // The rotation turns the map about +y: 90° brings what was at +z to +x.
-  const EnvironmentMap turned(image(w, h, [](int, int) { return color::Rgb{1, 1, 1}; }), kLuminance, 90.0);
+  const EnvironmentMap turned(image(w, h,
+                                    [](int, int) {
+                                      return color::Rgb{1, 1, 1};
+                                    }),
+                              kLuminance, 90.0);
   const Vec3 d = turned.uv_to_direction(0.5, 0.5);
   EXPECT_NEAR(d.x, 1.0, kDirectionTol);
   EXPECT_NEAR(d.z, 0.0, kDirectionTol);
@@ -105,11 +111,14 @@ TEST(Environment, SamplesFollowLuminanceTimesSolidAngle) {
     EXPECT_NEAR(pdf, map.pdf(d), 1e-9 * pdf);
     double u = 0, v = 0;
     map.direction_to_uv(d, u, v);
-    hits[static_cast<size_t>(std::min(h - 1, int(v * h))) * w + std::min(w - 1, int(u * w))] += 1.0 / kN;
+    hits[static_cast<size_t>(std::min(h - 1, int(v * h))) * w + std::min(w - 1, int(u * w))] +=
+        1.0 / kN;
   }
   for (size_t k = 0; k < hits.size(); ++k) {
     EXPECT_NEAR(hits[k], expected[k] / total, 2e-3) << "pixel " << k;
-    if (expected[k] == 0) { EXPECT_EQ(hits[k], 0.0); }
+    if (expected[k] == 0) {
+      EXPECT_EQ(hits[k], 0.0);
+    }
   }
 }
 
@@ -130,19 +139,29 @@ double quadrature(const EnvironmentMap& map, const Vec3& v, double alpha) {
 }
 
 TEST(Environment, ImportanceSampledShadingMatchesQuadrature) {
-  const analysis::FresnelTable one = analysis::tabulate_fresnel([](double) { return color::Rgb{1, 1, 1}; }, 2);
+  const analysis::FresnelTable one = analysis::tabulate_fresnel(
+      [](double) {
+        return color::Rgb{1, 1, 1};
+      },
+      2);
   const analysis::SceneLight light = EnvironmentMap(test_sky(64, 32), kLuminance, 30.0);
   const auto& map = std::get<EnvironmentMap>(light);
   for (const double roughness : {0.25, 0.5})
     for (const Vec3 v : {Vec3{0, 0, 1}, brdf::normalize(Vec3{0.4, -0.3, 1.0})}) {
       const double alpha = roughness * roughness;
       const double ref = quadrature(map, v, alpha);
-      const double shaded = analysis::shade_specular(light, one, {0, 0, 1}, v, alpha, kShadingSamples).r;
+      const double shaded =
+          analysis::shade_specular(light, one, {0, 0, 1}, v, alpha, kShadingSamples).r;
       EXPECT_NEAR(shaded, ref, kShadingRelTol * ref) << "roughness " << roughness;
     }
   // A constant map is a white furnace: the lobe's directional albedo, below 1.
-  const analysis::SceneLight white = EnvironmentMap(image(32, 16, [](int, int) { return color::Rgb{1, 1, 1}; }), kLuminance);
-  const double albedo = analysis::shade_specular(white, one, {0, 0, 1}, {0, 0, 1}, 0.09, kShadingSamples).r;
+  const analysis::SceneLight white = EnvironmentMap(image(32, 16,
+                                                          [](int, int) {
+                                                            return color::Rgb{1, 1, 1};
+                                                          }),
+                                                    kLuminance);
+  const double albedo =
+      analysis::shade_specular(white, one, {0, 0, 1}, {0, 0, 1}, 0.09, kShadingSamples).r;
   EXPECT_NEAR(albedo, quadrature(std::get<EnvironmentMap>(white), {0, 0, 1}, 0.09), kShadingRelTol);
   EXPECT_LT(albedo, 1.0);
 }
@@ -151,14 +170,24 @@ TEST(Environment, MirrorSphereShowsPlusXOnItsRight) {
   // Bright only near longitude +π/2 on the horizon (u = 1/4): a mirror sphere shows it where the
   // normal halves the view (+z) and +x, at image point (sin 45°, 0).
   const int w = 64, h = 32;
-  const analysis::SceneLight light = EnvironmentMap(image(w, h, [&](int x, int y) {
-    const bool spot = std::abs(x + 0.5 - w / 4.0) < 1.0 && std::abs(y + 0.5 - h / 2.0) < 1.0;
-    return spot ? color::Rgb{10, 10, 10} : color::Rgb{0, 0, 0};
-  }), kLuminance);
+  const analysis::SceneLight light =
+      EnvironmentMap(image(w, h,
+                           [&](int x, int y) {
+                             const bool spot = std::abs(x + 0.5 - w / 4.0) < 1.0 &&
+                                               std::abs(y + 0.5 - h / 2.0) < 1.0;
+                             return spot ? color::Rgb{10, 10, 10} : color::Rgb{0, 0, 0};
+                           }),
+                     kLuminance);
   analysis::RenderSettings rs;
   rs.size_px = 221;
   rs.roughness = 0.0;
-  const auto img = analysis::render_sphere(light, analysis::tabulate_fresnel([](double) { return color::Rgb{1, 1, 1}; }, 2), rs);
+  const auto img = analysis::render_sphere(light,
+                                           analysis::tabulate_fresnel(
+                                               [](double) {
+                                                 return color::Rgb{1, 1, 1};
+                                               },
+                                               2),
+                                           rs);
   size_t best = 0;
   for (size_t k = 0; k < img.alpha.size(); ++k)
     if (img.rgb[3 * k] > img.rgb[3 * best]) best = k;
@@ -190,10 +219,13 @@ TEST(Environment, Rec709IsConvertedToAcescgAndExposed) {
     EXPECT_NEAR(c.g / c.r, 0.0701937 / 0.6130974, kPublishedTol);
     EXPECT_NEAR(c.b / c.r, 0.0206156 / 0.6130974, kPublishedTol);
     // Exposure: the mean luminance over the sphere of directions (Gauss quadrature) is 2^ev.
-    const double mean = test::integrate_sphere([&](double x, double y, double z) {
-      const auto r = map.radiance({x, y, z});
-      return kLuminance.r * r.r + kLuminance.g * r.g + kLuminance.b * r.b;
-    }, kPi, 0.5) / (4 * kPi);
+    const double mean = test::integrate_sphere(
+                            [&](double x, double y, double z) {
+                              const auto r = map.radiance({x, y, z});
+                              return kLuminance.r * r.r + kLuminance.g * r.g + kLuminance.b * r.b;
+                            },
+                            kPi, 0.5) /
+                        (4 * kPi);
     EXPECT_NEAR(mean, std::exp2(ev), 1e-3 * std::exp2(ev));
   }
 }
@@ -204,10 +236,14 @@ TEST(Environment, HeatmapStatsBandsFollowTheViewAngle) {
   const double per_px = 2.2 / n;
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
-      const double X = (x + 0.5 - n / 2.0) * per_px, Y = (n / 2.0 - y - 0.5) * per_px, r = std::hypot(X, Y);
+      const double X = (x + 0.5 - n / 2.0) * per_px, Y = (n / 2.0 - y - 0.5) * per_px,
+                   r = std::hypot(X, Y);
       if (r >= 1) continue;
       // sin θ = r on the sphere: θ < 30° inside r = 0.5, θ ≥ 80° outside r = sin 80°.
-      de[static_cast<size_t>(y) * n + x] = r < 0.5 ? 1.0 : (r < std::sin(60 * kPi / 180) ? 2.0 : (r < std::sin(80 * kPi / 180) ? 3.0 : 4.0));
+      de[static_cast<size_t>(y) * n + x] =
+          r < 0.5
+              ? 1.0
+              : (r < std::sin(60 * kPi / 180) ? 2.0 : (r < std::sin(80 * kPi / 180) ? 3.0 : 4.0));
     }
   const auto st = analysis::heatmap_stats(de, n, n);
   ASSERT_EQ(st.band_mean.size(), 4u);

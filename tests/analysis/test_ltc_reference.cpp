@@ -130,9 +130,11 @@ TEST(LtcCode, NoEntryStepsBetweenNeighboursMoreThanLtcCodes) {
   const auto table = fit_ltc_table(64, options(kJumpMomentSamples));
   const auto ref = read_ltc_code_table(std::string(FL_SHARED_TESTDATA) + "/ltc_code/ltc.inc");
   for (const auto& j : ltc_entry_jumps(table, ref)) {
-    std::printf("%s: largest step %.4f at (%d, %d), ltc_code %.4f at (%d, %d)\n", j.entry.c_str(), j.max, j.i_nov,
-                j.j_roughness, j.reference_max, j.reference_i_nov, j.reference_j_roughness);
-    EXPECT_LE(j.max, j.reference_max) << j.entry << " at (" << j.i_nov << ", " << j.j_roughness << ")";
+    std::printf("%s: largest step %.4f at (%d, %d), ltc_code %.4f at (%d, %d)\n", j.entry.c_str(),
+                j.max, j.i_nov, j.j_roughness, j.reference_max, j.reference_i_nov,
+                j.reference_j_roughness);
+    EXPECT_LE(j.max, j.reference_max)
+        << j.entry << " at (" << j.i_nov << ", " << j.j_roughness << ")";
   }
 }
 
@@ -167,7 +169,9 @@ TEST(LtcCode, LookupsBetweenCellsAreNoWorse) {
     }
     ASSERT_GT(r.count, 0) << r.name;
     EXPECT_LE(r.sum / r.count, r.reference_sum / r.count) << r.name;
-    if (r.max) { EXPECT_LE(r.worst, r.reference_worst) << r.name; }
+    if (r.max) {
+      EXPECT_LE(r.worst, r.reference_worst) << r.name;
+    }
   }
 }
 

@@ -19,8 +19,8 @@
 #include "analysis/lut/ltc_reference.h"
 #include "analysis/lut/lut.h"
 #include "brdf/ggx.h"
-#include "fit/ltc_fit.h"
 #include "dfg_reference.h"
+#include "fit/ltc_fit.h"
 #include "ggx_reference.h"
 #include "quadrature.h"
 
@@ -28,11 +28,11 @@ namespace fl::analysis {
 namespace {
 
 namespace ref = test::ggx_ref;
-using test::reference_moments;
 using test::gauss_legendre;
 using test::GaussRule;
 using test::integrate_panel;
 using test::integrate_theta;
+using test::reference_moments;
 using test::Values;
 using test::operator+;
 using test::operator*;
@@ -46,11 +46,12 @@ constexpr double kQuadratureTolerance = 3e-4;
 constexpr double kMirrorTolerance = 1e-5;
 // A fitted LTC integrates to one, by quadrature over its support, a hemisphere (measured 2e-15).
 constexpr double kLtcUnitIntegralTolerance = 1e-9;
-// A fitted LTC lobe against the GGX lobe, relative L2 error by quadrature, over ltc_code's published
-// fit of the same cell. The error itself is large towards grazing (0.29 for ltc_code's fit at
-// n·v = 0.27, α = 0.33, 0.19 for ours): an LTC cannot follow the GGX lobe there; what can be asked of
-// a fit is to do as well as the reference. Neither fit minimizes this error; where both are near
-// the same optimum (normal incidence, α = 1) ours is up to 1.2 % above (measured ratio ≤ 1.012).
+// A fitted LTC lobe against the GGX lobe, relative L2 error by quadrature, over ltc_code's
+// published fit of the same cell. The error itself is large towards grazing (0.29 for ltc_code's
+// fit at n·v = 0.27, α = 0.33, 0.19 for ours): an LTC cannot follow the GGX lobe there; what can be
+// asked of a fit is to do as well as the reference. Neither fit minimizes this error; where both
+// are near the same optimum (normal incidence, α = 1) ours is up to 1.2 % above (measured ratio
+// ≤ 1.012).
 constexpr double kLobeAgainstLtcCodeRatio = 1.02;
 // ltc_code's n_D (float, stratified samples) against the quadrature: per cell and on average.
 constexpr double kLtcCodeNormTolerance = 1.5e-2;
@@ -63,14 +64,12 @@ constexpr double kFitErrorEstimateTolerance = 0.1;
 // The horizon-clipped sphere form factor against a quadrature over the cap.
 constexpr double kFormFactorTolerance = 1e-4;
 
-
 LutOptions options(int samples, int threads = 0) {
   LutOptions o;
   o.samples = samples;
   o.threads = threads;
   return o;
 }
-
 
 TEST(Lut, NormTendsToOneAtNormalIncidenceAsRoughnessVanishes) {
   double previous = 0;
@@ -102,8 +101,9 @@ TEST(Lut, MirrorLimit) {
   }
 }
 
-// Energy: a single-scattering lobe without Fresnel reflects at most what arrives (n_D ≤ 1), each weight (1 − v·h)⁵ ≤ 1 and (v·h)(1 − v·h)⁶ ≤ (1 − v·h)⁵
-// keeps 0 ≤ l_D ≤ f_D ≤ n_D, and the DFG channels split n_D into two non-negative parts.
+// Energy: a single-scattering lobe without Fresnel reflects at most what arrives (n_D ≤ 1), each
+// weight (1 − v·h)⁵ ≤ 1 and (v·h)(1 − v·h)⁶ ≤ (1 − v·h)⁵ keeps 0 ≤ l_D ≤ f_D ≤ n_D, and the DFG
+// channels split n_D into two non-negative parts.
 TEST(Lut, EnergyBoundsInEveryCell) {
   constexpr int kSize = 8;
   const auto dfg = dfg_table(dfg_grid(kSize), options(2048));
@@ -168,8 +168,10 @@ MaxDiff compare_with_quadrature(int size, int samples) {
 
 TEST(Lut, TablesAgreeWithQuadrature) {
   const auto m = compare_with_quadrature(10, kLutSamples);
-  std::printf("max |table - quadrature| at 10x10: dfg1 %.3g, dfg2 %.3g, dfg_f82 %.3g, n_d %.3g, f_d %.3g, l_d %.3g\n",
-              m.dfg1, m.dfg2, m.dfg_f82, m.n_d, m.f_d, m.l_d);
+  std::printf(
+      "max |table - quadrature| at 10x10: dfg1 %.3g, dfg2 %.3g, dfg_f82 %.3g, n_d %.3g, f_d %.3g, "
+      "l_d %.3g\n",
+      m.dfg1, m.dfg2, m.dfg_f82, m.n_d, m.f_d, m.l_d);
   EXPECT_LT(m.dfg1, kQuadratureTolerance);
   EXPECT_LT(m.dfg2, kQuadratureTolerance);
   EXPECT_LT(m.dfg_f82, kQuadratureTolerance);
@@ -183,23 +185,27 @@ TEST(Lut, TablesAgreeWithQuadrature) {
 TEST(Lut, DfgF82ChannelAgreesWithQuadratureOnTheFull64Grid) {
   constexpr double kDfgF82Tolerance = 2e-3;
   const auto m = compare_dfg_with_quadrature(64, kLutSamples);
-  std::printf("max |dfg_f82 - quadrature| at 64x64: %.3g (dfg1 %.3g, dfg2 %.3g)\n", m.dfg_f82, m.dfg1, m.dfg2);
+  std::printf("max |dfg_f82 - quadrature| at 64x64: %.3g (dfg1 %.3g, dfg2 %.3g)\n", m.dfg_f82,
+              m.dfg1, m.dfg2);
   EXPECT_LT(m.dfg_f82, kDfgF82Tolerance);
 }
 
 TEST(Lut, DISABLED_FullTablesAgreeWithQuadrature) {
   const auto m = compare_with_quadrature(64, kLutSamples);
-  std::printf("max |table - quadrature| at 64x64: dfg1 %.3g, dfg2 %.3g, dfg_f82 %.3g, n_d %.3g, f_d %.3g, l_d %.3g\n",
-              m.dfg1, m.dfg2, m.dfg_f82, m.n_d, m.f_d, m.l_d);
+  std::printf(
+      "max |table - quadrature| at 64x64: dfg1 %.3g, dfg2 %.3g, dfg_f82 %.3g, n_d %.3g, f_d %.3g, "
+      "l_d %.3g\n",
+      m.dfg1, m.dfg2, m.dfg_f82, m.n_d, m.f_d, m.l_d);
   EXPECT_LT(std::max({m.dfg1, m.dfg2, m.dfg_f82, m.n_d, m.f_d, m.l_d}), kQuadratureTolerance);
 }
 
 // ---- ltc_code's published fit (Heitz, Dupuy, Hill & Neubelt 2016; shared/testdata/ltc_code).
 
-// fit/results/ltc.inc read by analysis/lut/ltc_reference.h (its reader is tested in test_ltc_reference.cpp),
-// in ltc_grid(64)'s cell order.
+// fit/results/ltc.inc read by analysis/lut/ltc_reference.h (its reader is tested in
+// test_ltc_reference.cpp), in ltc_grid(64)'s cell order.
 const LtcReferenceTable& ltc_code() {
-  static const LtcReferenceTable t = read_ltc_code_table(std::string(FL_SHARED_TESTDATA) + "/ltc_code/ltc.inc");
+  static const LtcReferenceTable t =
+      read_ltc_code_table(std::string(FL_SHARED_TESTDATA) + "/ltc_code/ltc.inc");
   return t;
 }
 
@@ -215,13 +221,14 @@ TEST(Lut, NormMatchesLtcCode) {
   int cells = 0;
   for (int t = 0; t < 63; t += 7)
     for (int a = 7; a < 64; a += 7) {
-      const double diff = reference_moments(grid.nov[t], grid.alpha[a]).n_d - lc.magnitude[grid.index(t, a)];
+      const double diff =
+          reference_moments(grid.nov[t], grid.alpha[a]).n_d - lc.magnitude[grid.index(t, a)];
       worst = std::max(worst, std::abs(diff));
       sum += diff;
       ++cells;
     }
-  std::printf("n_D against ltc_code over %d cells: max |difference| %.3g, mean difference %.3g\n", cells, worst,
-              sum / cells);
+  std::printf("n_D against ltc_code over %d cells: max |difference| %.3g, mean difference %.3g\n",
+              cells, worst, sum / cells);
   EXPECT_LT(worst, kLtcCodeNormTolerance);
   EXPECT_LT(std::abs(sum / cells), kLtcCodeNormMeanTolerance);
 }
@@ -230,7 +237,11 @@ TEST(Lut, NormMatchesLtcCode) {
 
 // ∫ f over the sphere in the LTC frame's polar coordinates (θ from Z), panels in θ.
 double integrate_sphere(const std::function<double(const brdf::Vec3&)>& f, double theta_end) {
-  return test::integrate_sphere([&](double x, double y, double z) { return f({x, y, z}); }, theta_end);
+  return test::integrate_sphere(
+      [&](double x, double y, double z) {
+        return f({x, y, z});
+      },
+      theta_end);
 }
 
 // Relative L3 distance (E₃/B₃)^⅓ between ρ cos and an approximation of it, over the sphere in polar
@@ -240,18 +251,23 @@ double relative_l3(const brdf::Vec3& v, double alpha, const fit::LtcFrame& frame
   auto in_frame = [&](const std::function<double(const brdf::Vec3&)>& f) {
     return test::integrate_sphere(
         [&](double x, double y, double z) {
-          return f({x * frame.x.x + y * frame.y.x + z * frame.z.x, x * frame.x.y + y * frame.y.y + z * frame.z.y,
+          return f({x * frame.x.x + y * frame.y.x + z * frame.z.x,
+                    x * frame.x.y + y * frame.y.y + z * frame.z.y,
                     x * frame.x.z + y * frame.y.z + z * frame.z.z});
         },
         kPi, alpha);
   };
-  const double e3 = in_frame([&](const brdf::Vec3& w) { return std::pow(std::abs(ref::lobe_cos(v, w, alpha) - approx(w)), 3); });
-  const double b3 = in_frame([&](const brdf::Vec3& w) { return std::pow(ref::lobe_cos(v, w, alpha), 3); });
+  const double e3 = in_frame([&](const brdf::Vec3& w) {
+    return std::pow(std::abs(ref::lobe_cos(v, w, alpha) - approx(w)), 3);
+  });
+  const double b3 =
+      in_frame([&](const brdf::Vec3& w) { return std::pow(ref::lobe_cos(v, w, alpha), 3); });
   return std::cbrt(e3 / b3);
 }
 
 // Relative L2 distance between ρ cos and an approximation of it, over the sphere.
-double relative_l2(const brdf::Vec3& v, double alpha, const std::function<double(const brdf::Vec3&)>& approx) {
+double relative_l2(const brdf::Vec3& v, double alpha,
+                   const std::function<double(const brdf::Vec3&)>& approx) {
   const double err2 = integrate_sphere(
       [&](const brdf::Vec3& w) {
         const double d = ref::lobe_cos(v, w, alpha) - approx(w);
@@ -269,8 +285,8 @@ double relative_l2(const brdf::Vec3& v, double alpha, const std::function<double
 
 // ltc_grid(8) samples the same axes as ltc_code's 64 × 64 table at every ninth cell (i/7 = 9i/63),
 // so both fits can be judged on a metric neither minimizes: the relative L2 error against the GGX
-// lobe by quadrature (both minimize Heitz's L3 error). The held-out error the table reports (256 + 256
-// fresh directions) against the relative L3 error of the same LTC by quadrature.
+// lobe by quadrature (both minimize Heitz's L3 error). The held-out error the table reports (256 +
+// 256 fresh directions) against the relative L3 error of the same LTC by quadrature.
 TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
   constexpr int size = 8, kLtcCodeStride = 9;
   const auto& lc = ltc_code();
@@ -283,7 +299,8 @@ TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
       const auto& c = t.cells[k];
       const auto& mo = t.moments[k];
       EXPECT_TRUE(c.fit.usable) << i << "," << j;
-      const auto frame = i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(mo.average_dir);
+      const auto frame =
+          i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(mo.average_dir);
       // The normalized LTC over its support, the hemisphere ω·(−m31, 0, m11) > 0 of its frame.
       const double axis = std::hypot(c.params.m31, c.params.m11);
       const double unit = test::integrate_hemisphere_about(
@@ -298,13 +315,16 @@ TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
         return mo.n_d * fit::ltc_density(c.params, f.x, f.y, f.z);
       });
       const int lk = grid64.index(kLtcCodeStride * i, kLtcCodeStride * j);
-      const double theirs = relative_l2(
-          v, alpha, [&](const brdf::Vec3& w) { return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk].m, w); });
+      const double theirs = relative_l2(v, alpha, [&](const brdf::Vec3& w) {
+        return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk].m, w);
+      });
       const double l3 = relative_l3(v, alpha, frame, [&](const brdf::Vec3& w) {
         return mo.n_d * ref::ltc_from_inverse(c.m_inv.m, w);
       });
-      std::printf("n.v %.3f alpha %.3f: relative L2 ours %.4f, ltc_code %.4f; relative L3 %.4f (held-out estimate %.4f)\n",
-                  t.grid.nov[i], alpha, ours, theirs, l3, c.fit_error);
+      std::printf(
+          "n.v %.3f alpha %.3f: relative L2 ours %.4f, ltc_code %.4f; relative L3 %.4f (held-out "
+          "estimate %.4f)\n",
+          t.grid.nov[i], alpha, ours, theirs, l3, c.fit_error);
       EXPECT_LT(ours, theirs * kLobeAgainstLtcCodeRatio) << i << "," << j;
       EXPECT_NEAR(c.fit_error, l3, kFitErrorEstimateTolerance * l3) << i << "," << j;
       ++checked;
@@ -329,14 +349,17 @@ TEST(Ltc, TextureEntriesReproduceTheFittedLobe) {
       }
     const auto& p = c.inv_packed;
     const std::array<double, 9> shader_minv{p[0], 0, p[2], 0, 1, 0, p[1], 0, p[3]};  // row-major
-    const auto frame = i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(t.moments[k].average_dir);
+    const auto frame =
+        i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(t.moments[k].average_dir);
     for (int a = 0; a < 12; ++a)
       for (int b = 0; b < 6; ++b) {
         const double theta = (b + 0.5) * kPi / 12, phi = (a + 0.5) * kPi / 6;
-        const brdf::Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+        const brdf::Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                           std::cos(theta)};
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
         const double fitted = fit::ltc_density(c.params, f.x, f.y, f.z);
-        EXPECT_NEAR(ref::ltc_from_inverse(shader_minv, w), fitted, kTextureDensityTolerance * std::max(1.0, fitted))
+        EXPECT_NEAR(ref::ltc_from_inverse(shader_minv, w), fitted,
+                    kTextureDensityTolerance * std::max(1.0, fitted))
             << "cell " << k << " direction " << a << "," << b;
       }
   }
@@ -355,7 +378,8 @@ double reference_form_factor(double z, double len) {
           for (int pp = 0; pp < 16; ++pp)
             inner += integrate_panel(
                 [&](double psi) {
-                  return std::max(0.0, std::cos(omega) * std::cos(rho) + std::sin(omega) * std::sin(rho) * std::cos(psi));
+                  return std::max(0.0, std::cos(omega) * std::cos(rho) +
+                                           std::sin(omega) * std::sin(rho) * std::cos(psi));
                 },
                 pp * kPi / 8, (pp + 1) * kPi / 8, g);
           return inner * std::sin(rho);
@@ -367,7 +391,8 @@ double reference_form_factor(double z, double len) {
 TEST(Ltc, SphereFormFactorMatchesCapQuadrature) {
   for (double len : {0.05, 0.3, 0.7, 0.95})
     for (double z : {-0.9, -0.3, 0.0, 0.2, 0.6, 1.0})
-      EXPECT_NEAR(horizon_clipped_sphere_form_factor(z, len), reference_form_factor(z, len), kFormFactorTolerance)
+      EXPECT_NEAR(horizon_clipped_sphere_form_factor(z, len), reference_form_factor(z, len),
+                  kFormFactorTolerance)
           << z << "," << len;
   EXPECT_DOUBLE_EQ(horizon_clipped_sphere_form_factor(0.5, 0.0), 0.5);
   EXPECT_DOUBLE_EQ(horizon_clipped_sphere_form_factor(-0.5, 0.0), 0.0);

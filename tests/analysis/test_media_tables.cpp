@@ -59,13 +59,15 @@ TEST(Blend, LinearModelsBlendExactlyAndGulbrandsenDoesNot) {
   const Table g = blend_table(c.ctx, c.studies, {});
   ASSERT_EQ(g.columns[0].name, "material_a");
   const double worst = std::get<double>(g.rows.front()[2]);
-  std::printf("worst Gulbrandsen blend: %s + %s = %.3f\n", std::get<std::string>(g.rows[0][0]).c_str(),
+  std::printf("worst Gulbrandsen blend: %s + %s = %.3f\n",
+              std::get<std::string>(g.rows[0][0]).c_str(),
               std::get<std::string>(g.rows[0][1]).c_str(), worst);
   // The talk: the worst pairs land around 1.5-2.5 ΔE2000.
   EXPECT_GE(worst, 1.5);
   EXPECT_LE(worst, 2.5);
   for (size_t i = 1; i < g.rows.size(); ++i)
-    EXPECT_GE(std::get<double>(g.rows[i - 1][2]), std::get<double>(g.rows[i][2])) << "largest first";
+    EXPECT_GE(std::get<double>(g.rows[i - 1][2]), std::get<double>(g.rows[i][2]))
+        << "largest first";
 }
 
 TEST(Blend, WeightsAndChains) {
@@ -78,7 +80,8 @@ TEST(Blend, WeightsAndChains) {
   o.chain = 3;
   const Table t = blend_models_table(c.ctx, c.studies, o);
   EXPECT_EQ(t.rows.size(), 14u);
-  for (const auto& row : t.rows) EXPECT_LE(std::get<double>(row[column(t, "schlick")]), kLinearModelDe);
+  for (const auto& row : t.rows)
+    EXPECT_LE(std::get<double>(row[column(t, "schlick")]), kLinearModelDe);
   o.chain = 1;
   EXPECT_THROW(blend_table(c.ctx, c.studies, o), InputError);
 }
@@ -102,13 +105,15 @@ TEST(Gamut, SchlickAndF82ConvertExactly) {
 // Born & Wolf §1.5.2, written here from Snell's law and the amplitude coefficients, for light in a
 // medium of index n_i meeting a material of complex index n_t (k ≥ 0): cos θ_t = √(1 − sin²θ_t)
 // with sin θ_t = (n_i/n_t) sin θ_i (complex for an absorbing material or past the critical angle),
-// r_s = (n_i cos θ_i − n_t cos θ_t)/(n_i cos θ_i + n_t cos θ_t), r_p = (n_t cos θ_i − n_i cos θ_t)/(n_t cos θ_i + n_i cos θ_t).
+// r_s = (n_i cos θ_i − n_t cos θ_t)/(n_i cos θ_i + n_t cos θ_t), r_p = (n_t cos θ_i − n_i cos
+// θ_t)/(n_t cos θ_i + n_i cos θ_t).
 double reflectance_in_medium(std::complex<double> n_t, double n_i, double cos_i) {
   using C = std::complex<double>;
   const double sin_i = std::sqrt(std::max(0.0, 1 - cos_i * cos_i));
   const C sin_t = n_i * sin_i / n_t;
   C cos_t = std::sqrt(1.0 - sin_t * sin_t);
-  if (cos_t.imag() < 0) cos_t = -cos_t;  // the decaying branch, for absorption and past the critical angle
+  if (cos_t.imag() < 0)
+    cos_t = -cos_t;  // the decaying branch, for absorption and past the critical angle
   const C r_s = (n_i * cos_i - n_t * cos_t) / (n_i * cos_i + n_t * cos_t);
   const C r_p = (n_t * cos_i - n_i * cos_t) / (n_t * cos_i + n_i * cos_t);
   return 0.5 * (std::norm(r_s) + std::norm(r_p));
@@ -134,17 +139,20 @@ TEST(Media, GroundTruthInAMediumMatchesSnellAndFresnel) {
     for (double cos_i : c.ctx.cos_thetas()) {
       const double r = reflectance_in_medium(1.64, medium, cos_i);
       const color::Rgb got = ground_truth_rgb(c.ctx, tourmaline.ior, cos_i, medium);
-      for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(got[ch], r * white[ch], kExactSpectrum) << medium << " " << cos_i;
+      for (int ch = 0; ch < 3; ++ch)
+        EXPECT_NEAR(got[ch], r * white[ch], kExactSpectrum) << medium << " " << cos_i;
     }
   }
   const auto& gold = catalog_material("gold");
   for (double medium : {1.0, 1.333, 1.5}) {
     for (double cos_i : c.ctx.cos_thetas()) {
       std::vector<double> spectrum;
-      for (const auto& n : gold.ior.ior) spectrum.push_back(reflectance_in_medium(n, medium, cos_i));
+      for (const auto& n : gold.ior.ior)
+        spectrum.push_back(reflectance_in_medium(n, medium, cos_i));
       const color::Rgb want = c.ctx.spectrum_to_rgb(spectrum);
       const color::Rgb got = ground_truth_rgb(c.ctx, gold.ior, cos_i, medium);
-      for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(got[ch], want[ch], kExactSpectrum) << medium << " " << cos_i;
+      for (int ch = 0; ch < 3; ++ch)
+        EXPECT_NEAR(got[ch], want[ch], kExactSpectrum) << medium << " " << cos_i;
     }
   }
 }
@@ -175,14 +183,17 @@ TEST(Internal, NormalIncidenceAndCriticalAngle) {
     for (auto& v : inverse.ior) v = {1.0 / v.real(), 0.0};
     const color::Rgb exact = ground_truth_rgb(c.ctx, inverse, 1.0, 1.0);
     for (int ch = 0; ch < 3; ++ch)
-      EXPECT_NEAR(exact[ch], fresnel::schlick_internal(1.0, st.derived.f0[ch]), kExact) << st.material->material.name;
+      EXPECT_NEAR(exact[ch], fresnel::schlick_internal(1.0, st.derived.f0[ch]), kExact)
+          << st.material->material.name;
   }
   const Table t = internal_table(c.ctx, c.studies);
   ASSERT_EQ(t.rows.size(), 14u);
   for (const auto& row : t.rows) {
     EXPECT_NEAR(std::get<double>(row[column(t, "de00_normal")]), 0.0, 1e-9);
-    EXPECT_NEAR(std::get<double>(row[column(t, "exact_at_critical")]), 1.0, kExact) << std::get<std::string>(row[0]);
-    EXPECT_NEAR(std::get<double>(row[column(t, "schlick_at_critical")]), 1.0, kExact) << std::get<std::string>(row[0]);
+    EXPECT_NEAR(std::get<double>(row[column(t, "exact_at_critical")]), 1.0, kExact)
+        << std::get<std::string>(row[0]);
+    EXPECT_NEAR(std::get<double>(row[column(t, "schlick_at_critical")]), 1.0, kExact)
+        << std::get<std::string>(row[0]);
   }
 }
 

@@ -34,7 +34,8 @@ fl::analysis::Settings settings() {
 }
 
 fl::analysis::PlanCosts committed_costs() {
-  return {fl::analysis::read_model_costs(FL_MODEL_COSTS), fl::analysis::read_gpu_costs(FL_GPU_COSTS)};
+  return {fl::analysis::read_model_costs(FL_MODEL_COSTS),
+          fl::analysis::read_gpu_costs(FL_GPU_COSTS)};
 }
 
 struct PlanRun {
@@ -61,21 +62,25 @@ std::vector<std::string> lut_names(const std::vector<fl::analysis::PlanLut>& lut
 }
 
 // Every channel the model declares under each of the scene's pre-integrated lightings is listed.
-void expect_served(const fl::analysis::Scene& scene, Model m, const std::vector<fl::analysis::PlanLut>& luts) {
+void expect_served(const fl::analysis::Scene& scene, Model m,
+                   const std::vector<fl::analysis::PlanLut>& luts) {
   for (Lighting l : scene.lightings()) {
     for (const char* ch : fl::analysis::lighting_support(m, l).channels) {
       bool listed = false;
       for (const auto& lut : luts)
-        for (const auto& c : lut.channels) listed = listed || (lut.lighting == fl::analysis::lighting_name(l) &&
-                                                                c.substr(c.find(' ') + 1) == ch);
-      EXPECT_TRUE(listed) << fl::fresnel::model_spec(m).name << " needs " << ch << " under " << fl::analysis::lighting_name(l);
+        for (const auto& c : lut.channels)
+          listed = listed || (lut.lighting == fl::analysis::lighting_name(l) &&
+                              c.substr(c.find(' ') + 1) == ch);
+      EXPECT_TRUE(listed) << fl::fresnel::model_spec(m).name << " needs " << ch << " under "
+                          << fl::analysis::lighting_name(l);
     }
   }
 }
 
 TEST(Plan, FourDielectricsUnderPunctualLightsAtBudget2GetSchlick) {
   constexpr double kBudget = 2.0;
-  const auto r = plan_for("materials: [diamond, water, glass_bk7, acrylic]\nmax_de00: 2.0\nlighting: [punctual]\n");
+  const auto r = plan_for(
+      "materials: [diamond, water, glass_bk7, acrylic]\nmax_de00: 2.0\nlighting: [punctual]\n");
   ASSERT_EQ(r.plan.materials.size(), 4u);
   for (const auto& m : r.plan.materials) {
     EXPECT_EQ(m.model, model_of<models::Schlick>) << m.material;
@@ -94,7 +99,9 @@ TEST(Plan, FourDielectricsUnderPunctualLightsAtBudget2GetSchlick) {
 // approximation is the declared n·v one).
 TEST(Plan, MetalsUnderIblAndAreaLightsBudgetTheRenderedError) {
   constexpr double kBudget = 0.5;
-  const auto r = plan_for("materials: [gold, copper, silver, aluminum, chromium]\nmax_de00: 0.5\nlighting: [ibl, area]\n");
+  const auto r = plan_for(
+      "materials: [gold, copper, silver, aluminum, chromium]\nmax_de00: 0.5\nlighting: [ibl, "
+      "area]\n");
   ASSERT_EQ(r.plan.materials.size(), 5u);
   const auto costs = committed_costs();
   for (const auto& m : r.plan.materials) {
@@ -120,7 +127,8 @@ TEST(Plan, MetalsUnderIblAndAreaLightsBudgetTheRenderedError) {
 // on a rough dielectric seen at grazing angles: the budget under IBL rules it out where the curve
 // would not.
 TEST(Plan, NdotVApproximationIsMeasuredNotHidden) {
-  const auto r = plan_for("materials:\n  - {name: glass_bk7, roughness: 0.8}\nmax_de00: 5\nlighting: ibl\n");
+  const auto r =
+      plan_for("materials:\n  - {name: glass_bk7, roughness: 0.8}\nmax_de00: 5\nlighting: ibl\n");
   const fl::analysis::Context ctx(settings());
   ASSERT_EQ(r.plan.materials.size(), 1u);
   EXPECT_EQ(r.plan.materials[0].roughness, std::vector<double>{0.8});
@@ -157,17 +165,22 @@ TEST(Plan, ExampleScenesAreServedByTheirTablesOrNameTheirApproximation) {
     for (Lighting l : scene.lightings()) lit[static_cast<int>(l)] = true;
     std::vector<fl::analysis::PlanChoice> chosen = plan.materials;
     for (const auto& m : chosen) expect_served(scene, m.model, plan.luts);
-    for (const auto& m : plan.scene_choice.materials) expect_served(scene, m.model, plan.scene_luts);
-    chosen.insert(chosen.end(), plan.scene_choice.materials.begin(), plan.scene_choice.materials.end());
+    for (const auto& m : plan.scene_choice.materials)
+      expect_served(scene, m.model, plan.scene_luts);
+    chosen.insert(chosen.end(), plan.scene_choice.materials.begin(),
+                  plan.scene_choice.materials.end());
     for (const auto& m : chosen) {
       for (Lighting l : scene.lightings()) {
         const auto& s = fl::analysis::lighting_support(m.model, l);
-        if (l != Lighting::Punctual && !s.fresnel_pre_integrated) { EXPECT_EQ(std::string(s.evaluated_at), "n·v") << path; }
+        if (l != Lighting::Punctual && !s.fresnel_pre_integrated) {
+          EXPECT_EQ(std::string(s.evaluated_at), "n·v") << path;
+        }
       }
       EXPECT_TRUE(std::isfinite(m.error)) << path << " " << m.material;
       EXPECT_EQ(m.meets_budget, m.error <= scene.max_de00) << path << " " << m.material;
     }
-    std::printf("%s: scene-wide %s, %zu failing\n", path.c_str(), fl::fresnel::model_spec(plan.scene_choice.model).name,
+    std::printf("%s: scene-wide %s, %zu failing\n", path.c_str(),
+                fl::fresnel::model_spec(plan.scene_choice.model).name,
                 plan.scene_choice.failing.size());
   }
   EXPECT_TRUE(lit[0] && lit[1] && lit[2]) << "examples/ covers punctual, ibl and area";
@@ -188,11 +201,13 @@ struct HandRow {
   int gpu;
   double ns, derived, fitted;
 };
-const std::vector<HandRow> kHand = {
-    {model_of<models::Schlick>, 10, 1, 3.0, 2.0},     {model_of<models::GeneralizedSchlick>, 20, 2, 1.0, 1.0},
-    {model_of<models::CookTorrance>, 30, 3, 1.0, 0.5}, {model_of<models::Lazanyi>, 20, 2, 2.5, 1.2},
-    {model_of<models::F82>, 20, 2, 0.9, 0.9},          {model_of<models::Gulbrandsen>, 40, 4, 0.5, 0.5},
-    {model_of<models::FresnelRgb>, 50, 5, 0.1, 0.05}};
+const std::vector<HandRow> kHand = {{model_of<models::Schlick>, 10, 1, 3.0, 2.0},
+                                    {model_of<models::GeneralizedSchlick>, 20, 2, 1.0, 1.0},
+                                    {model_of<models::CookTorrance>, 30, 3, 1.0, 0.5},
+                                    {model_of<models::Lazanyi>, 20, 2, 2.5, 1.2},
+                                    {model_of<models::F82>, 20, 2, 0.9, 0.9},
+                                    {model_of<models::Gulbrandsen>, 40, 4, 0.5, 0.5},
+                                    {model_of<models::FresnelRgb>, 50, 5, 0.1, 0.05}};
 
 const HandRow& hand(Model m) {
   return *std::find_if(kHand.begin(), kHand.end(), [&](const HandRow& r) { return r.model == m; });
@@ -200,7 +215,8 @@ const HandRow& hand(Model m) {
 
 fl::analysis::ModelCosts hand_costs() {
   fl::analysis::ModelCosts c;
-  for (const auto& spec : fl::fresnel::model_specs()) c.costs.push_back({spec.model, hand(spec.model).ns});
+  for (const auto& spec : fl::fresnel::model_specs())
+    c.costs.push_back({spec.model, hand(spec.model).ns});
   return c;
 }
 fl::analysis::GpuCosts hand_gpu() {
@@ -257,12 +273,14 @@ TEST(Speed, ParetoFrontsOfAHandMadeTable) {
   std::vector<std::string> front;
   for (const auto& r : rows) {
     EXPECT_EQ(r.pareto, r.pareto_gpu);  // the GPU costs here rank the models as the CPU costs do
-    if (r.pareto) front.push_back(std::string(fl::fresnel::model_spec(r.model).name) + (r.fitted ? " fitted" : " derived"));
+    if (r.pareto)
+      front.push_back(std::string(fl::fresnel::model_spec(r.model).name) +
+                      (r.fitted ? " fitted" : " derived"));
   }
   // schlick fitted (cheapest); f82 both (a tie: neither dominates the other); cook_torrance fitted
   // (gulbrandsen is dearer and no better); fresnel_rgb fitted (derived: same cost, worse).
-  std::vector<std::string> by_hand = {"schlick fitted", "cook_torrance fitted", "f82 derived", "f82 fitted",
-                                      "fresnel_rgb fitted"};
+  std::vector<std::string> by_hand = {"schlick fitted", "cook_torrance fitted", "f82 derived",
+                                      "f82 fitted", "fresnel_rgb fitted"};
   std::sort(front.begin(), front.end());
   std::sort(by_hand.begin(), by_hand.end());
   EXPECT_EQ(front, by_hand);
@@ -273,8 +291,10 @@ TEST(Speed, MedianAndMaxOverMaterials) {
   // value, the max the table + 7. With a fourth (table + 1) the median is table + 0.5.
   fl::analysis::MaterialStudy perfect = hand_study();
   for (auto& r : perfect.models) r.derived_error.rms = r.fitted_error.rms = 0.0;
-  const auto three = fl::analysis::speed_rows({hand_study(), hand_study(7.0), perfect}, hand_costs(), hand_gpu());
-  const auto four = fl::analysis::speed_rows({hand_study(), hand_study(7.0), perfect, hand_study(1.0)}, hand_costs(), hand_gpu());
+  const auto three =
+      fl::analysis::speed_rows({hand_study(), hand_study(7.0), perfect}, hand_costs(), hand_gpu());
+  const auto four = fl::analysis::speed_rows(
+      {hand_study(), hand_study(7.0), perfect, hand_study(1.0)}, hand_costs(), hand_gpu());
   for (size_t k = 0; k < three.size(); ++k) {
     const auto& h = hand(three[k].model);
     const double e = three[k].fitted ? h.fitted : h.derived;
@@ -296,12 +316,16 @@ TEST(Plan, ChoiceOnAHandMadeTable) {
     bool meets;
   };
   for (const Want& w : std::vector<Want>{
-           {2.5, model_of<models::Schlick>, true, 2.0, true},       // the cheapest model, fitted, fits the budget
-           {2.0, model_of<models::Schlick>, true, 2.0, true},       // the budget is inclusive
-           {1.0, model_of<models::F82>, false, 0.9, true},          // three at 20 qualify; the lowest error wins; derived first on a tie
-           {0.5, model_of<models::CookTorrance>, true, 0.5, true},  // not gulbrandsen (as good, dearer)
+           {2.5, model_of<models::Schlick>, true, 2.0,
+            true},  // the cheapest model, fitted, fits the budget
+           {2.0, model_of<models::Schlick>, true, 2.0, true},  // the budget is inclusive
+           {1.0, model_of<models::F82>, false, 0.9,
+            true},  // three at 20 qualify; the lowest error wins; derived first on a tie
+           {0.5, model_of<models::CookTorrance>, true, 0.5,
+            true},  // not gulbrandsen (as good, dearer)
            {0.07, model_of<models::FresnelRgb>, true, 0.05, true},
-           {0.01, model_of<models::FresnelRgb>, true, 0.05, false}}) {  // nothing qualifies: the most accurate
+           {0.01, model_of<models::FresnelRgb>, true, 0.05,
+            false}}) {  // nothing qualifies: the most accurate
     const auto c = fl::analysis::choose_model(cands, w.budget);
     EXPECT_EQ(c.model, w.model) << "budget " << w.budget;
     EXPECT_EQ(c.fitted, w.fitted) << "budget " << w.budget;
@@ -353,15 +377,18 @@ TEST(Plan, LookupTableChannelsPerLighting) {
   area.area = true;
   all.punctual = all.ibl = all.area = true;
   using V = std::vector<std::string>;
-  const Model f82 = model_of<models::F82>, schlick = model_of<models::Schlick>, gul = model_of<models::Gulbrandsen>;
+  const Model f82 = model_of<models::F82>, schlick = model_of<models::Schlick>,
+              gul = model_of<models::Gulbrandsen>;
   EXPECT_EQ(channels(punctual, {f82}), V{});
   EXPECT_EQ(channels(ibl, {f82, schlick}), (V{"dfg:R dfg1", "dfg:G dfg2", "dfg:B dfg_f82"}));
   EXPECT_EQ(channels(ibl, {schlick}), (V{"dfg:R dfg1", "dfg:G dfg2"}));
   EXPECT_EQ(channels(ibl, {gul}), (V{"dfg:R dfg1", "dfg:G dfg2"}));  // F(n·v) × (dfg1 + dfg2)
   EXPECT_EQ(channels(area, {gul}), (V{"ltc_1:RGBA ltc_matrix", "ltc_2:R n_d"}));
-  EXPECT_EQ(channels(area, {schlick, gul}), (V{"ltc_1:RGBA ltc_matrix", "ltc_2:R n_d", "ltc_2:G f_d"}));
-  EXPECT_EQ(channels(all, {f82}), (V{"dfg:R dfg1", "dfg:G dfg2", "dfg:B dfg_f82", "ltc_1:RGBA ltc_matrix",
-                                     "ltc_2:R n_d", "ltc_2:G f_d", "ltc_2:B l_d"}));
+  EXPECT_EQ(channels(area, {schlick, gul}),
+            (V{"ltc_1:RGBA ltc_matrix", "ltc_2:R n_d", "ltc_2:G f_d"}));
+  EXPECT_EQ(channels(all, {f82}),
+            (V{"dfg:R dfg1", "dfg:G dfg2", "dfg:B dfg_f82", "ltc_1:RGBA ltc_matrix", "ltc_2:R n_d",
+               "ltc_2:G f_d", "ltc_2:B l_d"}));
 }
 
 TEST(Plan, UnservableMaterialIsReportedWithItsBestModel) {
@@ -379,10 +406,13 @@ TEST(Plan, SceneDefaultsAndRoughness) {
   EXPECT_TRUE(s.punctual);
   EXPECT_FALSE(s.ibl || s.area);
   EXPECT_TRUE(s.space.empty());
-  const std::vector<double> defaults(fl::analysis::kDefaultRoughness.begin(), fl::analysis::kDefaultRoughness.end());
+  const std::vector<double> defaults(fl::analysis::kDefaultRoughness.begin(),
+                                     fl::analysis::kDefaultRoughness.end());
   EXPECT_EQ(s.materials[0].roughness, defaults);
-  s = fl::analysis::read_scene(dir.file(
-      "r.yaml", "roughness: [0.3, 0.7]\nmaterials:\n  - gold\n  - {name: copper, roughness: 0.25}\n  - name: silver\n    roughness: [0.1, 1]\n"));
+  s = fl::analysis::read_scene(
+      dir.file("r.yaml",
+               "roughness: [0.3, 0.7]\nmaterials:\n  - gold\n  - {name: copper, roughness: 0.25}\n "
+               " - name: silver\n    roughness: [0.1, 1]\n"));
   ASSERT_EQ(s.materials.size(), 3u);
   EXPECT_EQ(s.materials[0].roughness, (std::vector<double>{0.3, 0.7}));
   EXPECT_EQ(s.materials[1].roughness, (std::vector<double>{0.25}));
@@ -401,29 +431,41 @@ TEST(Plan, SceneErrorsNameFileAndLine) {
     }
     return "no error";
   };
-  EXPECT_NE(message("materials: [gold]\nlighting: [area, sun]\n").find("bad.yaml:2: unknown lighting 'sun'"), std::string::npos);
-  EXPECT_NE(message("materials: [gold]\nmax_de00: lots\n").find("bad.yaml:2: 'max_de00' must be a positive number"), std::string::npos);
+  EXPECT_NE(message("materials: [gold]\nlighting: [area, sun]\n")
+                .find("bad.yaml:2: unknown lighting 'sun'"),
+            std::string::npos);
+  EXPECT_NE(message("materials: [gold]\nmax_de00: lots\n")
+                .find("bad.yaml:2: 'max_de00' must be a positive number"),
+            std::string::npos);
   EXPECT_NE(message("materials: [gold]\nmax_de00: -1\n").find("bad.yaml:2:"), std::string::npos);
   EXPECT_NE(message("materials: [gold\n").find("bad.yaml:"), std::string::npos);
   EXPECT_NE(message("max_de00: 1\n").find("missing 'materials'"), std::string::npos);
   EXPECT_NE(message("materials: []\n").find("bad.yaml:1:"), std::string::npos);
-  EXPECT_NE(message("materials: [gold]\nlights: [area]\n").find("bad.yaml:2: unknown key 'lights'"), std::string::npos);
-  EXPECT_NE(message("materials: [gold]\nroughness: 1.5\n").find("bad.yaml:2: 'roughness' must be a perceptual roughness in (0, 1]"),
+  EXPECT_NE(message("materials: [gold]\nlights: [area]\n").find("bad.yaml:2: unknown key 'lights'"),
             std::string::npos);
-  EXPECT_NE(message("materials:\n  - {name: gold, roughness: -0.1}\n").find("bad.yaml:2: 'roughness'"), std::string::npos);
-  EXPECT_NE(message("materials:\n  - {name: gold, shine: 1}\n").find("bad.yaml:2: unknown material key 'shine'"), std::string::npos);
+  EXPECT_NE(message("materials: [gold]\nroughness: 1.5\n")
+                .find("bad.yaml:2: 'roughness' must be a perceptual roughness in (0, 1]"),
+            std::string::npos);
+  EXPECT_NE(
+      message("materials:\n  - {name: gold, roughness: -0.1}\n").find("bad.yaml:2: 'roughness'"),
+      std::string::npos);
+  EXPECT_NE(message("materials:\n  - {name: gold, shine: 1}\n")
+                .find("bad.yaml:2: unknown material key 'shine'"),
+            std::string::npos);
 }
 
 TEST(Plan, UnknownMaterialNamesSceneLine) {
   TempDir dir;
-  const std::string p = dir.file("scene.yaml", "max_de00: 1\nmaterials:\n  - gold\n  - unobtainium\n");
+  const std::string p =
+      dir.file("scene.yaml", "max_de00: 1\nmaterials:\n  - gold\n  - unobtainium\n");
   auto scene = fl::analysis::read_scene(p);
   const fl::analysis::Context ctx(settings());
   try {
     fl::analysis::load_scene_materials(ctx, scene);
     FAIL() << "expected InputError";
   } catch (const fl::InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(p + ":4: unknown material 'unobtainium'", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind(p + ":4: unknown material 'unobtainium'", 0), 0u)
+        << e.what();
   }
 }
 
@@ -439,17 +481,27 @@ TEST(Speed, CostsFileErrors) {
   };
   const auto cpu = [](const std::string& p) { fl::analysis::read_model_costs(p); };
   EXPECT_NE(message(cpu, "model,ns\n").find("costs.csv:1: header"), std::string::npos);
-  EXPECT_NE(message(cpu, "model,ns_per_eval_float_batched\nschlick,abc\n").find("costs.csv:2: cost 'abc'"), std::string::npos);
-  EXPECT_NE(message(cpu, "model,ns_per_eval_float_batched\nschlick,1\n").find("no cost for model"), std::string::npos);
-  EXPECT_NE(message(cpu, "model,ns_per_eval_float_batched\nwarp,1\n").find("costs.csv:2: unknown model 'warp'"), std::string::npos);
+  EXPECT_NE(message(cpu, "model,ns_per_eval_float_batched\nschlick,abc\n")
+                .find("costs.csv:2: cost 'abc'"),
+            std::string::npos);
+  EXPECT_NE(message(cpu, "model,ns_per_eval_float_batched\nschlick,1\n").find("no cost for model"),
+            std::string::npos);
+  EXPECT_NE(message(cpu, "model,ns_per_eval_float_batched\nwarp,1\n")
+                .find("costs.csv:2: unknown model 'warp'"),
+            std::string::npos);
   const auto gpu = [](const std::string& p) { fl::analysis::read_gpu_costs(p); };
   const std::string header = "model,lighting,instructions,arithmetic,extended,texture\n";
   EXPECT_NE(message(gpu, "model,lighting\n").find("costs.csv:1: header"), std::string::npos);
-  EXPECT_NE(message(gpu, header + "schlick,sun,1,1,0,0\n").find("costs.csv:2: unknown lighting 'sun'"), std::string::npos);
-  EXPECT_NE(message(gpu, header + "schlick,ibl,1.5,1,0,0\n").find("costs.csv:2: count '1.5'"), std::string::npos);
-  EXPECT_NE(message(gpu, header + "schlick,ibl,1,1,0,0\nschlick,ibl,1,1,0,0\n").find("costs.csv:3: 'schlick' under ibl listed twice"),
+  EXPECT_NE(
+      message(gpu, header + "schlick,sun,1,1,0,0\n").find("costs.csv:2: unknown lighting 'sun'"),
+      std::string::npos);
+  EXPECT_NE(message(gpu, header + "schlick,ibl,1.5,1,0,0\n").find("costs.csv:2: count '1.5'"),
             std::string::npos);
-  EXPECT_NE(message(gpu, header + "schlick,ibl,1,1,0,0\n").find("no GPU cost for model 'schlick' under punctual"),
+  EXPECT_NE(message(gpu, header + "schlick,ibl,1,1,0,0\nschlick,ibl,1,1,0,0\n")
+                .find("costs.csv:3: 'schlick' under ibl listed twice"),
+            std::string::npos);
+  EXPECT_NE(message(gpu, header + "schlick,ibl,1,1,0,0\n")
+                .find("no GPU cost for model 'schlick' under punctual"),
             std::string::npos);
 }
 

@@ -17,8 +17,8 @@
 
 #include "analysis/lut/rendered.h"
 #include "analysis/shader/shader.h"
-#include "spectral/errors.h"
 #include "fresnel/model_set.h"
+#include "spectral/errors.h"
 #include "test_util.h"
 
 namespace fl::analysis {
@@ -31,8 +31,11 @@ using fresnel::ModelSpec;
 constexpr double kFoldTolerance = 2e-6;
 
 bool have_tools() {
-  return test::run_command("command -v glslangValidator >/dev/null && command -v spirv-val >/dev/null && command -v spirv-opt >/dev/null && "
-                           "command -v spirv-dis >/dev/null").status == 0;
+  return test::run_command(
+             "command -v glslangValidator >/dev/null && command -v spirv-val >/dev/null && command "
+             "-v spirv-opt >/dev/null && "
+             "command -v spirv-dis >/dev/null")
+             .status == 0;
 }
 
 struct Compiled {
@@ -46,10 +49,15 @@ struct Compiled {
 Compiled compile(const std::string& source, bool hlsl, bool optimize) {
   test::TempDir dir;
   const std::string src = dir.file(hlsl ? "s.hlsl" : "s.comp", source);
-  const std::string spv = dir.path() + "/s.spv", opt = dir.path() + "/o.spv", log = dir.path() + "/glslang.log";
-  const std::string front = hlsl ? "glslangValidator -D -V -S comp -e main " : "glslangValidator -V ";
-  std::string cmd = "(" + front + "'" + src + "' -o '" + spv + "' > '" + log + "' || (cat '" + log + "'; false)) && spirv-val '" + spv + "'";
-  if (optimize) cmd += " && spirv-opt -O '" + spv + "' -o '" + opt + "' && spirv-val '" + opt + "' && spirv-dis '" + opt + "'";
+  const std::string spv = dir.path() + "/s.spv", opt = dir.path() + "/o.spv",
+                    log = dir.path() + "/glslang.log";
+  const std::string front =
+      hlsl ? "glslangValidator -D -V -S comp -e main " : "glslangValidator -V ";
+  std::string cmd = "(" + front + "'" + src + "' -o '" + spv + "' > '" + log + "' || (cat '" + log +
+                    "'; false)) && spirv-val '" + spv + "'";
+  if (optimize)
+    cmd += " && spirv-opt -O '" + spv + "' -o '" + opt + "' && spirv-val '" + opt +
+           "' && spirv-dis '" + opt + "'";
   const auto r = test::run_command(cmd);
   return {r.status == 0, r.out + r.err, r.out};
 }
@@ -76,31 +84,45 @@ std::string argument_literals(const ModelSpec& s, const std::vector<double>& p, 
 }
 
 // A compute shader storing each of `calls` (expressions of the emitted functions) to o.rgb[k].
-std::string glsl_program(const std::string& code, const std::vector<std::string>& calls, bool with_texture) {
-  std::string out = "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 1) buffer Outputs { vec3 rgb[" +
-                    std::to_string(calls.size()) + "]; } o;\n" +
-                    (with_texture ? "layout(binding = 2) uniform sampler2D lut;\n" : "") + code + "\nvoid main() {\n";
-  for (size_t k = 0; k < calls.size(); ++k) out += "  o.rgb[" + std::to_string(k) + "] = " + calls[k] + ";\n";
+std::string glsl_program(const std::string& code, const std::vector<std::string>& calls,
+                         bool with_texture) {
+  std::string out =
+      "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 1) buffer Outputs { "
+      "vec3 rgb[" +
+      std::to_string(calls.size()) + "]; } o;\n" +
+      (with_texture ? "layout(binding = 2) uniform sampler2D lut;\n" : "") + code +
+      "\nvoid main() {\n";
+  for (size_t k = 0; k < calls.size(); ++k)
+    out += "  o.rgb[" + std::to_string(k) + "] = " + calls[k] + ";\n";
   return out + "}\n";
 }
 
 TEST(Shader, EveryModelLightingAndLanguageCompilesAndValidates) {
-  ASSERT_TRUE(have_tools()) << "glslangValidator / spirv-tools missing: scripts/setup.sh installs glslang-tools, spirv-tools";
+  ASSERT_TRUE(have_tools()) << "glslangValidator / spirv-tools missing: scripts/setup.sh installs "
+                               "glslang-tools, spirv-tools";
   int compiled = 0;
   for (const auto& spec : fresnel::model_specs()) {
     const auto p = fresnel::example_params(spec.model);
     for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area}) {
       const std::string fn = shader_function_name(spec.model, l);
       for (bool hlsl : {false, true}) {
-        const auto code = shader_code(spec.model, {l}, hlsl ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl);
-        const std::string lookup = l == Lighting::Punctual ? "" : hlsl ? "lut, lut_sampler, 0.4, " : "lut, 0.4, ";
+        const auto code =
+            shader_code(spec.model, {l}, hlsl ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl);
+        const std::string lookup = l == Lighting::Punctual ? ""
+                                   : hlsl                  ? "lut, lut_sampler, 0.4, "
+                                                           : "lut, 0.4, ";
         const std::string call = fn + "(" + lookup + "0.6" + argument_literals(spec, p, hlsl) + ")";
         const std::string program =
-            hlsl ? "RWStructuredBuffer<float3> o : register(u1);\nTexture2D<float4> lut : register(t2);\n"
-                   "SamplerState lut_sampler : register(s3);\n" + code + "\n[numthreads(1, 1, 1)] void main() { o[0] = " + call + "; }\n"
+            hlsl ? "RWStructuredBuffer<float3> o : register(u1);\nTexture2D<float4> lut : "
+                   "register(t2);\n"
+                   "SamplerState lut_sampler : register(s3);\n" +
+                       code + "\n[numthreads(1, 1, 1)] void main() { o[0] = " + call + "; }\n"
                  : glsl_program(code, {call}, l != Lighting::Punctual);
         const auto c = compile(program, hlsl, false);
-        EXPECT_TRUE(c.ok) << spec.name << " " << lighting_name(l) << (hlsl ? " HLSL" : " GLSL") << "\n" << c.log << "\n" << program;
+        EXPECT_TRUE(c.ok) << spec.name << " " << lighting_name(l) << (hlsl ? " HLSL" : " GLSL")
+                          << "\n"
+                          << c.log << "\n"
+                          << program;
         compiled += c.ok;
       }
     }
@@ -121,10 +143,13 @@ bool folded_rgb(const std::string& dis, std::vector<color::Rgb>& out) {
     return true;
   };
   const std::regex store(R"(OpStore %\S+ (%\S+))");
-  for (auto it = std::sregex_iterator(body.begin(), body.end(), store); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(body.begin(), body.end(), store);
+       it != std::sregex_iterator(); ++it) {
     std::smatch m;
     const std::string id = (*it)[1];
-    if (!std::regex_search(dis, m, std::regex(id + R"( = OpConstantComposite %v3float (%\S+) (%\S+) (%\S+))"))) return false;
+    if (!std::regex_search(
+            dis, m, std::regex(id + R"( = OpConstantComposite %v3float (%\S+) (%\S+) (%\S+))")))
+      return false;
     color::Rgb rgb{};
     for (int k = 0; k < 3; ++k)
       if (!constant(m[k + 1], rgb[k])) return false;
@@ -151,7 +176,8 @@ TEST(Shader, GlslComputesWhatTheKernelsCompute) {
   double worst = 0;
   for (const auto& spec : fresnel::model_specs()) {
     const auto p = fresnel::example_params(spec.model);
-    const std::string args = argument_literals(spec, p, false), fn = "fresnel_" + std::string(spec.name);
+    const std::string args = argument_literals(spec, p, false),
+                      fn = "fresnel_" + std::string(spec.name);
     std::vector<std::string> calls;
     std::vector<color::Rgb> want;
     for (double c : {0.05, 0.3, 0.8, 1.0}) {
@@ -162,11 +188,13 @@ TEST(Shader, GlslComputesWhatTheKernelsCompute) {
     want.push_back(engine_shading(spec.model, p, Lighting::Ibl, point));
     calls.push_back(fn + "_ltc(vec3(0.73, 0.12, 0.037), 0.35" + args + ")");
     want.push_back(engine_shading(spec.model, p, Lighting::Area, point));
-    const auto code = shader_code(spec.model, {Lighting::Punctual, Lighting::Ibl, Lighting::Area}, ShaderLanguage::Glsl);
+    const auto code = shader_code(spec.model, {Lighting::Punctual, Lighting::Ibl, Lighting::Area},
+                                  ShaderLanguage::Glsl);
     const auto c = compile(glsl_program(code, calls, false), false, true);
     ASSERT_TRUE(c.ok) << spec.name << "\n" << c.log;
     std::vector<color::Rgb> got;
-    ASSERT_TRUE(folded_rgb(c.optimized, got)) << spec.name << ": not folded to constants\n" << c.optimized;
+    ASSERT_TRUE(folded_rgb(c.optimized, got)) << spec.name << ": not folded to constants\n"
+                                              << c.optimized;
     ASSERT_EQ(got.size(), want.size()) << spec.name;
     for (size_t k = 0; k < want.size(); ++k)
       for (int ch = 0; ch < 3; ++ch) {
@@ -179,12 +207,14 @@ TEST(Shader, GlslComputesWhatTheKernelsCompute) {
 
 TEST(Shader, CommittedGpuCostsMatchWhatTheToolsCountNow) {
   ASSERT_TRUE(have_tools());
-  const auto r = test::run_command("'" FL_SOURCE_DIR "/scripts/gpu_costs.sh' --check '" FL_BUILD_DIR "'");
+  const auto r =
+      test::run_command("'" FL_SOURCE_DIR "/scripts/gpu_costs.sh' --check '" FL_BUILD_DIR "'");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
 }
 
 TEST(Shader, NamesAndBadRequests) {
-  EXPECT_EQ(shader_function_name(fresnel::model_of<fresnel::models::F82>, Lighting::Ibl), "fresnel_f82_ibl");
+  EXPECT_EQ(shader_function_name(fresnel::model_of<fresnel::models::F82>, Lighting::Ibl),
+            "fresnel_f82_ibl");
   EXPECT_THROW(shader_language_from_name("metal"), fl::InputError);
   EXPECT_THROW(lighting_from_name("sun"), fl::InputError);
   EXPECT_THROW(shader_text({"f82", "hlsl", "ibl", true}), fl::InputError);

@@ -20,8 +20,8 @@ using test::integrate_theta;
 constexpr double kPi = std::numbers::pi;
 // The quadrature of a smooth normalized density.
 constexpr double kNormalizationTolerance = 1e-6;
-// Two algebraic forms of the same closed formula, relative. Filament's (n·h)²(α² − 1) + 1 cancels as
-// n·h → 1, to a relative rounding of about ε/α² (2e-10 at α = 1e-3).
+// Two algebraic forms of the same closed formula, relative. Filament's (n·h)²(α² − 1) + 1 cancels
+// as n·h → 1, to a relative rounding of about ε/α² (2e-10 at α = 1e-3).
 constexpr double kNdfFormsTolerance = 1e-9;
 // Means over 16384 Hammersley points against the quadrature of the density they sample (measured
 // ≤ 3.1e-5; the quadrature alone integrates D_v to 1 within 2.5e-6, at the kink where v·h = 0).
@@ -31,8 +31,8 @@ TEST(GgxKernels, NdfProjectedAreaIsOne) {
   static const GaussRule g = gauss_legendre(16);
   for (double alpha : {1e-3, 0.05, 0.3, 0.7, 1.0}) {
     const double s = integrate_theta(
-        [&](double t) { return 2 * kPi * ggx_ndf(std::cos(t), alpha) * std::cos(t) * std::sin(t); }, kPi / 2,
-        alpha, {}, g);
+        [&](double t) { return 2 * kPi * ggx_ndf(std::cos(t), alpha) * std::cos(t) * std::sin(t); },
+        kPi / 2, alpha, {}, g);
     EXPECT_NEAR(s, 1.0, kNormalizationTolerance) << alpha;
   }
 }
@@ -61,9 +61,9 @@ TEST(GgxKernels, NdfMatchesWaltersTangentForm) {
     }
 }
 
-// Heitz 2018, eq. 1: h drawn by sample_ggx_vndf has the density D_v(h) = G₁(v) max(0, v·h) D(h)/(n·v).
-// The means of h's components over the samples must be the integrals of h·D_v by quadrature (with
-// D and G₁ = 1/(1 + Λ) from ggx_reference.h); ∫ D_v = 1 is the normalization.
+// Heitz 2018, eq. 1: h drawn by sample_ggx_vndf has the density D_v(h) = G₁(v) max(0, v·h)
+// D(h)/(n·v). The means of h's components over the samples must be the integrals of h·D_v by
+// quadrature (with D and G₁ = 1/(1 + Λ) from ggx_reference.h); ∫ D_v = 1 is the normalization.
 TEST(GgxKernels, VisibleNormalSamplesFollowTheVisibleNormalDensity) {
   constexpr int kSamples = 16384;
   for (double alpha : {0.1, 0.5, 1.0})

@@ -26,7 +26,9 @@ struct Case {
   std::string reader, file, command, fragment;
 };
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.reader << "/" << c.file << " [" << c.command << "]"; }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.reader << "/" << c.file << " [" << c.command << "]";
+}
 
 std::vector<Case> load_manifest() {
   std::vector<Case> out;
@@ -50,7 +52,9 @@ std::string read_all(const fs::path& p) {
   return s.str();
 }
 
-std::string quote(const std::string& s) { return "'" + s + "'"; }
+std::string quote(const std::string& s) {
+  return "'" + s + "'";
+}
 
 struct Result {
   int status = -1;
@@ -60,7 +64,8 @@ struct Result {
 // Runs the CLI with `args` (already quoted) and optional environment assignments.
 Result run_cli(const fs::path& work, const std::string& args, const std::string& env = "") {
   const fs::path out = work / "stdout.txt", err = work / "stderr.txt";
-  const std::string cmd = env + " " + quote(FL_CLI) + " " + args + " >" + quote(out) + " 2>" + quote(err);
+  const std::string cmd =
+      env + " " + quote(FL_CLI) + " " + args + " >" + quote(out) + " 2>" + quote(err);
   const int rc = std::system(cmd.c_str());
   Result r;
   r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + (WIFSIGNALED(rc) ? WTERMSIG(rc) : 0);
@@ -89,8 +94,10 @@ void install(const Case& c, const fs::path& dest) {
   fs::remove_all(dest);
   if (c.file == "<missing>") return;
   const fs::path src = fs::path(kBadDir) / c.reader / c.file;
-  if (fs::is_directory(src)) fs::create_directories(dest);
-  else fs::copy_file(src, dest);
+  if (fs::is_directory(src))
+    fs::create_directories(dest);
+  else
+    fs::copy_file(src, dest);
 }
 
 void copy_colord(const fs::path& dest) {
@@ -125,7 +132,8 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
   std::string args, env;
   bool writes_output = true;
   if (c.command == "curve") {
-    file = c.file == "<missing>" ? (s.dir / "does_not_exist.yml").string() : kBadDir + "/" + c.reader + "/" + c.file;
+    file = c.file == "<missing>" ? (s.dir / "does_not_exist.yml").string()
+                                 : kBadDir + "/" + c.reader + "/" + c.file;
     if (c.reader == "csv" && c.file == "<missing>") file = (s.dir / "does_not_exist.csv").string();
     args = "--materials " + quote(empty_catalog) + " curve " + quote(file);
     writes_output = false;
@@ -135,7 +143,8 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
     install(c, file);
     fs::create_directories(catalog);
     std::ofstream(catalog / "bad.yml") << "name: Bad\nclass: metal\nsource: main/Bad/nk/Bad\n";
-    args = "--db " + quote(db) + " --materials " + quote(catalog) + " reproduce --out " + quote(out_dir);
+    args = "--db " + quote(db) + " --materials " + quote(catalog) + " reproduce --out " +
+           quote(out_dir);
   } else if (c.command == "catalog-reproduce") {
     const fs::path catalog = s.dir / "catalog";
     if (c.file == "<missing>") {
@@ -144,7 +153,8 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
       file = (catalog / "bad.yml").string();
       install(c, file);
     }
-    args = "--db " + quote(kGoodDir + "/db") + " --materials " + quote(catalog) + " reproduce --out " + quote(out_dir);
+    args = "--db " + quote(kGoodDir + "/db") + " --materials " + quote(catalog) +
+           " reproduce --out " + quote(out_dir);
   } else if (c.command.rfind("colord:", 0) == 0) {
     const std::string target = c.command.substr(7);
     const fs::path colord = s.dir / "colord";
@@ -157,7 +167,8 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
     args += "reproduce --out " + quote(out_dir);
     env = "FRESNEL_LAB_COLORD=" + quote(colord);
   } else if (c.command == "plan") {  // scene files
-    file = c.file == "<missing>" ? (s.dir / "does_not_exist.yaml").string() : kBadDir + "/" + c.reader + "/" + c.file;
+    file = c.file == "<missing>" ? (s.dir / "does_not_exist.yaml").string()
+                                 : kBadDir + "/" + c.reader + "/" + c.file;
     args = "plan " + quote(file);
     writes_output = false;
   } else {
@@ -252,12 +263,14 @@ TEST(GoodInput, CsvWithBomCrlfOrCrOnlyIsAccepted) {
 
 TEST(GoodInput, CatalogEntriesWithBomAndCrlfLoad) {
   Scratch s("good_catalog");
-  const Result r = run_cli(s.dir, "--db " + quote(kGoodDir + "/db") + " --materials " + quote(kGoodDir + "/catalog") + " materials");
+  const Result r = run_cli(s.dir, "--db " + quote(kGoodDir + "/db") + " --materials " +
+                                      quote(kGoodDir + "/catalog") + " materials");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("Good CRLF"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Good tabulated"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find('\r'), std::string::npos);
-  const Result t = run_cli(s.dir, "--db " + quote(kGoodDir + "/db") + " --materials " + quote(kGoodDir + "/catalog") + " table schlick");
+  const Result t = run_cli(s.dir, "--db " + quote(kGoodDir + "/db") + " --materials " +
+                                      quote(kGoodDir + "/catalog") + " table schlick");
   ASSERT_EQ(t.status, 0) << t.err;
   EXPECT_EQ(std::count(t.out.begin(), t.out.end(), '\n'), 3) << t.out;  // header + 2 materials
 }
@@ -266,7 +279,8 @@ TEST(GoodInput, ColordFilesWithBomAndCrlfGiveTheSameCurve) {
   Scratch s("good_colord");
   const fs::path colord = s.dir / "colord";
   copy_colord(colord);
-  for (const char* f : {"cmf/CIE1931-2deg-XYZ.cmf", "ref/CIE-1986-daylight-SPD.cmf", "illuminant/CIE-D65.sp"}) {
+  for (const char* f :
+       {"cmf/CIE1931-2deg-XYZ.cmf", "ref/CIE-1986-daylight-SPD.cmf", "illuminant/CIE-D65.sp"}) {
     std::string text = read_all(colord / f), crlf = "\xEF\xBB\xBF";
     for (char ch : text) {
       if (ch == '\n') crlf += '\r';
@@ -278,8 +292,9 @@ TEST(GoodInput, ColordFilesWithBomAndCrlfGiveTheSameCurve) {
   for (const char* ill : {"D60", "D65"}) {
     const Result plain = run_cli(s.dir, std::string("--illuminant ") + ill + " curve " + material,
                                  "FRESNEL_LAB_COLORD=" + quote(kColord));
-    const Result converted = run_cli(s.dir, std::string("--illuminant ") + ill + " curve " + material,
-                                     "FRESNEL_LAB_COLORD=" + quote(colord));
+    const Result converted =
+        run_cli(s.dir, std::string("--illuminant ") + ill + " curve " + material,
+                "FRESNEL_LAB_COLORD=" + quote(colord));
     ASSERT_EQ(plain.status, 0) << plain.err;
     EXPECT_EQ(converted.status, 0) << converted.err;
     EXPECT_EQ(plain.out, converted.out) << ill;

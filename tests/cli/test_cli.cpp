@@ -13,8 +13,8 @@ using test::cli;
 using test::run_command;
 
 TEST(Cli, HelpForEveryCommand) {
-  for (const char* cmd : {"", "materials", "curve", "presets", "table", "reproduce", "lut", "lut dfg", "plot",
-                          "plot strip", "render", "speed", "plan"}) {
+  for (const char* cmd : {"", "materials", "curve", "presets", "table", "reproduce", "lut",
+                          "lut dfg", "plot", "plot strip", "render", "speed", "plan"}) {
     const auto r = run_command(cli() + " " + cmd + " --help");
     EXPECT_EQ(r.status, 0) << cmd;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << cmd;
@@ -50,7 +50,9 @@ TEST(Cli, ExtremeOpticalConstantsAreRejectedNotCrashed) {
 
 TEST(Cli, MalformedInputNamesFileAndLineAndLeavesNoOutput) {
   test::TempDir tmp;
-  const auto bad = tmp.file("bad.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 1.0 2.0\n        0.5 oops 2.0\n");
+  const auto bad = tmp.file(
+      "bad.yml",
+      "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 1.0 2.0\n        0.5 oops 2.0\n");
   const auto r = run_command(cli() + " curve '" + bad + "'");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find(bad + ":5:"), std::string::npos) << r.err;
@@ -63,8 +65,8 @@ TEST(Cli, MalformedInputNamesFileAndLineAndLeavesNoOutput) {
   tmp.file("catalog/good.yml", "name: Good\nclass: dielectric\nconstant: {n: 1.5}\n");
   tmp.file("catalog/broken.yml", "name: Broken\nclass: metal\nsource: \"main/Au/nk/NoSuchPage\"\n");
   const auto out = tmp.path() + "/out";
-  const auto r2 = run_command("'" + std::string(FL_CLI) + "' --db '" + FL_DEFAULT_DB + "' --materials '" + cat +
-                              "' reproduce --out '" + out + "'");
+  const auto r2 = run_command("'" + std::string(FL_CLI) + "' --db '" + FL_DEFAULT_DB +
+                              "' --materials '" + cat + "' reproduce --out '" + out + "'");
   EXPECT_EQ(r2.status, 2);
   EXPECT_NE(r2.err.find("NoSuchPage.yml: no such file"), std::string::npos) << r2.err;
   EXPECT_FALSE(std::filesystem::exists(out) && !std::filesystem::is_empty(out));
@@ -75,7 +77,8 @@ TEST(Cli, SchlickTableHasSpecColumns) {
   ASSERT_EQ(r.status, 0) << r.err;
   // The stable columns first; the coverage columns are appended after them.
   EXPECT_EQ(r.out.substr(0, r.out.find('\n')),
-            "material,class,source,rms_de00,mean_de00,max_de00,coverage,coverage_n,coverage_k,extrapolated");
+            "material,class,source,rms_de00,mean_de00,max_de00,coverage,coverage_n,coverage_k,"
+            "extrapolated");
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 29);
 }
 
@@ -101,7 +104,9 @@ TEST(Cli, ReproduceIsDeterministic) {
       std::ifstream in(p, std::ios::binary);
       return std::string(std::istreambuf_iterator<char>(in), {});
     };
-    EXPECT_EQ(slurp(e.path()), slurp(std::filesystem::path(b) / std::filesystem::relative(e.path(), a))) << e.path();
+    EXPECT_EQ(slurp(e.path()),
+              slurp(std::filesystem::path(b) / std::filesystem::relative(e.path(), a)))
+        << e.path();
     EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << "temporary file left behind";
     ++files;
   }

@@ -5,10 +5,10 @@
 #include <array>
 #include <cctype>
 #include <cstdio>
-#include <map>
-#include <set>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -36,18 +36,23 @@ TEST(LutCli, WritesTablesDeterministically) {
   // Three comment lines (axes, channels, shader formula), the header, 16 rows.
   const auto header = csv.find("\nnov,");
   ASSERT_NE(header, std::string::npos);
-  EXPECT_EQ(csv.substr(header + 1, csv.find('\n', header + 1) - header - 1), "nov,perceptual_roughness,alpha,dfg1,dfg2,dfg_f82");
+  EXPECT_EQ(csv.substr(header + 1, csv.find('\n', header + 1) - header - 1),
+            "nov,perceptual_roughness,alpha,dfg1,dfg2,dfg_f82");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 20);
-  r = test::run_command(lut + "dfg --size 4 --samples 256 --threads 1 --out '" + tmp.path() + "/b.csv'");
+  r = test::run_command(lut + "dfg --size 4 --samples 256 --threads 1 --out '" + tmp.path() +
+                        "/b.csv'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(slurp(tmp.path() + "/b.csv"), csv);
 
   r = test::run_command(lut + "dfg --size 4 --samples 256 --out '" + tmp.path() + "/dfg.h'");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(slurp(tmp.path() + "/dfg.h").find("constexpr float kDfgLut[4 * 4 * 3]"), std::string::npos);
-  r = test::run_command(lut + "dfg --layout filament --size 4 --samples 256 --out '" + tmp.path() + "/f.h'");
+  EXPECT_NE(slurp(tmp.path() + "/dfg.h").find("constexpr float kDfgLut[4 * 4 * 3]"),
+            std::string::npos);
+  r = test::run_command(lut + "dfg --layout filament --size 4 --samples 256 --out '" + tmp.path() +
+                        "/f.h'");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(slurp(tmp.path() + "/f.h").find("constexpr std::uint16_t kDfgLut[4 * 4 * 3]"), std::string::npos);
+  EXPECT_NE(slurp(tmp.path() + "/f.h").find("constexpr std::uint16_t kDfgLut[4 * 4 * 3]"),
+            std::string::npos);
 
   // The DFG texture holds each channel where the layout (analysis/lut/lut_layout.h) says, which the
   // shaders and plans read: texel (0, 0) against the integrator at the first grid point.
@@ -60,14 +65,16 @@ TEST(LutCli, WritesTablesDeterministically) {
   for (const auto& c : analysis::lut_textures()[0].channels) {
     std::string component = c.components;
     component[0] = static_cast<char>(std::toupper(component[0]));
-    const auto k = std::find(dfg.channels.begin(), dfg.channels.end(), component) - dfg.channels.begin();
+    const auto k =
+        std::find(dfg.channels.begin(), dfg.channels.end(), component) - dfg.channels.begin();
     ASSERT_LT(k, 3) << component;
     const std::string name = c.channel;
     const double want = name == "dfg1" ? texel.dfg1 : name == "dfg2" ? texel.dfg2 : texel.dfg_f82;
     EXPECT_EQ(dfg.pixels[k], static_cast<float>(want)) << name;
   }
 
-  r = test::run_command(lut + "ltc-moments --size 4 --samples 256 --out '" + tmp.path() + "/m.csv'");
+  r = test::run_command(lut + "ltc-moments --size 4 --samples 256 --out '" + tmp.path() +
+                        "/m.csv'");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto m = slurp(tmp.path() + "/m.csv");
   EXPECT_EQ(m.substr(0, m.find('\n')), "nov,perceptual_roughness,alpha,n_d,f_d,l_d");
@@ -85,9 +92,10 @@ TEST(LutCli, WritesTablesDeterministically) {
 TEST(LutCli, BadInputExitsTwoAndWritesNothing) {
   test::TempDir tmp;
   const std::string lut = std::string("'") + FL_CLI + "' lut ";
-  for (const std::string args : {"dfg --size 1 --out x.csv", "dfg --size 4 --out x.txt", "ltc-moments --size 4 --out x.h",
-                                 "dfg --size 4 --out x.inc", "dfg --layout unreal --size 4 --out x.csv",
-                                 "ltc --size 4 --samples 0 --out x.exr", "dfg --size 4", "frob --out x.csv"}) {
+  for (const std::string args :
+       {"dfg --size 1 --out x.csv", "dfg --size 4 --out x.txt", "ltc-moments --size 4 --out x.h",
+        "dfg --size 4 --out x.inc", "dfg --layout unreal --size 4 --out x.csv",
+        "ltc --size 4 --samples 0 --out x.exr", "dfg --size 4", "frob --out x.csv"}) {
     const auto r = test::run_command("cd '" + tmp.path() + "' && " + lut + args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
     EXPECT_FALSE(r.err.empty()) << args;
@@ -96,7 +104,8 @@ TEST(LutCli, BadInputExitsTwoAndWritesNothing) {
   for (const char* sub : {"", "dfg", "ltc-moments", "ltc"}) {
     const auto r = test::run_command(lut + sub + " --help");
     EXPECT_EQ(r.status, 0) << sub;
-    EXPECT_NE(r.out.find(std::string(sub).empty() ? "ltc-moments" : "--out"), std::string::npos) << sub;
+    EXPECT_NE(r.out.find(std::string(sub).empty() ? "ltc-moments" : "--out"), std::string::npos)
+        << sub;
   }
 }
 
@@ -108,7 +117,9 @@ TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
   std::istringstream in(r.out);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "material,model,parameters,curve_rms_de00,ibl,ibl_rms_de00,ibl_max_de00,area,area_rms_de00,area_max_de00");
+  EXPECT_EQ(line,
+            "material,model,parameters,curve_rms_de00,ibl,ibl_rms_de00,ibl_max_de00,area,area_rms_"
+            "de00,area_max_de00");
   std::map<std::string, std::array<double, 2>> schlick, f82;  // "material/parameters" → (ibl, area)
   std::set<std::string> metals, models;
   while (std::getline(in, line)) {
@@ -122,15 +133,16 @@ TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
     const std::array<double, 2> e{std::stod(cells[5]), std::stod(cells[8])};
     if (cells[1] == "schlick") schlick[cells[0] + "/" + cells[2]] = e;
     if (cells[1] == "f82") f82[cells[0] + "/" + cells[2]] = e;
-    EXPECT_EQ(cells[4], cells[1] == "schlick" || cells[1] == "f82" ? "tables" : "F(n·v) × lobe") << line;
+    EXPECT_EQ(cells[4], cells[1] == "schlick" || cells[1] == "f82" ? "tables" : "F(n·v) × lobe")
+        << line;
   }
   EXPECT_EQ(metals.size(), 14u);  // the catalog's metals
   EXPECT_EQ(models.size(), 7u);   // every model
   ASSERT_EQ(schlick.size(), 28u);
   for (const auto& [key, s] : schlick) {
     ASSERT_TRUE(f82.count(key)) << key;
-    std::printf("%-24s ibl schlick %.3f f82 %.3f | area schlick %.3f f82 %.3f\n", key.c_str(), s[0], f82[key][0], s[1],
-                f82[key][1]);
+    std::printf("%-24s ibl schlick %.3f f82 %.3f | area schlick %.3f f82 %.3f\n", key.c_str(), s[0],
+                f82[key][0], s[1], f82[key][1]);
     EXPECT_LE(f82[key][0], s[0]) << key << " (ibl)";
     EXPECT_LE(f82[key][1], s[1]) << key << " (area)";
   }

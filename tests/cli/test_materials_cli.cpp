@@ -26,9 +26,12 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
     std::string cell;
     bool quoted = false;
     for (const char c : line) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
-      else cell += c;
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        cells.push_back(cell), cell.clear();
+      else
+        cell += c;
     }
     cells.push_back(cell);
     rows.push_back(cells);
@@ -48,7 +51,9 @@ std::vector<std::map<std::string, std::string>> records(const std::string& text)
   return out;
 }
 
-int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+int lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
 
 TEST(MaterialsCli, PresetsTakeDatabasePagesCatalogNamesAndFiles) {
   test::TempDir tmp;
@@ -62,7 +67,8 @@ TEST(MaterialsCli, PresetsTakeDatabasePagesCatalogNamesAndFiles) {
   EXPECT_EQ(rows[2].at("material"), "glass");
   EXPECT_EQ(rows[2].at("class"), "dielectric");
   // A lossless dielectric's fitted κ stays 0.
-  for (const char* c : {"kappa_r", "kappa_g", "kappa_b"}) EXPECT_EQ(std::stod(rows[2].at(c)), 0.0) << c;
+  for (const char* c : {"kappa_r", "kappa_g", "kappa_b"})
+    EXPECT_EQ(std::stod(rows[2].at(c)), 0.0) << c;
 }
 
 TEST(MaterialsCli, EveryModelsErrorForOneFileInOneRun) {
@@ -82,12 +88,14 @@ TEST(MaterialsCli, EveryInputFormatThroughTheCli) {
   const auto sopra = tmp.file("s.nk", "4 350 850 1\n1.5 1.9\n0.2 5.4\n");
   tmp.file("p.eta.spd", "350 1.5\n850 0.2\n");
   const auto spd = tmp.file("p.k.spd", "350 1.9\n850 5.4\n");
-  const auto r = run_command(cli() + " -q curve '" + table + "' '" + download + "' '" + sopra + "' '" + spd + "'");
+  const auto r = run_command(cli() + " -q curve '" + table + "' '" + download + "' '" + sopra +
+                             "' '" + spd + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = records(r.out);
   ASSERT_EQ(rows.size(), 4u * 91);
   for (size_t m = 1; m < 4; ++m)
-    for (const char* c : {"truth_r", "truth_g", "truth_b"}) EXPECT_EQ(rows[91 * m].at(c), rows[0].at(c)) << m << c;
+    for (const char* c : {"truth_r", "truth_g", "truth_b"})
+      EXPECT_EQ(rows[91 * m].at(c), rows[0].at(c)) << m << c;
   EXPECT_EQ(rows[91 * 3].at("material"), "p");
 }
 
@@ -117,15 +125,19 @@ TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesOneAndSkipsMany) {
   const auto json = run_command(cli() + " -q presets main/Au/nk/Ordal --format json");
   EXPECT_NE(json.out.find("\"extrapolated\": \"yes\""), std::string::npos) << json.out;
   const auto md = run_command(cli() + " -q curve main/Au/nk/Ordal --format md");
-  EXPECT_NE(md.out.find("main/Au/nk/Ordal: extrapolated, n and k data does not cover 360-665 nm"), std::string::npos);
+  EXPECT_NE(md.out.find("main/Au/nk/Ordal: extrapolated, n and k data does not cover 360-665 nm"),
+            std::string::npos);
 
   const auto one = run_command(cli() + " --min-coverage 0.9 curve main/Au/nk/Ordal");
   EXPECT_EQ(one.status, 2);
   EXPECT_EQ(lines(one.err), 1) << one.err;
-  EXPECT_NE(one.err.find("main/Au/nk/Ordal: covers 0.004 of the visible range, below --min-coverage 0.9"), std::string::npos)
+  EXPECT_NE(
+      one.err.find("main/Au/nk/Ordal: covers 0.004 of the visible range, below --min-coverage 0.9"),
+      std::string::npos)
       << one.err;
   EXPECT_EQ(one.out, "");
-  const auto many = run_command(cli() + " --min-coverage 0.9 presets main/Au/nk/Ordal main/Au/nk/Johnson");
+  const auto many =
+      run_command(cli() + " --min-coverage 0.9 presets main/Au/nk/Ordal main/Au/nk/Johnson");
   ASSERT_EQ(many.status, 0) << many.err;
   EXPECT_EQ(records(many.out).size(), 1u);
   EXPECT_NE(many.err.find("skipped main/Au/nk/Ordal: covers 0.004"), std::string::npos) << many.err;
@@ -145,8 +157,8 @@ TEST(MaterialsCli, CatalogEntryMayPointAtAFile) {
   test::TempDir tmp;
   tmp.file("catalog/data/silver.csv", "wl,n\n0.35,0.2\n0.85,0.15\nwl,k\n0.35,1.6\n0.85,5.8\n");
   tmp.file("catalog/my_silver.yml", "name: My silver\nclass: metal\nfile: data/silver.csv\n");
-  const auto r = run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB + "' --materials '" +
-                             tmp.path() + "/catalog' presets");
+  const auto r = run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB +
+                             "' --materials '" + tmp.path() + "/catalog' presets");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = records(r.out);
   ASSERT_EQ(rows.size(), 1u);
@@ -160,8 +172,9 @@ TEST(MaterialsCli, PlotsOfSeveralMaterialsNeedANamePlaceholder) {
   EXPECT_EQ(lines(bad.err), 1) << bad.err;
   EXPECT_NE(bad.err.find("2 materials need '{name}' in --out"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/s.png"));
-  const auto ok = run_command(cli() + " -q plot strip gold main/Au/nk/Babar --models schlick --out '" + tmp.path() +
-                              "/{name}.png'");
+  const auto ok =
+      run_command(cli() + " -q plot strip gold main/Au/nk/Babar --models schlick --out '" +
+                  tmp.path() + "/{name}.png'");
   ASSERT_EQ(ok.status, 0) << ok.err;
   EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/gold.png"));
   EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/main_Au_nk_Babar.png"));
@@ -176,10 +189,12 @@ TEST(MaterialsCli, ScenesTakePageGlobs) {
   EXPECT_NE(r.out.find("main/Ti/nk/Rakic-LD"), std::string::npos);
 }
 
-// The class comes from the data: caesium (mean k 0.67-0.95) and tungsten (n > k) are metals, silicon
-// (k 0.08) is not.
+// The class comes from the data: caesium (mean k 0.67-0.95) and tungsten (n > k) are metals,
+// silicon (k 0.08) is not.
 TEST(MaterialsCli, PagesListsBookClassCoverageAndReference) {
-  const auto r = run_command(cli() + " -q pages 'main/Cs/nk/*' main/Si/nk/Aspnes main/W/nk/Werner-DFT main/Au/nk/Ordal 'main/AgBr/n2/*'");
+  const auto r = run_command(cli() +
+                             " -q pages 'main/Cs/nk/*' main/Si/nk/Aspnes main/W/nk/Werner-DFT "
+                             "main/Au/nk/Ordal 'main/AgBr/n2/*'");
   ASSERT_EQ(r.status, 0) << r.err;
   std::map<std::string, std::map<std::string, std::string>> by_page;
   for (const auto& row : records(r.out)) by_page[row.at("page")] = row;
@@ -201,10 +216,15 @@ TEST(MaterialsCli, PagesListsBookClassCoverageAndReference) {
 // A small database: one good metal page, one extrapolated, one that cannot be read, one glass.
 std::string small_db(const test::TempDir& tmp) {
   const std::string rows = "        0.30 0.5 2.0\n        0.90 0.4 6.0\n";
-  tmp.file("db/data/main/M/nk/Good.yml", "REFERENCES: A. Author 2024\nDATA:\n  - type: tabulated nk\n    data: |\n" + rows);
-  tmp.file("db/data/main/M/nk/Red.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.70 0.3 4.0\n        0.90 0.4 6.0\n");
-  tmp.file("db/data/main/M/nk/Bad.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.50 -1 2.0\n");
-  tmp.file("db/data/main/G/nk/Glass.yml", "DATA:\n  - type: formula 5\n    wavelength_range: 0.3 1.0\n    coefficients: 1.5\n");
+  tmp.file("db/data/main/M/nk/Good.yml",
+           "REFERENCES: A. Author 2024\nDATA:\n  - type: tabulated nk\n    data: |\n" + rows);
+  tmp.file(
+      "db/data/main/M/nk/Red.yml",
+      "DATA:\n  - type: tabulated nk\n    data: |\n        0.70 0.3 4.0\n        0.90 0.4 6.0\n");
+  tmp.file("db/data/main/M/nk/Bad.yml",
+           "DATA:\n  - type: tabulated nk\n    data: |\n        0.50 -1 2.0\n");
+  tmp.file("db/data/main/G/nk/Glass.yml",
+           "DATA:\n  - type: formula 5\n    wavelength_range: 0.3 1.0\n    coefficients: 1.5\n");
   return tmp.path() + "/db";
 }
 
@@ -212,7 +232,8 @@ TEST(MaterialsCli, LibraryListsEveryPageInOrSkippedWithItsReasonAndFlagsExtrapol
   test::TempDir tmp;
   const auto db = small_db(tmp);
   const auto out = tmp.path() + "/lib";
-  const auto base = std::string("'") + FL_CLI + "' --db '" + db + "' --materials '" + tmp.path() + "/none'";
+  const auto base =
+      std::string("'") + FL_CLI + "' --db '" + db + "' --materials '" + tmp.path() + "/none'";
   const auto r = run_command(base + " --min-coverage 0 library --out '" + out + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto lib = records(test::run_command("cat '" + out + "/library.csv'").out);
@@ -226,10 +247,12 @@ TEST(MaterialsCli, LibraryListsEveryPageInOrSkippedWithItsReasonAndFlagsExtrapol
   EXPECT_EQ(skipped[0].at("reason_class"), "class dielectric");
   EXPECT_EQ(skipped[1].at("page"), "main/M/nk/Bad");
   EXPECT_NE(skipped[1].at("reason").find("Bad.yml:4: n = -1 is not physical"), std::string::npos);
-  for (const char* f : {"library.md", "library.json", "library.mtlx", "models.csv", "gallery.md", "README.md", "spread.md"})
+  for (const char* f : {"library.md", "library.json", "library.mtlx", "models.csv", "gallery.md",
+                        "README.md", "spread.md"})
     EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
   const auto gallery = test::run_command("cat '" + out + "/gallery.md'").out;
-  EXPECT_NE(gallery.find("**Extrapolated**: n and k data does not cover 360-695 nm"), std::string::npos);
+  EXPECT_NE(gallery.find("**Extrapolated**: n and k data does not cover 360-695 nm"),
+            std::string::npos);
   // Progress when stderr is not a terminal: periodic lines, not a live counter.
   EXPECT_NE(r.err.find("library: fitting 2/2"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\r'), std::string::npos);
@@ -240,7 +263,8 @@ TEST(MaterialsCli, LibraryListsEveryPageInOrSkippedWithItsReasonAndFlagsExtrapol
   EXPECT_EQ(lines(strict.err), 1) << strict.err;
   EXPECT_NE(strict.err.find("Bad.yml:4: n = -1 is not physical"), std::string::npos) << strict.err;
   EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/strict"));
-  // By default the library keeps pages covering the visible range: Red is skipped, with its coverage.
+  // By default the library keeps pages covering the visible range: Red is skipped, with its
+  // coverage.
   const auto def = run_command(base + " -q library --out '" + tmp.path() + "/def'");
   ASSERT_EQ(def.status, 0) << def.err;
   EXPECT_EQ(records(test::run_command("cat '" + tmp.path() + "/def/library.csv'").out).size(), 1u);
@@ -272,7 +296,8 @@ TEST(MaterialsCli, NoFitPublishesWorseThanItsDerivedStart) {
   int checked = 0;
   for (const auto& row : records(r.out)) {
     const std::string key = row.at("material") + "|" + row.at("model");
-    if (row.at("parameters") == "derived") derived[key] = std::stod(row.at("rms_de00"));
+    if (row.at("parameters") == "derived")
+      derived[key] = std::stod(row.at("rms_de00"));
     else {
       EXPECT_LE(std::stod(row.at("rms_de00")), derived.at(key) + 5e-4) << key;
       ++checked;

@@ -21,7 +21,8 @@ namespace fl {
 namespace {
 
 // Three published decimals (±0.0005), to 0.001; measured max |ours − published|: acescg f0 5.03e-4
-// (Stainless Steel), f82tint 4.92e-4 (Brass); lin_rec709 f0 5.49e-4 (Lithium), f82tint 5.15e-4 (Zinc).
+// (Stainless Steel), f82tint 4.92e-4 (Brass); lin_rec709 f0 5.49e-4 (Lithium), f82tint 5.15e-4
+// (Zinc).
 constexpr double kPublishedTolerance = 1e-3;
 // The README's measured bias of the script behind Cesium's lin_rec709 f0 (sRGB output normalized
 // with the ACEScg white): published / true ≈ (1.023, 0.997, 0.927), three digits.
@@ -38,9 +39,12 @@ std::vector<std::vector<std::string>> read_csv_text(const std::string& text) {
     std::string cell;
     bool quoted = false;
     for (const char ch : line) {
-      if (ch == '"') quoted = !quoted;
-      else if (ch == ',' && !quoted) cells.push_back(cell), cell.clear();
-      else cell += ch;
+      if (ch == '"')
+        quoted = !quoted;
+      else if (ch == ',' && !quoted)
+        cells.push_back(cell), cell.clear();
+      else
+        cell += ch;
     }
     cells.push_back(cell);
     rows.push_back(cells);
@@ -84,23 +88,29 @@ std::map<std::string, Preset> run_presets(const std::string& options) {
   test::TempDir dir;
   const auto pages = read_csv(kPresets + "/physicallybased_pages.csv");
   for (size_t i = 1; i < pages.size(); ++i)
-    dir.file("catalog/" + std::to_string(i) + ".yml", "name: " + pages[i][0] + "\nclass: metal\norder: " +
-                                                           std::to_string(i) + "\nsource: \"" + pages[i][1] + "\"\n");
-  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB + "' --materials '" +
-                                   dir.path() + "/catalog' " + options + " presets --openpbr --format csv");
+    dir.file("catalog/" + std::to_string(i) + ".yml",
+             "name: " + pages[i][0] + "\nclass: metal\norder: " + std::to_string(i) +
+                 "\nsource: \"" + pages[i][1] + "\"\n");
+  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB +
+                                   "' --materials '" + dir.path() + "/catalog' " + options +
+                                   " presets --openpbr --format csv");
   EXPECT_EQ(r.status, 0) << r.err;
   std::map<std::string, Preset> out;
   std::stringstream ss(r.out);
   std::string line;
   std::getline(ss, line);
-  EXPECT_EQ(line.rfind("material,base_color_r,base_color_g,base_color_b,specular_color_r,specular_color_g,specular_color_b", 0), 0u)
+  EXPECT_EQ(line.rfind("material,base_color_r,base_color_g,base_color_b,specular_color_r,specular_"
+                       "color_g,specular_color_b",
+                       0),
+            0u)
       << line;
   while (std::getline(ss, line)) {
     std::vector<std::string> c;
     std::stringstream ls(line);
     for (std::string x; std::getline(ls, x, ',');) c.push_back(x);
     if (c.size() < 7) continue;
-    out[c[0]] = {{std::stod(c[1]), std::stod(c[2]), std::stod(c[3])}, {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}};
+    out[c[0]] = {{std::stod(c[1]), std::stod(c[2]), std::stod(c[3])},
+                 {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}};
   }
   EXPECT_EQ(out.size(), pages.size() - 1);
   return out;
@@ -113,7 +123,8 @@ const std::map<std::string, Preset>& our_presets(const std::string& options) {
 }
 
 void expect_near_rgb(const Rgb& ours, const Rgb& theirs, const std::string& what) {
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(ours[c], theirs[c], kPublishedTolerance) << what << " channel " << c;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(ours[c], theirs[c], kPublishedTolerance) << what << " channel " << c;
 }
 
 TEST(PublishedPresets, AcescgF0AndF82TintMatchPhysicallyBased) {
@@ -141,8 +152,10 @@ TEST(PublishedPresets, AcescgMatchesTheOpenPbrExamples) {
     for (auto& ch : metal)
       if (ch == '_') ch = ' ';
     ASSERT_TRUE(ours.count(metal)) << metal;
-    expect_near_rgb(ours.at(metal).f0, {std::stod(r[3]), std::stod(r[4]), std::stod(r[5])}, metal + " base_color");
-    expect_near_rgb(ours.at(metal).f82tint, {std::stod(r[6]), std::stod(r[7]), std::stod(r[8])}, metal + " specular_color");
+    expect_near_rgb(ours.at(metal).f0, {std::stod(r[3]), std::stod(r[4]), std::stod(r[5])},
+                    metal + " base_color");
+    expect_near_rgb(ours.at(metal).f82tint, {std::stod(r[6]), std::stod(r[7]), std::stod(r[8])},
+                    metal + " specular_color");
     ++checked;
   }
   EXPECT_EQ(checked, 30);
@@ -162,7 +175,8 @@ TEST(PublishedPresets, Rec709F0AndF82TintMatchPhysicallyBasedUnderD65) {
     } else {
       expect_near_rgb(p.f0, pub.at(metal + "|lin_rec709|f0"), metal + " lin_rec709 f0");
     }
-    expect_near_rgb(p.f82tint, pub.at(metal + "|lin_rec709|f82tint"), metal + " lin_rec709 f82tint");
+    expect_near_rgb(p.f82tint, pub.at(metal + "|lin_rec709|f82tint"),
+                    metal + " lin_rec709 f82tint");
     ++checked;
   }
   EXPECT_EQ(checked, 30);

@@ -8,7 +8,8 @@ namespace fl::test {
 
 // Linear Rec.709 → XYZ (IEC 61966-2-1) and the D65 white.
 inline const color::LabConverter kRec709ToLab{
-    {{0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522, 0.0721750, 0.0193339, 0.1191920, 0.9503041}},
+    {{0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522, 0.0721750, 0.0193339, 0.1191920,
+      0.9503041}},
     {0.95047, 1.0, 1.08883}};
 
 // ciede2000_residuals between the truth and kRec709ToLab(rgb), differentiated over R, G and B.

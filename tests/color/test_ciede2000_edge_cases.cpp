@@ -21,8 +21,8 @@ constexpr double kFloatDe2000 = 2e-4;  // float vs double: ΔE2000 (units of ΔE
 // CIEDE2000's T(h̄') weighting (Sharma et al. 2005, eq. 15), degrees.
 double t_weight(double h) {
   const double r = kPi / 180.0;
-  return 1 - 0.17 * std::cos((h - 30) * r) + 0.24 * std::cos(2 * h * r) + 0.32 * std::cos((3 * h + 6) * r) -
-         0.20 * std::cos((4 * h - 63) * r);
+  return 1 - 0.17 * std::cos((h - 30) * r) + 0.24 * std::cos(2 * h * r) +
+         0.32 * std::cos((3 * h + 6) * r) - 0.20 * std::cos((4 * h - 63) * r);
 }
 // G for two colours of the same chroma C (eq. 4), and the a' scale 1 + G.
 double a_scale(double chroma) {
@@ -49,7 +49,7 @@ TEST(HardCasesDe2000, OneAchromaticSideUsesTheOtherHue) {
   // C1' = 0: the hue difference is 0 and h̄' = h1' + h2' (Sharma eq. 10, 14). Pure chroma change.
   const double c = 20.0, s = a_scale(c / 2.0);
   const Lab grey{50.0, 0.0, 0.0}, red{50.0, c, 0.0};  // h' = 0
-  const double cp = s * c;  // C2' (b = 0)
+  const double cp = s * c;                            // C2' (b = 0)
   const double want = cp / (1.0 + 0.045 * cp / 2.0);  // ΔC'/S_C with C̄' = cp/2; ΔH' = 0
   EXPECT_NEAR(fl::color::ciede2000(grey, red), want, 1e-9);
   EXPECT_NEAR(fl::color::ciede2000(red, grey), want, 1e-9);
@@ -83,7 +83,8 @@ TEST(HardCasesDe2000, HuesCrossingZero) {
     EXPECT_NEAR(fl::color::ciede2000(p, q), want, 1e-9) << h_deg;
     EXPECT_NEAR(fl::color::ciede2000(q, p), want, 1e-9) << h_deg;
     // Float follows double.
-    EXPECT_NEAR(fl::color::ciede2000(LabT<float>{60.0f, float(a), float(-b)}, LabT<float>{60.0f, float(a), float(b)}),
+    EXPECT_NEAR(fl::color::ciede2000(LabT<float>{60.0f, float(a), float(-b)},
+                                     LabT<float>{60.0f, float(a), float(b)}),
                 want, kFloatDe2000)
         << h_deg;
   }
@@ -99,7 +100,8 @@ TEST(HardCasesDe2000, FloatAgreesWithDoubleOverAGridOfColourPairs) {
           // 2005 §3): float and double may land on either side there, so those pairs are skipped.
           const double h1 = 30.0 * i, h2 = 30.0 * j + (j % 2 ? 0.5 : 0.0);
           if (std::abs(std::abs(h1 - h2) - 180.0) < 1.0) continue;
-          const LabT<float> pf{50.0f, float(c1 * std::cos(h1 * kPi / 180)), float(c1 * std::sin(h1 * kPi / 180))};
+          const LabT<float> pf{50.0f, float(c1 * std::cos(h1 * kPi / 180)),
+                               float(c1 * std::sin(h1 * kPi / 180))};
           const LabT<float> qf{float(50.0 + dl), float(25.0 * std::cos(h2 * kPi / 180)),
                                float(25.0 * std::sin(h2 * kPi / 180))};
           const double d = fl::color::ciede2000(Lab{pf.L, pf.a, pf.b}, Lab{qf.L, qf.a, qf.b});

@@ -17,9 +17,10 @@ namespace fl::color {
 namespace {
 
 // Published RGB → XYZ matrices (row-major), each to the digits given:
-//   acescg, aces2065-1: ACES S-2014-004 and SMPTE ST 2065-1 (AP1, AP0 with the ACES white), 10 decimals;
-//   lin_rec709, lin_rec2020, lin_p3d65: ITU-R BT.709, BT.2020 and SMPTE EG 432-1 primaries with
-//   D65 at (0.3127, 0.3290), as OpenColorIO's built-in config and colour-science print them, 10 decimals.
+//   acescg, aces2065-1: ACES S-2014-004 and SMPTE ST 2065-1 (AP1, AP0 with the ACES white), 10
+//   decimals; lin_rec709, lin_rec2020, lin_p3d65: ITU-R BT.709, BT.2020 and SMPTE EG 432-1
+//   primaries with D65 at (0.3127, 0.3290), as OpenColorIO's built-in config and colour-science
+//   print them, 10 decimals.
 constexpr double kPublishedMatrixTolerance = 1e-9;
 
 struct PublishedMatrix {
@@ -28,30 +29,35 @@ struct PublishedMatrix {
 };
 const std::vector<PublishedMatrix> kPublishedMatrices = {
     {"acescg",
-     {0.6624541811, 0.1340042065, 0.1561876870, 0.2722287168, 0.6740817658, 0.0536895174, -0.0055746495, 0.0040607335,
-      1.0103391003}},
-    {"aces2065-1", {0.9525523959, 0.0, 0.0000936786, 0.3439664498, 0.7281660966, -0.0721325464, 0.0, 0.0, 1.0088251844}},
+     {0.6624541811, 0.1340042065, 0.1561876870, 0.2722287168, 0.6740817658, 0.0536895174,
+      -0.0055746495, 0.0040607335, 1.0103391003}},
+    {"aces2065-1",
+     {0.9525523959, 0.0, 0.0000936786, 0.3439664498, 0.7281660966, -0.0721325464, 0.0, 0.0,
+      1.0088251844}},
     {"lin_rec709",
-     {0.4123907993, 0.3575843394, 0.1804807884, 0.2126390059, 0.7151686788, 0.0721923154, 0.0193308187, 0.1191947798,
-      0.9505321522}},
+     {0.4123907993, 0.3575843394, 0.1804807884, 0.2126390059, 0.7151686788, 0.0721923154,
+      0.0193308187, 0.1191947798, 0.9505321522}},
     {"lin_rec2020",
-     {0.6369580483, 0.1446169036, 0.1688809752, 0.2627002120, 0.6779980715, 0.0593017165, 0.0, 0.0280726930,
-      1.0609850577}},
+     {0.6369580483, 0.1446169036, 0.1688809752, 0.2627002120, 0.6779980715, 0.0593017165, 0.0,
+      0.0280726930, 1.0609850577}},
     {"lin_p3d65",
-     {0.4865709486, 0.2656676932, 0.1982172852, 0.2289745641, 0.6917385218, 0.0792869141, 0.0, 0.0451133819,
-      1.0439443689}},
+     {0.4865709486, 0.2656676932, 0.1982172852, 0.2289745641, 0.6917385218, 0.0792869141, 0.0,
+      0.0451133819, 1.0439443689}},
 };
 
 TEST(RgbSpace, BuiltinMatricesMatchPublishedValues) {
   ASSERT_EQ(builtin_space_names().size(), kPublishedMatrices.size());
   for (const auto& p : kPublishedMatrices) {
     const RgbSpace s = builtin_space(p.space);
-    for (int i = 0; i < 9; ++i) EXPECT_NEAR(s.rgb_to_xyz.m[i], p.rgb_to_xyz[i], kPublishedMatrixTolerance) << p.space << " " << i;
+    for (int i = 0; i < 9; ++i)
+      EXPECT_NEAR(s.rgb_to_xyz.m[i], p.rgb_to_xyz[i], kPublishedMatrixTolerance)
+          << p.space << " " << i;
     const Mat3 id = s.rgb_to_xyz * s.xyz_to_rgb;
     for (int i = 0; i < 9; ++i) EXPECT_NEAR(id.m[i], i % 4 == 0 ? 1.0 : 0.0, 1e-12) << p.space;
   }
   // The ACES white (ACES TB-2014-004) and D65 (ITU-R BT.709), as chromaticities.
-  const Chromaticity aces = xy_from_xyz(builtin_space("acescg").white), d65 = xy_from_xyz(builtin_space("lin_rec709").white);
+  const Chromaticity aces = xy_from_xyz(builtin_space("acescg").white),
+                     d65 = xy_from_xyz(builtin_space("lin_rec709").white);
   EXPECT_NEAR(aces.x, 0.32168, 1e-12);
   EXPECT_NEAR(aces.y, 0.33767, 1e-12);
   EXPECT_NEAR(d65.x, 0.3127, 1e-12);
@@ -65,16 +71,18 @@ constexpr double kLindbloomTolerance = 6e-8;
 
 TEST(RgbSpace, PrimariesToMatrixMatchesLindbloomsSrgbMatrix) {
   const Xyz d65{0.95047, 1.0, 1.08883};
-  const Mat3 m = rgb_to_xyz_from_primaries({0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}, xy_from_xyz(d65));
+  const Mat3 m =
+      rgb_to_xyz_from_primaries({0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}, xy_from_xyz(d65));
   const std::array<double, 9> lindbloom{0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522,
                                         0.0721750, 0.0193339, 0.1191920, 0.9503041};
   for (int i = 0; i < 9; ++i) EXPECT_NEAR(m.m[i], lindbloom[i], kLindbloomTolerance) << i;
 }
 
 TEST(Adaptation, BradfordMatchesLindbloomsD65ToD50Matrix) {
-  const Mat3 m = adaptation_matrix(Adaptation::Bradford, {0.95047, 1.0, 1.08883}, {0.96422, 1.0, 0.82521});
-  const std::array<double, 9> lindbloom{1.0478112, 0.0228866, -0.0501270, 0.0295424, 0.9904844,
-                                        -0.0170491, -0.0092345, 0.0150436, 0.7521316};
+  const Mat3 m =
+      adaptation_matrix(Adaptation::Bradford, {0.95047, 1.0, 1.08883}, {0.96422, 1.0, 0.82521});
+  const std::array<double, 9> lindbloom{1.0478112,  0.0228866,  -0.0501270, 0.0295424, 0.9904844,
+                                        -0.0170491, -0.0092345, 0.0150436,  0.7521316};
   for (int i = 0; i < 9; ++i) EXPECT_NEAR(m.m[i], lindbloom[i], kLindbloomTolerance) << i;
 }
 
@@ -83,7 +91,8 @@ TEST(Adaptation, BradfordMatchesLindbloomsD65ToD50Matrix) {
 TEST(Adaptation, Cat02IsVonKriesInThePublishedConeSpace) {
   const Mat3 cat02{{0.7328, 0.4296, -0.1624, -0.7036, 1.6975, 0.0061, 0.0030, 0.0136, 0.9834}};
   const Xyz src = xyz_from_xy({0.3127, 0.3290}), dst = xyz_from_xy({0.32168, 0.33767});
-  const Xyz cs = cat02 * RgbT<double>{src.X, src.Y, src.Z}, cd = cat02 * RgbT<double>{dst.X, dst.Y, dst.Z};
+  const Xyz cs = cat02 * RgbT<double>{src.X, src.Y, src.Z},
+            cd = cat02 * RgbT<double>{dst.X, dst.Y, dst.Z};
   const Mat3 want = cat02.inverse() * Mat3::diagonal(cd.X / cs.X, cd.Y / cs.Y, cd.Z / cs.Z) * cat02;
   const Mat3 got = adaptation_matrix(Adaptation::Cat02, src, dst);
   for (int i = 0; i < 9; ++i) EXPECT_NEAR(got.m[i], want.m[i], 1e-12) << i;
@@ -106,7 +115,9 @@ constexpr double kOcioMatrixTolerance = 1e-6;
 TEST(Ocio, BuiltinConversionsMatchPrimaries) {
   const auto lib = SpaceLibrary::builtin();
   const auto ap1 = builtin_space("acescg"), rec709 = builtin_space("lin_rec709");
-  const Mat3 ours = rec709.xyz_to_rgb * adaptation_matrix(Adaptation::Bradford, ap1.white, rec709.white) * ap1.rgb_to_xyz;
+  const Mat3 ours = rec709.xyz_to_rgb *
+                    adaptation_matrix(Adaptation::Bradford, ap1.white, rec709.white) *
+                    ap1.rgb_to_xyz;
   const Mat3 ocio = lib.conversion("acescg", "lin_rec709");
   for (int i = 0; i < 9; ++i) EXPECT_NEAR(ocio.m[i], ours.m[i], kOcioMatrixTolerance) << i;
   // ACEScg → ACES2065-1 involves no adaptation (same white).

@@ -20,8 +20,9 @@ using D3 = Dual<3>;
 const LabConverter& kToLab = fl::test::kRec709ToLab;
 
 // Five-point central differences, (8(f(x+h) − f(x−h)) − (f(x+2h) − f(x−2h))) / 12h, err by about
-// h⁴·f⁽⁵⁾/30 plus rounding of about 1e-16/h times the residuals' scale (up to 1e3 near grey, where the hue
-// turns fast). At h = 1e-5 both stay under 1e-7 here (measured 1.4e-8; with h = 1e-4 the h⁴ term is 1.5e-4).
+// h⁴·f⁽⁵⁾/30 plus rounding of about 1e-16/h times the residuals' scale (up to 1e3 near grey, where
+// the hue turns fast). At h = 1e-5 both stay under 1e-7 here (measured 1.4e-8; with h = 1e-4 the h⁴
+// term is 1.5e-4).
 constexpr double kStep = 1e-5;
 constexpr double kFiniteDifference = 1e-7;  // relative to max(1, |derivative|)
 
@@ -29,7 +30,9 @@ void residuals_double(const Lab& truth, const Rgb& rgb, double* r) {
   fl::color::ciede2000_residuals(truth, kToLab(rgb), r);
 }
 
-void residuals_dual(const Lab& truth, const Rgb& rgb, D3* r) { fl::test::residuals_dual(truth, rgb, r); }
+void residuals_dual(const Lab& truth, const Rgb& rgb, D3* r) {
+  fl::test::residuals_dual(truth, rgb, r);
+}
 
 // Reflectance-like RGB and a truth colour near the model's (the fits' situation), plus far pairs.
 struct Case {
@@ -42,11 +45,14 @@ std::vector<Case> cases() {
   std::vector<Case> out;
   for (int i = 0; i < 2000; ++i) {
     const Rgb rgb{u(rng), u(rng), u(rng)};
-    const Rgb other = i % 2 ? Rgb{rgb.r + near(rng), rgb.g + near(rng), rgb.b + near(rng)} : Rgb{u(rng), u(rng), u(rng)};
+    const Rgb other = i % 2 ? Rgb{rgb.r + near(rng), rgb.g + near(rng), rgb.b + near(rng)}
+                            : Rgb{u(rng), u(rng), u(rng)};
     out.push_back({kToLab(other), rgb});
   }
-  out.push_back({Lab{50.0, 0.0, 0.0}, Rgb{0.2, 0.2, 0.2}});  // both achromatic: derivatives are not checked there
-  out.push_back({Lab{1.0, 0.5, -0.3}, Rgb{0.001, 0.0015, 0.0008}});  // the model in the cube root's linear toe
+  out.push_back({Lab{50.0, 0.0, 0.0},
+                 Rgb{0.2, 0.2, 0.2}});  // both achromatic: derivatives are not checked there
+  out.push_back({Lab{1.0, 0.5, -0.3},
+                 Rgb{0.001, 0.0015, 0.0008}});  // the model in the cube root's linear toe
   return out;
 }
 
@@ -103,8 +109,8 @@ TEST(Dual, ElementaryRules) {
   EXPECT_DOUBLE_EQ(cos(x).d[0], -std::sin(0.7));
   const D3 p = pow(x, D3::variable(2.5, 1));
   EXPECT_EQ(p.v, std::pow(0.7, 2.5));
-  EXPECT_DOUBLE_EQ(p.d[0], 2.5 * std::pow(0.7, 1.5));                // ∂/∂x xʸ = y·xʸ⁻¹
-  EXPECT_DOUBLE_EQ(p.d[1], std::log(0.7) * std::pow(0.7, 2.5));      // ∂/∂y xʸ = ln x·xʸ
+  EXPECT_DOUBLE_EQ(p.d[0], 2.5 * std::pow(0.7, 1.5));            // ∂/∂x xʸ = y·xʸ⁻¹
+  EXPECT_DOUBLE_EQ(p.d[1], std::log(0.7) * std::pow(0.7, 2.5));  // ∂/∂y xʸ = ln x·xʸ
   EXPECT_TRUE(D3(1.5) == D3(1.5));
   EXPECT_EQ((2.0 - x).d[0], -1.0);
   EXPECT_EQ((x * y).d[2], 0.0);

@@ -1,7 +1,7 @@
 // Our CIEDE2000 (the differentiable template, the double fast path and the batched SIMD kernel)
 // against Little CMS's cmsCIE2000DeltaE on the 34 pairs of Sharma, Wu & Dalal 2005, and the fast
-// path and the batched kernel against the template (and Little CMS) on many pairs. Correctness only;
-// speed is measured in bench/bench_speed.cpp.
+// path and the batched kernel against the template (and Little CMS) on many pairs. Correctness
+// only; speed is measured in bench/bench_speed.cpp.
 #include <gtest/gtest.h>
 #include <lcms2.h>
 
@@ -9,9 +9,9 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <stdexcept>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -77,7 +77,8 @@ TEST(LcmsAgreement, ThirtyFourSharmaPairsWithin1em9) {
     EXPECT_NEAR(ours_f, lcms, kLcmsAgreement) << "pair " << p.id;
     EXPECT_NEAR(ours_f, ours_t, kFastPathAgreement) << "pair " << p.id;
     // The formula is symmetric.
-    EXPECT_NEAR(fl::color::ciede2000_fast(p.b, p.a), lcms, kLcmsAgreement) << "pair " << p.id << " swapped";
+    EXPECT_NEAR(fl::color::ciede2000_fast(p.b, p.a), lcms, kLcmsAgreement)
+        << "pair " << p.id << " swapped";
     worst_template = std::max(worst_template, std::abs(ours_t - lcms));
     worst_fast = std::max(worst_fast, std::abs(ours_f - lcms));
   }
@@ -87,28 +88,38 @@ TEST(LcmsAgreement, ThirtyFourSharmaPairsWithin1em9) {
 
 TEST(LcmsAgreement, FastPathMatchesTemplateOnRandomPairs) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> L(0.0, 100.0), ab(-120.0, 120.0), d(-2.0, 2.0), tiny(-1e-6, 1e-6);
+  std::uniform_real_distribution<double> L(0.0, 100.0), ab(-120.0, 120.0), d(-2.0, 2.0),
+      tiny(-1e-6, 1e-6);
   constexpr int kPairs = 200000;
   for (int i = 0; i < kPairs; ++i) {
     const Lab x{L(rng), ab(rng), ab(rng)};
     Lab y;
     switch (i % 4) {
-      case 0: y = {L(rng), ab(rng), ab(rng)}; break;               // anywhere
-      case 1: y = {x.L + d(rng), x.a + d(rng), x.b + d(rng)}; break;  // near
-      case 2: y = {x.L + tiny(rng), x.a + tiny(rng), x.b + tiny(rng)}; break;  // almost equal
-      default: y = {L(rng), -x.a + d(rng), -x.b + d(rng)}; break;  // near-opposite hues
+      case 0:
+        y = {L(rng), ab(rng), ab(rng)};
+        break;  // anywhere
+      case 1:
+        y = {x.L + d(rng), x.a + d(rng), x.b + d(rng)};
+        break;  // near
+      case 2:
+        y = {x.L + tiny(rng), x.a + tiny(rng), x.b + tiny(rng)};
+        break;  // almost equal
+      default:
+        y = {L(rng), -x.a + d(rng), -x.b + d(rng)};
+        break;  // near-opposite hues
     }
     const double t = fl::color::ciede2000<double>(x, y);
     const double f = fl::color::ciede2000_fast(x, y);
-    ASSERT_NEAR(f, t, kFastPathAgreement) << "L,a,b " << x.L << "," << x.a << "," << x.b << " / " << y.L << ","
-                                          << y.a << "," << y.b;
+    ASSERT_NEAR(f, t, kFastPathAgreement)
+        << "L,a,b " << x.L << "," << x.a << "," << x.b << " / " << y.L << "," << y.a << "," << y.b;
   }
 }
 
 TEST(LcmsAgreement, FastPathNeutralAndIdenticalColours) {
   const Lab grey{50, 0, 0}, grey2{60, 0, 0}, red{50, 60, 10};
   EXPECT_EQ(fl::color::ciede2000_fast(red, red), 0.0);
-  EXPECT_NEAR(fl::color::ciede2000_fast(grey, grey2), fl::color::ciede2000<double>(grey, grey2), kFastPathAgreement);
+  EXPECT_NEAR(fl::color::ciede2000_fast(grey, grey2), fl::color::ciede2000<double>(grey, grey2),
+              kFastPathAgreement);
   EXPECT_NEAR(fl::color::ciede2000_fast(grey, red), lcms_de2000(grey, red), kLcmsAgreement);
 }
 
@@ -120,25 +131,37 @@ namespace {
 // identical colours (the lanes the batched kernel hands to the reference).
 void random_pairs(size_t n, uint64_t seed, std::vector<Lab>& a, std::vector<Lab>& b) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> L(0.0, 100.0), ab(-120.0, 120.0), d(-2.0, 2.0), tiny(-1e-6, 1e-6);
+  std::uniform_real_distribution<double> L(0.0, 100.0), ab(-120.0, 120.0), d(-2.0, 2.0),
+      tiny(-1e-6, 1e-6);
   a.clear();
   b.clear();
   for (size_t i = 0; i < n; ++i) {
     const Lab x{L(rng), ab(rng), ab(rng)};
     Lab y;
     switch (i % 5) {
-      case 0: y = {L(rng), ab(rng), ab(rng)}; break;
-      case 1: y = {x.L + d(rng), x.a + d(rng), x.b + d(rng)}; break;
-      case 2: y = {x.L + tiny(rng), x.a + tiny(rng), x.b + tiny(rng)}; break;
-      case 3: y = {L(rng), -x.a + d(rng), -x.b + d(rng)}; break;
-      default: y = i % 3 ? Lab{L(rng), 0.0, 0.0} : x; break;
+      case 0:
+        y = {L(rng), ab(rng), ab(rng)};
+        break;
+      case 1:
+        y = {x.L + d(rng), x.a + d(rng), x.b + d(rng)};
+        break;
+      case 2:
+        y = {x.L + tiny(rng), x.a + tiny(rng), x.b + tiny(rng)};
+        break;
+      case 3:
+        y = {L(rng), -x.a + d(rng), -x.b + d(rng)};
+        break;
+      default:
+        y = i % 3 ? Lab{L(rng), 0.0, 0.0} : x;
+        break;
     }
     a.push_back(x);
     b.push_back(y);
   }
 }
 
-std::vector<double> batch_on(const std::string& target, const std::vector<Lab>& a, const std::vector<Lab>& b) {
+std::vector<double> batch_on(const std::string& target, const std::vector<Lab>& a,
+                             const std::vector<Lab>& b) {
   std::vector<double> out(a.size());
   fl::color::ciede2000_batch_on(target, a, b, out);
   return out;
@@ -160,8 +183,10 @@ TEST(LcmsAgreement, BatchOnSharmaPairsWithin1em9OfLcmsOnEveryInstructionSet) {
     for (size_t i = 0; i < pairs.size(); ++i) {
       const double lcms = lcms_de2000(a[i], b[i]);
       EXPECT_NEAR(de[i], lcms, kLcmsAgreement) << target << " pair " << pairs[i].id;
-      EXPECT_NEAR(swapped[i], lcms, kLcmsAgreement) << target << " pair " << pairs[i].id << " swapped";
-      EXPECT_NEAR(de[i], fl::color::ciede2000<double>(a[i], b[i]), kBatchAgreement) << target << " pair " << pairs[i].id;
+      EXPECT_NEAR(swapped[i], lcms, kLcmsAgreement)
+          << target << " pair " << pairs[i].id << " swapped";
+      EXPECT_NEAR(de[i], fl::color::ciede2000<double>(a[i], b[i]), kBatchAgreement)
+          << target << " pair " << pairs[i].id;
       worst = std::max(worst, std::abs(de[i] - lcms));
     }
     RecordProperty("worst_batch_vs_lcms_" + target, sci(worst));
@@ -178,8 +203,9 @@ TEST(LcmsAgreement, BatchMatchesTemplateAndLcmsOnRandomPairsOnEveryInstructionSe
     double worst_template = 0, worst_lcms = 0;
     for (size_t i = 0; i < kPairs; ++i) {
       const double t = fl::color::ciede2000<double>(a[i], b[i]), l = lcms_de2000(a[i], b[i]);
-      ASSERT_NEAR(de[i], t, kBatchAgreement) << target << " L,a,b " << a[i].L << "," << a[i].a << "," << a[i].b
-                                             << " / " << b[i].L << "," << b[i].a << "," << b[i].b;
+      ASSERT_NEAR(de[i], t, kBatchAgreement)
+          << target << " L,a,b " << a[i].L << "," << a[i].a << "," << a[i].b << " / " << b[i].L
+          << "," << b[i].a << "," << b[i].b;
       ASSERT_NEAR(de[i], l, kLcmsAgreement) << target << " pair " << i;
       worst_template = std::max(worst_template, std::abs(de[i] - t));
       worst_lcms = std::max(worst_lcms, std::abs(de[i] - l));
@@ -193,15 +219,18 @@ TEST(LcmsAgreement, BatchShortSpansNeutralAndIdenticalColours) {
   const Lab grey{50, 0, 0}, grey2{60, 0, 0}, red{50, 60, 10}, blue{30, 10, -60};
   // Chromas whose product underflows.
   const Lab faint{50, 1e-160, 2e-160}, faint2{60, -1e-160, 1e-160};
-  const std::vector<Lab> a{red, grey, grey, blue, red, faint}, b{red, grey2, red, red, blue, faint2};
+  const std::vector<Lab> a{red, grey, grey, blue, red, faint},
+      b{red, grey2, red, red, blue, faint2};
   for (size_t n = 0; n <= a.size(); ++n) {
     std::vector<double> out(n, -1.0);
     fl::color::ciede2000_batch(std::span(a).first(n), std::span(b).first(n), out);
-    for (size_t i = 0; i < n; ++i) EXPECT_NEAR(out[i], lcms_de2000(a[i], b[i]), kLcmsAgreement) << n << " " << i;
+    for (size_t i = 0; i < n; ++i)
+      EXPECT_NEAR(out[i], lcms_de2000(a[i], b[i]), kLcmsAgreement) << n << " " << i;
   }
   std::vector<double> wrong(2);
   EXPECT_THROW(fl::color::ciede2000_batch(a, b, wrong), std::invalid_argument);
-  EXPECT_THROW(fl::color::ciede2000_batch_on("no such instruction set", a, b, wrong), std::invalid_argument);
+  EXPECT_THROW(fl::color::ciede2000_batch_on("no such instruction set", a, b, wrong),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
-// color::ciede2000_residuals_batch, the model fits' residuals and their derivatives over RGB in SIMD
-// lanes, against the templated ciede2000_residuals (values in double, derivatives by color::Dual),
-// against five-point central differences, and on every instruction set this CPU runs.
+// color::ciede2000_residuals_batch, the model fits' residuals and their derivatives over RGB in
+// SIMD lanes, against the templated ciede2000_residuals (values in double, derivatives by
+// color::Dual), against five-point central differences, and on every instruction set this CPU runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,9 +24,9 @@ const auto& kToLab = fl::test::kRec709ToLab;
 
 // The vector formula differs from the template in its hue terms (hue vectors instead of atan2 and
 // four cosines) and in its cube root, exp, sin and cos (Highway's polynomials, within a few ulps of
-// libm's): residuals of up to about 100 agree within 1e-12, relative to max(1, |residual|) (measured
-// 2.9e-13), and the derivatives, up to about 1e3 near grey, within 1e-9 relative to max(1, |derivative|)
-// (measured 1.4e-11).
+// libm's): residuals of up to about 100 agree within 1e-12, relative to max(1, |residual|)
+// (measured 2.9e-13), and the derivatives, up to about 1e3 near grey, within 1e-9 relative to
+// max(1, |derivative|) (measured 1.4e-11).
 constexpr double kValue = 1e-12;
 constexpr double kDerivative = 1e-9;
 // Five-point differences at h = 1e-5 err by under 1e-7 here (see test_dual.cpp; measured 8.7e-9).
@@ -51,10 +51,13 @@ Reference reference(const Lab& truth, const Rgb& rgb) {
 struct Batch {
   std::vector<double> r, d;  // d[(3q + c)·n + i]
 };
-Batch batch(const std::vector<Lab>& truth, const std::vector<Rgb>& rgb, const std::string& target = "") {
+Batch batch(const std::vector<Lab>& truth, const std::vector<Rgb>& rgb,
+            const std::string& target = "") {
   Batch out{std::vector<double>(3 * rgb.size()), std::vector<double>(9 * rgb.size())};
-  if (target.empty()) fl::color::ciede2000_residuals_batch(kToLab, truth, rgb, out.r, out.d);
-  else fl::color::ciede2000_residuals_batch_on(target, kToLab, truth, rgb, out.r, out.d);
+  if (target.empty())
+    fl::color::ciede2000_residuals_batch(kToLab, truth, rgb, out.r, out.d);
+  else
+    fl::color::ciede2000_residuals_batch_on(target, kToLab, truth, rgb, out.r, out.d);
   return out;
 }
 
@@ -70,7 +73,8 @@ Cases cases() {
   Cases out;
   for (int i = 0; i < 3001; ++i) {
     const Rgb x{u(rng), u(rng), u(rng)};
-    const Rgb other = i % 2 ? Rgb{x.r + near(rng), x.g + near(rng), x.b + near(rng)} : Rgb{u(rng), u(rng), u(rng)};
+    const Rgb other = i % 2 ? Rgb{x.r + near(rng), x.g + near(rng), x.b + near(rng)}
+                            : Rgb{u(rng), u(rng), u(rng)};
     out.truth.push_back(kToLab(other));
     out.rgb.push_back(x);
   }
@@ -83,7 +87,9 @@ Cases cases() {
   return out;
 }
 
-double relative(double a, double b) { return std::abs(a - b) / std::max(1.0, std::abs(b)); }
+double relative(double a, double b) {
+  return std::abs(a - b) / std::max(1.0, std::abs(b));
+}
 
 TEST(ResidualsBatch, ValuesAndDerivativesMatchTheTemplate) {
   const auto [truth, rgb] = cases();
@@ -94,7 +100,9 @@ TEST(ResidualsBatch, ValuesAndDerivativesMatchTheTemplate) {
     const auto ref = reference(truth[i], rgb[i]);
     for (int q = 0; q < 3; ++q) {
       worst_value = std::max(worst_value, relative(b.r[3 * i + q], ref.r[q]));
-      for (int c = 0; c < 3; ++c) worst_derivative = std::max(worst_derivative, relative(b.d[(3 * q + c) * n + i], ref.d[q][c]));
+      for (int c = 0; c < 3; ++c)
+        worst_derivative =
+            std::max(worst_derivative, relative(b.d[(3 * q + c) * n + i], ref.d[q][c]));
     }
   }
   EXPECT_LT(worst_value, kValue);
@@ -107,7 +115,8 @@ TEST(ResidualsBatch, SquaresSumToTheColourDifference) {
   const auto b = batch(truth, rgb);
   for (size_t i = 0; i < rgb.size(); ++i) {
     const double de = fl::color::ciede2000(truth[i], kToLab(rgb[i]));
-    const double sum = b.r[3 * i] * b.r[3 * i] + b.r[3 * i + 1] * b.r[3 * i + 1] + b.r[3 * i + 2] * b.r[3 * i + 2];
+    const double sum =
+        b.r[3 * i] * b.r[3 * i] + b.r[3 * i + 1] * b.r[3 * i + 1] + b.r[3 * i + 2] * b.r[3 * i + 2];
     EXPECT_NEAR(std::sqrt(sum), de, kValue * std::max(1.0, de)) << i;
   }
 }
@@ -147,9 +156,11 @@ TEST(ResidualsBatch, EveryInstructionSetAndLength) {
       for (size_t i = 0; i < n; ++i) {
         const auto ref = reference(truth[i], rgb[i]);
         for (int q = 0; q < 3; ++q) {
-          EXPECT_LT(relative(b.r[3 * i + q], ref.r[q]), kValue) << target << " n=" << n << " i=" << i;
+          EXPECT_LT(relative(b.r[3 * i + q], ref.r[q]), kValue)
+              << target << " n=" << n << " i=" << i;
           for (int c = 0; c < 3; ++c)
-            EXPECT_LT(relative(b.d[(3 * q + c) * n + i], ref.d[q][c]), kDerivative) << target << " n=" << n;
+            EXPECT_LT(relative(b.d[(3 * q + c) * n + i], ref.d[q][c]), kDerivative)
+                << target << " n=" << n;
         }
       }
     }
@@ -159,7 +170,8 @@ TEST(ResidualsBatch, EveryInstructionSetAndLength) {
 // An achromatic truth goes to the reference, which the lane then returns exactly.
 TEST(ResidualsBatch, AchromaticLanesAreTheReferences) {
   const std::vector<Lab> truth(5, Lab{50.0, 0.0, 0.0});
-  const std::vector<Rgb> rgb{{0.3, 0.2, 0.1}, {0.2, 0.2, 0.2}, {0.1, 0.5, 0.2}, {0.7, 0.1, 0.6}, {0.05, 0.05, 0.4}};
+  const std::vector<Rgb> rgb{
+      {0.3, 0.2, 0.1}, {0.2, 0.2, 0.2}, {0.1, 0.5, 0.2}, {0.7, 0.1, 0.6}, {0.05, 0.05, 0.4}};
   const auto b = batch(truth, rgb);
   for (size_t i = 0; i < rgb.size(); ++i) {
     const auto ref = reference(truth[i], rgb[i]);
@@ -176,8 +188,9 @@ TEST(ResidualsBatch, RefusesMismatchedLengths) {
   std::vector<double> r(6), d(18);
   EXPECT_THROW(fl::color::ciede2000_residuals_batch(kToLab, truth, rgb, r, std::span(d).first(17)),
                std::invalid_argument);
-  EXPECT_THROW(fl::color::ciede2000_residuals_batch_on("no such instruction set", kToLab, truth, rgb, r, d),
-               std::invalid_argument);
+  EXPECT_THROW(
+      fl::color::ciede2000_residuals_batch_on("no such instruction set", kToLab, truth, rgb, r, d),
+      std::invalid_argument);
 }
 
 }  // namespace

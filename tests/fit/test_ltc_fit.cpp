@@ -26,25 +26,29 @@ constexpr double kClosedFormTolerance = 1e-12;
 constexpr double kRecoveredParamTolerance = 1e-6;
 // Means of 4096 Hammersley samples of an LTC against quadrature.
 constexpr double kSampleMeanTolerance = 2e-3;
-// The analytic gradient 2 Jᵀr against Richardson-extrapolated central differences (measured ≤ 3e-10).
+// The analytic gradient 2 Jᵀr against Richardson-extrapolated central differences (measured ≤
+// 3e-10).
 constexpr double kJacobianTolerance = 1e-7;
-// The held-out relative L3 error (4096 + 4096 directions) against quadrature of E₃ and B₃, relative.
+// The held-out relative L3 error (4096 + 4096 directions) against quadrature of E₃ and B₃,
+// relative.
 constexpr double kHeldOutEstimateTolerance = 0.02;
 
 // Isotropic, sheared both ways (m13, m31), wide, and thin.
-const std::vector<LtcParams> kParams = {{1.0, 1.0, 0.0, 0.0},   {0.3, 0.3, 0.0, 0.0},     {0.5, 0.9, 0.4, 0.0},
-                                        {2.0, 1.3, -0.8, 0.0},  {0.4, 0.6, 1.2, 0.0},     {0.3, 0.5, 0.2, 0.1},
-                                        {1.2, 0.8, -0.3, -0.2}, {0.02, 0.03, 0.01, 0.0}};
+const std::vector<LtcParams> kParams = {
+    {1.0, 1.0, 0.0, 0.0}, {0.3, 0.3, 0.0, 0.0}, {0.5, 0.9, 0.4, 0.0},   {2.0, 1.3, -0.8, 0.0},
+    {0.4, 0.6, 1.2, 0.0}, {0.3, 0.5, 0.2, 0.1}, {1.2, 0.8, -0.3, -0.2}, {0.02, 0.03, 0.01, 0.0}};
 
 brdf::Vec3 direction(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 
 // ∫ f dω over the sphere, f given world directions, in polar coordinates about the frame's Z.
-double integrate_in_frame(const LtcFrame& frame, const std::function<double(const brdf::Vec3&)>& f, double width) {
+double integrate_in_frame(const LtcFrame& frame, const std::function<double(const brdf::Vec3&)>& f,
+                          double width) {
   return test::integrate_sphere(
       [&](double x, double y, double z) {
-        return f({x * frame.x.x + y * frame.y.x + z * frame.z.x, x * frame.x.y + y * frame.y.y + z * frame.z.y,
+        return f({x * frame.x.x + y * frame.y.x + z * frame.z.x,
+                  x * frame.x.y + y * frame.y.y + z * frame.z.y,
                   x * frame.x.z + y * frame.y.z + z * frame.z.z});
       },
       std::numbers::pi, width);
@@ -56,9 +60,11 @@ TEST(LtcDensity, IntegratesToOne) {
   for (const auto& p : kParams) {
     const double norm = std::hypot(p.m31, p.m11);
     const double s = test::integrate_hemisphere_about(
-        -p.m31 / norm, p.m11 / norm, [&](double x, double y, double z) { return ltc_density(p, x, y, z); },
+        -p.m31 / norm, p.m11 / norm,
+        [&](double x, double y, double z) { return ltc_density(p, x, y, z); },
         std::min(p.m11, p.m22));
-    EXPECT_NEAR(s, 1.0, kUnitIntegralTolerance) << p.m11 << " " << p.m22 << " " << p.m13 << " " << p.m31;
+    EXPECT_NEAR(s, 1.0, kUnitIntegralTolerance)
+        << p.m11 << " " << p.m22 << " " << p.m13 << " " << p.m31;
   }
 }
 
@@ -79,10 +85,13 @@ TEST(LtcDensity, MatchesTheTransformedCosineOfTheWorldMatrix) {
         }
       for (int a = 0; a < 12; ++a)
         for (int b = 0; b < 12; ++b) {
-          const brdf::Vec3 w = direction((b + 0.5) * std::numbers::pi / 12, (a + 0.5) * std::numbers::pi / 6);
-          const double closed = ltc_density(p, brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z));
+          const brdf::Vec3 w =
+              direction((b + 0.5) * std::numbers::pi / 12, (a + 0.5) * std::numbers::pi / 6);
+          const double closed =
+              ltc_density(p, brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z));
           const double tolerance = kClosedFormTolerance * std::max(1.0, closed);
-          EXPECT_NEAR(ref::ltc_from_inverse(m_inv.m, w), closed, tolerance) << tilt << " " << a << "," << b;
+          EXPECT_NEAR(ref::ltc_from_inverse(m_inv.m, w), closed, tolerance)
+              << tilt << " " << a << "," << b;
           EXPECT_NEAR(ltc_lobe_density(lobe, w), closed, tolerance) << tilt << " " << a << "," << b;
         }
     }
@@ -106,9 +115,12 @@ TEST(LtcSampling, FollowsTheDensity) {
     }
     for (int c = 0; c < 3; ++c) {
       const double mean = test::integrate_sphere(
-          [&](double x, double y, double z) { return (c == 0 ? x : c == 1 ? y : z) * ltc_density(p, x, y, z); },
+          [&](double x, double y, double z) {
+            return (c == 0 ? x : c == 1 ? y : z) * ltc_density(p, x, y, z);
+          },
           std::numbers::pi, std::min(p.m11, p.m22));
-      EXPECT_NEAR(sampled[c], mean, kSampleMeanTolerance) << p.m11 << " " << p.m31 << " coordinate " << c;
+      EXPECT_NEAR(sampled[c], mean, kSampleMeanTolerance)
+          << p.m11 << " " << p.m31 << " coordinate " << c;
     }
   }
 }
@@ -121,22 +133,25 @@ TEST(LtcHeldOutError, MatchesQuadrature) {
     brdf::Vec3 dir;
     LtcParams p;
   };
-  for (const Case& c : std::vector<Case>{{0.9, 0.3, 0.95, {-0.35, 0, 0.94}, {0.55, 0.6, 0.05, 0.0}},
-                                         {0.5, 0.5, 0.8, {-0.5, 0, 0.87}, {0.9, 0.7, -0.1, 0.05}},
-                                         {0.2, 0.4, 0.7, {-0.7, 0, 0.71}, {0.8, 0.4, -0.2, -0.4}},
-                                         {0.05, 0.25, 0.5, {-0.95, 0, 0.3}, {0.6, 0.15, -0.1, -0.9}}}) {
+  for (const Case& c :
+       std::vector<Case>{{0.9, 0.3, 0.95, {-0.35, 0, 0.94}, {0.55, 0.6, 0.05, 0.0}},
+                         {0.5, 0.5, 0.8, {-0.5, 0, 0.87}, {0.9, 0.7, -0.1, 0.05}},
+                         {0.2, 0.4, 0.7, {-0.7, 0, 0.71}, {0.8, 0.4, -0.2, -0.4}},
+                         {0.05, 0.25, 0.5, {-0.95, 0, 0.3}, {0.6, 0.15, -0.1, -0.9}}}) {
     const LtcFrame frame = ltc_frame_from_average_direction(c.dir);
     const LtcLobe lobe = ltc_lobe(ltc_matrix(frame, c.p));
     const brdf::Vec3 v = brdf::view_from_nov(c.nov);
     const double e3 = integrate_in_frame(
         frame,
         [&](const brdf::Vec3& w) {
-          const double d = std::abs(ref::lobe_cos(v, w, c.alpha) - c.magnitude * ref::ltc_from_inverse(lobe.m_inv.m, w));
+          const double d = std::abs(ref::lobe_cos(v, w, c.alpha) -
+                                    c.magnitude * ref::ltc_from_inverse(lobe.m_inv.m, w));
           return d * d * d;
         },
         c.alpha);
-    const double b3 = integrate_in_frame(frame, [&](const brdf::Vec3& w) { return std::pow(ref::lobe_cos(v, w, c.alpha), 3); },
-                                         c.alpha);
+    const double b3 = integrate_in_frame(
+        frame, [&](const brdf::Vec3& w) { return std::pow(ref::lobe_cos(v, w, c.alpha), 3); },
+        c.alpha);
     const double expected = std::cbrt(e3 / b3);
     EXPECT_NEAR(ltc_l3_error(c.nov, c.alpha, c.magnitude, lobe, 4096).relative(), expected,
                 kHeldOutEstimateTolerance * expected)
@@ -145,13 +160,16 @@ TEST(LtcHeldOutError, MatchesQuadrature) {
 }
 
 TEST(LtcFit, AnalyticJacobianMatchesDifferences) {
-  for (const auto& [nov, alpha] : std::vector<std::pair<double, double>>{{0.9, 0.5}, {0.3, 0.2}, {0.0008, 0.25}}) {
+  for (const auto& [nov, alpha] :
+       std::vector<std::pair<double, double>>{{0.9, 0.5}, {0.3, 0.2}, {0.0008, 0.25}}) {
     const brdf::Vec3 mirror{-std::sqrt(1 - nov * nov), 0.0, nov};
     const LtcProblem pr = make_ltc_problem(nov, alpha, 0.8, mirror, {alpha, alpha, 0.0, 0.0});
-    for (const auto& p : {LtcParams{1.1 * alpha, 0.9 * alpha, 0.05, -0.02}, LtcParams{alpha, 1.3 * alpha, -0.1, 0.1}}) {
+    for (const auto& p : {LtcParams{1.1 * alpha, 0.9 * alpha, 0.05, -0.02},
+                          LtcParams{alpha, 1.3 * alpha, -0.1, 0.1}}) {
       const auto check = check_ltc_gradients(pr, p);
       ASSERT_TRUE(check.ok) << check.report;
-      EXPECT_LT(check.max_relative_error, kJacobianTolerance) << nov << " " << alpha << "\n" << check.report;
+      EXPECT_LT(check.max_relative_error, kJacobianTolerance) << nov << " " << alpha << "\n"
+                                                              << check.report;
     }
   }
 }
@@ -215,42 +233,47 @@ TEST(LtcCellFit, RejectsAFitWorseOutOfSampleThanItsStart) {
   EXPECT_LT(fitted.heldout_error, fitted.start_heldout_error);
 }
 
-// The near-equal choice at the grazing view of roughness 1, where the L3 error is flat along a valley:
-// from a continuation 4% narrower than the fit, the cell moves towards it, and the LTC it takes is,
-// by Gauss–Legendre quadrature of E₃ and B₃, within the margin of the plain fit's error (plus the
-// noise of the 2048-direction estimate the choice is judged on) and nearer the continuation.
+// The near-equal choice at the grazing view of roughness 1, where the L3 error is flat along a
+// valley: from a continuation 4% narrower than the fit, the cell moves towards it, and the LTC it
+// takes is, by Gauss–Legendre quadrature of E₃ and B₃, within the margin of the plain fit's error
+// (plus the noise of the 2048-direction estimate the choice is judged on) and nearer the
+// continuation.
 constexpr double kNearEqualMargin = 0.01;
 constexpr double kNearEqualJudgeTolerance = 0.005;
 TEST(LtcCellFit, NearEqualChoiceStaysWithinItsMarginAndNearsTheContinuation) {
   const double nov = std::cos(1.57), alpha = 1.0, magnitude = 0.994;
   const brdf::Vec3 dir{-0.49, 0.0, 0.87};
   const auto plain = fit_ltc_cell(nov, alpha, magnitude, dir, {{1.7, 1.7, 0.0, 0.0}}, false);
-  const LtcParams c{0.96 * plain.params.m11, 0.96 * plain.params.m22, plain.params.m13, plain.params.m31};
+  const LtcParams c{0.96 * plain.params.m11, 0.96 * plain.params.m22, plain.params.m13,
+                    plain.params.m31};
   const auto fitted = fit_ltc_cell(nov, alpha, magnitude, dir, {c}, false);
-  const auto chosen = fit_ltc_cell(nov, alpha, magnitude, dir, {c}, false, fit_ltc_ceres, kLtcDefaultSampleSqrt,
-                                   kNearEqualMargin);
+  const auto chosen = fit_ltc_cell(nov, alpha, magnitude, dir, {c}, false, fit_ltc_ceres,
+                                   kLtcDefaultSampleSqrt, kNearEqualMargin);
   EXPECT_EQ(fitted.continuation_step, 0.0);
   EXPECT_GT(chosen.continuation_step, 0.0);
   EXPECT_LE(chosen.continuation_step, 1.0);
 
   const LtcFrame frame = ltc_frame_from_average_direction(dir);
   const brdf::Vec3 v = brdf::view_from_nov(nov);
-  const double b3 = integrate_in_frame(frame, [&](const brdf::Vec3& w) { return std::pow(ref::lobe_cos(v, w, alpha), 3); },
-                                       alpha);
+  const double b3 = integrate_in_frame(
+      frame, [&](const brdf::Vec3& w) { return std::pow(ref::lobe_cos(v, w, alpha), 3); }, alpha);
   auto relative_l3 = [&](const LtcParams& p) {
     const LtcLobe lobe = ltc_lobe(ltc_matrix(frame, p));
     const double e3 = integrate_in_frame(
         frame,
         [&](const brdf::Vec3& w) {
-          const double d = std::abs(ref::lobe_cos(v, w, alpha) - magnitude * ref::ltc_from_inverse(lobe.m_inv.m, w));
+          const double d = std::abs(ref::lobe_cos(v, w, alpha) -
+                                    magnitude * ref::ltc_from_inverse(lobe.m_inv.m, w));
           return d * d * d;
         },
         alpha);
     return std::cbrt(e3 / b3);
   };
   const double e_fit = relative_l3(fitted.params), e_chosen = relative_l3(chosen.params);
-  std::printf("relative L3 by quadrature: fit %.5f, near-equal choice %.5f (step %.3f), continuation %.5f\n", e_fit,
-              e_chosen, chosen.continuation_step, relative_l3(c));
+  std::printf(
+      "relative L3 by quadrature: fit %.5f, near-equal choice %.5f (step %.3f), continuation "
+      "%.5f\n",
+      e_fit, e_chosen, chosen.continuation_step, relative_l3(c));
   EXPECT_LE(e_chosen, e_fit * (1.0 + kNearEqualMargin + kNearEqualJudgeTolerance));
   auto distance = [&](const LtcParams& p) {
     return std::hypot(p.m11 - c.m11, p.m22 - c.m22, p.m13 - c.m13) + std::abs(p.m31 - c.m31);

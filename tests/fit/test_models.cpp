@@ -38,7 +38,8 @@ TEST(Models, F82ModelPassesThroughF82) {
 TEST(Models, F82ModelIsLazanyiWithAlphaSix) {
   const double f0 = 0.8, f82 = 0.7, a = fresnel::f82_coefficient(f0, f82);
   for (double c : {0.05, 0.3, 0.7})
-    EXPECT_NEAR(fresnel::lazanyi(c, f0, a, 6.0), fresnel::hoffman_f82_unclamped(c, f0, f82), kExact);
+    EXPECT_NEAR(fresnel::lazanyi(c, f0, a, 6.0), fresnel::hoffman_f82_unclamped(c, f0, f82),
+                kExact);
 }
 
 TEST(Models, GulbrandsenRoundTrips) {
@@ -68,11 +69,12 @@ struct GoldTarget {
     s.paths = {FL_DEFAULT_DB, FL_MATERIALS};
     return s;
   }()};
-  analysis::LoadedMaterial gold = analysis::load_material(ctx, spectral::resolve_material("gold", ctx.settings().paths));
+  analysis::LoadedMaterial gold =
+      analysis::load_material(ctx, spectral::resolve_material("gold", ctx.settings().paths));
   std::vector<color::Rgb> truth = analysis::ground_truth_curve(ctx, gold.ior, 1.0);
   fit::CurveTarget target = analysis::curve_target(ctx, truth);
-  fresnel::DerivedParameters derived =
-      fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, gold.ior, 1.0, fresnel::kDefaultPointSampleNm);
+  fresnel::DerivedParameters derived = fresnel::derive_parameters(
+      ctx.rgb_weights(), ctx.space().rgb_to_xyz, gold.ior, 1.0, fresnel::kDefaultPointSampleNm);
 };
 
 // Synthetic curves made by each model with known parameters are fitted back from a perturbed start.
@@ -83,7 +85,9 @@ TEST(Fit, RecoversKnownParametersFromSyntheticCurves) {
   GoldTarget g;
   for (const auto& spec : fresnel::model_specs()) {
     // Known parameters: the fitted ones for gold, so they are plausible and identifiable.
-    const auto truth_params = fit::fit_model(spec.model, g.target, {fresnel::derived_model_params(spec.model, g.derived)}).parameters;
+    const auto truth_params =
+        fit::fit_model(spec.model, g.target, {fresnel::derived_model_params(spec.model, g.derived)})
+            .parameters;
     const auto synthetic = fresnel::evaluate_curve(spec.model, truth_params, g.ctx.cos_thetas());
     const auto target = analysis::curve_target(g.ctx, synthetic);
     auto start = truth_params;
@@ -91,10 +95,13 @@ TEST(Fit, RecoversKnownParametersFromSyntheticCurves) {
     const auto r = fit::fit_model(spec.model, target, {start});
     EXPECT_TRUE(r.usable) << spec.name;
     EXPECT_LT(fit::rms_from_cost(r.cost, target.cos_thetas.size()), kRecoveredRms) << spec.name;
-    if (spec.model == fresnel::model_of<fresnel::models::Schlick> || spec.model == fresnel::model_of<fresnel::models::F82> || spec.model == fresnel::model_of<fresnel::models::Gulbrandsen> ||
+    if (spec.model == fresnel::model_of<fresnel::models::Schlick> ||
+        spec.model == fresnel::model_of<fresnel::models::F82> ||
+        spec.model == fresnel::model_of<fresnel::models::Gulbrandsen> ||
         spec.model == fresnel::model_of<fresnel::models::FresnelRgb>) {
       for (size_t i = 0; i < start.size(); ++i)
-        EXPECT_NEAR(r.parameters[i], truth_params[i], kRecoveredParam) << spec.name << " parameter " << i;
+        EXPECT_NEAR(r.parameters[i], truth_params[i], kRecoveredParam)
+            << spec.name << " parameter " << i;
     }
   }
 }
@@ -103,7 +110,9 @@ TEST(Fit, NoUsableStartStillReturnsParameters) {
   GoldTarget g;
   fit::CurveTarget broken = g.target;
   for (auto& lab : broken.truth_lab) lab.L = std::nan("");  // every residual is NaN
-  const auto r = fit::fit_model(fresnel::model_of<fresnel::models::F82>, broken, {fresnel::derived_model_params(fresnel::model_of<fresnel::models::F82>, g.derived)});
+  const auto r = fit::fit_model(
+      fresnel::model_of<fresnel::models::F82>, broken,
+      {fresnel::derived_model_params(fresnel::model_of<fresnel::models::F82>, g.derived)});
   EXPECT_FALSE(r.usable);
   EXPECT_EQ(r.parameters.size(), 6u);
   EXPECT_EQ(r.termination, "NO_USABLE_SOLUTION");
@@ -124,22 +133,28 @@ TEST(Acceptance, MethodsTableAndF82Median) {
   for (size_t i = 0; i < methods.rows.size(); ++i) {
     const auto& row = methods.rows[i];
     const double refl_refl = std::get<double>(row[5]), fitted = std::get<double>(row[6]);
-    std::printf("%-10s %8.3f %10.3f %10.3f\n", std::get<std::string>(row[0]).c_str(), std::get<double>(row[1]),
-                refl_refl, fitted);
+    std::printf("%-10s %8.3f %10.3f %10.3f\n", std::get<std::string>(row[0]).c_str(),
+                std::get<double>(row[1]), refl_refl, fitted);
     EXPECT_LE(refl_refl, 0.10) << std::get<std::string>(row[0]);
     EXPECT_LE(fitted, refl_refl) << std::get<std::string>(row[0]);
     for (const auto& srow : schlick.rows)
-      if (srow[0] == row[0]) { EXPECT_EQ(std::get<double>(row[1]), std::get<double>(srow[3])) << "Schlick column = table schlick"; }
+      if (srow[0] == row[0]) {
+        EXPECT_EQ(std::get<double>(row[1]), std::get<double>(srow[3]))
+            << "Schlick column = table schlick";
+      }
   }
   for (const auto& st : studies)
     if (st.material->material.material_class == spectral::MaterialClass::Metal) {
-      schlick_rms.push_back(st.result(fresnel::model_of<fresnel::models::Schlick>).derived_error.rms);
+      schlick_rms.push_back(
+          st.result(fresnel::model_of<fresnel::models::Schlick>).derived_error.rms);
       f82_rms.push_back(st.result(fresnel::model_of<fresnel::models::F82>).fitted_error.rms);
     }
   std::sort(schlick_rms.begin(), schlick_rms.end());
   std::sort(f82_rms.begin(), f82_rms.end());
-  const double med_s = 0.5 * (schlick_rms[6] + schlick_rms[7]), med_f = 0.5 * (f82_rms[6] + f82_rms[7]);
-  std::printf("median RMS over metals: Schlick %.3f, fitted F82 %.3f (%.1fx lower)\n", med_s, med_f, med_s / med_f);
+  const double med_s = 0.5 * (schlick_rms[6] + schlick_rms[7]),
+               med_f = 0.5 * (f82_rms[6] + f82_rms[7]);
+  std::printf("median RMS over metals: Schlick %.3f, fitted F82 %.3f (%.1fx lower)\n", med_s, med_f,
+              med_s / med_f);
   EXPECT_GE(med_s / med_f, 3.0);
 
   // Each model's fit depends on its own starts only: the presets' study, which fits RGB η, κ alone,
@@ -148,18 +163,22 @@ TEST(Acceptance, MethodsTableAndF82Median) {
   const auto eta_kappa = fresnel::model_of<fresnel::models::FresnelRgb>;
   for (size_t i = 0; i < presets.size(); ++i)
     for (const auto& r : presets[i].models) {
-      EXPECT_EQ(r.fitted.parameters.empty(), r.model != eta_kappa) << fresnel::model_spec(r.model).name;
+      EXPECT_EQ(r.fitted.parameters.empty(), r.model != eta_kappa)
+          << fresnel::model_spec(r.model).name;
       EXPECT_EQ(r.derived, studies[i].result(r.model).derived);
     }
-  const auto full = analysis::presets_table(ctx, studies).rows, alone = analysis::presets_table(ctx, presets).rows;
+  const auto full = analysis::presets_table(ctx, studies).rows,
+             alone = analysis::presets_table(ctx, presets).rows;
   ASSERT_EQ(full.size(), alone.size());
   const auto same = [](const analysis::Cell& a, const analysis::Cell& b) {
     const auto* x = std::get_if<double>(&a);
     const auto* y = std::get_if<double>(&b);
-    return x && y ? (*x == *y || (std::isnan(*x) && std::isnan(*y))) : a == b;  // coverage_k is NaN without k data
+    return x && y ? (*x == *y || (std::isnan(*x) && std::isnan(*y)))
+                  : a == b;  // coverage_k is NaN without k data
   };
   for (size_t i = 0; i < full.size(); ++i)
-    for (size_t j = 0; j < full[i].size(); ++j) EXPECT_TRUE(same(full[i][j], alone[i][j])) << i << ", " << j;
+    for (size_t j = 0; j < full[i].size(); ++j)
+      EXPECT_TRUE(same(full[i][j], alone[i][j])) << i << ", " << j;
 }
 
 }  // namespace

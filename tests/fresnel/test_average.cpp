@@ -55,25 +55,31 @@ TEST(Average, ClosedFormsAndQuadratureAgreeWithAnIndependentQuadrature) {
       closed += in_closed_form;
       for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(quad[c], ref[c], kQuadratureTolerance) << spec.name;
-        EXPECT_NEAR(avg[c], ref[c], in_closed_form ? kClosedFormTolerance : kQuadratureTolerance) << spec.name;
+        EXPECT_NEAR(avg[c], ref[c], in_closed_form ? kClosedFormTolerance : kQuadratureTolerance)
+            << spec.name;
         if (!in_closed_form) continue;
-        EXPECT_NEAR(spec.closed_form_average(p.data(), c), ref[c], kClosedFormTolerance) << spec.name;
-        worst_closed = std::max(worst_closed, std::abs(spec.closed_form_average(p.data(), c) - ref[c]));
+        EXPECT_NEAR(spec.closed_form_average(p.data(), c), ref[c], kClosedFormTolerance)
+            << spec.name;
+        worst_closed =
+            std::max(worst_closed, std::abs(spec.closed_form_average(p.data(), c) - ref[c]));
       }
     }
   }
-  std::printf("max |closed form - quadrature| over %d closed-form cases: %.3g\n", closed, worst_closed);
+  std::printf("max |closed form - quadrature| over %d closed-form cases: %.3g\n", closed,
+              worst_closed);
   EXPECT_GE(closed, 6);  // Schlick, F82, generalized Schlick, Lazányi on (nearly) every probe
 }
 
 // Analytic values: Schlick's F_avg = F0 + (1 − F0)/21, so white F0 = 1 averages to 1 and F0 = 0
 // to 1/21; the exact equations of an index-matched interface reflect nothing.
 TEST(Average, AnalyticValues) {
-  const auto s = fresnel::hemispherical_average(fresnel::model_of<fresnel::models::Schlick>, {1.0, 0.0, 0.5});
+  const auto s =
+      fresnel::hemispherical_average(fresnel::model_of<fresnel::models::Schlick>, {1.0, 0.0, 0.5});
   EXPECT_NEAR(s.r, 1.0, 1e-15);
   EXPECT_NEAR(s.g, 1.0 / 21.0, 1e-15);
   EXPECT_NEAR(s.b, 0.5 + 0.5 / 21.0, 1e-15);
-  const auto rgb = fresnel::hemispherical_average(fresnel::model_of<fresnel::models::FresnelRgb>, {1, 0, 1, 0, 1, 0});
+  const auto rgb = fresnel::hemispherical_average(fresnel::model_of<fresnel::models::FresnelRgb>,
+                                                  {1, 0, 1, 0, 1, 0});
   EXPECT_NEAR(rgb.r, 0.0, 1e-15);
 }
 

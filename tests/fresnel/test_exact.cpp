@@ -47,16 +47,19 @@ TEST(Exact, ConductorWithZeroKappaEqualsDielectric) {
   for (double n : {0.6, 0.9, 1.2, 1.5, 2.4, 5.0})
     for (int i = 0; i <= 900; ++i) {
       const double c = std::cos(i * 0.1 * M_PI / 180.0);
-      EXPECT_NEAR(fresnel_conductor(c, std::complex<double>(n, 0)), fresnel_dielectric(c, n), kIdentityTolerance)
+      EXPECT_NEAR(fresnel_conductor(c, std::complex<double>(n, 0)), fresnel_dielectric(c, n),
+                  kIdentityTolerance)
           << "n=" << n << " theta=" << i * 0.1;
     }
 }
 
 TEST(Exact, ConductorMatchesComplexArithmetic) {
-  for (auto eta : {std::complex<double>(0.15, 3.6), {0.47, 2.4}, {2.9, 3.0}, {1.5, 0.001}, {0.01, 80}})
+  for (auto eta :
+       {std::complex<double>(0.15, 3.6), {0.47, 2.4}, {2.9, 3.0}, {1.5, 0.001}, {0.01, 80}})
     for (int i = 0; i < 90; ++i) {
       const double c = std::cos(i * M_PI / 180.0);
-      EXPECT_NEAR(fresnel_conductor(c, eta), fr_complex_reference(c, eta), 1e-10) << eta << " " << i;
+      EXPECT_NEAR(fresnel_conductor(c, eta), fr_complex_reference(c, eta), 1e-10)
+          << eta << " " << i;
     }
 }
 
@@ -145,10 +148,12 @@ TEST(Exact, StokesRelationsAndReciprocity) {
       EXPECT_NEAR(a.t_s * b.t_s, 1 - a.r_s * a.r_s, kReciprocityTolerance) << eta << " " << i;
       EXPECT_NEAR(a.t_p * b.t_p, 1 - a.r_p * a.r_p, kReciprocityTolerance) << eta << " " << i;
       EXPECT_NEAR(cos_transmitted(c, eta), a.cos_t, kIdentityTolerance) << eta << " " << i;
-      const auto front = fresnel_dielectric_polarized(c, eta), back = fresnel_dielectric_polarized(a.cos_t, 1 / eta);
+      const auto front = fresnel_dielectric_polarized(c, eta),
+                 back = fresnel_dielectric_polarized(a.cos_t, 1 / eta);
       EXPECT_NEAR(front.r_s, back.r_s, kReciprocityTolerance) << eta << " " << i;
       EXPECT_NEAR(front.r_p, back.r_p, kReciprocityTolerance) << eta << " " << i;
-      EXPECT_NEAR(fresnel_conductor(c, eta, 0.0), fresnel_conductor(a.cos_t, 1 / eta, 0.0), kReciprocityTolerance)
+      EXPECT_NEAR(fresnel_conductor(c, eta, 0.0), fresnel_conductor(a.cos_t, 1 / eta, 0.0),
+                  kReciprocityTolerance)
           << eta << " " << i;
     }
 }
@@ -164,17 +169,19 @@ TEST(GroundTruth, ColumnPassEqualsTheScalarKernelBitForBit) {
     std::vector<color::Rgb> w;
     for (int i = 0; i < ior.grid.count; ++i) {
       const double t = double(i) / ior.grid.count;
-      const std::complex<double> kinds[] = {{0.2 + t, 3.0 - t}, {1.5 + 0.1 * t, 0.0}, {0.7, 0.0}, {1.0, 0.0},
-                                            {2.4, 1e-210}};
+      const std::complex<double> kinds[] = {
+          {0.2 + t, 3.0 - t}, {1.5 + 0.1 * t, 0.0}, {0.7, 0.0}, {1.0, 0.0}, {2.4, 1e-210}};
       ior.ior.push_back(kinds[i % 5]);
       w.push_back({0.01 * (1 + i % 7), 0.02 * t, 0.003 * (i % 3)});
     }
     for (double eta_outside : {1.0, 1.33})
       for (double cos_theta : {1.0, 0.7, 0.2, 1e-3, 0.0}) {
         color::Rgb scalar;
-        for (size_t i = 0; i < w.size(); ++i) scalar = scalar + fresnel_conductor(cos_theta, ior.ior[i] / eta_outside) * w[i];
+        for (size_t i = 0; i < w.size(); ++i)
+          scalar = scalar + fresnel_conductor(cos_theta, ior.ior[i] / eta_outside) * w[i];
         const color::Rgb column = spectral_reflectance_rgb(w, ior, cos_theta, eta_outside);
-        for (int c = 0; c < 3; ++c) EXPECT_EQ(column[c], scalar[c]) << step_nm << " nm, cos " << cos_theta;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_EQ(column[c], scalar[c]) << step_nm << " nm, cos " << cos_theta;
       }
   }
 }

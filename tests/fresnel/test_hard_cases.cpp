@@ -16,17 +16,23 @@ namespace {
 using namespace fl::fresnel;
 
 constexpr double kPi = 3.14159265358979323846;
-double deg_to_cos(double deg) { return deg == 90.0 ? 0.0 : std::cos(deg * kPi / 180.0); }
+double deg_to_cos(double deg) {
+  return deg == 90.0 ? 0.0 : std::cos(deg * kPi / 180.0);
+}
 
 // Tolerances.
-constexpr double kExact = 1e-12;         // closed forms evaluated in double
+constexpr double kExact = 1e-12;             // closed forms evaluated in double
 constexpr double kRangeSlackDouble = 1e-12;  // rounding allowed past [0, 1] in double
 constexpr double kRangeSlackFloat = 1e-6;    // ... in float
-constexpr double kFloatPolynomial = 1e-6;    // float vs double: Schlick-type polynomials (measured 2.7e-7)
-constexpr double kFloatFresnel = 5e-6;       // float vs double: exact Fresnel, Gulbrandsen, Cook-Torrance (3.6e-6)
+constexpr double kFloatPolynomial =
+    1e-6;  // float vs double: Schlick-type polynomials (measured 2.7e-7)
+constexpr double kFloatFresnel =
+    5e-6;  // float vs double: exact Fresnel, Gulbrandsen, Cook-Torrance (3.6e-6)
 constexpr double kFloatCookTorranceKappa80 = 2e-4;  // ... Cook-Torrance with κ_rep = 80 (6.4e-5)
-constexpr double kFloatGulbrandsenEta = 5e-3;  // float vs double: η from F0 near 1 (relative; 1.4e-3)
-constexpr double kFloatGulbrandsenG = 2e-3;    // float vs double: g recovered from float η, F0 < 0.99 (9.4e-4)
+constexpr double kFloatGulbrandsenEta =
+    5e-3;  // float vs double: η from F0 near 1 (relative; 1.4e-3)
+constexpr double kFloatGulbrandsenG =
+    2e-3;  // float vs double: g recovered from float η, F0 < 0.99 (9.4e-4)
 
 // Dense grids: F0, g, F82 in [0, 1]; η in [0.01, 10]; κ in [0, 80]; θ in [0°, 90°].
 std::vector<double> unit_grid() {
@@ -59,7 +65,8 @@ std::vector<double> cos_grid() {  // θ = 0°, 0.5°, ..., 90° (cos 90° = 0 ex
 struct RangeCheck {
   double slack;
   long non_finite = 0, outside = 0, total = 0;
-  double min = std::numeric_limits<double>::infinity(), max = -std::numeric_limits<double>::infinity();
+  double min = std::numeric_limits<double>::infinity(),
+         max = -std::numeric_limits<double>::infinity();
   void operator()(double v) {
     ++total;
     if (!std::isfinite(v)) {
@@ -82,13 +89,15 @@ double f0_exact(double eta, double kappa) {
 TEST(HardCases, ConductorAtNormalAndGrazingIncidenceOverTheWholeGrid) {
   for (double eta : eta_grid())
     for (double kappa : kappa_grid()) {
-      EXPECT_NEAR(fresnel_conductor(1.0, eta, kappa), f0_exact(eta, kappa), kExact) << eta << " " << kappa;
+      EXPECT_NEAR(fresnel_conductor(1.0, eta, kappa), f0_exact(eta, kappa), kExact)
+          << eta << " " << kappa;
       // Grazing incidence reflects fully, except on an index-matched interface (η = 1, κ = 0),
       // which is no interface and reflects nothing at any angle (was 0/0 = NaN).
       const double grazing = eta == 1.0 && kappa == 0.0 ? 0.0 : 1.0;
       EXPECT_EQ(fresnel_conductor(0.0, eta, kappa), grazing) << eta << " " << kappa;
       const float grazing_f = float(eta) == 1.0f && float(kappa) == 0.0f ? 0.0f : 1.0f;
-      EXPECT_EQ(fresnel_conductor(0.0f, float(eta), float(kappa)), grazing_f) << eta << " " << kappa;
+      EXPECT_EQ(fresnel_conductor(0.0f, float(eta), float(kappa)), grazing_f)
+          << eta << " " << kappa;
     }
 }
 
@@ -218,7 +227,8 @@ TEST(HardCases, SchlickAndGeneralizedSchlickSweep) {
   EXPECT_EQ(generalized_schlick(1.0, 0.04, 0.7, 5.0), 0.04);
   EXPECT_NEAR(generalized_schlick(0.0, 0.04, 0.7, 5.0), 0.7, kExact);
   // p = 5, F90 = 1 is Schlick.
-  for (double c : cos_grid()) EXPECT_NEAR(generalized_schlick(c, 0.3, 1.0, 5.0), schlick(c, 0.3), kExact);
+  for (double c : cos_grid())
+    EXPECT_NEAR(generalized_schlick(c, 0.3, 1.0, 5.0), schlick(c, 0.3), kExact);
 }
 
 TEST(HardCases, LazanyiIsFiniteAndLeavesUnitRangeOnlyThroughItsCorrectionTerm) {
@@ -268,7 +278,9 @@ TEST(HardCases, HoffmanF82ThroughItsAnchorsAndClampedIntoUnitRange) {
     for (double f82 : unit_grid()) {
       const double mb = 1.0 / 7.0;
       const double a = (f0 + (1 - f0) * std::pow(1 - mb, 5) - f82) / (mb * std::pow(1 - mb, 6));
-      for (double c : cos_grid()) paper_max = std::max(paper_max, f0 + (1 - f0) * std::pow(1 - c, 5) - a * c * std::pow(1 - c, 6));
+      for (double c : cos_grid())
+        paper_max =
+            std::max(paper_max, f0 + (1 - f0) * std::pow(1 - c, 5) - a * c * std::pow(1 - c, 6));
     }
   EXPECT_GT(paper_max, 1.1);
   EXPECT_NEAR(raw.max, paper_max, kExact);
@@ -360,38 +372,48 @@ TEST(HardCases, FloatAgreesWithDoubleForEveryModelKernel) {
   const std::vector<double> etas{0.01, 0.05, 0.2, 0.5, 1.0, 1.5, 2.5, 5.0, 10.0};
   const std::vector<double> kappas{0.0, 0.01, 0.5, 2.0, 5.0, 20.0, 80.0};
 
-  EXPECT_LE(max_float_error(tuples({cs, us}), [](auto& a) { return schlick(a[0], a[1]); },
-                            [](auto& a) { return schlick(a[0], a[1]); }),
+  EXPECT_LE(max_float_error(
+                tuples({cs, us}), [](auto& a) { return schlick(a[0], a[1]); },
+                [](auto& a) { return schlick(a[0], a[1]); }),
             kFloatPolynomial);
-  EXPECT_LE(max_float_error(tuples({cs, us, {0.0, 0.5, 1.0}, {0.5, 5.0, 12.0}}),
-                            [](auto& a) { return generalized_schlick(a[0], a[1], a[2], a[3]); },
-                            [](auto& a) { return generalized_schlick(a[0], a[1], a[2], a[3]); }),
+  EXPECT_LE(max_float_error(
+                tuples({cs, us, {0.0, 0.5, 1.0}, {0.5, 5.0, 12.0}}),
+                [](auto& a) { return generalized_schlick(a[0], a[1], a[2], a[3]); },
+                [](auto& a) { return generalized_schlick(a[0], a[1], a[2], a[3]); }),
             kFloatPolynomial);
-  EXPECT_LE(max_float_error(tuples({cs, us, {-2.0, 0.0, 2.0}, {1.0, 6.0}}),
-                            [](auto& a) { return lazanyi(a[0], a[1], a[2], a[3]); },
-                            [](auto& a) { return lazanyi(a[0], a[1], a[2], a[3]); }),
+  EXPECT_LE(max_float_error(
+                tuples({cs, us, {-2.0, 0.0, 2.0}, {1.0, 6.0}}),
+                [](auto& a) { return lazanyi(a[0], a[1], a[2], a[3]); },
+                [](auto& a) { return lazanyi(a[0], a[1], a[2], a[3]); }),
             kFloatPolynomial);
-  EXPECT_LE(max_float_error(tuples({cs, us, us}), [](auto& a) { return hoffman_f82(a[0], a[1], a[2]); },
-                            [](auto& a) { return hoffman_f82(a[0], a[1], a[2]); }),
+  EXPECT_LE(max_float_error(
+                tuples({cs, us, us}), [](auto& a) { return hoffman_f82(a[0], a[1], a[2]); },
+                [](auto& a) { return hoffman_f82(a[0], a[1], a[2]); }),
             kFloatPolynomial);
-  EXPECT_LE(max_float_error(tuples({cs, etas, kappas}),
-                            [](auto& a) { return fresnel_conductor(a[0], a[1], a[2]); },
-                            [](auto& a) { return fresnel_conductor(a[0], a[1], a[2]); }),
+  EXPECT_LE(
+      max_float_error(
+          tuples({cs, etas, kappas}), [](auto& a) { return fresnel_conductor(a[0], a[1], a[2]); },
+          [](auto& a) { return fresnel_conductor(a[0], a[1], a[2]); }),
+      kFloatFresnel);
+  EXPECT_LE(max_float_error(
+                tuples({cs, etas}), [](auto& a) { return fresnel_dielectric(a[0], a[1]); },
+                [](auto& a) { return fresnel_dielectric(a[0], a[1]); }),
             kFloatFresnel);
-  EXPECT_LE(max_float_error(tuples({cs, etas}), [](auto& a) { return fresnel_dielectric(a[0], a[1]); },
-                            [](auto& a) { return fresnel_dielectric(a[0], a[1]); }),
+  EXPECT_LE(max_float_error(
+                tuples({cs, us, us}), [](auto& a) { return gulbrandsen(a[0], a[1], a[2]); },
+                [](auto& a) { return gulbrandsen(a[0], a[1], a[2]); }),
             kFloatFresnel);
-  EXPECT_LE(max_float_error(tuples({cs, us, us}), [](auto& a) { return gulbrandsen(a[0], a[1], a[2]); },
-                            [](auto& a) { return gulbrandsen(a[0], a[1], a[2]); }),
+  EXPECT_LE(max_float_error(
+                tuples({cs, us, {0.2, 1.0, 1.5}, {0.0, 0.5, 3.0, 5.0}}),
+                [](auto& a) { return cook_torrance(a[0], a[1], a[2], a[3]); },
+                [](auto& a) { return cook_torrance(a[0], a[1], a[2], a[3]); }),
             kFloatFresnel);
-  EXPECT_LE(max_float_error(tuples({cs, us, {0.2, 1.0, 1.5}, {0.0, 0.5, 3.0, 5.0}}),
-                            [](auto& a) { return cook_torrance(a[0], a[1], a[2], a[3]); },
-                            [](auto& a) { return cook_torrance(a[0], a[1], a[2], a[3]); }),
-            kFloatFresnel);
-  // A representative κ = 80 makes 1 − F0' ≈ 6e-4, and (F' − F0')/(1 − F0') amplifies float rounding.
-  EXPECT_LE(max_float_error(tuples({cs, us, {0.2, 1.0, 1.5}, {80.0}}),
-                            [](auto& a) { return cook_torrance(a[0], a[1], a[2], a[3]); },
-                            [](auto& a) { return cook_torrance(a[0], a[1], a[2], a[3]); }),
+  // A representative κ = 80 makes 1 − F0' ≈ 6e-4, and (F' − F0')/(1 − F0') amplifies float
+  // rounding.
+  EXPECT_LE(max_float_error(
+                tuples({cs, us, {0.2, 1.0, 1.5}, {80.0}}),
+                [](auto& a) { return cook_torrance(a[0], a[1], a[2], a[3]); },
+                [](auto& a) { return cook_torrance(a[0], a[1], a[2], a[3]); }),
             kFloatCookTorranceKappa80);
   // The Gulbrandsen mapping itself: η relative to its size (it reaches 4e5 as F0 → 1), g absolute.
   double worst_eta = 0, worst_g = 0;

@@ -54,8 +54,10 @@ TEST(Registry, BatchMatchesScalarInDoubleAndFloat) {
       for (int c = 0; c < 3; ++c) {
         const size_t k = c * cos_d.size() + i;
         EXPECT_EQ(out_d[k], sd[c]) << spec.name << " cos " << cos_d[i];
-        EXPECT_NEAR(out_f[k], sf[c], kFloatBatchRelative * std::max(1.0f, std::abs(sf[c]))) << spec.name;
-        EXPECT_NEAR(sf[c], sd[c], kFloatVsDouble) << spec.name << " cos " << cos_d[i] << " channel " << c;
+        EXPECT_NEAR(out_f[k], sf[c], kFloatBatchRelative * std::max(1.0f, std::abs(sf[c])))
+            << spec.name;
+        EXPECT_NEAR(sf[c], sd[c], kFloatVsDouble)
+            << spec.name << " cos " << cos_d[i] << " channel " << c;
       }
     }
   }
@@ -73,7 +75,8 @@ TEST(Registry, FiniteAtTheCornersOfTheFitBox) {
       for (size_t i = 0; i < n; ++i) p[i] = (corner >> i) & 1u ? box[i].hi : box[i].lo;
       for (double c : {0.0, 1e-7, 1.0 / 7.0, 0.5, 1.0 - 1e-9, 1.0}) {
         const auto rgb = spec.evaluate(c, p.data(), false);
-        for (int ch = 0; ch < 3; ++ch) EXPECT_TRUE(std::isfinite(rgb[ch])) << spec.name << " corner " << corner << " cos " << c;
+        for (int ch = 0; ch < 3; ++ch)
+          EXPECT_TRUE(std::isfinite(rgb[ch])) << spec.name << " corner " << corner << " cos " << c;
       }
       if (std::string(spec.channel_params[0].name) == "f0") {
         // The formula itself: a kernel's output clamp (the F82 model's [0, 1]) would hide an F0 the
@@ -131,7 +134,8 @@ struct FlatMaterial {
 // models that hold the exact equations (RGB η, κ; Gulbrandsen's exact reparameterization)
 // reproduce its whole curve.
 TEST(Registry, DerivationOnAFlatMaterialIsExactAtNormalIncidence) {
-  for (const auto ior : {std::complex<double>(0.27, 2.9), std::complex<double>(1.5, 0.0), std::complex<double>(2.8, 3.5)}) {
+  for (const auto ior : {std::complex<double>(0.27, 2.9), std::complex<double>(1.5, 0.0),
+                         std::complex<double>(2.8, 3.5)}) {
     const FlatMaterial m(ior);
     for (const auto& spec : fresnel::model_specs()) {
       const auto p = fresnel::derived_model_params(spec.model, m.derived);
@@ -140,7 +144,8 @@ TEST(Registry, DerivationOnAFlatMaterialIsExactAtNormalIncidence) {
         EXPECT_NEAR(at0[c], m.truth(1.0) * m.flat_response[c], 1e-9) << spec.name << " ior " << ior;
     }
     // RGB η, κ: processed as reflectances, a constant η, κ comes back scaled by the flat response.
-    const auto eta_kappa = fresnel::derived_model_params(fresnel::model_of<fresnel::models::FresnelRgb>, m.derived);
+    const auto eta_kappa =
+        fresnel::derived_model_params(fresnel::model_of<fresnel::models::FresnelRgb>, m.derived);
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(eta_kappa[2 * c], ior.real() * m.flat_response[c], 1e-9);
       EXPECT_NEAR(eta_kappa[2 * c + 1], ior.imag() * m.flat_response[c], 1e-9);
@@ -156,13 +161,15 @@ TEST(Registry, JacobiansMatchFiniteDifferencesAtSeveralPoints) {
   analysis::Settings s;
   s.paths = {FL_DEFAULT_DB, FL_MATERIALS};
   const analysis::Context ctx(s);
-  const auto gold = analysis::load_material(ctx, spectral::resolve_material("gold", ctx.settings().paths));
+  const auto gold =
+      analysis::load_material(ctx, spectral::resolve_material("gold", ctx.settings().paths));
   const auto truth = analysis::ground_truth_curve(ctx, gold.ior, 1.0);
   const auto target = analysis::curve_target(ctx, truth);
-  const auto d = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, gold.ior, 1.0,
-                                            fresnel::kDefaultPointSampleNm);
+  const auto d = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, gold.ior,
+                                            1.0, fresnel::kDefaultPointSampleNm);
   for (const auto& spec : fresnel::model_specs()) {
-    const auto fitted = fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d)).parameters;
+    const auto fitted =
+        fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d)).parameters;
     for (const double scale : {0.97, 0.995, 1.004}) {
       auto p = fitted;
       for (size_t i = 0; i < p.size(); ++i) p[i] *= i % 2 ? scale : 2.0 - scale;
@@ -208,7 +215,8 @@ SpanFit fit_span(const ModelSpec& spec, const std::vector<double>& p, int channe
   }
   double residual = 0;
   for (size_t i = 0; i < mu.size(); ++i)
-    residual = std::max(residual, std::abs(x[0] * a[i][0] + x[1] * a[i][1] + x[2] * a[i][2] - y[i]));
+    residual =
+        std::max(residual, std::abs(x[0] * a[i][0] + x[1] * a[i][1] + x[2] * a[i][2] - y[i]));
   return {residual, std::abs(x[2])};
 }
 
@@ -220,8 +228,8 @@ bool lists(const fresnel::LightingSupport& s, const char* channel) {
 
 TEST(Registry, PreIntegrationDeclarationsAreTrue) {
   namespace ch = fresnel::lut_channel;
-  const std::set<std::string> known{ch::kDfgScale, ch::kDfgBias, ch::kDfgF82, ch::kLtcMatrix,
-                                    ch::kLtcNorm, ch::kLtcSchlick, ch::kLtcF82};
+  const std::set<std::string> known{ch::kDfgScale, ch::kDfgBias,    ch::kDfgF82, ch::kLtcMatrix,
+                                    ch::kLtcNorm,  ch::kLtcSchlick, ch::kLtcF82};
   for (const auto& spec : fresnel::model_specs()) {
     const auto& pi = spec.pre_integration;
     for (const auto* s : {&pi.ibl, &pi.area}) {
@@ -243,17 +251,22 @@ TEST(Registry, PreIntegrationDeclarationsAreTrue) {
         const auto f = fit_span(spec, p, c);
         worst = std::max(worst, f.residual);
         if (!pi.ibl.fresnel_pre_integrated) continue;
-        EXPECT_LT(f.residual, 1e-12) << spec.name << ": declared pre-integrable but not in the tables' span";
+        EXPECT_LT(f.residual, 1e-12)
+            << spec.name << ": declared pre-integrable but not in the tables' span";
         const bool needs_f82 = f.c_abs > 1e-9;
         any_f82 = any_f82 || needs_f82;
-        if (needs_f82) { EXPECT_TRUE(lists(pi.ibl, ch::kDfgF82) && lists(pi.area, ch::kLtcF82)) << spec.name; }
+        if (needs_f82) {
+          EXPECT_TRUE(lists(pi.ibl, ch::kDfgF82) && lists(pi.area, ch::kLtcF82)) << spec.name;
+        }
         EXPECT_TRUE(lists(pi.area, ch::kLtcSchlick)) << spec.name;
       }
     }
     if (!pi.ibl.fresnel_pre_integrated)
-      EXPECT_GT(worst, 1e-6) << spec.name << ": declared not pre-integrable, but the tables' span holds it";
+      EXPECT_GT(worst, 1e-6) << spec.name
+                             << ": declared not pre-integrable, but the tables' span holds it";
     else
-      EXPECT_EQ(lists(pi.ibl, ch::kDfgF82), any_f82) << spec.name << ": lists the F82 channel it does not use";
+      EXPECT_EQ(lists(pi.ibl, ch::kDfgF82), any_f82)
+          << spec.name << ": lists the F82 channel it does not use";
     EXPECT_EQ(pi.ibl.fresnel_pre_integrated, pi.area.fresnel_pre_integrated) << spec.name;
   }
 }
@@ -290,7 +303,8 @@ TEST(Registry, TableTermsReproduceTheKernelAndShaderCodeMatchesTheDeclarations) 
         const auto f = fresnel::evaluate_curve_unclamped(spec.model, p, {mu})[0];
         for (int c = 0; c < 3; ++c) {
           const auto t = spec.table_terms(p.data(), c);
-          EXPECT_NEAR(t.a + t.b * std::pow(1 - mu, 5) + t.c * mu * std::pow(1 - mu, 6), f[c], kTermsTolerance)
+          EXPECT_NEAR(t.a + t.b * std::pow(1 - mu, 5) + t.c * mu * std::pow(1 - mu, 6), f[c],
+                      kTermsTolerance)
               << spec.name << " mu " << mu;
         }
       }

@@ -13,8 +13,10 @@ fl::spectral::DataPaths make_paths() {
   namespace fs = std::filesystem;
   const std::string root = fl::fuzz::temp_path("_db");
   fs::create_directories(root + "/data/main/Good/nk");
-  const char yml[] = "DATA:\n  - type: tabulated nk\n    data: |\n        0.3 1.5 0.1\n        0.9 1.6 0.2\n";
-  fl::fuzz::write_input(root + "/data/main/Good/nk/Synthetic.yml", reinterpret_cast<const uint8_t*>(yml), sizeof(yml) - 1);
+  const char yml[] =
+      "DATA:\n  - type: tabulated nk\n    data: |\n        0.3 1.5 0.1\n        0.9 1.6 0.2\n";
+  fl::fuzz::write_input(root + "/data/main/Good/nk/Synthetic.yml",
+                        reinterpret_cast<const uint8_t*>(yml), sizeof(yml) - 1);
   return {root, root};
 }
 
@@ -26,9 +28,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fl::fuzz::write_input(path, data, size);
   try {
     const auto m = fl::spectral::read_catalog_entry(path, paths);
-    const auto s = fl::spectral::sample_ior(m.constants, fl::spectral::SpectralGrid::visible(5.0), m.name);
+    const auto s =
+        fl::spectral::sample_ior(m.constants, fl::spectral::SpectralGrid::visible(5.0), m.name);
     for (const auto& v : s.ior.ior)
-      fl::fuzz::require(std::isfinite(v.real()) && v.real() > 0.0 && std::isfinite(v.imag()) && v.imag() >= 0.0);
+      fl::fuzz::require(std::isfinite(v.real()) && v.real() > 0.0 && std::isfinite(v.imag()) &&
+                        v.imag() >= 0.0);
   } catch (const fl::InputError&) {
   }
   return 0;

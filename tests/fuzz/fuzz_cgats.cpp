@@ -13,7 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     fl::fuzz::require(!c.sets.empty() && c.lambda_nm.size() >= 2);
     for (const auto& set : c.sets) {
       fl::fuzz::require(set.size() == c.lambda_nm.size());
-      const auto s = fl::spectral::resample(c.lambda_nm, set, fl::spectral::SpectralGrid::visible(5.0));
+      const auto s =
+          fl::spectral::resample(c.lambda_nm, set, fl::spectral::SpectralGrid::visible(5.0));
       for (double v : s.values) fl::fuzz::require(std::isfinite(v));
     }
   } catch (const fl::InputError&) {

@@ -13,7 +13,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const auto oc = fl::spectral::read_nk_table(path);
     const auto s = fl::spectral::sample_ior(oc, fl::spectral::SpectralGrid::visible(5.0), "fuzz");
     for (const auto& v : s.ior.ior)
-      fl::fuzz::require(std::isfinite(v.real()) && v.real() > 0.0 && std::isfinite(v.imag()) && v.imag() >= 0.0);
+      fl::fuzz::require(std::isfinite(v.real()) && v.real() > 0.0 && std::isfinite(v.imag()) &&
+                        v.imag() >= 0.0);
   } catch (const fl::InputError&) {
   }
   return 0;

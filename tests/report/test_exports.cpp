@@ -4,11 +4,10 @@
 // here with the published BT.709 matrix), and MaterialX documents in colour spaces MaterialX knows.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,7 +59,8 @@ TEST(Exports, OpenPbrTableFollowsOpenPbrsRules) {
   const auto rows = csv_rows(run_ok("presets --openpbr --format csv"));
   const auto presets = csv_rows(run_ok("presets --format csv"));
   ASSERT_EQ(rows.size(), presets.size());
-  const std::map<std::string, double> n_d{{"Glass BK7", 1.5168}, {"Diamond", 2.4175}, {"Water", 1.3330}};
+  const std::map<std::string, double> n_d{
+      {"Glass BK7", 1.5168}, {"Diamond", 2.4175}, {"Water", 1.3330}};
   int dielectrics = 0;
   for (size_t i = 0; i < rows.size(); ++i) {
     const auto& r = rows[i];
@@ -71,24 +71,30 @@ TEST(Exports, OpenPbrTableFollowsOpenPbrsRules) {
     }
     ++dielectrics;
     EXPECT_EQ(r.at("base_metalness"), "0") << r.at("material");
-    EXPECT_EQ(r.at("transmission_weight"), "1") << r.at("material");  // every catalog dielectric is clear
+    EXPECT_EQ(r.at("transmission_weight"), "1")
+        << r.at("material");  // every catalog dielectric is clear
     const double eta = std::stod(r.at("specular_ior"));
     const double s = (eta - 1) / (eta + 1);
     double y = 0;
-    for (int c = 0; c < 3; ++c) y += kAp1Y[c] * std::stod(presets[i].at(std::string("f0_") + "rgb"[c]));
+    for (int c = 0; c < 3; ++c)
+      y += kAp1Y[c] * std::stod(presets[i].at(std::string("f0_") + "rgb"[c]));
     EXPECT_NEAR(s * s, y, 2e-6) << r.at("material");  // printed to 6 decimals
-    if (n_d.count(r.at("material"))) { EXPECT_NEAR(eta, n_d.at(r.at("material")), kIorTolerance) << r.at("material"); }
+    if (n_d.count(r.at("material"))) {
+      EXPECT_NEAR(eta, n_d.at(r.at("material")), kIorTolerance) << r.at("material");
+    }
   }
   EXPECT_EQ(dielectrics, 14);
 }
 
 // The ACES white-free path: values derived in AP0 and converted to AP1 by OpenColorIO equal those
-// derived in AP1 (the pipeline is linear and both spaces share the ACES white), to the printed digits.
+// derived in AP1 (the pipeline is linear and both spaces share the ACES white), to the printed
+// digits.
 std::vector<double> color_inputs(const std::string& doc, const std::string& input) {
   std::vector<double> v;
   const std::string key = "name=\"" + input + "\" type=\"color3\" value=\"";
   for (size_t p = doc.find(key); p != std::string::npos; p = doc.find(key, p + 1)) {
-    std::istringstream in(doc.substr(p + key.size(), doc.find('"', p + key.size()) - p - key.size()));
+    std::istringstream in(
+        doc.substr(p + key.size(), doc.find('"', p + key.size()) - p - key.size()));
     for (std::string c; std::getline(in, c, ',');) v.push_back(std::stod(c));
   }
   return v;
@@ -103,11 +109,14 @@ TEST(Exports, MaterialxUsesMaterialxsColourSpaces) {
   ASSERT_EQ(a.size(), 28u * 3);
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 2e-6) << i;
-  EXPECT_NE(run_ok("--space lin_p3d65 presets --format mtlx").find("colorspace=\"lin_displayp3\""), std::string::npos);
-  EXPECT_NE(run_ok("--space lin_rec2020 presets --format mtlx --shader standard_surface").find("colorspace=\"acescg\""),
+  EXPECT_NE(run_ok("--space lin_p3d65 presets --format mtlx").find("colorspace=\"lin_displayp3\""),
+            std::string::npos);
+  EXPECT_NE(run_ok("--space lin_rec2020 presets --format mtlx --shader standard_surface")
+                .find("colorspace=\"acescg\""),
             std::string::npos);
   const std::string config = std::string(FL_TESTS_DIR) + "/good_input/ocio/studio.ocio";
-  EXPECT_NE(run_ok("--ocio-config '" + config + "' --space ACEScg presets --format mtlx").find("colorspace=\"acescg\""),
+  EXPECT_NE(run_ok("--ocio-config '" + config + "' --space ACEScg presets --format mtlx")
+                .find("colorspace=\"acescg\""),
             std::string::npos);
   const auto open_pbr = run_ok("presets --format mtlx --openpbr");
   EXPECT_NE(open_pbr.find("<open_pbr_surface name=\"diamond_shader\""), std::string::npos);
@@ -115,13 +124,16 @@ TEST(Exports, MaterialxUsesMaterialxsColourSpaces) {
 }
 
 // glTF's linear Rec.709: BT.709 RGB → XYZ (ITU-R BT.709, as in tests/color) and the D65 white.
-const color::Mat3 kRec709{{0.4123907993, 0.3575843394, 0.1804807884, 0.2126390059, 0.7151686788, 0.0721923154,
-                           0.0193308187, 0.1191947798, 0.9505321522}};
+const color::Mat3 kRec709{{0.4123907993, 0.3575843394, 0.1804807884, 0.2126390059, 0.7151686788,
+                           0.0721923154, 0.0193308187, 0.1191947798, 0.9505321522}};
 double de2000_rec709(const color::Rgb& a, const color::Rgb& b) {
   const color::Xyz white = kRec709 * color::Rgb{1, 1, 1};
-  return color::ciede2000(color::xyz_to_lab(kRec709 * a, white), color::xyz_to_lab(kRec709 * b, white));
+  return color::ciede2000(color::xyz_to_lab(kRec709 * a, white),
+                          color::xyz_to_lab(kRec709 * b, white));
 }
-color::Rgb rgb(const nlohmann::json& a) { return {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()}; }
+color::Rgb rgb(const nlohmann::json& a) {
+  return {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()};
+}
 
 TEST(Exports, GltfMaterialsReproduceF0InRange) {
   const auto doc = nlohmann::json::parse(run_ok("--space lin_rec709 presets --format gltf"));
@@ -129,7 +141,8 @@ TEST(Exports, GltfMaterialsReproduceF0InRange) {
   ASSERT_EQ(doc["materials"].size(), presets.size());
   for (size_t i = 0; i < presets.size(); ++i) {
     const auto& m = doc.at("materials").at(i);
-    const color::Rgb f0{std::stod(presets[i].at("f0_r")), std::stod(presets[i].at("f0_g")), std::stod(presets[i].at("f0_b"))};
+    const color::Rgb f0{std::stod(presets[i].at("f0_r")), std::stod(presets[i].at("f0_g")),
+                        std::stod(presets[i].at("f0_b"))};
     const auto& pbr = m.at("pbrMetallicRoughness");
     for (int c = 0; c < 4; ++c) {
       EXPECT_GE(pbr["baseColorFactor"][c].get<double>(), 0.0);
@@ -138,24 +151,30 @@ TEST(Exports, GltfMaterialsReproduceF0InRange) {
     if (presets[i].at("class") == "metal") {
       EXPECT_EQ(pbr["metallicFactor"], 1);
       if (!presets[i].at("out_of_range").empty()) continue;
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(pbr["baseColorFactor"][c].get<double>(), f0[c], 2e-6) << m["name"];
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(pbr["baseColorFactor"][c].get<double>(), f0[c], 2e-6) << m["name"];
       continue;
     }
-    // A glTF renderer's dielectric F0: ((ior − 1)/(ior + 1))² × specularColorFactor (KHR_materials_specular).
+    // A glTF renderer's dielectric F0: ((ior − 1)/(ior + 1))² × specularColorFactor
+    // (KHR_materials_specular).
     EXPECT_EQ(pbr["metallicFactor"], 0);
     const auto& ext = m.at("extensions");
-    const double ior = ext.at("KHR_materials_ior").at("ior").get<double>(), s = (ior - 1) / (ior + 1);
+    const double ior = ext.at("KHR_materials_ior").at("ior").get<double>(),
+                 s = (ior - 1) / (ior + 1);
     const bool tinted = ext.contains("KHR_materials_specular");
     for (int c = 0; c < 3; ++c) {
-      const double tint = tinted ? ext.at("KHR_materials_specular").at("specularColorFactor")[c].get<double>() : 1.0;
+      const double tint =
+          tinted ? ext.at("KHR_materials_specular").at("specularColorFactor")[c].get<double>()
+                 : 1.0;
       EXPECT_NEAR(s * s * tint, f0[c], 1e-3 * f0[c]) << m["name"] << " " << c;
     }
     EXPECT_EQ(ext.at("KHR_materials_transmission").at("transmissionFactor"), 1);
   }
 }
 
-// Gold's F0 is above 1 in linear Rec.709: glTF stores the nearest in-range colour, and the ΔE2000 it
-// reports is the one computed here; it beats both clipping each channel and scaling the colour down.
+// Gold's F0 is above 1 in linear Rec.709: glTF stores the nearest in-range colour, and the ΔE2000
+// it reports is the one computed here; it beats both clipping each channel and scaling the colour
+// down.
 TEST(Exports, GltfOutOfRangePolicyOnGold) {
   const auto doc = nlohmann::json::parse(run_ok("--space lin_rec709 presets --format gltf"));
   const auto gold = std::find_if(doc["materials"].begin(), doc["materials"].end(),
@@ -163,11 +182,13 @@ TEST(Exports, GltfOutOfRangePolicyOnGold) {
   ASSERT_NE(gold, doc["materials"].end());
   const auto& x = (*gold)["extras"]["fresnelLab"];
   EXPECT_EQ(x["out_of_range"], "f0_r");
-  const color::Rgb truth = rgb(x["f0"]), stored = rgb((*gold)["pbrMetallicRoughness"]["baseColorFactor"]);
+  const color::Rgb truth = rgb(x["f0"]),
+                   stored = rgb((*gold)["pbrMetallicRoughness"]["baseColorFactor"]);
   EXPECT_GT(truth.r, 1.0);
   const double de = de2000_rec709(truth, stored);
   EXPECT_NEAR(x["de00_stored"].get<double>(), de, 1e-3);
-  const color::Rgb clipped{1.0, truth.g, truth.b}, scaled{1.0, truth.g / truth.r, truth.b / truth.r};
+  const color::Rgb clipped{1.0, truth.g, truth.b},
+      scaled{1.0, truth.g / truth.r, truth.b / truth.r};
   std::printf("gold lin_rec709 F0 stored in range: dE2000 %.4f (clipping %.4f, scaling %.4f)\n", de,
               de2000_rec709(truth, clipped), de2000_rec709(truth, scaled));
   EXPECT_LT(de, de2000_rec709(truth, clipped));
@@ -181,13 +202,17 @@ TEST(Exports, GltfRefusesOtherSpaces) {
   EXPECT_TRUE(r.out.empty());
 }
 
-// The flag's tolerance: lossless dielectrics' g (0 analytically, quadrature noise up to 2e-5) is not
-// flagged; gold's F0 of 1.04 in linear Rec.709 is, in the CSV too.
+// The flag's tolerance: lossless dielectrics' g (0 analytically, quadrature noise up to 2e-5) is
+// not flagged; gold's F0 of 1.04 in linear Rec.709 is, in the CSV too.
 TEST(Exports, OutOfRangeFlagsUseTheStatedTolerance) {
   for (const auto& r : csv_rows(run_ok("presets --format csv")))
-    if (r.at("class") == "dielectric") { EXPECT_EQ(r.at("out_of_range"), "") << r.at("material"); }
+    if (r.at("class") == "dielectric") {
+      EXPECT_EQ(r.at("out_of_range"), "") << r.at("material");
+    }
   for (const auto& r : csv_rows(run_ok("--space lin_rec709 presets --format csv")))
-    if (r.at("material") == "Gold") { EXPECT_NE(r.at("out_of_range").find("f0_r"), std::string::npos); }
+    if (r.at("material") == "Gold") {
+      EXPECT_NE(r.at("out_of_range").find("f0_r"), std::string::npos);
+    }
 }
 
 }  // namespace

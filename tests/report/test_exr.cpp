@@ -38,7 +38,8 @@ TEST(Exr, RoundTripKeepsFloatsAndAttributes) {
   const auto has_float = std::find(back.float_attributes.begin(), back.float_attributes.end(),
                                    std::pair<std::string, float>{"fresnelLab:xMax", 0.75f});
   EXPECT_NE(has_float, back.float_attributes.end());
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(tmp.path()), {}), 1);  // no temporary left
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(tmp.path()), {}),
+            1);  // no temporary left
 }
 
 }  // namespace

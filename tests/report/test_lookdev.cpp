@@ -21,21 +21,24 @@
 namespace fl {
 namespace {
 
-using test::cli;
-using test::run_command;
 using report::Image8;
 using report::Rgb8;
+using test::cli;
+using test::run_command;
 
 // giflib's quantizer bins colours to 5 bits per channel before its median cut: a flat colour comes
 // back within one 5-bit step (8 codes).
 constexpr int kQuantizeCodes = 8;
 
-Image8 flat(int w, int h, Rgb8 c) { return Image8(w, h, c); }
+Image8 flat(int w, int h, Rgb8 c) {
+  return Image8(w, h, c);
+}
 
 TEST(Gif, FramesDelaysLoopAndOnePalette) {
   Image8 a = flat(40, 30, {200, 40, 30}), b = flat(40, 30, {200, 40, 30});
   for (int x = 0; x < 40; ++x)
-    for (int y = 0; y < 10; ++y) b.set(x, y, {20, 90, 220});  // frame b differs only in its top third
+    for (int y = 0; y < 10; ++y)
+      b.set(x, y, {20, 90, 220});  // frame b differs only in its top third
   const auto bytes = report::encode_gif({a, b, a}, 90);
   EXPECT_EQ(bytes.substr(0, 6), "GIF89a");
   const auto gif = report::decode_gif(bytes, "flip.gif");
@@ -43,7 +46,8 @@ TEST(Gif, FramesDelaysLoopAndOnePalette) {
   EXPECT_EQ(gif.delays_cs, (std::vector<int>{90, 90, 90}));
   EXPECT_EQ(gif.loop_count, 0);  // forever
   EXPECT_LE(gif.palette_size, 256);
-  for (const auto& [x, y, c] : {std::tuple{5, 5, Rgb8{20, 90, 220}}, std::tuple{5, 25, Rgb8{200, 40, 30}}}) {
+  for (const auto& [x, y, c] :
+       {std::tuple{5, 5, Rgb8{20, 90, 220}}, std::tuple{5, 25, Rgb8{200, 40, 30}}}) {
     const Rgb8 got = gif.frames[1].at(x, y);
     EXPECT_NEAR(got.r, c.r, kQuantizeCodes);
     EXPECT_NEAR(got.g, c.g, kQuantizeCodes);
@@ -66,7 +70,8 @@ TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
   std::vector<double> de(static_cast<size_t>(n) * n, 0.5);
   de[0] = std::numeric_limits<double>::quiet_NaN();
   s.rows.push_back({"schlick", flat(n, n, {200, 10, 10}), de, 0.5, 0.5});
-  s.rows.push_back({"f82", flat(n, n, {10, 10, 200}), std::vector<double>(de.size(), 2.0), 2.0, 2.0});
+  s.rows.push_back(
+      {"f82", flat(n, n, {10, 10, 200}), std::vector<double>(de.size(), 2.0), 2.0, 2.0});
   const auto img = report::rasterize(report::contact_sheet_drawing(s));
   const double scale = report::heatmap_scale({0.5, 2.0});  // shared by both rows: 2
   for (size_t r = 0; r < 2; ++r) {
@@ -79,7 +84,8 @@ TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
     EXPECT_EQ(at(2, n / 2, n / 2), report::inferno(s.rows[r].de2000[1] / scale));
     EXPECT_EQ(at(2, n - 1, n - 1), report::inferno(s.rows[r].de2000[1] / scale));
   }
-  EXPECT_EQ(img.at(int(report::sheet_tile(s, 0, 2).x), int(report::sheet_tile(s, 0, 2).y)), (Rgb8{235, 235, 235}));
+  EXPECT_EQ(img.at(int(report::sheet_tile(s, 0, 2).x), int(report::sheet_tile(s, 0, 2).y)),
+            (Rgb8{235, 235, 235}));
   EXPECT_GT(report::sheet_tile(s, 1, 0).y, report::sheet_tile(s, 0, 0).y + n);
 }
 
@@ -139,7 +145,8 @@ TEST(Html, PageIsSelfContainedAndParses) {
   EXPECT_NE(page.find("<script>"), std::string::npos);
   for (const char* external : {"http://", "https://", "src=\"//", "href=\"//", "@import"})
     EXPECT_EQ(page.find(external), std::string::npos) << external;
-  EXPECT_NE(page.find("linear-gradient(90deg,#ffc864 0.0%,#ffe6b4 50.0%,#ffffff 100.0%)"), std::string::npos);
+  EXPECT_NE(page.find("linear-gradient(90deg,#ffc864 0.0%,#ffe6b4 50.0%,#ffffff 100.0%)"),
+            std::string::npos);
   EXPECT_NE(page.find("id=\"m-gold\""), std::string::npos);
   EXPECT_NE(page.find("id=\"gallery-filter\""), std::string::npos);
   EXPECT_EQ(report::html_report(sample_page()), page);
@@ -148,7 +155,8 @@ TEST(Html, PageIsSelfContainedAndParses) {
   test::TempDir tmp;
   const auto path = tmp.file("index.html", page);
   const auto r = run_command("xmllint --html --noout '" + path + "'");
-  static const std::regex kHtml5Tag(R"(Tag (header|nav|main|section|article|details|summary) invalid)");
+  static const std::regex kHtml5Tag(
+      R"(Tag (header|nav|main|section|article|details|summary) invalid)");
   std::istringstream lines(r.err);
   int errors = 0;
   for (std::string line; std::getline(lines, line);)
@@ -157,7 +165,8 @@ TEST(Html, PageIsSelfContainedAndParses) {
       ADD_FAILURE() << line;
     }
   EXPECT_EQ(errors, 0);
-  EXPECT_NE(r.err.find("Tag details invalid"), std::string::npos) << "xmllint did not parse the page: " << r.err;
+  EXPECT_NE(r.err.find("Tag details invalid"), std::string::npos)
+      << "xmllint did not parse the page: " << r.err;
 }
 
 const std::string kHdri = std::string(FL_SHARED_TESTDATA) + "/hdri";
@@ -165,29 +174,33 @@ const std::string kHdri = std::string(FL_SHARED_TESTDATA) + "/hdri";
 TEST(RenderCli, CompareUnderAnHdrEnvironment) {
   test::TempDir tmp;
   const std::string out = tmp.path() + "/g.exr";
-  const auto r = run_command(cli() + " render gold --env '" + kHdri + "/studio.exr' --compare schlick,f82 --size 41 "
-                             "--samples 8 --out '" + out + "'");
+  const auto r = run_command(cli() + " render gold --env '" + kHdri +
+                             "/studio.exr' --compare schlick,f82 --size 41 "
+                             "--samples 8 --out '" +
+                             out + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("lin_rec709 (OpenEXR's default"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("ΔE2000 truth vs f82"), std::string::npos);
-  for (const char* f : {"g.truth.png", "g.schlick.png", "g.schlick.de2000.png", "g.f82.png", "g.f82.de2000.png",
-                        "g.flip.gif", "g.sheet.png"})
+  for (const char* f : {"g.truth.png", "g.schlick.png", "g.schlick.de2000.png", "g.f82.png",
+                        "g.f82.de2000.png", "g.flip.gif", "g.sheet.png"})
     EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/" + f)) << f;
   const auto exr = report::read_exr(out);
-  for (const char* ch : {"R", "G", "B", "A", "schlick.R", "schlick.B", "schlick.de2000", "f82.G", "f82.de2000"})
+  for (const char* ch :
+       {"R", "G", "B", "A", "schlick.R", "schlick.B", "schlick.de2000", "f82.G", "f82.de2000"})
     EXPECT_NE(std::find(exr.channels.begin(), exr.channels.end(), ch), exr.channels.end()) << ch;
   ASSERT_TRUE(exr.chromaticities.has_value());
   EXPECT_NEAR((*exr.chromaticities)[0], 0.713, 1e-4);  // ACEScg's red primary
   std::ifstream in(tmp.path() + "/g.flip.gif", std::ios::binary);
-  const auto gif = report::decode_gif(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.gif");
+  const auto gif =
+      report::decode_gif(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.gif");
   EXPECT_EQ(gif.frames.size(), 4u);  // truth, schlick, truth, f82
   EXPECT_EQ(gif.frames[0].pixels, gif.frames[2].pixels);
   EXPECT_NE(gif.frames[0].pixels, gif.frames[1].pixels);
 }
 
 // An EXR written by the tool's own encoder, for the bad-input cases.
-std::string exr_file(const test::TempDir& tmp, const std::string& name, int w, int h, std::vector<std::string> channels,
-                     float value) {
+std::string exr_file(const test::TempDir& tmp, const std::string& name, int w, int h,
+                     std::vector<std::string> channels, float value) {
   report::ExrImage img;
   img.width = w;
   img.height = h;
@@ -217,7 +230,8 @@ TEST(RenderCli, BadEnvironmentsExitTwoWithOneLine) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
   const auto good = exr_file(tmp, "good.exr", 8, 4, {"B", "G", "R"}, 1.0f);
-  EXPECT_EQ(run_command(cli() + " render gold --env '" + good + "' --env-space nowhere" + out).status, 2);
+  EXPECT_EQ(
+      run_command(cli() + " render gold --env '" + good + "' --env-space nowhere" + out).status, 2);
   EXPECT_EQ(run_command(cli() + " render gold --compare schlick,bogus" + out).status, 2);
   EXPECT_EQ(run_command(cli() + " render gold --model f82 --compare schlick" + out).status, 2);
   EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/o.exr"));

@@ -24,9 +24,9 @@ namespace fl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Filament's formula on the 128 × 128 table against the integral, n·v ≥ 0.05, within the span of the
-// texel centres: measured 8.1e-4 with the 2048 samples per texel used here, 3.8e-4 with the default
-// 8192 (at n·v = 0.05, where bilinear interpolation between texels dominates).
+// Filament's formula on the 128 × 128 table against the integral, n·v ≥ 0.05, within the span of
+// the texel centres: measured 8.1e-4 with the 2048 samples per texel used here, 3.8e-4 with the
+// default 8192 (at n·v = 0.05, where bilinear interpolation between texels dominates).
 constexpr double kFilamentFormulaTolerance = 2e-3;
 constexpr double kMinNov = 0.05;
 // The sheen albedo (uniformly sampled half vectors) against quadrature, α ≥ 0.1.
@@ -54,12 +54,14 @@ std::vector<double> read_inc(const std::string& text) {
   for (std::string line; std::getline(in, line);) {
     if (line.rfind("//", 0) == 0) continue;
     for (size_t p = line.find("0x"); p != std::string::npos; p = line.find("0x", p + 2))
-      v.push_back(half_to_double(static_cast<std::uint16_t>(std::stoul(line.substr(p + 2, 4), nullptr, 16))));
+      v.push_back(half_to_double(
+          static_cast<std::uint16_t>(std::stoul(line.substr(p + 2, 4), nullptr, 16))));
   }
   return v;
 }
 
-// GL bilinear filtering with clamp-to-edge of an N × N RGB texture stored row by row (row 0 at v = 0).
+// GL bilinear filtering with clamp-to-edge of an N × N RGB texture stored row by row (row 0 at v =
+// 0).
 std::array<double, 3> sample(const std::vector<double>& tex, int n, double u, double v) {
   auto axis = [n](double t, int& i0, int& i1, double& f) {
     const double x = t * n - 0.5;
@@ -75,18 +77,20 @@ std::array<double, 3> sample(const std::vector<double>& tex, int n, double u, do
   std::array<double, 3> out{};
   for (int c = 0; c < 3; ++c) {
     auto at = [&](int x, int y) { return tex[(static_cast<size_t>(y) * n + x) * 3 + c]; };
-    out[c] = (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
+    out[c] = (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) +
+             fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
   }
   return out;
 }
 
-// Max |formula − integral| over a grid of (n·v, roughness) in [nov_lo, nov_hi] × [r_lo, r_hi], off the
-// texel centres; the formula is linear in f0, so its largest error over f0 ∈ [0, 1] is at 0 or 1.
+// Max |formula − integral| over a grid of (n·v, roughness) in [nov_lo, nov_hi] × [r_lo, r_hi], off
+// the texel centres; the formula is linear in f0, so its largest error over f0 ∈ [0, 1] is at 0
+// or 1.
 struct Worst {
   double error = 0, nov = 0, rough = 0;
 };
-Worst formula_error(const std::vector<double>& tex, int n, double nov_lo, double nov_hi, double r_lo, double r_hi,
-                    int points) {
+Worst formula_error(const std::vector<double>& tex, int n, double nov_lo, double nov_hi,
+                    double r_lo, double r_hi, int points) {
   const int kPoints = points;
   Worst w;
   for (int a = 0; a < kPoints; ++a)
@@ -107,30 +111,35 @@ Worst formula_error(const std::vector<double>& tex, int n, double nov_lo, double
 // Filament's lookup covers uv ∈ [½/N, 1 − ½/N] with its texel centres; beyond them (the outer half
 // texel of each axis) clamp-to-edge holds the edge texel, which costs the slope there times ½/N
 // whatever the table holds: 4.9e-3 at roughness 1, n·v = 1, where ∫ ρ cos falls by 1.2 per unit of
-// roughness (the best constant would still be 2.4e-3 off). That strip is measured and bounded apart.
+// roughness (the best constant would still be 2.4e-3 off). That strip is measured and bounded
+// apart.
 constexpr double kFilamentEdgeTolerance = 6e-3;
 
 TEST(LutFiles, FilamentShaderFormulaMatchesTheIntegral) {
   test::TempDir tmp;
   const std::string inc = tmp.path() + "/dfg.inc";
-  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q lut dfg --layout filament --samples 2048 --out '" +
-                                   inc + "'");
+  const auto r =
+      test::run_command(std::string("'") + FL_CLI +
+                        "' -q lut dfg --layout filament --samples 2048 --out '" + inc + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto tex = read_inc(slurp(inc));
   constexpr int n = 128;  // Filament's DFG_LUT_SIZE, the layout's default
   ASSERT_EQ(tex.size(), static_cast<size_t>(n * n * 3));
   const double lo = 0.5 / n, hi = 1 - 0.5 / n;
   const Worst inside = formula_error(tex, n, kMinNov, hi, lo, hi, 37);
-  std::printf("Filament formula on the 128x128 table vs integral, n.v in [%.2f, %.4f], roughness in [%.4f, %.4f]: "
-              "max abs %.3g (n.v %.3f, roughness %.3f)\n",
-              kMinNov, hi, lo, hi, inside.error, inside.nov, inside.rough);
+  std::printf(
+      "Filament formula on the 128x128 table vs integral, n.v in [%.2f, %.4f], roughness in [%.4f, "
+      "%.4f]: "
+      "max abs %.3g (n.v %.3f, roughness %.3f)\n",
+      kMinNov, hi, lo, hi, inside.error, inside.nov, inside.rough);
   EXPECT_LE(inside.error, kFilamentFormulaTolerance);
   Worst edge;
-  for (const Worst& w : {formula_error(tex, n, kMinNov, 1, hi, 1, 9), formula_error(tex, n, kMinNov, 1, 0, lo, 9),
-                         formula_error(tex, n, hi, 1, 0, 1, 9)})
+  for (const Worst& w :
+       {formula_error(tex, n, kMinNov, 1, hi, 1, 9), formula_error(tex, n, kMinNov, 1, 0, lo, 9),
+        formula_error(tex, n, hi, 1, 0, 1, 9)})
     if (w.error > edge.error) edge = w;
-  std::printf("  outer half texels (clamp to edge): max abs %.3g (n.v %.3f, roughness %.3f)\n", edge.error, edge.nov,
-              edge.rough);
+  std::printf("  outer half texels (clamp to edge): max abs %.3g (n.v %.3f, roughness %.3f)\n",
+              edge.error, edge.nov, edge.rough);
   EXPECT_LE(edge.error, kFilamentEdgeTolerance);
 }
 
@@ -152,7 +161,8 @@ TEST(LutFiles, SheenChannelMatchesQuadrature) {
   double worst = 0;
   for (double nov : {0.1, 0.4, 0.8, 1.0})
     for (double alpha : {0.1, 0.3, 0.6, 1.0}) {
-      const double got = analysis::integrate_sheen_dfg(nov, alpha), want = sheen_reference(nov, alpha);
+      const double got = analysis::integrate_sheen_dfg(nov, alpha),
+                   want = sheen_reference(nov, alpha);
       worst = std::max(worst, std::abs(got - want));
       EXPECT_NEAR(got, want, kSheenTolerance) << nov << " " << alpha;
     }
@@ -162,7 +172,8 @@ TEST(LutFiles, SheenChannelMatchesQuadrature) {
 TEST(LutFiles, SplitSumCsvCarriesItsFormulaAndReproducesTheIntegral) {
   test::TempDir tmp;
   const std::string csv = tmp.path() + "/dfg.csv";
-  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q lut dfg --size 8 --out '" + csv + "'");
+  const auto r =
+      test::run_command(std::string("'") + FL_CLI + "' -q lut dfg --size 8 --out '" + csv + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   std::istringstream in(slurp(csv));
   std::string line;
@@ -176,7 +187,8 @@ TEST(LutFiles, SplitSumCsvCarriesItsFormulaAndReproducesTheIntegral) {
     for (std::string x; std::getline(ls, x, ',');) c.push_back(std::stod(x));
     ASSERT_EQ(c.size(), 6u);
     const auto ref = test::reference_moments(c[0], c[2]);
-    for (double f0 : {0.04, 1.0}) EXPECT_NEAR(f0 * c[3] + c[4], f0 * ref.dfg1 + ref.dfg2, kSplitSumTolerance);
+    for (double f0 : {0.04, 1.0})
+      EXPECT_NEAR(f0 * c[3] + c[4], f0 * ref.dfg1 + ref.dfg2, kSplitSumTolerance);
     EXPECT_NEAR(c[5], ref.l_d, kSplitSumTolerance);
     ++rows;
   }

@@ -27,7 +27,8 @@ using brdf::Vec3;
 // The acceptance bound: a mirror sphere's centre pixel is F0 × the key light's radiance.
 constexpr double kMirrorCentreTol = 1e-3;
 // 4096 Hammersley samples per strategy against a fine midpoint quadrature of the same integral
-// (measured: 5e-4 off at 4096 samples, 4e-3 at 256; the quasi-Monte Carlo error falls about as 1/N).
+// (measured: 5e-4 off at 4096 samples, 4e-3 at 256; the quasi-Monte Carlo error falls about as
+// 1/N).
 constexpr int kShadingSamples = 4096;
 constexpr double kShadingQuadratureTol = 2e-3;
 // One 8-bit display code.
@@ -52,7 +53,8 @@ color::Rgb centre_pixel(const analysis::SphereImage& img) {
 TEST(Render, MirrorCentrePixelIsF0TimesTheKeyLight) {
   const auto& ctx = test_context();
   for (const char* name : {"gold", "chromium", "copper", "diamond"}) {
-    const auto m = analysis::load_material(ctx, spectral::resolve_material(name, ctx.settings().paths));
+    const auto m =
+        analysis::load_material(ctx, spectral::resolve_material(name, ctx.settings().paths));
     const color::Rgb f0 = analysis::ground_truth_rgb(ctx, m.ior, 1.0, 1.0);
     auto env = analysis::default_environment();
     env.key_radiance = {2.5, 1.5, 0.75};  // not white, so a channel mix-up would show
@@ -60,14 +62,17 @@ TEST(Render, MirrorCentrePixelIsF0TimesTheKeyLight) {
     rs.size_px = 33;
     rs.roughness = 0.0;
     rs.threads = 1;
-    const auto img = analysis::render_sphere(env, analysis::truth_fresnel_table(ctx, m.ior, 1.0), rs);
+    const auto img =
+        analysis::render_sphere(env, analysis::truth_fresnel_table(ctx, m.ior, 1.0), rs);
     const auto c = centre_pixel(img);
     EXPECT_NEAR(c.r, f0.r * env.key_radiance.r, kMirrorCentreTol) << name;
     EXPECT_NEAR(c.g, f0.g * env.key_radiance.g, kMirrorCentreTol) << name;
     EXPECT_NEAR(c.b, f0.b * env.key_radiance.b, kMirrorCentreTol) << name;
     EXPECT_FLOAT_EQ(img.alpha[static_cast<size_t>(16) * 33 + 16], 1.0f);
     // Gold's F0 is far from grey: the check is not passing on a neutral value by accident.
-    if (std::string(name) == "gold") { EXPECT_GT(f0.r - f0.b, 0.3); }
+    if (std::string(name) == "gold") {
+      EXPECT_GT(f0.r - f0.b, 0.3);
+    }
   }
 }
 
@@ -78,8 +83,9 @@ TEST(Render, MirrorCentrePixelWithAModelIsItsF0) {
   rs.size_px = 17;
   rs.roughness = 0.0;
   rs.threads = 2;
-  const auto c = centre_pixel(
-      analysis::render_sphere(env, analysis::model_fresnel_table(fresnel::model_of<fresnel::models::Schlick>, schlick_f0), rs));
+  const auto c = centre_pixel(analysis::render_sphere(
+      env, analysis::model_fresnel_table(fresnel::model_of<fresnel::models::Schlick>, schlick_f0),
+      rs));
   EXPECT_NEAR(c.r, 0.95 * env.key_radiance.r, kMirrorCentreTol);
   EXPECT_NEAR(c.g, 0.64 * env.key_radiance.g, kMirrorCentreTol);
   EXPECT_NEAR(c.b, 0.54 * env.key_radiance.b, kMirrorCentreTol);
@@ -103,7 +109,11 @@ double quadrature(const Environment& env, const Vec3& v, double alpha) {
 }
 
 TEST(Render, ImportanceSampledShadingMatchesQuadrature) {
-  const analysis::FresnelTable one = analysis::tabulate_fresnel([](double) { return color::Rgb{1, 1, 1}; }, 2);
+  const analysis::FresnelTable one = analysis::tabulate_fresnel(
+      [](double) {
+        return color::Rgb{1, 1, 1};
+      },
+      2);
   const Vec3 n{0, 0, 1};
   const double alpha = 0.3 * 0.3;
   // (a) a white furnace: the result is the lobe's directional albedo, below 1.
@@ -124,7 +134,8 @@ TEST(Render, ImportanceSampledShadingMatchesQuadrature) {
 
 TEST(Render, DeterministicAcrossThreadCounts) {
   const auto env = analysis::default_environment();
-  const auto table = analysis::model_fresnel_table(fresnel::model_of<fresnel::models::Schlick>, {0.9, 0.6, 0.3});
+  const auto table =
+      analysis::model_fresnel_table(fresnel::model_of<fresnel::models::Schlick>, {0.9, 0.6, 0.3});
   analysis::RenderSettings rs;
   rs.size_px = 41;
   rs.samples = 8;
@@ -140,7 +151,8 @@ TEST(Render, DeterministicAcrossThreadCounts) {
 // IEC 61966-2-1 (sRGB): the encoding of a linear value in [0, 1], as an 8-bit code.
 int srgb_code(double linear) {
   linear = std::clamp(linear, 0.0, 1.0);
-  const double v = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+  const double v =
+      linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
   return static_cast<int>(std::lround(255.0 * v));
 }
 
@@ -148,7 +160,8 @@ int srgb_code(double linear) {
 color::Rgb acescg_to_rec709(const color::Rgb& v) {
   static const double m[3][3] = {
       {1.70505, -0.62179, -0.08326}, {-0.13026, 1.14080, -0.01055}, {-0.02400, -0.12897, 1.15297}};
-  return {m[0][0] * v.r + m[0][1] * v.g + m[0][2] * v.b, m[1][0] * v.r + m[1][1] * v.g + m[1][2] * v.b,
+  return {m[0][0] * v.r + m[0][1] * v.g + m[0][2] * v.b,
+          m[1][0] * v.r + m[1][1] * v.g + m[1][2] * v.b,
           m[2][0] * v.r + m[2][1] * v.g + m[2][2] * v.b};
 }
 
@@ -171,7 +184,9 @@ Ink ink(const report::Image8& img) {
   Ink b;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
-      if (img.at(x, y).r < 128) b.x0 = std::min(b.x0, x), b.y0 = std::min(b.y0, y), b.x1 = std::max(b.x1, x), b.y1 = std::max(b.y1, y);
+      if (img.at(x, y).r < 128)
+        b.x0 = std::min(b.x0, x), b.y0 = std::min(b.y0, y), b.x1 = std::max(b.x1, x),
+        b.y1 = std::max(b.y1, y);
   return b;
 }
 
@@ -230,7 +245,7 @@ TEST(Draw, TextIsAlignedOnItsAnchor) {
   const Ink centre = drawn(report::Align::Center, false);
   ASSERT_GE(centre.x1, 0) << "no text drawn";
   EXPECT_NEAR(0.5 * (centre.x0 + centre.x1), 120, kInkTol);
-  EXPECT_LE(centre.y1, 120);      // "Fresnel" has no descender: ink ends on the baseline
+  EXPECT_LE(centre.y1, 120);       // "Fresnel" has no descender: ink ends on the baseline
   EXPECT_GE(centre.y0, 120 - 20);  // and its capitals stay within the em size
   const Ink left = drawn(report::Align::Left, false), right = drawn(report::Align::Right, false);
   EXPECT_NEAR(left.x0, 120, kInkTol);
@@ -260,7 +275,8 @@ TEST(Draw, SvgIsWellFormedXmlAndPdfHasOnePage) {
   EXPECT_NE(svg.find("width=\"320px\" height=\"200px\""), std::string::npos);
   EXPECT_EQ(count(svg, "<svg"), 1u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
-  EXPECT_EQ(svg, report::encode(d, report::FileType::Svg));  // Cairo's surface counters have moved on
+  EXPECT_EQ(svg,
+            report::encode(d, report::FileType::Svg));  // Cairo's surface counters have moved on
   const auto pdf = report::encode(d, report::FileType::Pdf);
   EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
   EXPECT_EQ(count(pdf, "/Type /Page\n") + count(pdf, "/Type /Page "), 1u);
@@ -286,9 +302,14 @@ TEST(Figures, WhiteDisplaysAsWhite) {
 // normal incidence, so its ground truth is the grey 0.04 × white; a Schlick model shows its F0.
 TEST(Figures, StripPixelsAreTheSrgbEncodingOfKnownReflectances) {
   const auto& ctx = test_context();
-  spectral::ComplexIorSpectrum glass{ctx.grid(), std::vector<std::complex<double>>(ctx.grid().count, {1.5, 0.0})};
+  spectral::ComplexIorSpectrum glass{
+      ctx.grid(), std::vector<std::complex<double>>(ctx.grid().count, {1.5, 0.0})};
   const color::Rgb f0{0.6, 0.45, 0.3};
-  const analysis::FigureRequest in{"Test glass", "derived", &glass, {{fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}}}};
+  const analysis::FigureRequest in{
+      "Test glass",
+      "derived",
+      &glass,
+      {{fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}}}};
   const auto data = analysis::strip_data(ctx, in);
   ASSERT_EQ(data.rows.size(), 2u);
   const auto img = draw_png(report::strip_drawing(data));
@@ -313,7 +334,8 @@ TEST(Figures, StripPixelsAreTheSrgbEncodingOfKnownReflectances) {
   const auto p = report::strip_cell(data, 1, 1, data.spans[1].samples - 1);
   EXPECT_GE(img.at(static_cast<int>(p.x), static_cast<int>(p.y) + 1).g, srgb_code(0.99));
   // The figure is exactly as wide as its strips plus the labels and the RMS column.
-  EXPECT_EQ(img.width, static_cast<int>(report::strip_cell(data, 0, 1, 0).x) + data.spans[1].samples + 14 + 100 + 16);
+  EXPECT_EQ(img.width, static_cast<int>(report::strip_cell(data, 0, 1, 0).x) +
+                           data.spans[1].samples + 14 + 100 + 16);
 }
 
 // matplotlib's inferno table (van der Walt & Smith 2015): first and last entries.
@@ -351,8 +373,13 @@ TEST(Figures, HeatMapLegendEndsAreInfernosEnds) {
 
 TEST(Figures, CurveAndSpeedFiguresHaveTheirSizes) {
   const auto& ctx = test_context();
-  const auto m = analysis::load_material(ctx, spectral::resolve_material("chromium", ctx.settings().paths));
-  const analysis::FigureRequest in{"Chromium", "derived", &m.ior, {{fresnel::model_of<fresnel::models::Schlick>, {0.55, 0.55, 0.56}}}};
+  const auto m =
+      analysis::load_material(ctx, spectral::resolve_material("chromium", ctx.settings().paths));
+  const analysis::FigureRequest in{
+      "Chromium",
+      "derived",
+      &m.ior,
+      {{fresnel::model_of<fresnel::models::Schlick>, {0.55, 0.55, 0.56}}}};
   const auto curves = analysis::curve_data(ctx, in);
   ASSERT_EQ(curves.models.size(), 1u);
   EXPECT_EQ(curves.models[0].de2000.size(), ctx.angles_deg().size());
@@ -361,8 +388,9 @@ TEST(Figures, CurveAndSpeedFiguresHaveTheirSizes) {
   const auto img = draw_png(report::curves_drawing(curves));
   EXPECT_EQ(img.width, 940);
   EXPECT_EQ(img.height, 820);
-  std::vector<analysis::SpeedRow> rows{{fresnel::model_of<fresnel::models::Schlick>, false, 0.5, 1.6, 3.0, false},
-                                       {fresnel::model_of<fresnel::models::F82>, true, 1.5, 0.6, 2.0, true}};
+  std::vector<analysis::SpeedRow> rows{
+      {fresnel::model_of<fresnel::models::Schlick>, false, 0.5, 1.6, 3.0, false},
+      {fresnel::model_of<fresnel::models::F82>, true, 1.5, 0.6, 2.0, true}};
   const auto speed = draw_png(report::speed_plot(rows));
   EXPECT_EQ(speed.width, 960);
   EXPECT_EQ(speed.height, 560);
@@ -372,13 +400,19 @@ TEST(PictureCli, PlotAndRenderWriteTheirFiles) {
   using test::cli;
   using test::run_command;
   test::TempDir tmp;
-  const auto strip = tmp.path() + "/s.png", curves = tmp.path() + "/c.svg", exr = tmp.path() + "/r.exr";
-  ASSERT_EQ(run_command(cli() + " -q plot strip gold --models schlick,f82 --out '" + strip + "'").status, 0);
+  const auto strip = tmp.path() + "/s.png", curves = tmp.path() + "/c.svg",
+             exr = tmp.path() + "/r.exr";
+  ASSERT_EQ(
+      run_command(cli() + " -q plot strip gold --models schlick,f82 --out '" + strip + "'").status,
+      0);
   ASSERT_EQ(run_command(cli() + " -q plot curves gold --out '" + curves + "'").status, 0);
   ASSERT_EQ(run_command(cli() + " -q plot strip gold --out '" + tmp.path() + "/s.pdf'").status, 0);
-  const auto r = run_command(cli() + " -q render gold --model f82 --roughness 0 --size 21 --samples 4 --out '" + exr + "'");
+  const auto r = run_command(
+      cli() + " -q render gold --model f82 --roughness 0 --size 21 --samples 4 --out '" + exr +
+      "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* f : {"/s.png", "/c.svg", "/s.pdf", "/r.exr", "/r.png", "/r.truth.png", "/r.de2000.png"})
+  for (const char* f :
+       {"/s.png", "/c.svg", "/s.pdf", "/r.exr", "/r.png", "/r.truth.png", "/r.de2000.png"})
     EXPECT_TRUE(std::filesystem::exists(tmp.path() + f)) << f;
   EXPECT_EQ(report::read_png(tmp.path() + "/r.png").width, 21);
   EXPECT_EQ(slurp(tmp.path() + "/s.pdf").rfind("%PDF-", 0), 0u);
@@ -388,14 +422,18 @@ TEST(PictureCli, PlotAndRenderWriteTheirFiles) {
   const auto bad = run_command(cli() + " plot strip gold --out '" + tmp.path() + "/x.jpg'");
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
-  EXPECT_EQ(run_command(cli() + " plot strip gold --models nosuch --out '" + tmp.path() + "/y.png'").status, 2);
-  EXPECT_EQ(run_command(cli() + " render gold --roughness 2 --out '" + tmp.path() + "/z.exr'").status, 2);
+  EXPECT_EQ(run_command(cli() + " plot strip gold --models nosuch --out '" + tmp.path() + "/y.png'")
+                .status,
+            2);
+  EXPECT_EQ(
+      run_command(cli() + " render gold --roughness 2 --out '" + tmp.path() + "/z.exr'").status, 2);
   EXPECT_EQ(run_command(cli() + " speed --plot '" + tmp.path() + "/p.gif'").status, 2);
-  const auto no_font =
-      run_command("FRESNEL_LAB_FONT='" + tmp.path() + "/none.ttf' " + cli() + " plot strip gold --out '" + tmp.path() + "/f.png'");
+  const auto no_font = run_command("FRESNEL_LAB_FONT='" + tmp.path() + "/none.ttf' " + cli() +
+                                   " plot strip gold --out '" + tmp.path() + "/f.png'");
   EXPECT_EQ(no_font.status, 2);
   EXPECT_EQ(std::count(no_font.err.begin(), no_font.err.end(), '\n'), 1) << no_font.err;
-  for (const char* f : {"/x.jpg", "/z.exr", "/p.gif", "/f.png"}) EXPECT_FALSE(std::filesystem::exists(tmp.path() + f)) << f;
+  for (const char* f : {"/x.jpg", "/z.exr", "/p.gif", "/f.png"})
+    EXPECT_FALSE(std::filesystem::exists(tmp.path() + f)) << f;
   for (const char* cmd : {"plot", "plot strip", "plot curves", "render"})
     EXPECT_EQ(run_command(cli() + " " + cmd + " --help").status, 0) << cmd;
 }

@@ -43,7 +43,9 @@ std::pair<double, double> white_xy(const std::string& name, const SpectralGrid& 
 TEST(Cie, ObserverPeaksAndArea) {
   const auto grid5 = SpectralGrid::visible(5.0);
   const auto obs = cie1931_2deg(grid5, default_colord_dir());
-  auto at = [&](const Spectrum& s, double nm) { return s.values[static_cast<int>((nm - grid5.start_nm) / 5.0)]; };
+  auto at = [&](const Spectrum& s, double nm) {
+    return s.values[static_cast<int>((nm - grid5.start_nm) / 5.0)];
+  };
   // CIE 15:2004 Table T.4 (5 nm): the maxima of x̄, ȳ, z̄.
   EXPECT_EQ(at(obs.y_bar, 555), 1.0);
   EXPECT_EQ(*std::max_element(obs.y_bar.values.begin(), obs.y_bar.values.end()), 1.0);
@@ -78,9 +80,9 @@ TEST(Cie, IlluminantWhitePoints) {
   EXPECT_THROW(illuminant_spd("D1000", grid, default_colord_dir()), InputError);
 }
 
-// CIE 15:2004 §3.1: D65 is the daylight basis S0 + M1 S1 + M2 S2 at 6500·1.4388/1.4380 K with M1, M2
-// rounded to 3 decimals; built without the rounding, it follows CIE's table (normalized to 100 at
-// 560 nm) within this many units (measured 0.016).
+// CIE 15:2004 §3.1: D65 is the daylight basis S0 + M1 S1 + M2 S2 at 6500·1.4388/1.4380 K with M1,
+// M2 rounded to 3 decimals; built without the rounding, it follows CIE's table (normalized to 100
+// at 560 nm) within this many units (measured 0.016).
 constexpr double kDaylightTableTolerance = 0.03;
 
 TEST(Cie, DaylightBasisReproducesTheTabulatedD65) {
@@ -90,7 +92,8 @@ TEST(Cie, DaylightBasisReproducesTheTabulatedD65) {
   const int i560 = static_cast<int>((560.0 - grid.start_nm) / grid.step_nm);
   double worst = 0;
   for (int i = 0; i < grid.count; ++i)
-    worst = std::max(worst, std::abs(100.0 * built.values[i] / built.values[i560] - 100.0 * table.values[i] / table.values[i560]));
+    worst = std::max(worst, std::abs(100.0 * built.values[i] / built.values[i560] -
+                                     100.0 * table.values[i] / table.values[i560]));
   EXPECT_LT(worst, kDaylightTableTolerance);
 }
 

@@ -22,8 +22,9 @@ std::vector<std::string> specs_of(const std::vector<MaterialRequest>& requests) 
 class PageGlobs : public ::testing::Test {
  protected:
   void SetUp() override {
-    for (const char* page : {"main/Au/nk/Johnson", "main/Au/nk/Babar", "main/Ag/nk/Johnson", "main/Au2O3/nk/X",
-                             "other/alloys/Cu-Zn/nk/Querry-Cu70Zn30", "other/alloys/Cu-Zn/nk/Querry-Cu90Zn10"})
+    for (const char* page :
+         {"main/Au/nk/Johnson", "main/Au/nk/Babar", "main/Ag/nk/Johnson", "main/Au2O3/nk/X",
+          "other/alloys/Cu-Zn/nk/Querry-Cu70Zn30", "other/alloys/Cu-Zn/nk/Querry-Cu90Zn10"})
       db_.file(std::string("data/") + page + ".yml", "DATA:\n");
     db_.file("data/main/Au/about.yml", "");
     db_.file("catalog-nk.yml", "");  // beside data/: never a page
@@ -46,20 +47,27 @@ TEST_F(PageGlobs, FolderIsTheSegmentsBeforeTheFirstWildcard) {
 }
 
 TEST_F(PageGlobs, ListingUnderAFolderHoldsItsPagesOnly) {
-  const std::vector<std::string> all{"main/Ag/nk/Johnson", "main/Au/nk/Babar", "main/Au/nk/Johnson", "main/Au2O3/nk/X",
-                                     "other/alloys/Cu-Zn/nk/Querry-Cu70Zn30", "other/alloys/Cu-Zn/nk/Querry-Cu90Zn10"};
+  const std::vector<std::string> all{"main/Ag/nk/Johnson",
+                                     "main/Au/nk/Babar",
+                                     "main/Au/nk/Johnson",
+                                     "main/Au2O3/nk/X",
+                                     "other/alloys/Cu-Zn/nk/Querry-Cu70Zn30",
+                                     "other/alloys/Cu-Zn/nk/Querry-Cu90Zn10"};
   EXPECT_EQ(list_pages(db_.path()), all);
-  EXPECT_EQ(list_pages(db_.path(), "main/Au"), (std::vector<std::string>{"main/Au/nk/Babar", "main/Au/nk/Johnson"}));
+  EXPECT_EQ(list_pages(db_.path(), "main/Au"),
+            (std::vector<std::string>{"main/Au/nk/Babar", "main/Au/nk/Johnson"}));
   EXPECT_TRUE(list_pages(db_.path(), "main/Pt").empty());
 }
 
 TEST_F(PageGlobs, EachGlobNamesTheSamePagesAsOverTheWholeListing) {
-  EXPECT_EQ(expand({"main/Au/**"}), (std::vector<std::string>{"main/Au/nk/Babar", "main/Au/nk/Johnson"}));
-  EXPECT_EQ(expand({"main/Au*/nk/*"}),
-            (std::vector<std::string>{"main/Au/nk/Babar", "main/Au/nk/Johnson", "main/Au2O3/nk/X"}));
+  EXPECT_EQ(expand({"main/Au/**"}),
+            (std::vector<std::string>{"main/Au/nk/Babar", "main/Au/nk/Johnson"}));
+  EXPECT_EQ(
+      expand({"main/Au*/nk/*"}),
+      (std::vector<std::string>{"main/Au/nk/Babar", "main/Au/nk/Johnson", "main/Au2O3/nk/X"}));
   EXPECT_EQ(expand({"other/alloys/Cu-Zn/**-Cu70Zn30", "main/A?/nk/Johnson", "gold"}),
-            (std::vector<std::string>{"other/alloys/Cu-Zn/nk/Querry-Cu70Zn30", "main/Ag/nk/Johnson", "main/Au/nk/Johnson",
-                                      "gold"}));
+            (std::vector<std::string>{"other/alloys/Cu-Zn/nk/Querry-Cu70Zn30", "main/Ag/nk/Johnson",
+                                      "main/Au/nk/Johnson", "gold"}));
   EXPECT_EQ(expand({"*/Ag/**"}), (std::vector<std::string>{"main/Ag/nk/Johnson"}));
   EXPECT_EQ(expand({"**"}).size(), 6u);
   EXPECT_THROW(expand({"../**"}), InputError);

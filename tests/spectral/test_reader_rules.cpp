@@ -18,7 +18,9 @@ namespace {
 // rows the reader interpolates linearly, which the expected values below do by hand.
 constexpr double kExact = 1e-12;
 
-std::string nk_page(const std::string& rows) { return "DATA:\n  - type: tabulated nk\n    data: |\n" + rows; }
+std::string nk_page(const std::string& rows) {
+  return "DATA:\n  - type: tabulated nk\n    data: |\n" + rows;
+}
 
 SampledIor sample_at(const std::string& path, double lambda_nm) {
   return sample_ior(read_refractiveindex_file(path), SpectralGrid{lambda_nm, 5.0, 1}, "t");
@@ -39,21 +41,25 @@ std::string error_of(const std::string& path, int* line = nullptr) {
 // visible. The repeat is merged and named in one warning.
 TEST(ReaderRules, ExactDuplicateOutsideTheVisibleIsMerged) {
   test::TempDir tmp;
-  const auto p = tmp.file("w.yml", nk_page("        0.07755 0.9838 1.145\n        0.07755 0.9838 1.145\n"
-                                           "        0.30 3.0 2.5\n        0.90 3.6 2.9\n"));
+  const auto p =
+      tmp.file("w.yml", nk_page("        0.07755 0.9838 1.145\n        0.07755 0.9838 1.145\n"
+                                "        0.30 3.0 2.5\n        0.90 3.6 2.9\n"));
   const auto oc = read_refractiveindex_file(p);
   ASSERT_EQ(oc.blocks.front().lambda_nm.size(), 3u);
   ASSERT_EQ(oc.warnings.size(), 1u);
-  EXPECT_NE(oc.warnings[0].find(p + ":5: 1 exact duplicate row merged"), std::string::npos) << oc.warnings[0];
+  EXPECT_NE(oc.warnings[0].find(p + ":5: 1 exact duplicate row merged"), std::string::npos)
+      << oc.warnings[0];
 }
 
 // specs/hikari/SiO2/NIFS-U and seven more Hikari/Ohara glasses: the 370 nm row twice, inside the
 // visible. Merging loses nothing: the values there are the row's own.
 TEST(ReaderRules, ExactDuplicateInsideTheVisibleIsMerged) {
   test::TempDir tmp;
-  const auto p = tmp.file("h.yml", "DATA:\n  - type: tabulated k\n    data: |\n        0.36 3.0e-08\n"
-                                   "        0.37 2.9458e-08\n        0.37 2.9458e-08\n        0.90 1.0e-08\n"
-                                   "  - type: formula 5\n    wavelength_range: 0.3 1.0\n    coefficients: 1.45\n");
+  const auto p =
+      tmp.file("h.yml",
+               "DATA:\n  - type: tabulated k\n    data: |\n        0.36 3.0e-08\n"
+               "        0.37 2.9458e-08\n        0.37 2.9458e-08\n        0.90 1.0e-08\n"
+               "  - type: formula 5\n    wavelength_range: 0.3 1.0\n    coefficients: 1.45\n");
   const auto s = sample_at(p, 370.0);
   EXPECT_NEAR(s.ior.ior[0].imag(), 2.9458e-08, kExact);
   EXPECT_NEAR(s.ior.ior[0].real(), 1.45, kExact);
@@ -63,11 +69,14 @@ TEST(ReaderRules, ExactDuplicateInsideTheVisibleIsMerged) {
 // one warning naming the file and the first line; the visible is untouched.
 TEST(ReaderRules, OutOfOrderRowsOutsideTheUsedRangeAreDroppedWithAWarning) {
   test::TempDir tmp;
-  const auto p = tmp.file("y.yml", nk_page("        0.30 0.20 1.0\n        0.90 0.30 6.0\n        1.46 0.23 10.25\n"
-                                           "        1.45 0.227 10.18\n        1.50 0.24 10.5\n"));
+  const auto p = tmp.file(
+      "y.yml", nk_page("        0.30 0.20 1.0\n        0.90 0.30 6.0\n        1.46 0.23 10.25\n"
+                       "        1.45 0.227 10.18\n        1.50 0.24 10.5\n"));
   const auto oc = read_refractiveindex_file(p);
   ASSERT_EQ(oc.warnings.size(), 1u);
-  EXPECT_NE(oc.warnings[0].find(p + ":7: 1 row outside the used 360-830 nm dropped"), std::string::npos) << oc.warnings[0];
+  EXPECT_NE(oc.warnings[0].find(p + ":7: 1 row outside the used 360-830 nm dropped"),
+            std::string::npos)
+      << oc.warnings[0];
   EXPECT_NE(oc.warnings[0].find("1450 nm after 1460 nm"), std::string::npos) << oc.warnings[0];
   const auto s = sample_at(p, 600.0);
   EXPECT_NEAR(s.ior.ior[0].real(), 0.25, kExact);  // halfway between 300 and 900 nm
@@ -78,12 +87,14 @@ TEST(ReaderRules, OutOfOrderRowsOutsideTheUsedRangeAreDroppedWithAWarning) {
 // where it goes: it is placed in order, with a warning naming the line, and read there.
 TEST(ReaderRules, OutOfOrderRowInsideTheVisibleIsPlacedInOrder) {
   test::TempDir tmp;
-  const auto p = tmp.file("o.yml", nk_page("        0.40 1.50 0\n        0.65627 1.52 0\n        0.5682 1.53 0\n"
-                                           "        0.90 1.51 0\n"));
+  const auto p = tmp.file(
+      "o.yml", nk_page("        0.40 1.50 0\n        0.65627 1.52 0\n        0.5682 1.53 0\n"
+                       "        0.90 1.51 0\n"));
   const auto oc = read_refractiveindex_file(p);
   ASSERT_EQ(oc.warnings.size(), 1u);
-  EXPECT_NE(oc.warnings[0].find(p + ":6: 1 row out of order placed in wavelength order (first: wavelengths are not "
-                                    "strictly increasing (568.2 nm after 656.27 nm at line 5))"),
+  EXPECT_NE(oc.warnings[0].find(
+                p + ":6: 1 row out of order placed in wavelength order (first: wavelengths are not "
+                    "strictly increasing (568.2 nm after 656.27 nm at line 5))"),
             std::string::npos)
       << oc.warnings[0];
   EXPECT_NEAR(sample_at(p, 568.2).ior.ior[0].real(), 1.53, kExact);
@@ -94,9 +105,10 @@ TEST(ReaderRules, OutOfOrderRowInsideTheVisibleIsPlacedInOrder) {
 TEST(ReaderRules, RepeatedWavelengthWithOtherValuesInsideIsAnError) {
   test::TempDir tmp;
   int line = 0;
-  const auto msg = error_of(tmp.file("k.yml", nk_page("        0.70 2.39 0.1\n        0.7126 2.38956 0.1\n"
-                                                      "        0.7126 2.41804 0.1\n        0.90 2.5 0.1\n")),
-                            &line);
+  const auto msg =
+      error_of(tmp.file("k.yml", nk_page("        0.70 2.39 0.1\n        0.7126 2.38956 0.1\n"
+                                         "        0.7126 2.41804 0.1\n        0.90 2.5 0.1\n")),
+               &line);
   EXPECT_EQ(line, 6) << msg;
   EXPECT_NE(msg.find("712.6 nm repeats line 5 with other values"), std::string::npos) << msg;
 }
@@ -113,7 +125,9 @@ TEST(ReaderRules, NegligibleNegativeKIsReadAsZero) {
   EXPECT_EQ(oc.blocks.front().k[2], 0.0);
   EXPECT_GT(kNegligibleNegativeK, 1.3842e-05);
   // main/GaP/nk/Jellison: k tabulated to three decimals, −0.002 at 510 nm.
-  const auto g = tmp.file("g.yml", nk_page("        0.50 3.59 -0.001\n        0.51 3.557 -0.002\n        0.90 3.2 0\n"));
+  const auto g = tmp.file(
+      "g.yml",
+      nk_page("        0.50 3.59 -0.001\n        0.51 3.557 -0.002\n        0.90 3.2 0\n"));
   EXPECT_EQ(sample_at(g, 505.0).ior.ior[0].imag(), 0.0);
 }
 
@@ -122,10 +136,14 @@ TEST(ReaderRules, NegligibleNegativeKIsReadAsZero) {
 TEST(ReaderRules, NegativeKIsAnErrorInsideAndDroppedOutside) {
   test::TempDir tmp;
   int line = 0;
-  const auto msg = error_of(tmp.file("r.yml", nk_page("        0.40 1.6 0\n        0.6569 1.6 -0.01301\n        0.90 1.6 0\n")), &line);
+  const auto msg = error_of(
+      tmp.file("r.yml",
+               nk_page("        0.40 1.6 0\n        0.6569 1.6 -0.01301\n        0.90 1.6 0\n")),
+      &line);
   EXPECT_EQ(line, 5) << msg;
   EXPECT_NE(msg.find("k = -0.01301 is not physical"), std::string::npos) << msg;
-  const auto p = tmp.file("q.yml", nk_page("        0.30 2.9 0.5\n        0.90 2.6 0.01\n        50.0 3.0 -0.148\n"));
+  const auto p = tmp.file(
+      "q.yml", nk_page("        0.30 2.9 0.5\n        0.90 2.6 0.01\n        50.0 3.0 -0.148\n"));
   const auto oc = read_refractiveindex_file(p);
   ASSERT_EQ(oc.warnings.size(), 1u);
   EXPECT_NE(oc.warnings[0].find("k = -0.148 is not physical"), std::string::npos) << oc.warnings[0];
@@ -135,11 +153,14 @@ TEST(ReaderRules, NegativeKIsAnErrorInsideAndDroppedOutside) {
 // computation reads are the same as without them.
 TEST(ReaderRules, UnphysicalNFarOutsideTheVisibleIsDropped) {
   test::TempDir tmp;
-  const auto p = tmp.file("i.yml", nk_page("        0.200 -5.77532 1.10E-04\n        0.201 -11.04922 8.31E-05\n"
-                                           "        0.350 1.52 1.2E-04\n        0.900 1.50 1.0E-04\n"));
+  const auto p = tmp.file(
+      "i.yml", nk_page("        0.200 -5.77532 1.10E-04\n        0.201 -11.04922 8.31E-05\n"
+                       "        0.350 1.52 1.2E-04\n        0.900 1.50 1.0E-04\n"));
   const auto oc = read_refractiveindex_file(p);
   ASSERT_EQ(oc.warnings.size(), 1u);
-  EXPECT_NE(oc.warnings[0].find(p + ":4: 2 rows outside the used 360-830 nm dropped (first: n = -5.77532"), std::string::npos)
+  EXPECT_NE(oc.warnings[0].find(
+                p + ":4: 2 rows outside the used 360-830 nm dropped (first: n = -5.77532"),
+            std::string::npos)
       << oc.warnings[0];
   EXPECT_NEAR(sample_at(p, 625.0).ior.ior[0].real(), 1.51, kExact);
 }
@@ -148,9 +169,11 @@ TEST(ReaderRules, UnphysicalNFarOutsideTheVisibleIsDropped) {
 TEST(ReaderRules, DefectOnTheRowBracketingTheVisibleIsAnError) {
   test::TempDir tmp;
   int line = 0;
-  const auto msg = error_of(tmp.file("b.yml", nk_page("        0.20 1.5 0.1\n        0.35 -1.5 0.1\n        0.50 1.5 0.1\n"
-                                                      "        0.90 1.5 0.1\n")),
-                            &line);
+  const auto msg = error_of(
+      tmp.file("b.yml",
+               nk_page("        0.20 1.5 0.1\n        0.35 -1.5 0.1\n        0.50 1.5 0.1\n"
+                       "        0.90 1.5 0.1\n")),
+      &line);
   EXPECT_EQ(line, 5) << msg;
 }
 
@@ -159,18 +182,22 @@ TEST(ReaderRules, DefectOnTheRowBracketingTheVisibleIsAnError) {
 // written out here: n² = 1 + 1.499426 λ²/(λ² − 0.178763²) + 0.089531 λ²/(λ² − 6.591946²).
 TEST(ReaderRules, FormulaIsCheckedOnlyWhereItIsRead) {
   test::TempDir tmp;
-  const auto p = tmp.file("c.yml", "DATA:\n  - type: formula 1\n    wavelength_range: 0.3 12\n"
-                                   "    coefficients: 0 1.499426 0.178763 0.089531 6.591946\n");
+  const auto p = tmp.file("c.yml",
+                          "DATA:\n  - type: formula 1\n    wavelength_range: 0.3 12\n"
+                          "    coefficients: 0 1.499426 0.178763 0.089531 6.591946\n");
   const double l2 = 0.25;
-  const double n = std::sqrt(1 + 1.499426 * l2 / (l2 - 0.178763 * 0.178763) + 0.089531 * l2 / (l2 - 6.591946 * 6.591946));
+  const double n = std::sqrt(1 + 1.499426 * l2 / (l2 - 0.178763 * 0.178763) +
+                             0.089531 * l2 / (l2 - 6.591946 * 6.591946));
   EXPECT_NEAR(sample_at(p, 500.0).ior.ior[0].real(), n, kExact);
   // A pole inside the visible (C3 = 0.6 µm) is an error: n² < 0 from 0.6/√2.5 = 0.3795 µm up to the
   // pole, so the first nm it fails at is 380.
   int line = 0;
-  const auto msg = error_of(tmp.file("d.yml", "DATA:\n  - type: formula 1\n    wavelength_range: 0.3 12\n"
-                                              "    coefficients: 0 1.5 0.6\n"),
+  const auto msg = error_of(tmp.file("d.yml",
+                                     "DATA:\n  - type: formula 1\n    wavelength_range: 0.3 12\n"
+                                     "    coefficients: 0 1.5 0.6\n"),
                             &line);
-  EXPECT_NE(msg.find("formula 1 gives n = nan at 0.38 um (not physical)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("formula 1 gives n = nan at 0.38 um (not physical)"), std::string::npos)
+      << msg;
   EXPECT_EQ(line, 4);
 }
 
@@ -185,7 +212,8 @@ TEST(ReaderRules, DenormalsAreNumbers) {
   EXPECT_EQ(v, 0.0);
   EXPECT_FALSE(parse_finite("1e400", v));
   test::TempDir tmp;
-  const auto p = tmp.file("a.yml", nk_page("        0.30 1.79 5.0434142077e-317\n        0.90 1.76 1e-310\n"));
+  const auto p =
+      tmp.file("a.yml", nk_page("        0.30 1.79 5.0434142077e-317\n        0.90 1.76 1e-310\n"));
   EXPECT_NEAR(sample_at(p, 600.0).ior.ior[0].real(), 1.775, kExact);
 }
 

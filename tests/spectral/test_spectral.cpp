@@ -27,8 +27,9 @@ class FormulaTest : public ::testing::TestWithParam<FormulaCase> {};
 TEST_P(FormulaTest, MatchesHandComputedValue) {
   const auto& c = GetParam();
   test::TempDir tmp;
-  const std::string path = tmp.file("f.yml", std::string("DATA:\n  - type: formula ") + std::to_string(c.formula) +
-                                                 "\n    wavelength_range: 0.3 1.0\n    coefficients: " + c.coefficients + "\n");
+  const std::string path = tmp.file(
+      "f.yml", std::string("DATA:\n  - type: formula ") + std::to_string(c.formula) +
+                   "\n    wavelength_range: 0.3 1.0\n    coefficients: " + c.coefficients + "\n");
   const auto oc = read_refractiveindex_file(path);
   ASSERT_EQ(oc.blocks.size(), 1u);
   EXPECT_NEAR(oc.blocks[0].min_nm, 300.0, 1e-9);
@@ -50,13 +51,19 @@ INSTANTIATE_TEST_SUITE_P(
                       FormulaCase{7, "1.5 0.01 0.001 0.002", 1.5658356058761465},
                       FormulaCase{8, "0.3 0.01 0.01 0.001", 1.5336332507400943},
                       FormulaCase{9, "2.0 0.01 0.01 0.001 0.3 0.01", 1.4302680401472538}),
-    [](const ::testing::TestParamInfo<FormulaCase>& info) { return "formula" + std::to_string(info.param.formula); });
+    [](const ::testing::TestParamInfo<FormulaCase>& info) {
+      return "formula" + std::to_string(info.param.formula);
+    });
 
 TEST(Database, MissingTrailingCoefficientsAreZero) {
   // The database's own main/AgGaSe2/nk/Boyd-o is formula 2 with C1 and one and a half pairs.
   test::TempDir tmp;
-  const auto short_form = tmp.file("s.yml", "DATA:\n  - type: formula 2\n    wavelength_range: 0.3 1.0\n    coefficients: 0.1 1.0 0.01 0.5\n");
-  const auto padded = tmp.file("p.yml", "DATA:\n  - type: formula 2\n    wavelength_range: 0.3 1.0\n    coefficients: 0.1 1.0 0.01 0.5 0\n");
+  const auto short_form = tmp.file("s.yml",
+                                   "DATA:\n  - type: formula 2\n    wavelength_range: 0.3 1.0\n    "
+                                   "coefficients: 0.1 1.0 0.01 0.5\n");
+  const auto padded = tmp.file("p.yml",
+                               "DATA:\n  - type: formula 2\n    wavelength_range: 0.3 1.0\n    "
+                               "coefficients: 0.1 1.0 0.01 0.5 0\n");
   const SpectralGrid g{500.0, 5.0, 1};
   EXPECT_EQ(sample_ior(read_refractiveindex_file(short_form), g, "s").ior.ior[0],
             sample_ior(read_refractiveindex_file(padded), g, "p").ior.ior[0]);
@@ -66,34 +73,39 @@ constexpr double kSchottNdTolerance = 2e-5;  // the catalog's nd is printed to 5
 
 TEST(Database, SchottGlassFormulaPlusTabulatedK) {
   // SF66: n from formula 2, k tabulated; nd (587.56 nm) is printed in the file's PROPERTIES.
-  const auto oc = read_refractiveindex_file(std::string(FL_DEFAULT_DB) + "/data/specs/schott/optical/SF66.yml");
+  const auto oc =
+      read_refractiveindex_file(std::string(FL_DEFAULT_DB) + "/data/specs/schott/optical/SF66.yml");
   ASSERT_EQ(oc.blocks.size(), 2u);
   EXPECT_EQ(oc.blocks[0].kind, DispersionBlock::Kind::Formula);
   EXPECT_EQ(oc.blocks[1].kind, DispersionBlock::Kind::TabulatedK);
   const auto s = sample_ior(oc, SpectralGrid{587.56, 1.0, 1}, "SF66");
   EXPECT_NEAR(s.ior.ior[0].real(), 1.92286, kSchottNdTolerance);
   // k between the tabulated 0.580 µm (2.2288e-8) and 0.620 µm (2.1829e-8) points.
-  EXPECT_NEAR(s.ior.ior[0].imag(), 2.2288e-8 + (587.56 - 580.0) / 40.0 * (2.1829e-8 - 2.2288e-8), 1e-15);
+  EXPECT_NEAR(s.ior.ior[0].imag(), 2.2288e-8 + (587.56 - 580.0) / 40.0 * (2.1829e-8 - 2.2288e-8),
+              1e-15);
 }
 
 TEST(Database, TabulatedNkInterpolatesLinearlyAndWarnsOnce) {
   test::TempDir tmp;
-  const auto path = tmp.file("t.yml",
-                             "DATA:\n  - type: tabulated nk\n    data: |\n        0.40 1.0 2.0\n        0.60 2.0 4.0\n");
-  const auto s = sample_ior(read_refractiveindex_file(path), SpectralGrid::visible(5.0), "Synthetic");
+  const auto path = tmp.file(
+      "t.yml",
+      "DATA:\n  - type: tabulated nk\n    data: |\n        0.40 1.0 2.0\n        0.60 2.0 4.0\n");
+  const auto s =
+      sample_ior(read_refractiveindex_file(path), SpectralGrid::visible(5.0), "Synthetic");
   EXPECT_DOUBLE_EQ(s.ior.ior[(450 - 360) / 5].real(), 1.25);
   EXPECT_DOUBLE_EQ(s.ior.ior[(450 - 360) / 5].imag(), 2.5);
   EXPECT_DOUBLE_EQ(s.ior.ior[0].real(), 1.0);      // clamped below 400 nm
   EXPECT_DOUBLE_EQ(s.ior.ior.back().imag(), 4.0);  // clamped above 600 nm
-  ASSERT_EQ(s.warnings.size(), 1u);  // n and k share their coverage: one warning
+  ASSERT_EQ(s.warnings.size(), 1u);                // n and k share their coverage: one warning
   EXPECT_NE(s.warnings[0].find("360-395 and 605-830"), std::string::npos) << s.warnings[0];
 }
 
 TEST(Database, SeparateTabulatedNAndK) {
   test::TempDir tmp;
-  const auto path = tmp.file("t.yml",
-                             "DATA:\n  - type: tabulated n\n    data: |\n        0.3 1.5\n        0.9 1.7\n"
-                             "  - type: tabulated k\n    data: |\n        0.3 0.0\n        0.9 0.6\n");
+  const auto path =
+      tmp.file("t.yml",
+               "DATA:\n  - type: tabulated n\n    data: |\n        0.3 1.5\n        0.9 1.7\n"
+               "  - type: tabulated k\n    data: |\n        0.3 0.0\n        0.9 0.6\n");
   const auto s = sample_ior(read_refractiveindex_file(path), SpectralGrid{600.0, 5.0, 1}, "x");
   EXPECT_DOUBLE_EQ(s.ior.ior[0].real(), 1.6);
   EXPECT_NEAR(s.ior.ior[0].imag(), 0.3, 1e-15);
@@ -115,23 +127,38 @@ void expect_input_error(const std::string& path, int line, const std::string& fr
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), line) << e.what();
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).rfind(path, 0), 0u) << "message must start with the file: " << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind(path, 0), 0u)
+        << "message must start with the file: " << e.what();
   }
 }
 
 TEST(Database, ErrorsNameFileLineAndProblem) {
   test::TempDir tmp;
-  expect_input_error(tmp.file("a.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 1.0 2.0\n        0.5 x 2.0\n"), 5,
-                     "'x' is not a finite number");
-  expect_input_error(tmp.file("b.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.5 1.0 2.0\n        0.5 1.1 2.0\n"), 5,
-                     "not strictly increasing");
-  expect_input_error(tmp.file("c.yml", "DATA:\n  - type: formula 12\n    wavelength_range: 0.3 1\n    coefficients: 1\n"), 2,
-                     "unknown formula type");
-  expect_input_error(tmp.file("d.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 1.0 2.0 7\n"), 4,
-                     "expected 3 columns, found 4");
-  expect_input_error(tmp.file("e.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        2.0 1.0 2.0\n        3.0 1.0 2.0\n"), 0,
-                     "does not cover any of 360-830 nm");
-  expect_input_error(tmp.file("f.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 -1.0 2.0\n"), 4, "not physical");
+  expect_input_error(
+      tmp.file(
+          "a.yml",
+          "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 1.0 2.0\n        0.5 x 2.0\n"),
+      5, "'x' is not a finite number");
+  expect_input_error(
+      tmp.file(
+          "b.yml",
+          "DATA:\n  - type: tabulated nk\n    data: |\n        0.5 1.0 2.0\n        0.5 1.1 2.0\n"),
+      5, "not strictly increasing");
+  expect_input_error(
+      tmp.file("c.yml",
+               "DATA:\n  - type: formula 12\n    wavelength_range: 0.3 1\n    coefficients: 1\n"),
+      2, "unknown formula type");
+  expect_input_error(
+      tmp.file("d.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 1.0 2.0 7\n"), 4,
+      "expected 3 columns, found 4");
+  expect_input_error(
+      tmp.file(
+          "e.yml",
+          "DATA:\n  - type: tabulated nk\n    data: |\n        2.0 1.0 2.0\n        3.0 1.0 2.0\n"),
+      0, "does not cover any of 360-830 nm");
+  expect_input_error(
+      tmp.file("f.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 -1.0 2.0\n"), 4,
+      "not physical");
   expect_input_error(tmp.file("g.yml", "DATA: [\n"), 2, "invalid YAML");
 }
 

@@ -79,7 +79,8 @@ TEST(Yaml, SyntaxErrorsNameTheirLine) {
     FAIL() << "unterminated flow sequence";
   } catch (const YamlError& e) {
     EXPECT_EQ(e.line, 2);  // 0-based: the line of "other: 1", where a , or ] was expected
-    EXPECT_NE(std::string(e.what()).find("did not find expected ',' or ']'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("did not find expected ',' or ']'"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -91,7 +92,8 @@ TEST(Yaml, TaggedNullSpellingsAreText) {
 
 // Inputs that would exhaust the stack or memory are refused like any other broken document.
 TEST(Yaml, DeepNestingAndAliasBombsAreRefused) {
-  const std::string deep = std::string(kMaxYamlDepth + 5, '[') + std::string(kMaxYamlDepth + 5, ']');
+  const std::string deep =
+      std::string(kMaxYamlDepth + 5, '[') + std::string(kMaxYamlDepth + 5, ']');
   EXPECT_THROW(parse_yaml(deep), YamlError);
   const std::string fine = std::string(50, '[') + std::string(50, ']');
   EXPECT_NO_THROW(parse_yaml(fine));

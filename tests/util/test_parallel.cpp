@@ -15,8 +15,10 @@ TEST(ParallelFor, CallsEveryIndexOnceForAnyThreadCount) {
   constexpr std::size_t kCount = 1000;
   for (const int threads : {0, 1, 2, 7}) {
     std::vector<std::atomic<int>> calls(kCount);
-    fl::parallel_for(kCount, [&](std::size_t i) { ++calls[i]; }, threads);
-    for (std::size_t i = 0; i < kCount; ++i) ASSERT_EQ(calls[i].load(), 1) << "index " << i << ", threads " << threads;
+    fl::parallel_for(
+        kCount, [&](std::size_t i) { ++calls[i]; }, threads);
+    for (std::size_t i = 0; i < kCount; ++i)
+      ASSERT_EQ(calls[i].load(), 1) << "index " << i << ", threads " << threads;
   }
   fl::parallel_for(0, [](std::size_t) { FAIL() << "called for an empty range"; });
 }
@@ -42,11 +44,14 @@ TEST(ParallelFor, WorkerExceptionReachesTheCaller) {
 
 TEST(ProgressCounter, ReportsIncreasingCountsUpToTheTotal) {
   std::vector<int> seen;
-  fl::ProgressCounter done([&](int d, int total) {
-    EXPECT_EQ(total, 300);
-    seen.push_back(d);
-  }, 300);
-  fl::parallel_for(100, [&](std::size_t) { done.add(3); }, 2);
+  fl::ProgressCounter done(
+      [&](int d, int total) {
+        EXPECT_EQ(total, 300);
+        seen.push_back(d);
+      },
+      300);
+  fl::parallel_for(
+      100, [&](std::size_t) { done.add(3); }, 2);
   ASSERT_EQ(seen.size(), 100u);
   for (std::size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k], static_cast<int>(3 * (k + 1)));
 }

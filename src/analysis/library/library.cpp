@@ -15,14 +15,16 @@ namespace fl::analysis {
 namespace {
 
 std::vector<Cell> page_row(const std::string& page, const spectral::PageEntry* entry) {
-  return {page, spectral::book_of(page), entry ? entry->book_name : std::string(), entry ? entry->section : std::string()};
+  return {page, spectral::book_of(page), entry ? entry->book_name : std::string(),
+          entry ? entry->section : std::string()};
 }
 
 }  // namespace
 
 Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
                   const std::function<void(int, int)>& progress) {
-  const auto set = load_materials(ctx, globs.empty() ? std::vector<std::string>{"**"} : globs, {}, progress);
+  const auto set =
+      load_materials(ctx, globs.empty() ? std::vector<std::string>{"**"} : globs, {}, progress);
   Table t;
   t.name = "pages";
   t.title = "Database pages";
@@ -40,14 +42,16 @@ Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
   }
   for (const auto& s : set.skipped) {
     auto row = page_row(s.spec, spectral::page_entry(db, s.spec));
-    row.insert(row.end(), {std::string(), std::nan(""), std::nan(""), std::nan(""), std::string(), std::string(), s.reason});
+    row.insert(row.end(), {std::string(), std::nan(""), std::nan(""), std::nan(""), std::string(),
+                           std::string(), s.reason});
     rows[s.spec] = std::move(row);
   }
   for (auto& [page, row] : rows) t.rows.push_back(std::move(row));
-  t.reading = fmt::format("{} pages: {} read, {} that cannot be read (status says why).", rows.size(),
-                          set.materials.size(), set.skipped.size());
+  t.reading = fmt::format("{} pages: {} read, {} that cannot be read (status says why).",
+                          rows.size(), set.materials.size(), set.skipped.size());
   t.notes = {setting_note(ctx),
-             "class: metal when the mean k over 400-700 nm exceeds 0.5 (light entering is absorbed within 0.1 µm), "
+             "class: metal when the mean k over 400-700 nm exceeds 0.5 (light entering is absorbed "
+             "within 0.1 µm), "
              "dielectric otherwise.",
              coverage_note([&] {
                std::vector<const LoadedMaterial*> all;
@@ -81,7 +85,8 @@ std::string quality_flags(const MaterialStudy& s, const std::string& out_of_rang
     for (const auto flag : spectral::split_fields(f, " "))
       flags.push_back(std::string(fresnel::model_spec(r.model).name) + ":" + std::string(flag));
   }
-  for (const auto value : spectral::split_fields(out_of_range, " ")) flags.push_back("out_of_range:" + std::string(value));
+  for (const auto value : spectral::split_fields(out_of_range, " "))
+    flags.push_back("out_of_range:" + std::string(value));
   std::string out;
   for (const auto& f : flags) out += (out.empty() ? "" : " ") + f;
   return out;
@@ -96,26 +101,33 @@ Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   const int out_of_range = column_index(t, "out_of_range");
   t.columns.insert(t.columns.end(), {{"book"}, {"section"}, {"uncovered"}});
   for (const auto& spec : fresnel::model_specs())
-    for (const char* kind : {"derived", "fitted"}) t.columns.push_back({fmt::format("{}_{}_rms", spec.name, kind), 3});
+    for (const char* kind : {"derived", "fitted"})
+      t.columns.push_back({fmt::format("{}_{}_rms", spec.name, kind), 3});
   t.columns.insert(t.columns.end(), {{"flags"}, {"warnings", 0}});
   int flagged = 0;
   for (size_t i = 0; i < studies.size(); ++i) {
     const auto& s = studies[i];
     const auto& m = s.material->material;
     auto& row = t.rows[i];
-    row.insert(row.end(), {m.origin == spectral::Material::Origin::Page ? spectral::book_of(m.source) : std::string(),
-                           m.section, s.material->coverage.uncovered});
+    row.insert(
+        row.end(),
+        {m.origin == spectral::Material::Origin::Page ? spectral::book_of(m.source) : std::string(),
+         m.section, s.material->coverage.uncovered});
     for (const auto& r : s.models) row.insert(row.end(), {r.derived_error.rms, r.fitted_error.rms});
     const std::string flags = quality_flags(s, std::get<std::string>(row[out_of_range]));
     flagged += !flags.empty();
     row.insert(row.end(), {flags, static_cast<long long>(s.material->warnings.size())});
   }
-  t.reading = fmt::format("{} pages, {} of them flagged. Every value comes with its flags: a page whose data does "
-                          "not cover the visible range is marked extrapolated and says which wavelengths it holds.",
-                          studies.size(), flagged);
-  t.notes.push_back("flags: extrapolated (see uncovered); MODEL:at_bound:NAME, MODEL:iteration_limit, MODEL:kept_start "
-                    "(the fit's flags, models table); out_of_range:NAME (a value outside [0, 1]); warnings: what the "
-                    "reader dropped or merged outside 360-830 nm.");
+  t.reading = fmt::format(
+      "{} pages, {} of them flagged. Every value comes with its flags: a page whose data does "
+      "not cover the visible range is marked extrapolated and says which wavelengths it holds.",
+      studies.size(), flagged);
+  t.notes.push_back(
+      "flags: extrapolated (see uncovered); MODEL:at_bound:NAME, MODEL:iteration_limit, "
+      "MODEL:kept_start "
+      "(the fit's flags, models table); out_of_range:NAME (a value outside [0, 1]); warnings: what "
+      "the "
+      "reader dropped or merged outside 360-830 nm.");
   return t;
 }
 
@@ -134,14 +146,16 @@ std::string reason_class(const std::string& reason) {
     // A number starts with a digit (or a sign before one) that does not end a word ("n2" stays).
     const bool digit = std::isdigit(static_cast<unsigned char>(r[i])) &&
                        (i == 0 || !std::isalpha(static_cast<unsigned char>(r[i - 1])));
-    const bool sign = (r[i] == '-' || r[i] == '+') && i + 1 < r.size() && std::isdigit(static_cast<unsigned char>(r[i + 1])) &&
+    const bool sign = (r[i] == '-' || r[i] == '+') && i + 1 < r.size() &&
+                      std::isdigit(static_cast<unsigned char>(r[i + 1])) &&
                       (i == 0 || !std::isalnum(static_cast<unsigned char>(r[i - 1])));
     if (!digit && !sign) {
       out += r[i];
       continue;
     }
-    while (i + 1 < r.size() && (std::isalnum(static_cast<unsigned char>(r[i + 1])) || r[i + 1] == '.' ||
-                                ((r[i + 1] == '-' || r[i + 1] == '+') && (r[i] == 'e' || r[i] == 'E'))))
+    while (i + 1 < r.size() &&
+           (std::isalnum(static_cast<unsigned char>(r[i + 1])) || r[i + 1] == '.' ||
+            ((r[i + 1] == '-' || r[i + 1] == '+') && (r[i] == 'e' || r[i] == 'E'))))
       ++i;
     out += 'N';
   }
@@ -158,13 +172,16 @@ Table skipped_table(const std::vector<SkippedMaterial>& skipped) {
 }
 
 Table skip_reasons_table(const std::vector<SkippedMaterial>& skipped) {
-  std::map<std::string, std::pair<long long, std::string>> by_reason;  // class → (count, first page)
+  std::map<std::string, std::pair<long long, std::string>>
+      by_reason;  // class → (count, first page)
   for (const auto& s : skipped) {
     auto& e = by_reason[reason_class(s.reason)];
     if (e.first++ == 0) e.second = s.spec;
   }
-  std::vector<std::pair<std::string, std::pair<long long, std::string>>> sorted(by_reason.begin(), by_reason.end());
-  std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.second.first > b.second.first; });
+  std::vector<std::pair<std::string, std::pair<long long, std::string>>> sorted(by_reason.begin(),
+                                                                                by_reason.end());
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const auto& a, const auto& b) { return a.second.first > b.second.first; });
   Table t;
   t.name = "skip_reasons";
   t.title = "Pages left out, by reason";

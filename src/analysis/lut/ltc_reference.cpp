@@ -169,7 +169,8 @@ void fill_jumps(int n, const std::vector<std::array<double, 4>>& entries, bool r
   for (int e = 0; e < 4; ++e) {
     double best = -1;
     for_each_neighbour_pair(n, [&](int i, int j, int i2, int j2, bool along_nov) {
-      const double d = std::abs(entries[static_cast<size_t>(j) * n + i][e] - entries[static_cast<size_t>(j2) * n + i2][e]);
+      const double d = std::abs(entries[static_cast<size_t>(j) * n + i][e] -
+                                entries[static_cast<size_t>(j2) * n + i2][e]);
       if (d <= best) return;
       best = d;
       if (reference)
@@ -254,7 +255,8 @@ LtcComparison compare_ltc_tables(const LtcTable& table, const LtcReferenceTable&
   return c;
 }
 
-std::array<LtcEntryJump, 4> ltc_entry_jumps(const LtcTable& table, const LtcReferenceTable& reference) {
+std::array<LtcEntryJump, 4> ltc_entry_jumps(const LtcTable& table,
+                                            const LtcReferenceTable& reference) {
   const int n = table.grid.size;
   if (reference.size != n)
     throw InputError(

@@ -55,6 +55,7 @@ LtcComparison compare_ltc_tables(const LtcTable& table, const LtcReferenceTable&
                                  int heldout_samples, int moment_samples = kLutSamples);
 // The jumps of LtcComparison alone: per texture entry the largest difference between neighbouring
 // cells of each table.
-std::array<LtcEntryJump, 4> ltc_entry_jumps(const LtcTable& table, const LtcReferenceTable& reference);
+std::array<LtcEntryJump, 4> ltc_entry_jumps(const LtcTable& table,
+                                            const LtcReferenceTable& reference);
 
 }  // namespace fl::analysis

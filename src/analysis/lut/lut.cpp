@@ -10,9 +10,9 @@
 #include "color/lab.h"
 #include "fresnel/models.h"
 #include "spectral/errors.h"
+#include "util/codegen.h"
 #include "util/median.h"
 #include "util/parallel.h"
-#include "util/codegen.h"
 
 namespace fl::analysis {
 
@@ -23,7 +23,8 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kLtcMaxThetaRad = 1.57;
 
 void check_size(int size) {
-  if (size < 2 || size > 4096) throw InputError(fmt::format("table size {} out of range (2 to 4096)", size));
+  if (size < 2 || size > 4096)
+    throw InputError(fmt::format("table size {} out of range (2 to 4096)", size));
 }
 void check_samples(int samples) {
   if (samples < 1) throw InputError(fmt::format("sample count {} must be positive", samples));
@@ -47,7 +48,9 @@ LutGrid dfg_grid(int size) {
     g.alpha.push_back(c * c);
   }
   g.convention = fmt::format(
-      "texel centres: nov = (i + 0.5)/{0}, perceptual_roughness = (j + 0.5)/{0}, alpha = perceptual_roughness^2", size);
+      "texel centres: nov = (i + 0.5)/{0}, perceptual_roughness = (j + 0.5)/{0}, alpha = "
+      "perceptual_roughness^2",
+      size);
   return g;
 }
 
@@ -56,7 +59,9 @@ double ltc_nov_at(double x) {
   return std::cos(std::min(kLtcMaxThetaRad, std::acos(std::max(-1.0, 1.0 - x * x))));
 }
 
-double ltc_alpha_at(double roughness) { return std::max(roughness * roughness, kLtcMinAlpha); }
+double ltc_alpha_at(double roughness) {
+  return std::max(roughness * roughness, kLtcMinAlpha);
+}
 
 LutGrid ltc_grid(int size) {
   check_size(size);
@@ -69,7 +74,8 @@ LutGrid ltc_grid(int size) {
     g.alpha.push_back(ltc_alpha_at(x));
   }
   g.convention = fmt::format(
-      "endpoints (Heitz's fitLTC): nov = cos(min(acos(1 - (i/{0})^2), 1.57)), perceptual_roughness = j/{0}, "
+      "endpoints (Heitz's fitLTC): nov = cos(min(acos(1 - (i/{0})^2), 1.57)), perceptual_roughness "
+      "= j/{0}, "
       "alpha = max(perceptual_roughness^2, {1:g})",
       size - 1, kLtcMinAlpha);
   return g;
@@ -80,15 +86,17 @@ std::vector<brdf::DiskPoint> lobe_disk_points(int samples) {
   std::vector<brdf::DiskPoint> points;
   points.reserve(static_cast<size_t>(samples));
   for (int k = 0; k < samples; ++k) {
-    const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
+    const auto u =
+        brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
     points.push_back(brdf::disk_point(u.u1, u.u2));
   }
   return points;
 }
 
-FL_VECTOR_CLONES void lobe_samples(const LobeView& view, const brdf::DiskPoint* points, size_t count,
-                                   LobeSampleBlock& out) {
-  const LobeView local = view;  // a local copy: its reads cannot fault, so the loop runs branch-free
+FL_VECTOR_CLONES void lobe_samples(const LobeView& view, const brdf::DiskPoint* points,
+                                   size_t count, LobeSampleBlock& out) {
+  const LobeView local =
+      view;  // a local copy: its reads cannot fault, so the loop runs branch-free
   for (size_t k = 0; k < count; ++k) {
     const brdf::Vec3 h = local.vndf(points[k]);
     const brdf::Vec3 l = brdf::reflect(local.v, h);
@@ -121,8 +129,10 @@ double integrate_sheen_dfg(double nov, double alpha, int samples) {
   const brdf::Vec3 v = brdf::view_from_nov(nov);
   double sum = 0;
   for (int k = 0; k < samples; ++k) {
-    const auto u = brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
-    const double phi = 2.0 * kPi * u.u1, cos_h = 1.0 - u.u2, sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
+    const auto u =
+        brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
+    const double phi = 2.0 * kPi * u.u1, cos_h = 1.0 - u.u2,
+                 sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
     const brdf::Vec3 h{sin_h * std::cos(phi), sin_h * std::sin(phi), cos_h};
     const double voh = brdf::dot(v, h);
     const brdf::Vec3 l = brdf::reflect(v, h);
@@ -135,8 +145,8 @@ double integrate_sheen_dfg(double nov, double alpha, int samples) {
 
 namespace {
 
-// The terms of integrate_moments' sums for a block of samples, as columns; 0 for a direction below the
-// horizon, which adds nothing to a sum.
+// The terms of integrate_moments' sums for a block of samples, as columns; 0 for a direction below
+// the horizon, which adds nothing to a sum.
 struct MomentTerms {
   double n_d[kLobeBlock], f_d[kLobeBlock], l_d[kLobeBlock], dir_x[kLobeBlock], dir_z[kLobeBlock];
 };
@@ -172,7 +182,8 @@ GgxMoments integrate_moments(double nov, double alpha, const std::vector<brdf::D
   m.f_d /= samples;
   m.l_d /= samples;
   // The lobe of an isotropic BRDF is symmetric about the xz-plane: the mean direction has y = 0.
-  m.average_dir = (dir.x * dir.x + dir.z * dir.z > 0.0) ? brdf::normalize(dir) : brdf::Vec3{0, 0, 1};
+  m.average_dir =
+      (dir.x * dir.x + dir.z * dir.z > 0.0) ? brdf::normalize(dir) : brdf::Vec3{0, 0, 1};
   return m;
 }
 GgxMoments integrate_moments(double nov, double alpha, int samples) {
@@ -184,8 +195,8 @@ namespace {
 // Every cell of the grid, integrand(n·v, α), filled in parallel column by column; each
 // cell counts once in `done`.
 template <class Cell, class Integrand>
-std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options, Integrand integrand,
-                                 ProgressCounter& done) {
+std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options,
+                                 Integrand integrand, ProgressCounter& done) {
   check_samples(options.samples);
   std::vector<Cell> cells(static_cast<size_t>(grid.size) * grid.size);
   parallel_for(
@@ -199,22 +210,26 @@ std::vector<Cell> integrate_grid(const LutGrid& grid, const LutOptions& options,
   return cells;
 }
 
-// integral(n·v, α, points) over one point set for every cell: lobe_disk_points(options.samples), made once.
+// integral(n·v, α, points) over one point set for every cell: lobe_disk_points(options.samples),
+// made once.
 template <class Cell>
-auto lobe_integrand(Cell (*integral)(double, double, const std::vector<brdf::DiskPoint>&), const LutOptions& options) {
+auto lobe_integrand(Cell (*integral)(double, double, const std::vector<brdf::DiskPoint>&),
+                    const LutOptions& options) {
   return [integral, points = lobe_disk_points(options.samples)](double nov, double alpha) {
     return integral(nov, alpha, points);
   };
 }
 
-// Fits cell (i, j) of an LTC grid from its starts (fit::fit_ltc_cell); i = 0 (normal incidence) is isotropic.
-LtcCell fit_table_cell(const LutGrid& g, const GgxMoments& mo, int i, int j, const std::vector<fit::LtcParams>& starts,
-                       const LtcCellFitter& fitter, const fit::LtcCellPoints& points) {
+// Fits cell (i, j) of an LTC grid from its starts (fit::fit_ltc_cell); i = 0 (normal incidence) is
+// isotropic.
+LtcCell fit_table_cell(const LutGrid& g, const GgxMoments& mo, int i, int j,
+                       const std::vector<fit::LtcParams>& starts, const LtcCellFitter& fitter,
+                       const fit::LtcCellPoints& points) {
   const bool isotropic = i == 0;
   const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
   const double near_equal_margin = i == g.size - 1 ? kLtcGrazingNearEqualMargin : 0.0;
-  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter, points,
-                                   near_equal_margin);
+  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter,
+                                   points, near_equal_margin);
   LtcCell c;
   c.fit = r.fit;
   c.params = r.params;
@@ -236,18 +251,22 @@ std::array<double, 4> ltc_texture_entries(const fit::LtcMatrix& m_inv) {
 
 DfgTable dfg_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
-  return {grid, integrate_grid<DfgTexel>(grid, options, lobe_integrand(integrate_dfg, options), done)};
+  return {grid,
+          integrate_grid<DfgTexel>(grid, options, lobe_integrand(integrate_dfg, options), done)};
 }
 
 std::vector<double> sheen_dfg_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
   return integrate_grid<double>(
-      grid, options, [&](double nov, double alpha) { return integrate_sheen_dfg(nov, alpha, options.samples); }, done);
+      grid, options,
+      [&](double nov, double alpha) { return integrate_sheen_dfg(nov, alpha, options.samples); },
+      done);
 }
 
 MomentsTable moments_table(const LutGrid& grid, const LutOptions& options) {
   ProgressCounter done(options.progress, grid.size * grid.size);
-  return {grid, integrate_grid<GgxMoments>(grid, options, lobe_integrand(integrate_moments, options), done)};
+  return {grid, integrate_grid<GgxMoments>(grid, options,
+                                           lobe_integrand(integrate_moments, options), done)};
 }
 
 double horizon_clipped_sphere_form_factor(double z, double len) {
@@ -291,7 +310,8 @@ std::vector<double> sphere_form_factor_table(int size) {
   return out;
 }
 
-LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter& fitter, int fit_sample_sqrt) {
+LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter& fitter,
+                       int fit_sample_sqrt) {
   check_samples(options.samples);
   LtcTable t;
   t.grid = ltc_grid(size);
@@ -299,13 +319,15 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   t.cells.resize(static_cast<size_t>(size) * size);
   const fit::LtcCellPoints points = fit::ltc_cell_points(fit_sample_sqrt);
   const auto fit_cell = [&](int i, int j, const std::vector<fit::LtcParams>& starts) {
-    t.cells[g.index(i, j)] = fit_table_cell(g, t.moments[g.index(i, j)], i, j, starts, fitter, points);
+    t.cells[g.index(i, j)] =
+        fit_table_cell(g, t.moments[g.index(i, j)], i, j, starts, fitter, points);
   };
   // Progress counts every cell twice: once for its moments, once for its fit.
   ProgressCounter done(options.progress, 2 * size * size);
 
   // Stage 1: moments and mean directions (the LTC magnitudes and frames), every cell independent.
-  t.moments = integrate_grid<GgxMoments>(g, options, lobe_integrand(integrate_moments, options), done);
+  t.moments =
+      integrate_grid<GgxMoments>(g, options, lobe_integrand(integrate_moments, options), done);
   // Stage 2: the normal-incidence column, rough to smooth (sequential warm starts).
   for (int j = size - 1; j >= 0; --j) {
     fit::LtcParams start;
@@ -316,7 +338,8 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
     fit_cell(0, j, {start});
   }
   done.add(size);
-  // Stage 3: each roughness row from normal to grazing (warm starts along the row); rows in parallel.
+  // Stage 3: each roughness row from normal to grazing (warm starts along the row); rows in
+  // parallel.
   parallel_for(
       size,
       [&](size_t row) {
@@ -324,7 +347,8 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
         fit_cell(1, j, {t.cells[g.index(0, j)].params});
         for (int i = 2; i < size; ++i) {
           const auto& prev = t.cells[g.index(i - 1, j)].params;
-          fit_cell(i, j, {fit::extrapolate_ltc_start(prev, t.cells[g.index(i - 2, j)].params), prev});
+          fit_cell(i, j,
+                   {fit::extrapolate_ltc_start(prev, t.cells[g.index(i - 2, j)].params), prev});
         }
         done.add(size - 1);
       },

@@ -1,6 +1,7 @@
 #pragma once
-// Pre-integrated GGX lookup tables: Filament's DFG table, Hill's LTC moments n_D and f_D with an F82
-// moment l_D, and LTC fits (Heitz et al. 2016). Pure computations; writing them is report/'s job.
+// Pre-integrated GGX lookup tables: Filament's DFG table, Hill's LTC moments n_D and f_D with an
+// F82 moment l_D, and LTC fits (Heitz et al. 2016). Pure computations; writing them is report/'s
+// job.
 //
 // Every integral is over the hemisphere of light directions l of the GGX lobe without Fresnel,
 // ρ(v, l)·(n·l) = D(h) V(v, l) (n·l) (brdf/ggx.h), estimated with GGX visible-normal sampling
@@ -24,10 +25,12 @@ namespace fl::analysis {
 constexpr int kLutSamples = 8192;
 // Heitz's fitLTC.cpp (ltc_code's current fit/fitLTC.cpp, MIN_ALPHA = 0.00001f; older revisions, on
 // other view axes, had 0.0001f) clamps α from below so the lobe stays finite at roughness 0; its
-// published table is fitted at α = max(roughness², 1e-5): its first cell is M = diag(2e-5, 2e-5, 1).
+// published table is fitted at α = max(roughness², 1e-5): its first cell is M = diag(2e-5, 2e-5,
+// 1).
 constexpr double kLtcMinAlpha = 1e-5;
 
-// The axes of a table. Cells are stored roughness-major: cell(i_nov, j_roughness) = cells[j·size + i].
+// The axes of a table. Cells are stored roughness-major: cell(i_nov, j_roughness) = cells[j·size +
+// i].
 struct LutGrid {
   int size = 0;
   std::vector<double> nov;                   // per i
@@ -44,22 +47,22 @@ LutGrid dfg_grid(int size);
 // 1.57 rad), perceptual roughness j/(N − 1), α = max(roughness², kLtcMinAlpha). Shaders look up
 // uv = (roughness, √(1 − n·v))·(N − 1)/N + ½/N.
 LutGrid ltc_grid(int size);
-// ltc_grid's axes at a texture coordinate in [0, 1]: n·v at x = √(1 − n·v) (θ capped at 1.57 rad), and
-// α at perceptual roughness r.
+// ltc_grid's axes at a texture coordinate in [0, 1]: n·v at x = √(1 − n·v) (θ capped at 1.57 rad),
+// and α at perceptual roughness r.
 double ltc_nov_at(double x);
 double ltc_alpha_at(double roughness);
 
-// The split-sum DFG integrals (Karis 2013; "Physically Based Rendering in Filament", "Pre-integration
-// for multiscattering"), with Fc = (1 − v·h)⁵: the scale dfg1 = ∫ (1 − Fc) ρ cos dl, the bias
-// dfg2 = ∫ Fc ρ cos dl, and the F82 term dfg_f82 = ∫ μ(1 − μ)⁶ ρ cos dl (μ = v·h), so that Schlick
-// integrates to F0·dfg1 + dfg2 and Hoffman's F82 model to F0·dfg1 + dfg2 − a·dfg_f82. Filament's
-// multiscatter table holds dfg2 and dfg1 + dfg2 (= ∫ ρ cos).
+// The split-sum DFG integrals (Karis 2013; "Physically Based Rendering in Filament",
+// "Pre-integration for multiscattering"), with Fc = (1 − v·h)⁵: the scale dfg1 = ∫ (1 − Fc) ρ cos
+// dl, the bias dfg2 = ∫ Fc ρ cos dl, and the F82 term dfg_f82 = ∫ μ(1 − μ)⁶ ρ cos dl (μ = v·h), so
+// that Schlick integrates to F0·dfg1 + dfg2 and Hoffman's F82 model to F0·dfg1 + dfg2 − a·dfg_f82.
+// Filament's multiscatter table holds dfg2 and dfg1 + dfg2 (= ∫ ρ cos).
 struct DfgTexel {
   double dfg1 = 0, dfg2 = 0, dfg_f82 = 0;
 };
 // Hill's LTC moments and the F82 moment: n_D = ∫ ρ cos, f_D = ∫ (1 − v·h)⁵ ρ cos,
-// l_D = ∫ (v·h)(1 − v·h)⁶ ρ cos, so that Hoffman's F82 model integrates to R0 n_D + (1 − R0) f_D − a l_D.
-// average_dir is the lobe's mean direction ∫ l ρ cos / ‖∫ l ρ cos‖ (the LTC frame's Z).
+// l_D = ∫ (v·h)(1 − v·h)⁶ ρ cos, so that Hoffman's F82 model integrates to R0 n_D + (1 − R0) f_D −
+// a l_D. average_dir is the lobe's mean direction ∫ l ρ cos / ‖∫ l ρ cos‖ (the LTC frame's Z).
 struct GgxMoments {
   double n_d = 0, f_d = 0, l_d = 0;
   brdf::Vec3 average_dir{0, 0, 1};
@@ -71,11 +74,13 @@ struct LobeSample {
   brdf::Vec3 l;
   double voh = 0, weight = 0;
 };
-// Hammersley point k of `samples` (brdf::hammersley) on the unit disk (brdf::disk_point), k = 0 … samples − 1:
-// the view-independent part of every lobe integral, shared by all the cells of a table.
+// Hammersley point k of `samples` (brdf::hammersley) on the unit disk (brdf::disk_point), k = 0 …
+// samples − 1: the view-independent part of every lobe integral, shared by all the cells of a
+// table.
 std::vector<brdf::DiskPoint> lobe_disk_points(int samples);
 // The samples of one view for up to kLobeBlock points, as columns (one array per quantity, so the
-// compiler computes several samples per instruction); a weight of 0 marks a direction below the horizon.
+// compiler computes several samples per instruction); a weight of 0 marks a direction below the
+// horizon.
 constexpr size_t kLobeBlock = 256;
 struct LobeSampleBlock {
   double lx[kLobeBlock], ly[kLobeBlock], lz[kLobeBlock], voh[kLobeBlock], weight[kLobeBlock];
@@ -90,10 +95,12 @@ struct LobeView {
 };
 // The samples of points[0, count), count ≤ kLobeBlock, at one view, with the arithmetic of one
 // sample at a time.
-void lobe_samples(const LobeView& view, const brdf::DiskPoint* points, size_t count, LobeSampleBlock& out);
+void lobe_samples(const LobeView& view, const brdf::DiskPoint* points, size_t count,
+                  LobeSampleBlock& out);
 // fn(block, count) for the blocks of `points` in order, each of count ≤ kLobeBlock samples.
 template <class Fn>
-void for_each_lobe_block(double nov, double alpha, const std::vector<brdf::DiskPoint>& points, Fn fn) {
+void for_each_lobe_block(double nov, double alpha, const std::vector<brdf::DiskPoint>& points,
+                         Fn fn) {
   const LobeView view(nov, alpha);
   LobeSampleBlock b;
   for (size_t first = 0; first < points.size(); first += kLobeBlock) {
@@ -104,7 +111,8 @@ void for_each_lobe_block(double nov, double alpha, const std::vector<brdf::DiskP
 }
 // fn(sample) for each point whose direction is above the horizon, in the order of `points`.
 template <class Fn>
-void for_each_lobe_sample(double nov, double alpha, const std::vector<brdf::DiskPoint>& points, Fn fn) {
+void for_each_lobe_sample(double nov, double alpha, const std::vector<brdf::DiskPoint>& points,
+                          Fn fn) {
   for_each_lobe_block(nov, alpha, points, [&](const LobeSampleBlock& b, size_t count) {
     for (size_t k = 0; k < count; ++k) {
       if (b.weight[k] <= 0.0) continue;
@@ -118,9 +126,9 @@ void for_each_lobe_sample(double nov, double alpha, int samples, Fn fn) {
 }
 
 DfgTexel integrate_dfg(double nov, double alpha, int samples = kLutSamples);
-// The directional albedo of Filament's sheen lobe (brdf/sheen.h), ∫ D_charlie V_neubelt (n·l) dl, the B
-// channel of Filament's DFG table. Half vectors are drawn uniformly over the hemisphere (Hammersley
-// points, density 1/(2π)), as Filament's own generator does: the Charlie lobe is broad.
+// The directional albedo of Filament's sheen lobe (brdf/sheen.h), ∫ D_charlie V_neubelt (n·l) dl,
+// the B channel of Filament's DFG table. Half vectors are drawn uniformly over the hemisphere
+// (Hammersley points, density 1/(2π)), as Filament's own generator does: the Charlie lobe is broad.
 double integrate_sheen_dfg(double nov, double alpha, int samples = kLutSamples);
 GgxMoments integrate_moments(double nov, double alpha, int samples = kLutSamples);
 // The same integrals over a shared point set (lobe_disk_points(samples)).
@@ -160,12 +168,13 @@ struct LtcCell {
   fit::LtcParams params;
   fit::LtcMatrix m, m_inv;
   // The texture's four entries of M⁻¹ normalized by M⁻¹₁₁ (row-major indices):
-  // (M⁻¹₀₀, M⁻¹₂₀, M⁻¹₀₂, M⁻¹₂₂) / M⁻¹₁₁, i.e. ltc_code's (invM[0][0], invM[0][2], invM[2][0], invM[2][2])
-  // in glm's column-major indexing.
+  // (M⁻¹₀₀, M⁻¹₂₀, M⁻¹₀₂, M⁻¹₂₂) / M⁻¹₁₁, i.e. ltc_code's (invM[0][0], invM[0][2], invM[2][0],
+  // invM[2][2]) in glm's column-major indexing.
   std::array<double, 4> inv_packed{};
   fit::FitResult fit;
-  double fit_error = 0;     // held-out relative L3 error of the cell's LTC (fit::LtcCellFit::heldout_error)
-  int rounds = 0;           // fit::LtcCellFit::rounds
+  double fit_error =
+      0;           // held-out relative L3 error of the cell's LTC (fit::LtcCellFit::heldout_error)
+  int rounds = 0;  // fit::LtcCellFit::rounds
   bool kept_start = false;  // fit::LtcCellFit::kept_start
 };
 // The texture's entries of one cell: (M⁻¹₀₀, M⁻¹₂₀, M⁻¹₀₂, M⁻¹₂₂) / M⁻¹₁₁ (LtcCell::inv_packed).
@@ -180,21 +189,24 @@ struct LtcTable {
 // fit::fit_ltc_cell's near-equal choice, in the grazing row (i = N − 1, θ = 1.57) only. There the
 // lobe changes fastest with θ and the L3 optimum is flattest: at roughness 1 the optimum steps by
 // 0.14 in M⁻¹₂₂ from the cell at i = N − 2 (by 0.08 between i = N − 3 and N − 2), while the
-// continuation (fit::extrapolate_ltc_start) is within 0.5% of its held-out error. Elsewhere the fit is kept: a
-// bilinear lookup between two near-optimal cells measured as good as or better than between cells
-// moved towards their continuations (the choice in every row raised the cells' and the midpoints'
-// mean held-out error by about 1%).
+// continuation (fit::extrapolate_ltc_start) is within 0.5% of its held-out error. Elsewhere the fit
+// is kept: a bilinear lookup between two near-optimal cells measured as good as or better than
+// between cells moved towards their continuations (the choice in every row raised the cells' and
+// the midpoints' mean held-out error by about 1%).
 inline constexpr double kLtcGrazingNearEqualMargin = 0.01;
 
-// One solve of a cell's problem from a start; the isotropic flag holds m13 and m31 (normal incidence).
+// One solve of a cell's problem from a start; the isotropic flag holds m13 and m31 (normal
+// incidence).
 using LtcCellFitter = fit::LtcSolver;
 
 // Fits every cell of ltc_grid(size) with fit::fit_ltc_cell, in Heitz's fitLTC.cpp order: the
 // normal-incidence column from rough to smooth, each cell starting from the rougher one; then every
-// roughness row from normal to grazing, each cell starting from the previous ones (the extrapolation
-// fit::extrapolate_ltc_start first, then the previous cell), the grazing row with the near-equal
-// choice (kLtcGrazingNearEqualMargin). Rows run in parallel; results do not depend on threads.
-LtcTable fit_ltc_table(int size, const LutOptions& options = {}, const LtcCellFitter& fitter = fit::fit_ltc_ceres,
+// roughness row from normal to grazing, each cell starting from the previous ones (the
+// extrapolation fit::extrapolate_ltc_start first, then the previous cell), the grazing row with the
+// near-equal choice (kLtcGrazingNearEqualMargin). Rows run in parallel; results do not depend on
+// threads.
+LtcTable fit_ltc_table(int size, const LutOptions& options = {},
+                       const LtcCellFitter& fitter = fit::fit_ltc_ceres,
                        int fit_sample_sqrt = fit::kLtcDefaultSampleSqrt);
 
 }  // namespace fl::analysis

@@ -9,10 +9,20 @@ namespace fl::analysis {
 const std::vector<LutTexture>& lut_textures() {
   namespace ch = fresnel::lut_channel;
   static const std::vector<LutTexture> textures{
-      {"dfg", "ibl", "dfg.exr", "fresnel-lab lut dfg --out dfg.exr",
+      {"dfg",
+       "ibl",
+       "dfg.exr",
+       "fresnel-lab lut dfg --out dfg.exr",
        {{ch::kDfgScale, "r"}, {ch::kDfgBias, "g"}, {ch::kDfgF82, "b"}}},
-      {"ltc_1", "area", "ltc_1.exr", "fresnel-lab lut ltc --out ltc.exr", {{ch::kLtcMatrix, "rgba"}}},
-      {"ltc_2", "area", "ltc_2.exr", "fresnel-lab lut ltc --out ltc.exr",
+      {"ltc_1",
+       "area",
+       "ltc_1.exr",
+       "fresnel-lab lut ltc --out ltc.exr",
+       {{ch::kLtcMatrix, "rgba"}}},
+      {"ltc_2",
+       "area",
+       "ltc_2.exr",
+       "fresnel-lab lut ltc --out ltc.exr",
        {{ch::kLtcNorm, "r"}, {ch::kLtcSchlick, "g"}, {ch::kLtcF82, "b"}}},
   };
   return textures;

@@ -7,8 +7,9 @@
 namespace fl::analysis {
 
 struct LutChannelLocation {
-  const char* channel;     // fresnel::lut_channel name
-  const char* components;  // texture components holding it: "r", "g", "b", "a", or "rgba" (the LTC matrix)
+  const char* channel;  // fresnel::lut_channel name
+  const char*
+      components;  // texture components holding it: "r", "g", "b", "a", or "rgba" (the LTC matrix)
 };
 struct LutTexture {
   const char* name;      // dfg | ltc_1 | ltc_2

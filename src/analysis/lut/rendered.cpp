@@ -1,16 +1,16 @@
 #include "analysis/lut/rendered.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
 #include <utility>
 
-#include <fmt/format.h>
-
 #include "color/lab.h"
-#include "spectral/errors.h"
 #include "fresnel/model_set.h"
+#include "spectral/errors.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {
@@ -19,9 +19,12 @@ using fresnel::Model;
 
 const char* lighting_name(Lighting l) {
   switch (l) {
-    case Lighting::Punctual: return "punctual";
-    case Lighting::Ibl: return "ibl";
-    case Lighting::Area: return "area";
+    case Lighting::Punctual:
+      return "punctual";
+    case Lighting::Ibl:
+      return "ibl";
+    case Lighting::Area:
+      return "area";
   }
   return "?";
 }
@@ -84,11 +87,17 @@ class TexelCache {
   std::map<std::pair<int, int>, Cell> cells_;
 };
 
-double as_stored(double v) { return static_cast<double>(static_cast<float>(v)); }
+double as_stored(double v) {
+  return static_cast<double>(static_cast<float>(v));
+}
 
 // Texels as the engine tables store them.
-DfgTexel as_stored(const DfgTexel& t) { return {as_stored(t.dfg1), as_stored(t.dfg2), as_stored(t.dfg_f82)}; }
-GgxMoments as_stored(const GgxMoments& m) { return {as_stored(m.n_d), as_stored(m.f_d), as_stored(m.l_d), m.average_dir}; }
+DfgTexel as_stored(const DfgTexel& t) {
+  return {as_stored(t.dfg1), as_stored(t.dfg2), as_stored(t.dfg_f82)};
+}
+GgxMoments as_stored(const GgxMoments& m) {
+  return {as_stored(m.n_d), as_stored(m.f_d), as_stored(m.l_d), m.average_dir};
+}
 
 // Texel coordinates of a point: DFG texel centres (i + ½)/N over n·v and roughness; LTC endpoints
 // i/(N − 1) over √(1 − n·v) and roughness.
@@ -124,8 +133,12 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
     }
   // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
   const auto disk = lobe_disk_points(kLutSamples);
-  const auto dfg_cell = [&disk](double nov, double alpha) { return as_stored(integrate_dfg(nov, alpha, disk)); };
-  const auto ltc_cell = [&disk](double nov, double alpha) { return as_stored(integrate_moments(nov, alpha, disk)); };
+  const auto dfg_cell = [&disk](double nov, double alpha) {
+    return as_stored(integrate_dfg(nov, alpha, disk));
+  };
+  const auto ltc_cell = [&disk](double nov, double alpha) {
+    return as_stored(integrate_moments(nov, alpha, disk));
+  };
   TexelCache<DfgTexel, decltype(dfg_cell)> dfg(dfg_grid(kEngineLutSize), dfg_cell);
   TexelCache<GgxMoments, decltype(ltc_cell)> ltc(ltc_grid(kEngineLutSize), ltc_cell);
   for (const auto& p : points) {
@@ -159,11 +172,13 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
   return points;
 }
 
-std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m, const std::vector<ShadingPoint>& points) {
+std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
+                                   const std::vector<ShadingPoint>& points) {
   const double eta_e = ctx.settings().eta_outside;
   std::vector<color::Rgb> curve;
   for (int k = 0; k < kTruthCurveSize; ++k)
-    curve.push_back(ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kTruthCurveSize - 1), eta_e));
+    curve.push_back(
+        ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kTruthCurveSize - 1), eta_e));
   auto at = [&](double cos_theta) {
     const double x = std::clamp(cos_theta, 0.0, 1.0) * (kTruthCurveSize - 1);
     const size_t k = std::min(static_cast<size_t>(x), curve.size() - 2);
@@ -179,7 +194,8 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m, 
   return out;
 }
 
-color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting, const ShadingPoint& p) {
+color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
+                          const ShadingPoint& p) {
   if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
   const auto& spec = fresnel::model_spec(m);
   const bool ibl = lighting == Lighting::Ibl;
@@ -187,7 +203,8 @@ color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting l
   const double n = ibl ? p.dfg.dfg1 + p.dfg.dfg2 : p.ltc.n_d;
   const double f = ibl ? p.dfg.dfg2 : p.ltc.f_d;
   const double l = ibl ? p.dfg.dfg_f82 : p.ltc.l_d;
-  if (!lighting_support(m, lighting).fresnel_pre_integrated) return n * spec.evaluate(p.nov, params.data(), false);
+  if (!lighting_support(m, lighting).fresnel_pre_integrated)
+    return n * spec.evaluate(p.nov, params.data(), false);
   color::Rgb out{};
   for (int c = 0; c < 3; ++c) {
     const auto t = spec.table_terms(params.data(), c);
@@ -201,7 +218,8 @@ std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::R
                                   const std::vector<ShadingPoint>& points) {
   std::vector<double> out;
   for (size_t k = 0; k < points.size(); ++k)
-    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine_shading(m, params, lighting, points[k]))));
+    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]),
+                                   ctx.rgb_to_lab(engine_shading(m, params, lighting, points[k]))));
   return out;
 }
 

@@ -42,14 +42,15 @@ struct ShadingPoint {
   // The kLutSamples visible-normal samples of the lobe at (n·v, α), less those below the horizon
   // (weight 0, nothing to add).
   std::vector<LobeTerm> samples;
-  DfgTexel dfg;                     // the DFG texture read bilinearly here
-  GgxMoments ltc;                   // the LTC moments texture (n_D, f_D, l_D) read bilinearly here
+  DfgTexel dfg;    // the DFG texture read bilinearly here
+  GgxMoments ltc;  // the LTC moments texture (n_D, f_D, l_D) read bilinearly here
 };
 // Every roughness × kShadingViewDeg.
 std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads = 0);
 
 // The brute-force lobe integral with the spectral ground truth per v·h, per point.
-std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m, const std::vector<ShadingPoint>& points);
+std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
+                                   const std::vector<ShadingPoint>& points);
 
 // What the engine computes at one point (Ibl or Area): a·n + b·f + c·l from the model's table terms
 // where it is pre-integrated, else F(n·v)·(the lobe's Fresnel-free integral).
@@ -57,9 +58,9 @@ color::Rgb engine_shading(fresnel::Model m, const std::vector<double>& params, L
                           const ShadingPoint& p);
 
 // ΔE2000 between truth and engine at every point.
-std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth, fresnel::Model m,
-                                  const std::vector<double>& params, Lighting lighting,
-                                  const std::vector<ShadingPoint>& points);
+std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth,
+                                  fresnel::Model m, const std::vector<double>& params,
+                                  Lighting lighting, const std::vector<ShadingPoint>& points);
 
 struct ErrorStats {
   double rms = 0, max = 0;

@@ -26,20 +26,25 @@ color::Xyz sum_xyz(const std::vector<color::Xyz>& weights) {
 
 const Settings& validated(const Settings& s) {
   if (s.angles < 3 || s.angles > 100000) throw InputError("--angles must be between 3 and 100000");
-  if (!(s.eta_outside > 0.0) || !std::isfinite(s.eta_outside)) throw InputError("the outside medium's index must be positive");
+  if (!(s.eta_outside > 0.0) || !std::isfinite(s.eta_outside))
+    throw InputError("the outside medium's index must be positive");
   if (s.step_nm != 5.0 && s.step_nm != 1.0) throw InputError("--step-nm must be 5 or 1");
   return s;
 }
 
-// A config space's white named by --ocio-white: ACES (x = 0.32168, y = 0.33767, the white of the D60
-// illuminant's ACES use), or an illuminant's own white from its spectrum and the observer.
+// A config space's white named by --ocio-white: ACES (x = 0.32168, y = 0.33767, the white of the
+// D60 illuminant's ACES use), or an illuminant's own white from its spectrum and the observer.
 std::optional<color::SpaceWhite> space_white(const Settings& s, const spectral::SpectralGrid& grid,
-                                             const spectral::Observer& observer, const std::string& colord) {
+                                             const spectral::Observer& observer,
+                                             const std::string& colord) {
   if (s.ocio_white.empty()) return std::nullopt;
-  if (s.ocio_config.empty()) throw InputError("--ocio-white applies to the spaces of an --ocio-config only");
+  if (s.ocio_config.empty())
+    throw InputError("--ocio-white applies to the spaces of an --ocio-config only");
   const std::string source = "white " + s.ocio_white + " given by --ocio-white";
-  if (s.ocio_white == "ACES") return color::SpaceWhite{color::xyz_from_xy({0.32168, 0.33767}), "D60", source};
-  const color::Xyz w = sum_xyz(color::xyz_weights(observer, spectral::illuminant_spd(s.ocio_white, grid, colord)));
+  if (s.ocio_white == "ACES")
+    return color::SpaceWhite{color::xyz_from_xy({0.32168, 0.33767}), "D60", source};
+  const color::Xyz w =
+      sum_xyz(color::xyz_weights(observer, spectral::illuminant_spd(s.ocio_white, grid, colord)));
   return color::SpaceWhite{{w.X / w.Y, 1.0, w.Z / w.Y}, s.ocio_white, source};
 }
 
@@ -57,8 +62,9 @@ Context::Context(const Settings& s)
   const auto illuminant = spectral::illuminant_spd(settings_.illuminant, grid_, colord);
   const auto xyz_w = color::xyz_weights(observer, illuminant);
   illuminant_white_ = sum_xyz(xyz_w);
-  const color::Mat3 m = space_.xyz_to_rgb *
-                        color::adaptation_matrix(color::adaptation_from_name(s.adaptation), illuminant_white_, space_.white);
+  const color::Mat3 m =
+      space_.xyz_to_rgb * color::adaptation_matrix(color::adaptation_from_name(s.adaptation),
+                                                   illuminant_white_, space_.white);
   rgb_weights_.resize(xyz_w.size());
   luminance_weights_.resize(xyz_w.size());
   for (size_t i = 0; i < xyz_w.size(); ++i) {
@@ -123,16 +129,18 @@ std::vector<LoadedMaterial> load_catalog(const Context& ctx) {
   auto materials = spectral::read_catalog(ctx.settings().paths);
   // Sampled concurrently; the first failure in catalog order is the one reported.
   std::vector<LoadedMaterial> out(materials.size());
-  parallel_for_all(materials.size(), [&](size_t i) { out[i] = load_material(ctx, std::move(materials[i])); });
+  parallel_for_all(materials.size(),
+                   [&](size_t i) { out[i] = load_material(ctx, std::move(materials[i])); });
   return out;
 }
 
-color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectrum& ior, double cos_theta,
-                            double eta_outside) {
+color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+                            double cos_theta, double eta_outside) {
   return fresnel::spectral_reflectance_rgb(ctx.rgb_weights(), ior, cos_theta, eta_outside);
 }
 
-std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+std::vector<color::Rgb> ground_truth_curve(const Context& ctx,
+                                           const spectral::ComplexIorSpectrum& ior,
                                            double eta_outside) {
   std::vector<color::Rgb> out;
   out.reserve(ctx.cos_thetas().size());

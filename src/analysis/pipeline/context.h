@@ -1,5 +1,6 @@
 #pragma once
-// The colorimetric setting of a run (docs/conventions.md, "Colorimetry") and the ground-truth machinery built on it.
+// The colorimetric setting of a run (docs/conventions.md, "Colorimetry") and the ground-truth
+// machinery built on it.
 #include <string>
 #include <vector>
 
@@ -12,7 +13,7 @@ namespace fl::analysis {
 
 struct Settings {
   std::string space = "acescg";
-  std::string illuminant;    // empty: the working space's reference white illuminant
+  std::string illuminant;  // empty: the working space's reference white illuminant
 
   std::string adaptation = "bradford";
   int angles = 91;
@@ -21,7 +22,8 @@ struct Settings {
   std::string colord_dir;    // empty: spectral::default_colord_dir()
   std::string ocio_config;   // empty: built-in spaces
   std::string ocio_xyz;      // the config's CIE XYZ D65 space (empty: role / default name)
-  std::string ocio_white;    // a config space's white: ACES or an illuminant name (empty: from the config)
+  std::string
+      ocio_white;  // a config space's white: ACES or an illuminant name (empty: from the config)
   spectral::DataPaths paths;
 };
 
@@ -69,9 +71,9 @@ class Context {
 // grid wavelength weighted by its share of a white surface's luminance (Context::luminance_weights,
 // the illuminant × ȳ). Data without any k (a lossless material) counts k as given everywhere.
 struct Coverage {
-  double n = 1.0;             // weighted fraction where n is measured
-  double k = 1.0;             // where k is measured; NaN when the data has no k at all
-  double both = 1.0;          // where n and k are both measured (k counted everywhere without k data)
+  double n = 1.0;     // weighted fraction where n is measured
+  double k = 1.0;     // where k is measured; NaN when the data has no k at all
+  double both = 1.0;  // where n and k are both measured (k counted everywhere without k data)
   bool extrapolated = false;  // some grid wavelength holds a nearest value (any weight)
   std::string uncovered;      // "n and k data does not cover 360-600 nm" (empty: nothing held)
 };
@@ -88,9 +90,10 @@ std::vector<LoadedMaterial> load_catalog(const Context& ctx);
 
 // Spectral ground truth: per angle, the reflectance spectrum at cosθ for the index relative to
 // the outside medium eta_outside, pushed through the colour pipeline.
-color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectrum& ior, double cos_theta,
-                            double eta_outside);
-std::vector<color::Rgb> ground_truth_curve(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+                            double cos_theta, double eta_outside);
+std::vector<color::Rgb> ground_truth_curve(const Context& ctx,
+                                           const spectral::ComplexIorSpectrum& ior,
                                            double eta_outside);
 
 struct CurveError {

@@ -28,7 +28,8 @@ Slot load_request(const Context& ctx, const spectral::MaterialRequest& r, bool m
   Slot s;
   try {
     const auto& paths = ctx.settings().paths;
-    auto m = r.pattern.empty() ? spectral::resolve_material(r.spec, paths) : spectral::read_database_page(r.spec, paths);
+    auto m = r.pattern.empty() ? spectral::resolve_material(r.spec, paths)
+                               : spectral::read_database_page(r.spec, paths);
     s.material = load_material(ctx, std::move(m));
   } catch (const InputError& e) {
     if (!may_skip) throw;
@@ -38,14 +39,15 @@ Slot load_request(const Context& ctx, const spectral::MaterialRequest& r, bool m
 }
 
 std::string coverage_reason(const LoadedMaterial& m, double min_coverage) {
-  return fmt::format("covers {:.3f} of the visible range, below --min-coverage {:g} ({})", m.coverage.both,
-                     min_coverage, m.coverage.uncovered);
+  return fmt::format("covers {:.3f} of the visible range, below --min-coverage {:g} ({})",
+                     m.coverage.both, min_coverage, m.coverage.uncovered);
 }
 
 // Why the class and coverage filters leave `m` out (empty: kept); `single` refuses instead.
 std::string filtered_out(const LoadedMaterial& m, const LoadPolicy& p, bool single) {
   if (p.only && m.material.material_class != *p.only)
-    return fmt::format("class {} (the data's), not {}", spectral::to_string(m.material.material_class),
+    return fmt::format("class {} (the data's), not {}",
+                       spectral::to_string(m.material.material_class),
                        spectral::to_string(*p.only));
   if (m.coverage.both >= p.min_coverage) return {};
   if (single) throw InputError(m.material.source, 0, coverage_reason(m, p.min_coverage));
@@ -53,15 +55,19 @@ std::string filtered_out(const LoadedMaterial& m, const LoadPolicy& p, bool sing
 }
 
 // Adds a loaded material or its reason to be left out, in order.
-void add(MaterialSet& set, LoadedMaterial m, const std::string& spec, const LoadPolicy& p, bool single) {
+void add(MaterialSet& set, LoadedMaterial m, const std::string& spec, const LoadPolicy& p,
+         bool single) {
   const std::string why = filtered_out(m, p, single);
-  if (why.empty()) set.materials.push_back(std::move(m));
-  else set.skipped.push_back({spec, why});
+  if (why.empty())
+    set.materials.push_back(std::move(m));
+  else
+    set.skipped.push_back({spec, why});
 }
 
 }  // namespace
 
-MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& specs, const LoadPolicy& policy,
+MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& specs,
+                           const LoadPolicy& policy,
                            const std::function<void(int, int)>& progress) {
   MaterialSet set;
   if (specs.empty()) {
@@ -75,8 +81,10 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
   const auto requests = spectral::expand_materials(specs, ctx.settings().paths);
   set.requested = static_cast<int>(requests.size());
   // The page catalog is read once, under a lock: before the parallel loads rather than by the
-  // first of them while the others wait (a caller running this beside other work keeps its threads busy).
-  if (std::any_of(requests.begin(), requests.end(), [](const auto& r) { return !r.pattern.empty(); }))
+  // first of them while the others wait (a caller running this beside other work keeps its threads
+  // busy).
+  if (std::any_of(requests.begin(), requests.end(),
+                  [](const auto& r) { return !r.pattern.empty(); }))
     spectral::page_entry(ctx.settings().paths.database, "");
   std::vector<Slot> slots(requests.size());
   ProgressCounter done(progress, set.requested);
@@ -90,8 +98,10 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
       policy.threads);
   const bool single = requests.size() == 1 && requests.front().pattern.empty();
   for (size_t i = 0; i < slots.size(); ++i) {
-    if (slots[i].material) add(set, std::move(*slots[i].material), requests[i].spec, policy, single);
-    else set.skipped.push_back({requests[i].spec, slots[i].reason});
+    if (slots[i].material)
+      add(set, std::move(*slots[i].material), requests[i].spec, policy, single);
+    else
+      set.skipped.push_back({requests[i].spec, slots[i].reason});
   }
   return set;
 }

@@ -17,8 +17,9 @@ struct LoadPolicy {
   // A page matched by a glob that cannot be read is skipped with its reason unless strict. A
   // material named on its own is always an error when it cannot be read.
   bool strict = false;
-  std::optional<spectral::MaterialClass> only;  // keep this class only (others skipped, with the reason)
-  int threads = 0;                              // 0: every hardware thread
+  std::optional<spectral::MaterialClass>
+      only;         // keep this class only (others skipped, with the reason)
+  int threads = 0;  // 0: every hardware thread
 };
 
 struct SkippedMaterial {
@@ -32,7 +33,8 @@ struct MaterialSet {
 };
 
 // Loads `specs` (none: the catalog) in parallel; `progress` gets (done, total) after each.
-MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& specs, const LoadPolicy& policy,
+MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& specs,
+                           const LoadPolicy& policy,
                            const std::function<void(int, int)>& progress = {});
 
 }  // namespace fl::analysis

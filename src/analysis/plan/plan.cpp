@@ -42,10 +42,12 @@ Scene read_scene(const std::string& path) {
   const auto f = spectral::read_scene_file(path);
   Scene s;
   s.path = f.path;
-  s.roughness = f.roughness.empty() ? std::vector<double>(kDefaultRoughness.begin(), kDefaultRoughness.end())
-                                    : f.roughness;
+  s.roughness = f.roughness.empty()
+                    ? std::vector<double>(kDefaultRoughness.begin(), kDefaultRoughness.end())
+                    : f.roughness;
   for (const auto& m : f.materials)
-    s.materials.push_back({resolve_relative(path, m.spec), m.line, m.roughness.empty() ? s.roughness : m.roughness});
+    s.materials.push_back(
+        {resolve_relative(path, m.spec), m.line, m.roughness.empty() ? s.roughness : m.roughness});
   s.max_de00 = f.max_de00.value_or(kDefaultMaxDe00);
   s.space = f.space;
   s.space_line = f.space_line;
@@ -62,8 +64,9 @@ std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, Scene& scen
   for (const auto& m : scene.materials) {
     try {
       for (const auto& r : spectral::expand_materials({m.spec}, paths)) {
-        out.push_back(load_material(ctx, r.pattern.empty() ? spectral::resolve_material(r.spec, paths)
-                                                            : spectral::read_database_page(r.spec, paths)));
+        out.push_back(load_material(ctx, r.pattern.empty()
+                                             ? spectral::resolve_material(r.spec, paths)
+                                             : spectral::read_database_page(r.spec, paths)));
         expanded.push_back({r.spec, m.line, m.roughness});
       }
     } catch (const InputError& e) {
@@ -74,8 +77,10 @@ std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, Scene& scen
   return out;
 }
 
-std::vector<PlanChoice> plan_candidates(const Scene& scene, const std::vector<RenderedCandidate>& rendered,
-                                        const std::string& material, const std::vector<double>& roughness,
+std::vector<PlanChoice> plan_candidates(const Scene& scene,
+                                        const std::vector<RenderedCandidate>& rendered,
+                                        const std::string& material,
+                                        const std::vector<double>& roughness,
                                         const PlanCosts& costs) {
   std::vector<PlanChoice> out;
   for (const auto& r : rendered) {
@@ -118,8 +123,9 @@ PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de
       c.meets_budget = true;
       return c;
     }
-  auto best = *std::min_element(candidates.begin(), candidates.end(),
-                                [](const PlanChoice& a, const PlanChoice& b) { return a.error < b.error; });
+  auto best =
+      *std::min_element(candidates.begin(), candidates.end(),
+                        [](const PlanChoice& a, const PlanChoice& b) { return a.error < b.error; });
   best.meets_budget = false;
   return best;
 }
@@ -127,7 +133,8 @@ PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de
 namespace {
 
 // One model for every material: per material its lower-error parameter set.
-SceneChoice scene_option(Model m, const std::vector<std::vector<PlanChoice>>& candidates, double max_de00) {
+SceneChoice scene_option(Model m, const std::vector<std::vector<PlanChoice>>& candidates,
+                         double max_de00) {
   SceneChoice s;
   s.model = m;
   for (const auto& per_material : candidates) {
@@ -148,10 +155,12 @@ SceneChoice scene_option(Model m, const std::vector<std::vector<PlanChoice>>& ca
 
 }  // namespace
 
-SceneChoice choose_scene_model(const std::vector<std::vector<PlanChoice>>& candidates, double max_de00) {
+SceneChoice choose_scene_model(const std::vector<std::vector<PlanChoice>>& candidates,
+                               double max_de00) {
   if (candidates.empty()) throw std::logic_error("a scene without materials");
   std::vector<SceneChoice> options;
-  for (const auto& spec : fresnel::model_specs()) options.push_back(scene_option(spec.model, candidates, max_de00));
+  for (const auto& spec : fresnel::model_specs())
+    options.push_back(scene_option(spec.model, candidates, max_de00));
   auto better = [](const SceneChoice& a, const SceneChoice& b) {
     if (a.failing.size() != b.failing.size()) return a.failing.size() < b.failing.size();
     if (!a.failing.empty() && a.max_error != b.max_error) return a.max_error < b.max_error;
@@ -166,14 +175,16 @@ std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<Model>& m
   std::set<std::string> needed;  // "lighting/channel", from every model's declaration
   for (Model m : models)
     for (Lighting l : scene.lightings())
-      for (const char* ch : lighting_support(m, l).channels) needed.insert(std::string(lighting_name(l)) + "/" + ch);
+      for (const char* ch : lighting_support(m, l).channels)
+        needed.insert(std::string(lighting_name(l)) + "/" + ch);
   std::vector<PlanLut> out;
   for (const auto& t : lut_textures()) {
     PlanLut lut{t.name, t.lighting, t.file, {}, t.command};
     for (const auto& c : t.channels) {
       if (!needed.count(std::string(t.lighting) + "/" + c.channel)) continue;
       std::string where = c.components;
-      std::transform(where.begin(), where.end(), where.begin(), [](unsigned char x) { return std::toupper(x); });
+      std::transform(where.begin(), where.end(), where.begin(),
+                     [](unsigned char x) { return std::toupper(x); });
       lut.channels.push_back(where + " " + c.channel);
     }
     if (!lut.channels.empty()) out.push_back(std::move(lut));
@@ -193,7 +204,8 @@ Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<Materia
     auto it = points.find(roughness);
     if (it == points.end()) it = points.emplace(roughness, shading_points(roughness)).first;
     const auto rendered = rendered_candidates(ctx, studies[k], it->second);
-    candidates.push_back(plan_candidates(scene, rendered, studies[k].material->material.name, roughness, costs));
+    candidates.push_back(
+        plan_candidates(scene, rendered, studies[k].material->material.name, roughness, costs));
     p.materials.push_back(choose_model(candidates.back(), scene.max_de00));
   }
   std::vector<Model> chosen;

@@ -28,8 +28,8 @@ namespace fl::analysis {
 constexpr double kDefaultMaxDe00 = 1.0;
 
 struct SceneMaterial {
-  std::string spec;  // as written, or resolved against the scene's folder
-  int line = 0;      // 1-based line in the scene file
+  std::string spec;               // as written, or resolved against the scene's folder
+  int line = 0;                   // 1-based line in the scene file
   std::vector<double> roughness;  // the material's, else the scene's, else kDefaultRoughness
 };
 struct Scene {
@@ -39,7 +39,7 @@ struct Scene {
   std::string space;  // empty: the run's working space
   int space_line = 0;
   bool punctual = false, ibl = false, area = false;
-  std::vector<double> roughness;  // the scene's default
+  std::vector<double> roughness;            // the scene's default
   std::vector<Lighting> lightings() const;  // punctual, ibl, area order
 };
 
@@ -70,13 +70,16 @@ struct PlanChoice {
   Lighting error_lighting = Lighting::Punctual;        // whose error that is
   int gpu_instructions = 0;                            // summed over the scene's lightings
   double ns_per_eval = 0;
-  bool meets_budget = false;  // per material: false means no model meets it; this is the most accurate
-  color::Rgb f_avg{};         // hemispherical average 2∫F μ dμ (fresnel/average.h)
+  bool meets_budget =
+      false;           // per material: false means no model meets it; this is the most accurate
+  color::Rgb f_avg{};  // hemispherical average 2∫F μ dμ (fresnel/average.h)
 };
 
 // Every candidate of one material under the scene's lighting.
-std::vector<PlanChoice> plan_candidates(const Scene& scene, const std::vector<RenderedCandidate>& rendered,
-                                        const std::string& material, const std::vector<double>& roughness,
+std::vector<PlanChoice> plan_candidates(const Scene& scene,
+                                        const std::vector<RenderedCandidate>& rendered,
+                                        const std::string& material,
+                                        const std::vector<double>& roughness,
                                         const PlanCosts& costs);
 // The cheapest candidate with error ≤ max_de00 (ties: CPU ns, then error); when none qualifies,
 // the most accurate, with meets_budget = false.
@@ -94,7 +97,8 @@ struct SceneChoice {
 };
 // The cheapest model meeting every budget (ties: CPU ns, then the largest error); if none does, the
 // one failing fewest materials (ties: the largest error, then cost).
-SceneChoice choose_scene_model(const std::vector<std::vector<PlanChoice>>& candidates, double max_de00);
+SceneChoice choose_scene_model(const std::vector<std::vector<PlanChoice>>& candidates,
+                               double max_de00);
 
 struct PlanLut {
   std::string name;      // dfg | ltc_1 | ltc_2 (analysis/lut/lut_layout.h)

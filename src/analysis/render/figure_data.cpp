@@ -20,8 +20,8 @@ color::Rgb model_rgb(const FigureModel& m, double cos_theta) {
 }
 
 // Working-space RGB of every row (truth, then models) at every sample, row by row.
-std::vector<float> strip_samples(const Context& ctx, const FigureRequest& in, const std::vector<StripSpan>& spans,
-                                 int columns) {
+std::vector<float> strip_samples(const Context& ctx, const FigureRequest& in,
+                                 const std::vector<StripSpan>& spans, int columns) {
   const size_t rows = 1 + in.models.size();
   std::vector<float> working(rows * columns * 3);
   const double eta_e = ctx.settings().eta_outside;
@@ -31,9 +31,11 @@ std::vector<float> strip_samples(const Context& ctx, const FigureRequest& in, co
       const double theta = sp.theta0_deg + (sp.theta1_deg - sp.theta0_deg) * (i + 0.5) / sp.samples;
       const double c = std::cos(theta * kDegToRad);
       for (size_t r = 0; r < rows; ++r) {
-        const color::Rgb v = r == 0 ? ground_truth_rgb(ctx, *in.ior, c, eta_e) : model_rgb(in.models[r - 1], c);
+        const color::Rgb v =
+            r == 0 ? ground_truth_rgb(ctx, *in.ior, c, eta_e) : model_rgb(in.models[r - 1], c);
         float* p = &working[3 * (r * columns + col)];
-        p[0] = static_cast<float>(v.r), p[1] = static_cast<float>(v.g), p[2] = static_cast<float>(v.b);
+        p[0] = static_cast<float>(v.r), p[1] = static_cast<float>(v.g),
+        p[2] = static_cast<float>(v.b);
       }
     }
   return working;
@@ -57,9 +59,12 @@ CurveData curve_data(const Context& ctx, const FigureRequest& in) {
   return d;
 }
 
-std::vector<StripSpan> default_strip_spans() { return {{0.0, 90.0, 540}, {80.0, 90.0, 300}}; }
+std::vector<StripSpan> default_strip_spans() {
+  return {{0.0, 90.0, 540}, {80.0, 90.0, 300}};
+}
 
-StripData strip_data(const Context& ctx, const FigureRequest& in, const std::vector<StripSpan>& spans) {
+StripData strip_data(const Context& ctx, const FigureRequest& in,
+                     const std::vector<StripSpan>& spans) {
   StripData d;
   d.caption = caption(ctx, in);
   d.spans = spans;
@@ -78,29 +83,35 @@ StripData strip_data(const Context& ctx, const FigureRequest& in, const std::vec
   return d;
 }
 
-std::vector<std::uint8_t> display_encode(const Context& ctx, const std::vector<float>& working_rgb) {
+std::vector<std::uint8_t> display_encode(const Context& ctx,
+                                         const std::vector<float>& working_rgb) {
   const auto m = ctx.spaces().conversion(ctx.settings().space, "lin_rec709");
   std::vector<float> rgb(working_rgb.size());
   for (size_t i = 0; i + 2 < rgb.size(); i += 3) {
-    const auto o = color::transform_rgb(m, {working_rgb[i], working_rgb[i + 1], working_rgb[i + 2]});
+    const auto o =
+        color::transform_rgb(m, {working_rgb[i], working_rgb[i + 1], working_rgb[i + 2]});
     rgb[i] = static_cast<float>(o.r);
     rgb[i + 1] = static_cast<float>(o.g);
     rgb[i + 2] = static_cast<float>(o.b);
   }
   color::SpaceLibrary::encode_srgb_display(rgb);
   std::vector<std::uint8_t> out(rgb.size());
-  for (size_t i = 0; i < rgb.size(); ++i) out[i] = static_cast<std::uint8_t>(std::lround(255.0f * rgb[i]));
+  for (size_t i = 0; i < rgb.size(); ++i)
+    out[i] = static_cast<std::uint8_t>(std::lround(255.0f * rgb[i]));
   return out;
 }
 
-MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior, int samples) {
+MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+                                   int samples) {
   std::vector<float> working;
   const double eta_e = ctx.settings().eta_outside;
   const auto push = [&](double cos_theta) {
     const color::Rgb v = ground_truth_rgb(ctx, ior, cos_theta, eta_e);
-    working.insert(working.end(), {static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b)});
+    working.insert(working.end(),
+                   {static_cast<float>(v.r), static_cast<float>(v.g), static_cast<float>(v.b)});
   };
-  for (int i = 0; i < samples; ++i) push(i + 1 == samples ? 0.0 : std::cos(90.0 * kDegToRad * i / (samples - 1)));
+  for (int i = 0; i < samples; ++i)
+    push(i + 1 == samples ? 0.0 : std::cos(90.0 * kDegToRad * i / (samples - 1)));
   push(1.0);
   push(1.0 / 7.0);
   const auto codes = display_encode(ctx, working);
@@ -115,7 +126,8 @@ std::vector<std::uint8_t> sphere_display(const Context& ctx, const SphereImage& 
   constexpr float kBackground = 0.02f;  // linear grey behind the sphere
   std::vector<float> working(img.rgb.size());
   for (size_t k = 0; k < img.alpha.size(); ++k)
-    for (int c = 0; c < 3; ++c) working[3 * k + c] = img.rgb[3 * k + c] + (1.0f - img.alpha[k]) * kBackground;
+    for (int c = 0; c < 3; ++c)
+      working[3 * k + c] = img.rgb[3 * k + c] + (1.0f - img.alpha[k]) * kBackground;
   return display_encode(ctx, working);
 }
 

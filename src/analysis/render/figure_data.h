@@ -81,7 +81,8 @@ struct MaterialSwatches {
   std::vector<std::uint8_t> strip;  // 3 codes per angle
   std::array<std::uint8_t, 3> f0{}, f82{};
 };
-MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior, int samples = 19);
+MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+                                   int samples = 19);
 
 // A render composited over a dark grey background and display-encoded (3 codes per pixel, the
 // render's layout).

@@ -23,9 +23,12 @@ constexpr double kHalfFrame = 1.1;
 color::Rgb lerp(const color::Rgb& a, const color::Rgb& b, double t) {
   return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
 }
-color::Rgb mul(const color::Rgb& a, const color::Rgb& b) { return {a.r * b.r, a.g * b.g, a.b * b.b}; }
+color::Rgb mul(const color::Rgb& a, const color::Rgb& b) {
+  return {a.r * b.r, a.g * b.g, a.b * b.b};
+}
 
-// An orthonormal basis (t, b, n) around unit n (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
+// An orthonormal basis (t, b, n) around unit n (Duff et al. 2017, "Building an Orthonormal Basis,
+// Revisited").
 void basis(const Vec3& n, Vec3& t, Vec3& b) {
   const double s = std::copysign(1.0, n.z);
   const double a = -1.0 / (s + n.z);
@@ -35,14 +38,17 @@ void basis(const Vec3& n, Vec3& t, Vec3& b) {
 }
 
 Vec3 to_world(const Vec3& l, const Vec3& t, const Vec3& b, const Vec3& n) {
-  return {l.x * t.x + l.y * b.x + l.z * n.x, l.x * t.y + l.y * b.y + l.z * n.y, l.x * t.z + l.y * b.z + l.z * n.z};
+  return {l.x * t.x + l.y * b.x + l.z * n.x, l.x * t.y + l.y * b.y + l.z * n.y,
+          l.x * t.z + l.y * b.z + l.z * n.z};
 }
 
 // The analytic environment as a light-sampling strategy: directions uniform in the key light's
 // cone, pdf 1 / (2π(1 − cos δ)).
 struct KeyLightStrategy {
   explicit KeyLightStrategy(const Environment& e)
-      : env(e), cos_delta(std::cos(e.key_half_angle_deg * kDegToRad)), cone_pdf(1.0 / (2.0 * kPi * (1.0 - cos_delta))) {
+      : env(e),
+        cos_delta(std::cos(e.key_half_angle_deg * kDegToRad)),
+        cone_pdf(1.0 / (2.0 * kPi * (1.0 - cos_delta))) {
     basis(env.key_direction, kt, kb);
   }
   color::Rgb radiance(const Vec3& d) const { return environment_radiance(env, d); }
@@ -52,9 +58,12 @@ struct KeyLightStrategy {
     const double sin_l = std::sqrt(std::max(0.0, 1.0 - cos_l * cos_l));
     const double phi = 2.0 * kPi * u2;
     pdf = cone_pdf;
-    return to_world({sin_l * std::cos(phi), sin_l * std::sin(phi), cos_l}, kt, kb, env.key_direction);
+    return to_world({sin_l * std::cos(phi), sin_l * std::sin(phi), cos_l}, kt, kb,
+                    env.key_direction);
   }
-  double pdf(const Vec3& d) const { return can_sample() && brdf::dot(d, env.key_direction) >= cos_delta ? cone_pdf : 0.0; }
+  double pdf(const Vec3& d) const {
+    return can_sample() && brdf::dot(d, env.key_direction) >= cos_delta ? cone_pdf : 0.0;
+  }
   void lookup(const Vec3& d, color::Rgb& radiance_out, double& pdf_out) const {
     radiance_out = radiance(d);
     pdf_out = pdf(d);
@@ -66,9 +75,10 @@ struct KeyLightStrategy {
 };
 
 // Σ over the tables: out[i] += weight · F_i(v·h) · L.
-void accumulate(const std::vector<const FresnelTable*>& tables, double weight, const color::Rgb& radiance, double voh,
-                color::Rgb* out) {
-  for (size_t i = 0; i < tables.size(); ++i) out[i] = out[i] + weight * mul(tables[i]->at(voh), radiance);
+void accumulate(const std::vector<const FresnelTable*>& tables, double weight,
+                const color::Rgb& radiance, double voh, color::Rgb* out) {
+  for (size_t i = 0; i < tables.size(); ++i)
+    out[i] = out[i] + weight * mul(tables[i]->at(voh), radiance);
 }
 
 // The lighting strategy's directions for Hammersley point i of `samples`: the same world directions
@@ -95,8 +105,9 @@ std::vector<LightSample> light_samples(const S& light, int samples) {
 
 // shade_specular for one lighting strategy S (radiance, lookup, can_sample, sample, pdf).
 template <class S>
-void shade_with(const S& light, const std::vector<LightSample>& drawn, const std::vector<const FresnelTable*>& tables,
-                const Vec3& n, const Vec3& v, double alpha, color::Rgb* out) {
+void shade_with(const S& light, const std::vector<LightSample>& drawn,
+                const std::vector<const FresnelTable*>& tables, const Vec3& n, const Vec3& v,
+                double alpha, color::Rgb* out) {
   std::fill(out, out + tables.size(), color::Rgb{});
   const double nov = std::max(1e-4, brdf::dot(n, v));  // grazing: keep the Smith terms finite
   if (alpha < kMirrorAlpha) {
@@ -119,7 +130,8 @@ void shade_with(const S& light, const std::vector<LightSample>& drawn, const std
       double pdf_b = 0;
       light.lookup(lw, radiance, pdf_b);
       const double w = pdf_a / (pdf_a + pdf_b);
-      accumulate(tables, w * brdf::ggx_vndf_weight(v_local.z, l.z, alpha), radiance, brdf::dot(v_local, h), out);
+      accumulate(tables, w * brdf::ggx_vndf_weight(v_local.z, l.z, alpha), radiance,
+                 brdf::dot(v_local, h), out);
     }
     // Strategy B: the lighting's own directions; f·cos/pdf_B = D V F (n·l) / pdf_B.
     const LightSample& ls = drawn[i];
@@ -129,9 +141,11 @@ void shade_with(const S& light, const std::vector<LightSample>& drawn, const std
     const Vec3 hb = brdf::normalize(Vec3{v_local.x + lb.x, v_local.y + lb.y, v_local.z + lb.z});
     const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, hb.z, alpha);
     const double w = ls.pdf / (pdf_a + ls.pdf);
-    accumulate(tables, w * brdf::ggx_lobe_cos(v_local, lb, alpha) / ls.pdf, ls.radiance, brdf::dot(v_local, hb), out);
+    accumulate(tables, w * brdf::ggx_lobe_cos(v_local, lb, alpha) / ls.pdf, ls.radiance,
+               brdf::dot(v_local, hb), out);
   }
-  for (size_t k = 0; k < tables.size(); ++k) out[k] = (1.0 / static_cast<double>(n_samples)) * out[k];
+  for (size_t k = 0; k < tables.size(); ++k)
+    out[k] = (1.0 / static_cast<double>(n_samples)) * out[k];
 }
 
 // Calls f with the lighting's sampling strategy.
@@ -143,8 +157,9 @@ auto with_strategy(const SceneLight& light, const F& f) {
 
 // One pixel of every image: its colour (premultiplied by coverage) per table, and its coverage.
 template <class S>
-double render_pixel(const S& light, const std::vector<LightSample>& drawn, const std::vector<const FresnelTable*>& tables,
-                    const RenderSettings& s, double X, double Y, double scale, std::vector<color::Rgb>& c,
+double render_pixel(const S& light, const std::vector<LightSample>& drawn,
+                    const std::vector<const FresnelTable*>& tables, const RenderSettings& s,
+                    double X, double Y, double scale, std::vector<color::Rgb>& c,
                     std::vector<color::Rgb>& sub) {
   const double alpha = s.roughness * s.roughness;
   const Vec3 v{0.0, 0.0, 1.0};
@@ -165,7 +180,9 @@ double render_pixel(const S& light, const std::vector<LightSample>& drawn, const
   double cover = 0.0;
   for (int j = 0; j < kSub; ++j)
     for (int i = 0; i < kSub; ++i) {
-      if (!shade_at(X + ((i + 0.5) / kSub - 0.5) * scale, Y - ((j + 0.5) / kSub - 0.5) * scale, sub.data())) continue;
+      if (!shade_at(X + ((i + 0.5) / kSub - 0.5) * scale, Y - ((j + 0.5) / kSub - 0.5) * scale,
+                    sub.data()))
+        continue;
       for (size_t k = 0; k < c.size(); ++k) c[k] = c[k] + sub[k];
       cover += 1.0;
     }
@@ -228,7 +245,8 @@ Environment default_environment() {
 }
 
 color::Rgb environment_radiance(const Environment& env, const Vec3& dir) {
-  if (brdf::dot(dir, env.key_direction) >= std::cos(env.key_half_angle_deg * kDegToRad)) return env.key_radiance;
+  if (brdf::dot(dir, env.key_direction) >= std::cos(env.key_half_angle_deg * kDegToRad))
+    return env.key_radiance;
   if (dir.y >= 0.0) return lerp(env.horizon, env.zenith, std::sqrt(std::min(1.0, dir.y)));
   const double t = std::min(1.0, -dir.y / std::sin(7.0 * kDegToRad));
   return lerp(0.5 * env.horizon, env.ground, t);
@@ -247,7 +265,8 @@ EnvironmentMap::EnvironmentMap(LatLongImage image, const color::Rgb& luminance, 
     double* cdf = &column_cdf_[static_cast<size_t>(y) * (w + 1)];
     for (int x = 0; x < w; ++x) {
       const float* p = &image_.rgb[3 * (static_cast<size_t>(y) * w + x)];
-      const double lum = std::max(0.0, luminance.r * p[0] + luminance.g * p[1] + luminance.b * p[2]);
+      const double lum =
+          std::max(0.0, luminance.r * p[0] + luminance.g * p[1] + luminance.b * p[2]);
       weight_[static_cast<size_t>(y) * w + x] = std::isfinite(lum) ? lum * sin_theta : 0.0;
       cdf[x + 1] = cdf[x] + weight_[static_cast<size_t>(y) * w + x];
     }
@@ -270,7 +289,8 @@ void EnvironmentMap::direction_to_uv(const Vec3& d, double& u, double& v) const 
 Vec3 EnvironmentMap::uv_to_direction(double u, double v) const {
   const double longitude = kPi * (1.0 - 2.0 * u) + rotation_deg_ * kDegToRad;
   const double theta = kPi * v;
-  return {std::sin(theta) * std::sin(longitude), std::cos(theta), std::sin(theta) * std::cos(longitude)};
+  return {std::sin(theta) * std::sin(longitude), std::cos(theta),
+          std::sin(theta) * std::cos(longitude)};
 }
 
 color::Rgb EnvironmentMap::texel(int x, int y) const {
@@ -296,7 +316,9 @@ color::Rgb EnvironmentMap::radiance_uv(double u, double v) const {
   const double fx = u * w - 0.5, fy = v * h - 0.5;
   const double x0 = std::floor(fx), y0 = std::floor(fy);
   const double tx = fx - x0, ty = fy - y0;
-  const auto wrap = [w](double x) { return static_cast<int>(((static_cast<long long>(x) % w) + w) % w); };
+  const auto wrap = [w](double x) {
+    return static_cast<int>(((static_cast<long long>(x) % w) + w) % w);
+  };
   const auto clamp_row = [h](double y) { return static_cast<int>(std::clamp(y, 0.0, h - 1.0)); };
   const int xa = wrap(x0), xb = wrap(x0 + 1), ya = clamp_row(y0), yb = clamp_row(y0 + 1);
   return lerp(lerp(texel(xa, ya), texel(xb, ya), tx), lerp(texel(xa, yb), texel(xb, yb), tx), ty);
@@ -306,9 +328,13 @@ Vec3 EnvironmentMap::sample(double u1, double u2, double& pdf) const {
   pdf = 0;
   if (!can_sample()) return {0, 0, 1};
   const int w = image_.width, h = image_.height;
-  const int y = std::clamp(static_cast<int>(std::upper_bound(row_cdf_.begin(), row_cdf_.end(), u2) - row_cdf_.begin()) - 1, 0, h - 1);
+  const int y = std::clamp(
+      static_cast<int>(std::upper_bound(row_cdf_.begin(), row_cdf_.end(), u2) - row_cdf_.begin()) -
+          1,
+      0, h - 1);
   const double* cdf = &column_cdf_[static_cast<size_t>(y) * (w + 1)];
-  const int x = std::clamp(static_cast<int>(std::upper_bound(cdf, cdf + w + 1, u1) - cdf) - 1, 0, w - 1);
+  const int x =
+      std::clamp(static_cast<int>(std::upper_bound(cdf, cdf + w + 1, u1) - cdf) - 1, 0, w - 1);
   const double dv = (u2 - row_cdf_[y]) / std::max(1e-300, row_cdf_[y + 1] - row_cdf_[y]);
   const double du = (u1 - cdf[x]) / std::max(1e-300, cdf[x + 1] - cdf[x]);
   const double u = (x + std::clamp(du, 0.0, 1.0)) / w, v = (y + std::clamp(dv, 0.0, 1.0)) / h;
@@ -326,7 +352,8 @@ double EnvironmentMap::pdf(const Vec3& dir) const {
 double EnvironmentMap::pdf_uv(double u, double v, double sin_theta) const {
   if (!can_sample() || sin_theta <= 0.0) return 0.0;
   const int w = image_.width, h = image_.height;
-  const int x = std::min(w - 1, static_cast<int>(u * w)), y = std::min(h - 1, static_cast<int>(v * h));
+  const int x = std::min(w - 1, static_cast<int>(u * w)),
+            y = std::min(h - 1, static_cast<int>(v * h));
   // Density in (u, v) is weight · w·h / Σ weight; dω = 2π² sin θ du dv.
   return weight_[static_cast<size_t>(y) * w + x] / total_ * w * h / (2.0 * kPi * kPi * sin_theta);
 }
@@ -346,41 +373,46 @@ FresnelTable tabulate_fresnel(const std::function<color::Rgb(double)>& fresnel, 
   return t;
 }
 
-FresnelTable truth_fresnel_table(const Context& ctx, const spectral::ComplexIorSpectrum& ior, double eta_outside) {
+FresnelTable truth_fresnel_table(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+                                 double eta_outside) {
   return tabulate_fresnel([&](double c) { return ground_truth_rgb(ctx, ior, c, eta_outside); });
 }
 
 FresnelTable model_fresnel_table(fresnel::Model model, const std::vector<double>& params) {
-  return tabulate_fresnel([&](double c) { return fresnel::model_spec(model).evaluate(c, params.data(), false); });
+  return tabulate_fresnel(
+      [&](double c) { return fresnel::model_spec(model).evaluate(c, params.data(), false); });
 }
 
-void shade_specular(const SceneLight& light, const std::vector<const FresnelTable*>& fresnel, const Vec3& n,
-                    const Vec3& v, double alpha, int samples, color::Rgb* out) {
+void shade_specular(const SceneLight& light, const std::vector<const FresnelTable*>& fresnel,
+                    const Vec3& n, const Vec3& v, double alpha, int samples, color::Rgb* out) {
   with_strategy(light, [&](const auto& s) {
     shade_with(s, light_samples(s, samples), fresnel, n, v, alpha, out);
     return 0;
   });
 }
 
-color::Rgb shade_specular(const SceneLight& light, const FresnelTable& fresnel, const Vec3& n, const Vec3& v,
-                          double alpha, int samples) {
+color::Rgb shade_specular(const SceneLight& light, const FresnelTable& fresnel, const Vec3& n,
+                          const Vec3& v, double alpha, int samples) {
   color::Rgb out;
   shade_specular(light, {&fresnel}, n, v, alpha, samples, &out);
   return out;
 }
 
-std::vector<SphereImage> render_spheres(const SceneLight& light, const std::vector<const FresnelTable*>& fresnel,
+std::vector<SphereImage> render_spheres(const SceneLight& light,
+                                        const std::vector<const FresnelTable*>& fresnel,
                                         const RenderSettings& s) {
   if (s.size_px < 1) throw std::invalid_argument("render_sphere: size must be positive");
-  return with_strategy(light, [&](const auto& strategy) { return render_with(strategy, fresnel, s); });
+  return with_strategy(light,
+                       [&](const auto& strategy) { return render_with(strategy, fresnel, s); });
 }
 
-SphereImage render_sphere(const SceneLight& light, const FresnelTable& fresnel, const RenderSettings& s) {
+SphereImage render_sphere(const SceneLight& light, const FresnelTable& fresnel,
+                          const RenderSettings& s) {
   return std::move(render_spheres(light, {&fresnel}, s).front());
 }
 
-EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std::string& space, double rotation_deg,
-                               double exposure_ev, double& scale) {
+EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std::string& space,
+                               double rotation_deg, double exposure_ev, double& scale) {
   const color::Mat3 m = ctx.spaces().conversion(space, ctx.settings().space);
   const auto& to_xyz = ctx.space().rgb_to_xyz;
   const color::Rgb luminance{to_xyz(1, 0), to_xyz(1, 1), to_xyz(1, 2)};
@@ -388,7 +420,8 @@ EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std
   for (size_t k = 0; 3 * k + 2 < image.rgb.size(); ++k) {
     const auto o = m.apply<double>({image.rgb[3 * k], image.rgb[3 * k + 1], image.rgb[3 * k + 2]});
     for (int c = 0; c < 3; ++c) image.rgb[3 * k + c] = static_cast<float>(o[c]);
-    const double sin_theta = std::sin(kPi * (static_cast<double>(k / image.width) + 0.5) / image.height);
+    const double sin_theta =
+        std::sin(kPi * (static_cast<double>(k / image.width) + 0.5) / image.height);
     weighted += sin_theta * (luminance.r * o[0] + luminance.g * o[1] + luminance.b * o[2]);
     solid_angle += sin_theta;
   }
@@ -416,17 +449,21 @@ HeatmapStats heatmap_stats(const std::vector<double>& de, int width, int height)
       st.max = std::max(st.max, e);
     }
   st.mean = st.pixels ? total / static_cast<double>(st.pixels) : 0.0;
-  for (size_t b = 0; b < bands; ++b) st.band_mean.push_back(count[b] ? sum[b] / static_cast<double>(count[b]) : std::nan(""));
+  for (size_t b = 0; b < bands; ++b)
+    st.band_mean.push_back(count[b] ? sum[b] / static_cast<double>(count[b]) : std::nan(""));
   return st;
 }
 
-std::vector<SphereImage> render_truth_and_models(const Context& ctx, const LoadedMaterial& m, const SceneLight& light,
-                                                const std::vector<fresnel::Model>& models,
-                                                const std::vector<std::vector<double>>& params,
-                                                const RenderSettings& settings) {
-  if (params.size() != models.size()) throw std::invalid_argument("render_truth_and_models: one parameter set per model");
+std::vector<SphereImage> render_truth_and_models(const Context& ctx, const LoadedMaterial& m,
+                                                 const SceneLight& light,
+                                                 const std::vector<fresnel::Model>& models,
+                                                 const std::vector<std::vector<double>>& params,
+                                                 const RenderSettings& settings) {
+  if (params.size() != models.size())
+    throw std::invalid_argument("render_truth_and_models: one parameter set per model");
   std::vector<FresnelTable> tables{truth_fresnel_table(ctx, m.ior, ctx.settings().eta_outside)};
-  for (size_t i = 0; i < models.size(); ++i) tables.push_back(model_fresnel_table(models[i], params[i]));
+  for (size_t i = 0; i < models.size(); ++i)
+    tables.push_back(model_fresnel_table(models[i], params[i]));
   std::vector<const FresnelTable*> all;
   for (const auto& t : tables) all.push_back(&t);
   return render_spheres(light, all, settings);
@@ -454,12 +491,15 @@ MaterialRender render_material(const Context& ctx, const LoadedMaterial& m, cons
 }
 
 std::vector<double> de2000_image(const Context& ctx, const SphereImage& a, const SphereImage& b) {
-  if (a.width != b.width || a.height != b.height) throw std::invalid_argument("de2000_image: sizes differ");
+  if (a.width != b.width || a.height != b.height)
+    throw std::invalid_argument("de2000_image: sizes differ");
   std::vector<double> out(a.alpha.size(), std::nan(""));
   for (size_t k = 0; k < out.size(); ++k) {
     if (!(a.alpha[k] > 0.0f) || !(b.alpha[k] > 0.0f)) continue;
-    const color::Rgb ca{a.rgb[3 * k] / a.alpha[k], a.rgb[3 * k + 1] / a.alpha[k], a.rgb[3 * k + 2] / a.alpha[k]};
-    const color::Rgb cb{b.rgb[3 * k] / b.alpha[k], b.rgb[3 * k + 1] / b.alpha[k], b.rgb[3 * k + 2] / b.alpha[k]};
+    const color::Rgb ca{a.rgb[3 * k] / a.alpha[k], a.rgb[3 * k + 1] / a.alpha[k],
+                        a.rgb[3 * k + 2] / a.alpha[k]};
+    const color::Rgb cb{b.rgb[3 * k] / b.alpha[k], b.rgb[3 * k + 1] / b.alpha[k],
+                        b.rgb[3 * k + 2] / b.alpha[k]};
     out[k] = color::ciede2000(ctx.rgb_to_lab(ca), ctx.rgb_to_lab(cb));
   }
   return out;

@@ -45,7 +45,8 @@ struct Environment {
 // normalize(−0.15, 0.20, 1) (14.0° up-left of the view axis).
 Environment default_environment();
 
-// Fresnel Lab's own analytic environment (described above): radiance arriving from world direction `dir` (unit).
+// Fresnel Lab's own analytic environment (described above): radiance arriving from world direction
+// `dir` (unit).
 color::Rgb environment_radiance(const Environment& env, const brdf::Vec3& dir);
 
 // An equirectangular image (width = 2 × height for a full sphere of directions).
@@ -102,7 +103,8 @@ struct FresnelTable {
 };
 FresnelTable tabulate_fresnel(const std::function<color::Rgb(double)>& fresnel, int entries = 1025);
 // Spectral ground truth (ground_truth_rgb) and a model with its flat parameter vector.
-FresnelTable truth_fresnel_table(const Context& ctx, const spectral::ComplexIorSpectrum& ior, double eta_outside);
+FresnelTable truth_fresnel_table(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
+                                 double eta_outside);
 FresnelTable model_fresnel_table(fresnel::Model model, const std::vector<double>& params);
 
 // Below this GGX α (roughness 0.01) the lobe is treated as a perfect mirror.
@@ -116,8 +118,9 @@ constexpr double kMirrorAlpha = 1e-4;
 // density), both from the same Hammersley set, so the result is deterministic (a fixed set per
 // pixel: the quasi-Monte Carlo error is smooth across the image, not noise). One set of directions
 // shades every table in `fresnel`: out[i] is the shading with fresnel[i].
-void shade_specular(const SceneLight& light, const std::vector<const FresnelTable*>& fresnel, const brdf::Vec3& n,
-                    const brdf::Vec3& v, double alpha, int samples, color::Rgb* out);
+void shade_specular(const SceneLight& light, const std::vector<const FresnelTable*>& fresnel,
+                    const brdf::Vec3& n, const brdf::Vec3& v, double alpha, int samples,
+                    color::Rgb* out);
 color::Rgb shade_specular(const SceneLight& light, const FresnelTable& fresnel, const brdf::Vec3& n,
                           const brdf::Vec3& v, double alpha, int samples);
 
@@ -135,9 +138,11 @@ struct SphereImage {
   std::vector<float> alpha;  // coverage
 };
 // One image per table, all shaded with the same directions (shade_specular).
-std::vector<SphereImage> render_spheres(const SceneLight& light, const std::vector<const FresnelTable*>& fresnel,
+std::vector<SphereImage> render_spheres(const SceneLight& light,
+                                        const std::vector<const FresnelTable*>& fresnel,
                                         const RenderSettings& settings);
-SphereImage render_sphere(const SceneLight& light, const FresnelTable& fresnel, const RenderSettings& settings);
+SphereImage render_sphere(const SceneLight& light, const FresnelTable& fresnel,
+                          const RenderSettings& settings);
 
 // A working-space environment map from an image in colour space `space` (a name the context's
 // SpaceLibrary knows), converted with OpenColorIO's matrix from `space` to the working space, then
@@ -146,8 +151,8 @@ SphereImage render_sphere(const SceneLight& light, const FresnelTable& fresnel, 
 // space's white, Y = 1, the reference of CIELAB and so of the heat maps), as a look-dev artist
 // exposes a plate so that an 18% grey ball reads 0.18; ΔE2000 then compares across environments.
 // `scale` receives the factor applied. A black image stays black.
-EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std::string& space, double rotation_deg,
-                               double exposure_ev, double& scale);
+EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std::string& space,
+                               double rotation_deg, double exposure_ev, double& scale);
 
 // ΔE2000 over the covered pixels of a heat map: mean and max, and the mean in bands of the angle θ
 // between the surface normal and the view (0–30°, 30–60°, 60–80°, 80–90°): where on the sphere
@@ -171,10 +176,11 @@ struct ModelRender {
 
 // Spheres under `light`, all in one pass: the spectral ground truth first, then each model with its
 // parameter set (params[i] for models[i]).
-std::vector<SphereImage> render_truth_and_models(const Context& ctx, const LoadedMaterial& m, const SceneLight& light,
-                                                const std::vector<fresnel::Model>& models,
-                                                const std::vector<std::vector<double>>& params,
-                                                const RenderSettings& settings);
+std::vector<SphereImage> render_truth_and_models(const Context& ctx, const LoadedMaterial& m,
+                                                 const SceneLight& light,
+                                                 const std::vector<fresnel::Model>& models,
+                                                 const std::vector<std::vector<double>>& params,
+                                                 const RenderSettings& settings);
 
 // A material's sphere under `light` with the spectral ground truth and with each model's derived or
 // fitted parameters (`kind`, from the material's study), all in one pass.

@@ -20,14 +20,16 @@
 namespace fl::analysis {
 
 enum class ShaderLanguage { Glsl, Hlsl };
-ShaderLanguage shader_language_from_name(const std::string& name);  // glsl | hlsl; InputError otherwise
+ShaderLanguage shader_language_from_name(
+    const std::string& name);  // glsl | hlsl; InputError otherwise
 
 // The name of the function an engine calls for model m under lighting l.
 std::string shader_function_name(fresnel::Model m, Lighting l);
 
 // Self-contained code for model m under each of `lightings`: the helpers it calls (once), the
 // model's function where a lighting evaluates it, and each lighting's entry point.
-std::string shader_code(fresnel::Model m, const std::vector<Lighting>& lightings, ShaderLanguage lang);
+std::string shader_code(fresnel::Model m, const std::vector<Lighting>& lightings,
+                        ShaderLanguage lang);
 
 // A GLSL compute shader around shader_code(m, {l}) for measuring its cost: the entry point's
 // inputs come from a uniform block, its result goes to a storage buffer, so an optimizer can

@@ -1,9 +1,8 @@
 #include "analysis/study/study.h"
 
-#include "fresnel/registry.h"
-
 #include <algorithm>
 
+#include "fresnel/registry.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {
@@ -37,7 +36,8 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
   st.material = &m;
   const double eta_e = ctx.settings().eta_outside;
   st.truth = ground_truth_curve(ctx, m.ior, eta_e);
-  st.derived = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, m.ior, eta_e, o.point_sample_nm);
+  st.derived = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, m.ior, eta_e,
+                                          o.point_sample_nm);
   const auto& d = st.derived;
   const auto& cos = ctx.cos_thetas();
   // The truth in CIELAB once, for the fits and for every curve measured against it.
@@ -50,33 +50,45 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
   for (const auto& spec : fresnel::model_specs())
     if (o.studies(spec.model)) specs.push_back(&spec);
   st.models.resize(specs.size());
-  parallel_for(specs.size(), [&](size_t k) {
-    const auto& spec = *specs[k];
-    ModelResult& r = st.models[k];
-    r.model = spec.model;
-    r.derived = fresnel::derived_model_params(spec.model, d);
-    r.derived_error = curve_error(ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.derived, cos));
-    r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
-    if (o.fits(spec.model)) {
-      r.fitted = fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d), fit_options);
-      r.fitted_error = curve_error(ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
-      r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);
-    }
-  }, o.threads);
+  parallel_for(
+      specs.size(),
+      [&](size_t k) {
+        const auto& spec = *specs[k];
+        ModelResult& r = st.models[k];
+        r.model = spec.model;
+        r.derived = fresnel::derived_model_params(spec.model, d);
+        r.derived_error =
+            curve_error(ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.derived, cos));
+        r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
+        if (o.fits(spec.model)) {
+          r.fitted =
+              fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d), fit_options);
+          r.fitted_error = curve_error(
+              ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
+          r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);
+        }
+      },
+      o.threads);
   if (!o.method_errors) return st;
   std::vector<double> ps;
   for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
-  st.ps_eta_kappa = curve_error(ctx, truth_lab, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::FresnelRgb>, ps, cos));
+  st.ps_eta_kappa =
+      curve_error(ctx, truth_lab,
+                  fresnel::evaluate_curve(fresnel::model_of<fresnel::models::FresnelRgb>, ps, cos));
   const auto g_ps = fresnel::gulbrandsen_params(d.f0, d.g_ps_eta, &st.g_clamped_ps);
   fresnel::gulbrandsen_params(d.f0, d.g_refl_eta, &st.g_clamped_refl);
-  st.refl_f0_ps_eta = curve_error(ctx, truth_lab, fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Gulbrandsen>, g_ps, cos));
+  st.refl_f0_ps_eta = curve_error(
+      ctx, truth_lab,
+      fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Gulbrandsen>, g_ps, cos));
   return st;
 }
 
 }  // namespace
 
-std::vector<MaterialStudy> study_materials(const Context& ctx, const std::vector<LoadedMaterial>& materials,
-                                           const StudyOptions& options, const std::function<void(int, int)>& progress) {
+std::vector<MaterialStudy> study_materials(const Context& ctx,
+                                           const std::vector<LoadedMaterial>& materials,
+                                           const StudyOptions& options,
+                                           const std::function<void(int, int)>& progress) {
   std::vector<MaterialStudy> out(materials.size());
   ProgressCounter done(progress, static_cast<int>(materials.size()));
   parallel_for(

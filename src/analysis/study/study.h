@@ -17,7 +17,8 @@ struct ModelResult {
   CurveError derived_error;
   fit::FitResult fitted;
   CurveError fitted_error;
-  bool derived_clamps = false, fitted_clamps = false;  // the kernel's output clamp changed the curve
+  bool derived_clamps = false,
+       fitted_clamps = false;  // the kernel's output clamp changed the curve
 };
 
 struct MaterialStudy {
@@ -38,7 +39,8 @@ struct StudyOptions {
   bool fit = true;  // run the Ceres fits (fitted parameter sets)
   // With `fit`: the models to fit (empty: every model); the others' fitted results stay empty.
   std::vector<fresnel::Model> fitted_models;
-  // The models studied (empty: every model), in registry order; MaterialStudy::result throws for the others.
+  // The models studied (empty: every model), in registry order; MaterialStudy::result throws for
+  // the others.
   std::vector<fresnel::Model> models;
   // The talk's method table's extra errors (MaterialStudy::ps_eta_kappa, refl_f0_ps_eta).
   bool method_errors = true;
@@ -49,13 +51,15 @@ struct StudyOptions {
   }
 
   bool fits(fresnel::Model m) const {
-    return fit && (fitted_models.empty() || std::find(fitted_models.begin(), fitted_models.end(), m) != fitted_models.end());
+    return fit && (fitted_models.empty() ||
+                   std::find(fitted_models.begin(), fitted_models.end(), m) != fitted_models.end());
   }
 };
 
 // Studies every material (in parallel over materials; each study is deterministic).
 // `progress` is called after each material with (done, total).
-std::vector<MaterialStudy> study_materials(const Context& ctx, const std::vector<LoadedMaterial>& materials,
+std::vector<MaterialStudy> study_materials(const Context& ctx,
+                                           const std::vector<LoadedMaterial>& materials,
                                            const StudyOptions& options,
                                            const std::function<void(int, int)>& progress = {});
 

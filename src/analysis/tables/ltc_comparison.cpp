@@ -31,9 +31,9 @@ std::vector<Table> ltc_comparison_tables(const LtcComparison& c) {
       above += fmt::format("{}{} ({:.4f} against {:.4f})", above.empty() ? "" : ", ", j.entry,
                            j.max, j.reference_max);
   }
-  jumps.reading = above.empty()
-                      ? "No entry steps further between neighbouring cells than in ltc_code's table."
-                      : "Entries whose largest step exceeds ltc_code's largest: " + above + ".";
+  jumps.reading =
+      above.empty() ? "No entry steps further between neighbouring cells than in ltc_code's table."
+                    : "Entries whose largest step exceeds ltc_code's largest: " + above + ".";
   Table mid;
   mid.name = "ltc-midpoints";
   mid.title = "Held-out relative L3 error of bilinear lookups half-way between neighbouring cells";

@@ -46,7 +46,8 @@ const RenderedCandidate* find(const std::vector<RenderedCandidate>& cs, Model m,
 }
 
 // "F82 ≤ Schlick for k of n metals" under one lighting, derived parameter sets (spectral F0, F82).
-std::string f82_against_schlick(const std::vector<std::vector<RenderedCandidate>>& per_metal, Lighting l) {
+std::string f82_against_schlick(const std::vector<std::vector<RenderedCandidate>>& per_metal,
+                                Lighting l) {
   int no_worse = 0;
   std::vector<double> schlick, f82;
   for (const auto& cs : per_metal) {
@@ -56,33 +57,46 @@ std::string f82_against_schlick(const std::vector<std::vector<RenderedCandidate>
     schlick.push_back(s->under(l).rms);
     f82.push_back(f->under(l).rms);
   }
-  return fmt::format("under {}, pre-integrated F82 is no worse than pre-integrated Schlick for {} of {} metals "
-                     "(median RMS ΔE2000 {:.3f} against {:.3f})",
-                     lighting_name(l), no_worse, per_metal.size(), median(f82), median(schlick));
+  return fmt::format(
+      "under {}, pre-integrated F82 is no worse than pre-integrated Schlick for {} of {} metals "
+      "(median RMS ΔE2000 {:.3f} against {:.3f})",
+      lighting_name(l), no_worse, per_metal.size(), median(f82), median(schlick));
 }
 
 std::vector<std::string> accuracy_notes(const Context& ctx) {
   std::string roughness_list, view_list;
-  for (double r : kDefaultRoughness) roughness_list += (roughness_list.empty() ? "" : ", ") + fmt::format("{:g}", r);
-  for (double d : kShadingViewDeg) view_list += (view_list.empty() ? "" : ", ") + fmt::format("{:g}°", d);
+  for (double r : kDefaultRoughness)
+    roughness_list += (roughness_list.empty() ? "" : ", ") + fmt::format("{:g}", r);
+  for (double d : kShadingViewDeg)
+    view_list += (view_list.empty() ? "" : ", ") + fmt::format("{:g}°", d);
   const auto& s = ctx.settings();
   return {
-      fmt::format("Working space {}, illuminant {}, {} adaptation, outside medium η = {:g}.", s.space, s.illuminant,
-                  s.adaptation, s.eta_outside),
-      fmt::format("Shading points: perceptual roughness {} (α = roughness²) × view angle {}; per point the GGX lobe "
-                  "(height-correlated Smith) is integrated with {} visible-normal samples (Hammersley).",
-                  roughness_list, view_list, kLutSamples),
-      fmt::format("Truth: the lobe integrated with the spectral Fresnel ground truth per v·h (RGB tabulated at {} "
+      fmt::format("Working space {}, illuminant {}, {} adaptation, outside medium η = {:g}.",
+                  s.space, s.illuminant, s.adaptation, s.eta_outside),
+      fmt::format(
+          "Shading points: perceptual roughness {} (α = roughness²) × view angle {}; per point the "
+          "GGX lobe "
+          "(height-correlated Smith) is integrated with {} visible-normal samples (Hammersley).",
+          roughness_list, view_list, kLutSamples),
+      fmt::format("Truth: the lobe integrated with the spectral Fresnel ground truth per v·h (RGB "
+                  "tabulated at {} "
                   "values of cos θ, linear interpolation).",
                   kTruthCurveSize),
-      fmt::format("Engine: the {0}² tables as `lut` writes them, read bilinearly (DFG at (n·v, roughness) on texel "
-                  "centres; LTC moments at (roughness, √(1 − n·v)) on endpoints). `tables`: the Fresnel term is "
-                  "pre-integrated, a·n + b·f + c·l with F = a + b(1 − μ)⁵ + cμ(1 − μ)⁶ (Schlick: F0·dfg1 + dfg2; "
-                  "F82: … − a·dfg_f82, unclamped); `F(n·v) × lobe`: the model at n·v times the lobe's Fresnel-free "
-                  "integral (dfg1 + dfg2, n_D), the stated approximation for models no shared table holds.",
-                  kEngineLutSize),
-      "curve_rms_de00: the curve's RMS ΔE2000 over the angles, what punctual lights render. rms and max: over the "
-      "shading points. The lobe's shape (LTC matrix, prefiltered environment) is the same for every model and not "
+      fmt::format(
+          "Engine: the {0}² tables as `lut` writes them, read bilinearly (DFG at (n·v, roughness) "
+          "on texel "
+          "centres; LTC moments at (roughness, √(1 − n·v)) on endpoints). `tables`: the Fresnel "
+          "term is "
+          "pre-integrated, a·n + b·f + c·l with F = a + b(1 − μ)⁵ + cμ(1 − μ)⁶ (Schlick: F0·dfg1 + "
+          "dfg2; "
+          "F82: … − a·dfg_f82, unclamped); `F(n·v) × lobe`: the model at n·v times the lobe's "
+          "Fresnel-free "
+          "integral (dfg1 + dfg2, n_D), the stated approximation for models no shared table holds.",
+          kEngineLutSize),
+      "curve_rms_de00: the curve's RMS ΔE2000 over the angles, what punctual lights render. rms "
+      "and max: over the "
+      "shading points. The lobe's shape (LTC matrix, prefiltered environment) is the same for "
+      "every model and not "
       "part of these errors.",
       "Only metals are listed."};
 }
@@ -97,26 +111,33 @@ Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& s
                          const std::vector<ShadingPoint>& points) {
   Table t;
   t.name = "lut-accuracy";
-  t.title = "Fresnel models as rendered under IBL (DFG) and area lights (LTC moments) against brute-force spectral "
-            "integration (ΔE2000)";
-  t.columns = {{"material"},         {"model"},           {"parameters"},      {"curve_rms_de00", 3},
-               {"ibl"},              {"ibl_rms_de00", 3}, {"ibl_max_de00", 3}, {"area"},
-               {"area_rms_de00", 3}, {"area_max_de00", 3}};
+  t.title =
+      "Fresnel models as rendered under IBL (DFG) and area lights (LTC moments) against "
+      "brute-force spectral "
+      "integration (ΔE2000)";
+  t.columns = {{"material"},          {"model"}, {"parameters"},
+               {"curve_rms_de00", 3}, {"ibl"},   {"ibl_rms_de00", 3},
+               {"ibl_max_de00", 3},   {"area"},  {"area_rms_de00", 3},
+               {"area_max_de00", 3}};
   std::vector<const MaterialStudy*> metals;
   for (const auto& s : studies)
     if (s.material->material.material_class == spectral::MaterialClass::Metal) metals.push_back(&s);
   std::vector<std::vector<RenderedCandidate>> per_metal(metals.size());
-  parallel_for(metals.size(), [&](size_t i) { per_metal[i] = rendered_candidates(ctx, *metals[i], points); });
+  parallel_for(metals.size(),
+               [&](size_t i) { per_metal[i] = rendered_candidates(ctx, *metals[i], points); });
   for (size_t i = 0; i < metals.size(); ++i)
     for (const auto& c : per_metal[i])
-      t.rows.push_back({metals[i]->material->material.name, std::string(fresnel::model_spec(c.model).name),
+      t.rows.push_back({metals[i]->material->material.name,
+                        std::string(fresnel::model_spec(c.model).name),
                         std::string(c.fitted ? "fitted" : "derived"), c.punctual_rms,
                         approximation(c.model, Lighting::Ibl), c.ibl.rms, c.ibl.max,
                         approximation(c.model, Lighting::Area), c.area.rms, c.area.max});
   if (!per_metal.empty())
-    t.reading = fmt::format("With the spectral F0 and F82 (derived sets): {}; {}. The models no shared table holds, "
-                            "evaluated at n·v, render with the errors listed beside their curve errors.",
-                            f82_against_schlick(per_metal, Lighting::Ibl), f82_against_schlick(per_metal, Lighting::Area));
+    t.reading = fmt::format(
+        "With the spectral F0 and F82 (derived sets): {}; {}. The models no shared table holds, "
+        "evaluated at n·v, render with the errors listed beside their curve errors.",
+        f82_against_schlick(per_metal, Lighting::Ibl),
+        f82_against_schlick(per_metal, Lighting::Area));
   t.notes = accuracy_notes(ctx);
   return t;
 }

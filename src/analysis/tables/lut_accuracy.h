@@ -11,7 +11,8 @@
 namespace fl::analysis {
 
 // One (model, parameter set) of a material with its errors: the curve's RMS ΔE2000 (what punctual
-// lights render) and the rendered ΔE2000 over the shading points under each pre-integrated lighting.
+// lights render) and the rendered ΔE2000 over the shading points under each pre-integrated
+// lighting.
 struct RenderedCandidate {
   fresnel::Model model{};
   bool fitted = false;
@@ -19,7 +20,9 @@ struct RenderedCandidate {
   double punctual_rms = 0;
   ErrorStats ibl, area;
   const ErrorStats& under(Lighting l) const { return l == Lighting::Ibl ? ibl : area; }
-  double rms_under(Lighting l) const { return l == Lighting::Punctual ? punctual_rms : under(l).rms; }
+  double rms_under(Lighting l) const {
+    return l == Lighting::Punctual ? punctual_rms : under(l).rms;
+  }
 };
 // Every model's derived set, and its fitted set where the fit is usable, in registry order.
 std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const MaterialStudy& study,

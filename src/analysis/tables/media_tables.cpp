@@ -1,10 +1,11 @@
 #include "analysis/tables/media_tables.h"
-#include "analysis/tables/tables.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
+#include "analysis/tables/tables.h"
 #include "color/ciede2000_batch.h"
 #include "fresnel/exact.h"
 #include "fresnel/media.h"
@@ -17,7 +18,9 @@ using fresnel::Model;
 
 namespace {
 
-bool is_metal(const MaterialStudy& s) { return s.material->material.material_class == spectral::MaterialClass::Metal; }
+bool is_metal(const MaterialStudy& s) {
+  return s.material->material.material_class == spectral::MaterialClass::Metal;
+}
 
 double rms(const std::vector<double>& v) {
   double ss = 0;
@@ -25,26 +28,30 @@ double rms(const std::vector<double>& v) {
   return std::sqrt(ss / v.size());
 }
 
-std::vector<color::Rgb> lerp_curves(const std::vector<color::Rgb>& a, const std::vector<color::Rgb>& b, double w) {
+std::vector<color::Rgb> lerp_curves(const std::vector<color::Rgb>& a,
+                                    const std::vector<color::Rgb>& b, double w) {
   std::vector<color::Rgb> out(a.size());
   for (size_t i = 0; i < a.size(); ++i) out[i] = (1.0 - w) * a[i] + w * b[i];
   return out;
 }
 
-std::vector<double> lerp_params(const std::vector<double>& a, const std::vector<double>& b, double w) {
+std::vector<double> lerp_params(const std::vector<double>& a, const std::vector<double>& b,
+                                double w) {
   std::vector<double> out(a.size());
   for (size_t i = 0; i < a.size(); ++i) out[i] = (1.0 - w) * a[i] + w * b[i];
   return out;
 }
 
 // The metals' index lists to blend: pairs (i < j), or chains of N consecutive metals.
-std::vector<std::vector<size_t>> blend_groups(const std::vector<MaterialStudy>& studies, const BlendOptions& o) {
+std::vector<std::vector<size_t>> blend_groups(const std::vector<MaterialStudy>& studies,
+                                              const BlendOptions& o) {
   if (!(o.weight >= 0.0 && o.weight <= 1.0)) throw InputError("--blend-weight must be in [0, 1]");
   std::vector<size_t> metals;
   for (size_t i = 0; i < studies.size(); ++i)
     if (is_metal(studies[i])) metals.push_back(i);
   if (o.chain < 2 || o.chain > static_cast<int>(metals.size()))
-    throw InputError(fmt::format("--blend-chain must be between 2 and the number of metals ({})", metals.size()));
+    throw InputError(fmt::format("--blend-chain must be between 2 and the number of metals ({})",
+                                 metals.size()));
   std::vector<std::vector<size_t>> groups;
   if (o.chain == 2) {
     for (size_t i = 0; i < metals.size(); ++i)
@@ -60,7 +67,8 @@ std::vector<std::vector<size_t>> blend_groups(const std::vector<MaterialStudy>& 
 }
 
 // Blends a group in turn (result = lerp(result, next, w)), as curves (A) and as parameters (B).
-double blend_error(const Context& ctx, Model m, const std::vector<std::vector<double>>& params, double w) {
+double blend_error(const Context& ctx, Model m, const std::vector<std::vector<double>>& params,
+                   double w) {
   const auto& cos = ctx.cos_thetas();
   auto curve_a = fresnel::evaluate_curve_unclamped(m, params[0], cos);
   auto p = params[0];
@@ -71,46 +79,63 @@ double blend_error(const Context& ctx, Model m, const std::vector<std::vector<do
   return rms(de2000_per_angle(ctx, curve_a, fresnel::evaluate_curve_unclamped(m, p, cos)));
 }
 
-std::string group_name(const std::vector<MaterialStudy>& studies, const std::vector<size_t>& g, size_t from) {
+std::string group_name(const std::vector<MaterialStudy>& studies, const std::vector<size_t>& g,
+                       size_t from) {
   std::string s;
-  for (size_t k = from; k < g.size(); ++k) s += (k > from ? " > " : "") + studies[g[k]].material->material.name;
+  for (size_t k = from; k < g.size(); ++k)
+    s += (k > from ? " > " : "") + studies[g[k]].material->material.name;
   return s;
 }
 
 std::string blend_note(const BlendOptions& o) {
-  return o.chain == 2 ? fmt::format("Every pair of metals, blended with weight {:g} on the second.", o.weight)
-                      : fmt::format("Chains of {} consecutive metals (catalog order, wrapping), each blended into "
-                                    "the running result with weight {:g}.", o.chain, o.weight);
+  return o.chain == 2
+             ? fmt::format("Every pair of metals, blended with weight {:g} on the second.",
+                           o.weight)
+             : fmt::format(
+                   "Chains of {} consecutive metals (catalog order, wrapping), each blended into "
+                   "the running result with weight {:g}.",
+                   o.chain, o.weight);
 }
 
 }  // namespace
 
-Table blend_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const BlendOptions& o) {
+Table blend_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                  const BlendOptions& o) {
   Table t;
   t.name = "blend";
-  t.title = "Parameter blending: Gulbrandsen (F0, g), RMS ΔE2000 between blended curves and blended parameters";
+  t.title =
+      "Parameter blending: Gulbrandsen (F0, g), RMS ΔE2000 between blended curves and blended "
+      "parameters";
   t.columns = {{"material_a"}, {"material_b"}, {"de00", 3}};
   std::vector<std::pair<double, std::vector<size_t>>> rows;
   for (const auto& g : blend_groups(studies, o)) {
     std::vector<std::vector<double>> p;
-    for (size_t i : g) p.push_back(studies[i].result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived);
-    rows.emplace_back(blend_error(ctx, fresnel::model_of<fresnel::models::Gulbrandsen>, p, o.weight), g);
+    for (size_t i : g)
+      p.push_back(studies[i].result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived);
+    rows.emplace_back(
+        blend_error(ctx, fresnel::model_of<fresnel::models::Gulbrandsen>, p, o.weight), g);
   }
-  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
   for (const auto& [de, g] : rows)
     t.rows.push_back({studies[g[0]].material->material.name, group_name(studies, g, 1), de});
   t.reading = fmt::format(
-      "Blending Gulbrandsen's (F0, g) parameters is not the same as blending the reflectances they produce: the worst "
-      "pair differs by {:.2f} ΔE2000 (RMS over angles). Schlick and the F82 model are linear in their parameters, so "
+      "Blending Gulbrandsen's (F0, g) parameters is not the same as blending the reflectances they "
+      "produce: the worst "
+      "pair differs by {:.2f} ΔE2000 (RMS over angles). Schlick and the F82 model are linear in "
+      "their parameters, so "
       "for them the two agree exactly (see blend_models).",
       rows.empty() ? 0.0 : rows.front().first);
   t.notes = {blend_note(o),
-             "Case A evaluates each material's curve and blends the results; case B blends the parameters and "
-             "evaluates once. Parameters: F0 spectral, g from (F0, Refl. η) (the talk's \"Refl. F0 + Refl. η\")."};
+             "Case A evaluates each material's curve and blends the results; case B blends the "
+             "parameters and "
+             "evaluates once. Parameters: F0 spectral, g from (F0, Refl. η) (the talk's \"Refl. F0 "
+             "+ Refl. η\")."};
   return t;
 }
 
-Table blend_models_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const BlendOptions& o) {
+Table blend_models_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                         const BlendOptions& o) {
   Table t;
   t.name = "blend_models";
   t.title = "Parameter blending for every model (derived parameters), RMS ΔE2000";
@@ -133,10 +158,14 @@ Table blend_models_table(const Context& ctx, const std::vector<MaterialStudy>& s
   std::string w;
   for (size_t k = 0; k < worst.size(); ++k)
     w += fmt::format("{}{} {:.3g}", k ? ", " : "", fresnel::model_specs()[k].name, worst[k]);
-  t.reading = "Models linear in their parameters (Schlick, the F82 model, Lazányi with fixed α) blend exactly; "
-              "the others do not. Worst pair per model: " + w + ".";
-  t.notes = {blend_note(o), "Derived parameters of each model (see the models table), 12 decimals.",
-             "The F82 model is evaluated without its [0, 1] output clamp (a range guard) in both cases."};
+  t.reading =
+      "Models linear in their parameters (Schlick, the F82 model, Lazányi with fixed α) blend "
+      "exactly; "
+      "the others do not. Worst pair per model: " +
+      w + ".";
+  t.notes = {
+      blend_note(o), "Derived parameters of each model (see the models table), 12 decimals.",
+      "The F82 model is evaluated without its [0, 1] output clamp (a range guard) in both cases."};
   for (auto& c : t.columns)
     if (c.precision == 3) c.precision = 12;
   return t;
@@ -146,22 +175,24 @@ namespace {
 
 struct GamutResult {
   double de = 0;
-  int moved = 0;          // converted channels that left the model's domain (clamped back)
-  int outside_unit = 0;   // converted reflectance channels (F0, F82, F90) outside [0, 1] (kept)
+  int moved = 0;         // converted channels that left the model's domain (clamped back)
+  int outside_unit = 0;  // converted reflectance channels (F0, F82, F90) outside [0, 1] (kept)
 };
 
-GamutResult gamut_error(const Context& ctx, Model m, const std::vector<double>& params, const color::Mat3& conv,
-                        const color::LabConverter& to_lab) {
+GamutResult gamut_error(const Context& ctx, Model m, const std::vector<double>& params,
+                        const color::Mat3& conv, const color::LabConverter& to_lab) {
   const auto& spec = fresnel::model_spec(m);
   const int pc = spec.per_channel();
   const auto& cos = ctx.cos_thetas();
   // Case A: evaluate in the working space, convert the result.
   std::vector<color::Rgb> a;
-  for (const auto& rgb : fresnel::evaluate_curve_unclamped(m, params, cos)) a.push_back(color::transform_rgb(conv, rgb));
+  for (const auto& rgb : fresnel::evaluate_curve_unclamped(m, params, cos))
+    a.push_back(color::transform_rgb(conv, rgb));
   // Case B: convert each per-channel parameter as a colour, evaluate in the target space.
   auto p = params;
   for (int j = 0; j < pc; ++j) {
-    const color::Rgb v = color::transform_rgb(conv, {params[j], params[pc + j], params[2 * pc + j]});
+    const color::Rgb v =
+        color::transform_rgb(conv, {params[j], params[pc + j], params[2 * pc + j]});
     for (int ch = 0; ch < 3; ++ch) p[ch * pc + j] = v[ch];
   }
   GamutResult r;
@@ -187,8 +218,9 @@ const std::vector<std::string>& gamut_targets() {
 Table gamut_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
   t.name = "gamut";
-  t.title = fmt::format("Gamut conversion: Gulbrandsen (F0, g) derived in {}, RMS ΔE2000 in the target space",
-                        ctx.settings().space);
+  t.title = fmt::format(
+      "Gamut conversion: Gulbrandsen (F0, g) derived in {}, RMS ΔE2000 in the target space",
+      ctx.settings().space);
   t.columns = {{"material"}, {"rec709", 3}, {"ap0", 3}, {"channels_clamped", 0, false}};
   add_coverage_columns(t);
   std::vector<color::Mat3> conv;
@@ -204,7 +236,9 @@ Table gamut_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
     std::vector<Cell> row{s.material->material.name};
     long long moved = 0;
     for (size_t k = 0; k < conv.size(); ++k) {
-      const auto r = gamut_error(ctx, fresnel::model_of<fresnel::models::Gulbrandsen>, s.result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived, conv[k], lab[k]);
+      const auto r = gamut_error(ctx, fresnel::model_of<fresnel::models::Gulbrandsen>,
+                                 s.result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived,
+                                 conv[k], lab[k]);
       row.push_back(r.de);
       moved += r.moved;
       worst = std::max(worst, r.de);
@@ -215,13 +249,20 @@ Table gamut_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
     t.rows.push_back(std::move(row));
   }
   t.reading = fmt::format(
-      "Converting Gulbrandsen's parameters to another RGB space is not the same as converting its result (worst "
-      "{:.2f} ΔE2000); Schlick and the F82 model convert exactly (see gamut_models).", worst);
-  t.notes = {"Case A evaluates in the working space and converts the resulting RGB with OpenColorIO's matrix; case B "
-             "converts F0 and g as colours and evaluates in the target space. Lab relative to the target's white.",
-             fmt::format("Converted parameters can leave the model's domain (F0 < 0 or ≥ 1, g outside [0, 1]); they "
-                         "are clamped into it and counted in channels_clamped: {} channels in all.", total),
-             coverage_note(materials_of(studies))};
+      "Converting Gulbrandsen's parameters to another RGB space is not the same as converting its "
+      "result (worst "
+      "{:.2f} ΔE2000); Schlick and the F82 model convert exactly (see gamut_models).",
+      worst);
+  t.notes = {
+      "Case A evaluates in the working space and converts the resulting RGB with OpenColorIO's "
+      "matrix; case B "
+      "converts F0 and g as colours and evaluates in the target space. Lab relative to the "
+      "target's white.",
+      fmt::format("Converted parameters can leave the model's domain (F0 < 0 or ≥ 1, g outside [0, "
+                  "1]); they "
+                  "are clamped into it and counted in channels_clamped: {} channels in all.",
+                  total),
+      coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -256,17 +297,27 @@ Table gamut_models_table(const Context& ctx, const std::vector<MaterialStudy>& s
       t.rows.push_back(std::move(row));
     }
   }
-  t.reading = "Schlick, the F82 model and Lazányi are linear in their colour parameters and commute with a linear "
-              "change of primaries; Gulbrandsen, the RGB Fresnel equations and the exponent models do not.";
-  t.notes = {"Every per-channel parameter is converted as a colour (what a pipeline that converts textures does); "
-             "shared parameters (Cook-Torrance's representative index) are kept.",
-             fmt::format("Parameters that leave a model's domain are clamped into it (clamp_to_domain) and counted: "
-                         "{} channels.", total),
-             fmt::format("Reflectance parameters (F0, F82, F90) outside [0, 1] after conversion are kept (Schlick and the "
-                         "F82 formula are defined there; e.g. gold's F0 lies outside the Rec.709 gamut) and counted: {}. "
-                         "Both cases evaluate the F82 model without its [0, 1] output clamp, a range guard that would "
-                         "otherwise break its linearity.", outside),
-             coverage_note(materials_of(studies))};
+  t.reading =
+      "Schlick, the F82 model and Lazányi are linear in their colour parameters and commute with a "
+      "linear "
+      "change of primaries; Gulbrandsen, the RGB Fresnel equations and the exponent models do not.";
+  t.notes = {
+      "Every per-channel parameter is converted as a colour (what a pipeline that converts "
+      "textures does); "
+      "shared parameters (Cook-Torrance's representative index) are kept.",
+      fmt::format("Parameters that leave a model's domain are clamped into it (clamp_to_domain) "
+                  "and counted: "
+                  "{} channels.",
+                  total),
+      fmt::format("Reflectance parameters (F0, F82, F90) outside [0, 1] after conversion are kept "
+                  "(Schlick and the "
+                  "F82 formula are defined there; e.g. gold's F0 lies outside the Rec.709 gamut) "
+                  "and counted: {}. "
+                  "Both cases evaluate the F82 model without its [0, 1] output clamp, a range "
+                  "guard that would "
+                  "otherwise break its linearity.",
+                  outside),
+      coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -277,13 +328,15 @@ struct Medium {
   double eta;
 };
 const std::vector<Medium>& media() {
-  static const std::vector<Medium> m{{"air", 1.0},   {"water", 1.333}, {"1.6", 1.6},          {"1.8", 1.8},
-                                     {"2.0", 2.0},   {"2.2", 2.2},     {"diamond", 2.417}};
+  static const std::vector<Medium> m{{"air", 1.0},      {"water", 1.333}, {"1.6", 1.6},
+                                     {"1.8", 1.8},      {"2.0", 2.0},     {"2.2", 2.2},
+                                     {"diamond", 2.417}};
   return m;
 }
 
 std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) {
-  return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}, ctx.cos_thetas());
+  return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b},
+                                 ctx.cos_thetas());
 }
 
 }  // namespace
@@ -291,8 +344,14 @@ std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) 
 Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
   t.name = "media";
-  t.title = "External media: exact spectral Fresnel against Schlick with an adjusted F0 (RMS ΔE2000)";
-  t.columns = {{"material"}, {"class"}, {"medium"}, {"eta_medium", 3}, {"symmetric", 3}, {"metal_variant", 3},
+  t.title =
+      "External media: exact spectral Fresnel against Schlick with an adjusted F0 (RMS ΔE2000)";
+  t.columns = {{"material"},
+               {"class"},
+               {"medium"},
+               {"eta_medium", 3},
+               {"symmetric", 3},
+               {"metal_variant", 3},
                {"exact_max_reflectance", 6}};
   add_coverage_columns(t);
   double own_max = 0;
@@ -309,8 +368,10 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
         metal[c] = fresnel::f0_in_medium_metal(f0_air[c], md.eta);
       }
       const double e_sym = curve_error(ctx, truth, schlick_curve(ctx, sym)).rms;
-      const double e_metal = is_metal(s) ? curve_error(ctx, truth, schlick_curve(ctx, metal)).rms : std::nan("");
-      t.rows.push_back({m.material.name, std::string(spectral::to_string(m.material.material_class)),
+      const double e_metal =
+          is_metal(s) ? curve_error(ctx, truth, schlick_curve(ctx, metal)).rms : std::nan("");
+      t.rows.push_back({m.material.name,
+                        std::string(spectral::to_string(m.material.material_class)),
                         std::string(md.name), md.eta, e_sym, e_metal, max_r});
       add_coverage_cells(t.rows.back(), m);
     }
@@ -323,35 +384,52 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
       for (const auto& v : truth) max_r = std::max({max_r, v.r, v.g, v.b});
       own_max = std::max(own_max, max_r);
       const double e_sym = curve_error(ctx, truth, schlick_curve(ctx, {0, 0, 0})).rms;
-      t.rows.push_back({m.material.name, std::string("dielectric"), std::string("own index"), std::nan(""), e_sym,
-                        std::nan(""), max_r});
+      t.rows.push_back({m.material.name, std::string("dielectric"), std::string("own index"),
+                        std::nan(""), e_sym, std::nan(""), max_r});
       add_coverage_cells(t.rows.back(), m);
     }
   }
   t.reading = fmt::format(
-      "For dielectrics the symmetric F0 adjustment is exact at normal incidence and Schlick stays close; in a medium "
-      "of their own index the exact reflectance vanishes (largest {:.1e}) while Schlick still brightens towards "
-      "grazing. For metals neither adjustment knows η and κ separately; compare both columns before trusting one.",
+      "For dielectrics the symmetric F0 adjustment is exact at normal incidence and Schlick stays "
+      "close; in a medium "
+      "of their own index the exact reflectance vanishes (largest {:.1e}) while Schlick still "
+      "brightens towards "
+      "grazing. For metals neither adjustment knows η and κ separately; compare both columns "
+      "before trusting one.",
       own_max);
-  t.notes = {"symmetric: √F0′ = (√F0 − √F0E)/(1 − √F0·√F0E) with √F0E = (η_E − 1)/(η_E + 1), per channel, from the "
-             "F0 in air (docs/conventions.md, external media).",
-             "metal_variant: treats the metal as real index 1 with κ² = 4F0/(1 − F0): F0′ = ((1 − η_E)²(1 − F0) + 4F0) / "
-             "((1 + η_E)²(1 − F0) + 4F0). The talk's own asymmetric variant could not be recovered from the sources "
-             "available here; this one is derived and measured instead.",
-             "exact: the spectral Fresnel equations with the index relative to the medium, (n + iκ)/η_E per "
-             "wavelength; exact_max_reflectance is the largest RGB channel over all angles.",
-             "own index: the medium has the material's own complex index, so the relative index is exactly 1 at every "
-             "wavelength: no interface, no reflection; Schlick with F0′ = 0 still rises towards grazing.",
-             coverage_note(materials_of(studies))};
+  t.notes = {
+      "symmetric: √F0′ = (√F0 − √F0E)/(1 − √F0·√F0E) with √F0E = (η_E − 1)/(η_E + 1), per channel, "
+      "from the "
+      "F0 in air (docs/conventions.md, external media).",
+      "metal_variant: treats the metal as real index 1 with κ² = 4F0/(1 − F0): F0′ = ((1 − η_E)²(1 "
+      "− F0) + 4F0) / "
+      "((1 + η_E)²(1 − F0) + 4F0). The talk's own asymmetric variant could not be recovered from "
+      "the sources "
+      "available here; this one is derived and measured instead.",
+      "exact: the spectral Fresnel equations with the index relative to the medium, (n + iκ)/η_E "
+      "per "
+      "wavelength; exact_max_reflectance is the largest RGB channel over all angles.",
+      "own index: the medium has the material's own complex index, so the relative index is "
+      "exactly 1 at every "
+      "wavelength: no interface, no reflection; Schlick with F0′ = 0 still rises towards grazing.",
+      coverage_note(materials_of(studies))};
   return t;
 }
 
 Table internal_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
   t.name = "internal";
-  t.title = "Internal reflection: dielectrics seen from inside, exact against Schlick with the transmission angle";
-  t.columns = {{"material"}, {"critical_angle_deg", 2}, {"rms_de00", 3}, {"mean_de00", 3}, {"max_de00", 3},
-               {"de00_normal", 3}, {"exact_at_critical", 6}, {"schlick_at_critical", 6}};
+  t.title =
+      "Internal reflection: dielectrics seen from inside, exact against Schlick with the "
+      "transmission angle";
+  t.columns = {{"material"},
+               {"critical_angle_deg", 2},
+               {"rms_de00", 3},
+               {"mean_de00", 3},
+               {"max_de00", 3},
+               {"de00_normal", 3},
+               {"exact_at_critical", 6},
+               {"schlick_at_critical", 6}};
   add_coverage_columns(t);
   std::vector<const LoadedMaterial*> dielectrics;
   const auto& cos = ctx.cos_thetas();
@@ -383,21 +461,29 @@ Table internal_table(const Context& ctx, const std::vector<MaterialStudy>& studi
     const double crit_cos = std::sqrt(1.0 - 1.0 / (n_min * n_min));
     const double c_beyond = crit_cos * (1.0 - 1e-9);
     const auto exact_c = ground_truth_rgb(ctx, inverse, c_beyond, 1.0);
-    const double schlick_c = std::min({fresnel::schlick_internal(c_beyond, f0.r), fresnel::schlick_internal(c_beyond, f0.g),
+    const double schlick_c = std::min({fresnel::schlick_internal(c_beyond, f0.r),
+                                       fresnel::schlick_internal(c_beyond, f0.g),
                                        fresnel::schlick_internal(c_beyond, f0.b)});
-    t.rows.push_back({m.material.name, std::acos(crit_cos) * 180.0 / M_PI, e.rms, e.mean, e.max, de.front(),
-                      std::min({exact_c.r, exact_c.g, exact_c.b}), schlick_c});
+    t.rows.push_back({m.material.name, std::acos(crit_cos) * 180.0 / M_PI, e.rms, e.mean, e.max,
+                      de.front(), std::min({exact_c.r, exact_c.g, exact_c.b}), schlick_c});
     add_coverage_cells(t.rows.back(), m);
     dielectrics.push_back(&m);
   }
-  t.reading = "Seen from inside, both curves start at F0 and end in total internal reflection; Schlick with the "
-              "transmission angle follows the exact curve closely below the critical angle.";
-  t.notes = {"exact: spectral Fresnel with relative index 1/n(λ) (κ neglected inside), including total internal "
-             "reflection; Schlick: per channel with n = (1 + √F0)/(1 − √F0) and cos θt from Snell's law, 1 past the "
-             "critical angle.",
-             "critical_angle_deg: the smallest angle past which every wavelength and every channel is totally "
-             "reflected; the last two columns are the smallest RGB channel just past it (1 means total reflection).",
-             coverage_note(dielectrics)};
+  t.reading =
+      "Seen from inside, both curves start at F0 and end in total internal reflection; Schlick "
+      "with the "
+      "transmission angle follows the exact curve closely below the critical angle.";
+  t.notes = {
+      "exact: spectral Fresnel with relative index 1/n(λ) (κ neglected inside), including total "
+      "internal "
+      "reflection; Schlick: per channel with n = (1 + √F0)/(1 − √F0) and cos θt from Snell's law, "
+      "1 past the "
+      "critical angle.",
+      "critical_angle_deg: the smallest angle past which every wavelength and every channel is "
+      "totally "
+      "reflected; the last two columns are the smallest RGB channel just past it (1 means total "
+      "reflection).",
+      coverage_note(dielectrics)};
   return t;
 }
 

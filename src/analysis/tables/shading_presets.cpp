@@ -1,18 +1,19 @@
 #include "analysis/tables/shading_presets.h"
 
-#include "fresnel/media.h"
-
 #include <algorithm>
 #include <cmath>
 
 #include "color/ciede2000_fast.h"
+#include "fresnel/media.h"
 
 namespace fl::analysis {
 
 // Sweeps of the coordinate descent; gold's linear Rec.709 F0 settles to 1e-4 ΔE2000 within 8.
 constexpr int kUnitRangeSweeps = 16;
 
-bool out_of_range(double v) { return v < -kOutOfRangeTolerance || v > 1.0 + kOutOfRangeTolerance; }
+bool out_of_range(double v) {
+  return v < -kOutOfRangeTolerance || v > 1.0 + kOutOfRangeTolerance;
+}
 
 void add_channels(NamedValues& out, const std::string& prefix, const color::Rgb& v) {
   const char* ch[] = {"r", "g", "b"};
@@ -29,7 +30,8 @@ std::string out_of_range_list(const NamedValues& values) {
 namespace {
 
 bool is_clear(const LoadedMaterial& m) {
-  return std::all_of(m.ior.ior.begin(), m.ior.ior.end(), [](const auto& n) { return n.imag() <= kClearKappa; });
+  return std::all_of(m.ior.ior.begin(), m.ior.ior.end(),
+                     [](const auto& n) { return n.imag() <= kClearKappa; });
 }
 
 }  // namespace
@@ -80,7 +82,10 @@ UnitRangeColor into_unit_range(const Context& ctx, const color::Rgb& v) {
       };
       for (int it = 0; it < 40; ++it) {
         const double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
-        if (at(x1) < at(x2)) b = x2; else a = x1;
+        if (at(x1) < at(x2))
+          b = x2;
+        else
+          a = x1;
       }
       const double x = 0.5 * (a + b);
       if (at(x) < cost(out.value)) out.value[c] = x;

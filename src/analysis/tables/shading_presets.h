@@ -13,20 +13,22 @@ namespace fl::analysis {
 // Out-of-range policy. A reflectance-like value (F0, F82, the F82 tint, Gulbrandsen's g, a base or
 // specular colour) below 0 or above 1 by more than kOutOfRangeTolerance is flagged, by name, in the
 // out_of_range column (CSV, Markdown, JSON) or attribute (MaterialX, glTF extras). Formats that can
-// hold such values keep them unclamped; glTF, which cannot, stores into_unit_range() and reports its
-// ΔE2000 cost. The tolerance is rounding noise: Gulbrandsen's g of a lossless dielectric is 0
+// hold such values keep them unclamped; glTF, which cannot, stores into_unit_range() and reports
+// its ΔE2000 cost. The tolerance is rounding noise: Gulbrandsen's g of a lossless dielectric is 0
 // analytically and comes out of the spectral quadrature within 2e-5 of it.
 inline constexpr double kOutOfRangeTolerance = 1e-4;
 bool out_of_range(double v);
 
 // Named values, checked together: the names of those out of range, space-separated ("" if none).
 using NamedValues = std::vector<std::pair<std::string, double>>;
-void add_channels(NamedValues& out, const std::string& prefix, const color::Rgb& v);  // prefix_r, _g, _b
+void add_channels(NamedValues& out, const std::string& prefix,
+                  const color::Rgb& v);  // prefix_r, _g, _b
 std::string out_of_range_list(const NamedValues& values);
 
-// A dielectric is clear (transmissive in the exports) when κ ≤ kClearKappa at every wavelength of the
-// grid: an absorption length λ/(4πκ) of at least 0.3 mm at 360 nm. Otherwise it is opaque: specular
-// reflection only, no diffuse base (the data says nothing of scattering under the surface).
+// A dielectric is clear (transmissive in the exports) when κ ≤ kClearKappa at every wavelength of
+// the grid: an absorption length λ/(4πκ) of at least 0.3 mm at 360 nm. Otherwise it is opaque:
+// specular reflection only, no diffuse base (the data says nothing of scattering under the
+// surface).
 inline constexpr double kClearKappa = 1e-4;
 
 struct ShadingPreset {
@@ -51,9 +53,9 @@ struct OpenPbrParameters {
 OpenPbrParameters open_pbr_parameters(const ShadingPreset& p);
 
 // A colour stored where only [0, 1] fits (glTF factors): the colour of [0, 1]³ nearest to `v` in
-// ΔE2000 (the working space's CIELAB), found by coordinate descent from `v` scaled down to a largest
-// channel of 1; and that ΔE2000. For gold's linear Rec.709 F0 (1.038, 0.728, 0.365) it costs 0.76,
-// against 0.83 for the scaled colour and 1.26 for clipping each channel.
+// ΔE2000 (the working space's CIELAB), found by coordinate descent from `v` scaled down to a
+// largest channel of 1; and that ΔE2000. For gold's linear Rec.709 F0 (1.038, 0.728, 0.365) it
+// costs 0.76, against 0.83 for the scaled colour and 1.26 for clipping each channel.
 struct UnitRangeColor {
   color::Rgb value;
   double de00 = 0;

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <cstdlib>
+#include <functional>
 #include <stdexcept>
 #include <thread>
 
@@ -33,9 +33,11 @@ struct CostRow {
   int line_no = 0;
   std::vector<std::string> fields;
 };
-std::vector<CostRow> cost_file_rows(const std::string& path, std::string_view comment_key, std::string& note,
+std::vector<CostRow> cost_file_rows(const std::string& path, std::string_view comment_key,
+                                    std::string& note,
                                     const std::function<bool(std::string_view line)>& header_ok,
-                                    const std::string& header_error, const std::string& missing_header) {
+                                    const std::string& header_error,
+                                    const std::string& missing_header) {
   const std::string text = spectral::read_text_file(path);
   std::vector<CostRow> rows;
   bool header = false;
@@ -45,7 +47,8 @@ std::vector<CostRow> cost_file_rows(const std::string& path, std::string_view co
     const auto line = spectral::trim(raw);
     if (line.empty()) continue;
     if (line.front() == '#') {
-      if (line.substr(0, comment_key.size()) == comment_key) note = std::string(spectral::trim(line.substr(comment_key.size())));
+      if (line.substr(0, comment_key.size()) == comment_key)
+        note = std::string(spectral::trim(line.substr(comment_key.size())));
       continue;
     }
     if (!header) {
@@ -71,9 +74,11 @@ ModelCosts read_model_costs(const std::string& path) {
     return f.size() >= 2 && f[0] == "model" && f[1] == "ns_per_eval_float_batched";
   };
   for (const auto& [line_no, f] :
-       cost_file_rows(path, "# machine:", out.machine, header_ok, "header must start with model,ns_per_eval_float_batched",
+       cost_file_rows(path, "# machine:", out.machine, header_ok,
+                      "header must start with model,ns_per_eval_float_batched",
                       "no header line model,ns_per_eval_float_batched")) {
-    if (f.size() < 2) throw InputError(path, line_no, "expected model,ns_per_eval_float_batched,...");
+    if (f.size() < 2)
+      throw InputError(path, line_no, "expected model,ns_per_eval_float_batched,...");
     const auto& spec = [&]() -> const fresnel::ModelSpec& {
       try {
         return fresnel::model_from_name(std::string(f[0]));
@@ -83,17 +88,21 @@ ModelCosts read_model_costs(const std::string& path) {
     }();
     double ns = 0;
     if (!spectral::parse_finite(f[1], ns) || ns <= 0)
-      throw InputError(path, line_no, fmt::format("cost '{}' must be a positive number of nanoseconds", f[1]));
+      throw InputError(path, line_no,
+                       fmt::format("cost '{}' must be a positive number of nanoseconds", f[1]));
     for (const auto& c : out.costs)
-      if (c.model == spec.model) throw InputError(path, line_no, fmt::format("model '{}' listed twice", spec.name));
+      if (c.model == spec.model)
+        throw InputError(path, line_no, fmt::format("model '{}' listed twice", spec.name));
     out.costs.push_back({spec.model, ns});
   }
   for (const auto& spec : fresnel::model_specs()) {
-    if (std::none_of(out.costs.begin(), out.costs.end(), [&](const ModelCost& c) { return c.model == spec.model; }))
+    if (std::none_of(out.costs.begin(), out.costs.end(),
+                     [&](const ModelCost& c) { return c.model == spec.model; }))
       throw InputError(path, 0, fmt::format("no cost for model '{}'", spec.name));
   }
   std::vector<ModelCost> ordered;
-  for (const auto& spec : fresnel::model_specs()) ordered.push_back({spec.model, out.ns_per_eval(spec.model)});
+  for (const auto& spec : fresnel::model_specs())
+    ordered.push_back({spec.model, out.ns_per_eval(spec.model)});
   out.costs = std::move(ordered);
   return out;
 }
@@ -121,7 +130,8 @@ GpuCost parse_gpu_row(const std::string& path, int line_no, const std::vector<st
   for (int k = 0; k < 4; ++k) {
     double x = 0;
     if (!spectral::parse_finite(f[2 + k], x) || x < 0 || x != static_cast<int>(x))
-      throw InputError(path, line_no, fmt::format("count '{}' must be a non-negative integer", f[2 + k]));
+      throw InputError(path, line_no,
+                       fmt::format("count '{}' must be a non-negative integer", f[2 + k]));
     *counts[k] = static_cast<int>(x);
   }
   return c;
@@ -139,20 +149,25 @@ GpuCosts read_gpu_costs(const std::string& path) {
     const auto c = parse_gpu_row(path, line_no, f);
     for (const auto& o : out.costs)
       if (o.model == c.model && o.lighting == c.lighting)
-        throw InputError(path, line_no, fmt::format("'{}' under {} listed twice", fresnel::model_spec(c.model).name,
-                                                    lighting_name(c.lighting)));
+        throw InputError(path, line_no,
+                         fmt::format("'{}' under {} listed twice",
+                                     fresnel::model_spec(c.model).name, lighting_name(c.lighting)));
     out.costs.push_back(c);
   }
   for (const auto& spec : fresnel::model_specs())
     for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area})
-      if (std::none_of(out.costs.begin(), out.costs.end(), [&](const GpuCost& c) { return c.model == spec.model && c.lighting == l; }))
-        throw InputError(path, 0, fmt::format("no GPU cost for model '{}' under {}", spec.name, lighting_name(l)));
+      if (std::none_of(out.costs.begin(), out.costs.end(),
+                       [&](const GpuCost& c) { return c.model == spec.model && c.lighting == l; }))
+        throw InputError(
+            path, 0,
+            fmt::format("no GPU cost for model '{}' under {}", spec.name, lighting_name(l)));
   return out;
 }
 
 GpuCosts load_gpu_costs(const std::string& path) {
   if (!path.empty()) return read_gpu_costs(path);
-  if (const char* env = std::getenv("FRESNEL_LAB_GPU_COSTS"); env && *env) return read_gpu_costs(env);
+  if (const char* env = std::getenv("FRESNEL_LAB_GPU_COSTS"); env && *env)
+    return read_gpu_costs(env);
   auto costs = read_gpu_costs(FRESNEL_LAB_DEFAULT_GPU_COSTS);
   costs.source = "bench/gpu_costs.csv";
   return costs;
@@ -186,7 +201,8 @@ ModelCosts measure_model_costs(int repeats, double min_ms) {
         fresnel::evaluate_batch(spec.model, params.data(), cos_theta.data(), kAngles, out.data());
         sink = sink + out[kAngles / 2];
         evals += kAngles;
-        ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                 .count();
       } while (ms < min_ms);
       best_ns = std::min(best_ns, ms * 1e6 / static_cast<double>(evals));
     }
@@ -224,51 +240,70 @@ std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, cons
   };
   for (auto& a : rows) {
     a.pareto = !dominated(a, [](const SpeedRow& r) { return r.ns_per_eval; });
-    a.pareto_gpu = !dominated(a, [](const SpeedRow& r) { return static_cast<double>(r.gpu.instructions); });
+    a.pareto_gpu =
+        !dominated(a, [](const SpeedRow& r) { return static_cast<double>(r.gpu.instructions); });
   }
   return rows;
 }
 
-Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
-                  const GpuCosts& gpu) {
+Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                  const ModelCosts& costs, const GpuCosts& gpu) {
   Table t;
   t.name = "speed";
   t.title = "Cost against error: every Fresnel model, derived and fitted parameters";
-  t.columns = {{"model"},           {"parameters"},      {"cpu_ns_per_eval", 2}, {"gpu_instructions", 0},
-               {"gpu_arithmetic", 0}, {"gpu_extended", 0}, {"median_rms_de00", 3}, {"max_rms_de00", 3},
-               {"pareto_cpu"},        {"pareto_gpu"}};
+  t.columns = {{"model"},
+               {"parameters"},
+               {"cpu_ns_per_eval", 2},
+               {"gpu_instructions", 0},
+               {"gpu_arithmetic", 0},
+               {"gpu_extended", 0},
+               {"median_rms_de00", 3},
+               {"max_rms_de00", 3},
+               {"pareto_cpu"},
+               {"pareto_gpu"}};
   const auto rows = speed_rows(studies, costs, gpu);
   std::string front, front_gpu;
   for (const auto& r : rows) {
     const auto* name = fresnel::model_spec(r.model).name;
-    t.rows.push_back({std::string(name), std::string(r.fitted ? "fitted" : "derived"), r.ns_per_eval,
-                      static_cast<long long>(r.gpu.instructions), static_cast<long long>(r.gpu.arithmetic),
-                      static_cast<long long>(r.gpu.extended), r.median_rms_de00, r.max_rms_de00,
-                      std::string(r.pareto ? "yes" : "no"), std::string(r.pareto_gpu ? "yes" : "no")});
+    t.rows.push_back(
+        {std::string(name), std::string(r.fitted ? "fitted" : "derived"), r.ns_per_eval,
+         static_cast<long long>(r.gpu.instructions), static_cast<long long>(r.gpu.arithmetic),
+         static_cast<long long>(r.gpu.extended), r.median_rms_de00, r.max_rms_de00,
+         std::string(r.pareto ? "yes" : "no"), std::string(r.pareto_gpu ? "yes" : "no")});
     const auto item = fmt::format("{} ({})", name, r.fitted ? "fitted" : "derived");
     if (r.pareto) front += (front.empty() ? "" : ", ") + item;
     if (r.pareto_gpu) front_gpu += (front_gpu.empty() ? "" : ", ") + item;
   }
   int metals = 0;
-  for (const auto& s : studies) metals += s.material->material.material_class == spectral::MaterialClass::Metal;
+  for (const auto& s : studies)
+    metals += s.material->material.material_class == spectral::MaterialClass::Metal;
   t.reading = fmt::format(
-      "The Pareto front (nothing else is both cheaper and more accurate) on CPU time: {}; on GPU instructions: {}. "
-      "Cost is the same for derived and fitted parameters of a model; fitting only moves a model down the error axis.",
+      "The Pareto front (nothing else is both cheaper and more accurate) on CPU time: {}; on GPU "
+      "instructions: {}. "
+      "Cost is the same for derived and fitted parameters of a model; fitting only moves a model "
+      "down the error axis.",
       front, front_gpu);
   const auto& st = ctx.settings();
-  t.notes = {
-      fmt::format("cpu_ns_per_eval: CPU nanoseconds per evaluation (one RGB value at one angle, three channels), "
-                  "batched over 4096 angles in float, from {} (machine: {}). Regenerate with scripts/bench.sh; "
-                  "`fresnel-lab speed --measure` times live instead.",
-                  costs.source.empty() ? "-" : costs.source, costs.machine.empty() ? "-" : costs.machine),
-      fmt::format("gpu_*: SPIR-V instructions of the model's shader function (`fresnel-lab shader MODEL`, punctual) "
-                  "after spirv-opt -O, all of them, arithmetic and extended (GLSL.std.450: pow, sqrt, exp, …), from {} "
-                  "({}); deterministic, regenerate with scripts/gpu_costs.sh.",
-                  gpu.source, gpu.tools.empty() ? "-" : gpu.tools),
-      fmt::format("Error: RMS ΔE2000 over {} angles per material, then the median and max over {} catalog materials "
-                  "({} metals, {} dielectrics); working space {}, illuminant {}.",
-                  st.angles, studies.size(), metals, static_cast<int>(studies.size()) - metals, st.space, st.illuminant),
-      "pareto_cpu, pareto_gpu: judged on (cpu_ns_per_eval, median_rms_de00) and (gpu_instructions, median_rms_de00)."};
+  t.notes = {fmt::format("cpu_ns_per_eval: CPU nanoseconds per evaluation (one RGB value at one "
+                         "angle, three channels), "
+                         "batched over 4096 angles in float, from {} (machine: {}). Regenerate "
+                         "with scripts/bench.sh; "
+                         "`fresnel-lab speed --measure` times live instead.",
+                         costs.source.empty() ? "-" : costs.source,
+                         costs.machine.empty() ? "-" : costs.machine),
+             fmt::format("gpu_*: SPIR-V instructions of the model's shader function (`fresnel-lab "
+                         "shader MODEL`, punctual) "
+                         "after spirv-opt -O, all of them, arithmetic and extended (GLSL.std.450: "
+                         "pow, sqrt, exp, …), from {} "
+                         "({}); deterministic, regenerate with scripts/gpu_costs.sh.",
+                         gpu.source, gpu.tools.empty() ? "-" : gpu.tools),
+             fmt::format("Error: RMS ΔE2000 over {} angles per material, then the median and max "
+                         "over {} catalog materials "
+                         "({} metals, {} dielectrics); working space {}, illuminant {}.",
+                         st.angles, studies.size(), metals,
+                         static_cast<int>(studies.size()) - metals, st.space, st.illuminant),
+             "pareto_cpu, pareto_gpu: judged on (cpu_ns_per_eval, median_rms_de00) and "
+             "(gpu_instructions, median_rms_de00)."};
   return t;
 }
 

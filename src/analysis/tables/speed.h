@@ -23,8 +23,8 @@ struct ModelCost {
   double ns_per_eval = 0;
 };
 struct ModelCosts {
-  std::string source;    // the file the costs came from, or "measured live"
-  std::string machine;   // '# machine:' line of the file (CPU, cores, compiler)
+  std::string source;            // the file the costs came from, or "measured live"
+  std::string machine;           // '# machine:' line of the file (CPU, cores, compiler)
   std::vector<ModelCost> costs;  // every model, model_specs() order
   double ns_per_eval(fresnel::Model m) const;
 };
@@ -40,7 +40,6 @@ ModelCosts load_model_costs(const std::string& path = "");
 // time per evaluation over `repeats` runs of at least `min_ms` each. Not deterministic.
 ModelCosts measure_model_costs(int repeats = 5, double min_ms = 20.0);
 
-
 // GPU cost of a model's shader function under one lighting: SPIR-V instructions after
 // spirv-opt -O (scripts/gpu_costs.sh), all of them and by kind. Deterministic, so reports use it.
 struct GpuCost {
@@ -49,8 +48,8 @@ struct GpuCost {
   int instructions = 0, arithmetic = 0, extended = 0, texture = 0;
 };
 struct GpuCosts {
-  std::string source;  // the file
-  std::string tools;   // its '# tools:' line (compiler and optimizer versions)
+  std::string source;          // the file
+  std::string tools;           // its '# tools:' line (compiler and optimizer versions)
   std::vector<GpuCost> costs;  // every model × lighting
   const GpuCost& of(fresnel::Model m, Lighting l) const;
 };
@@ -67,8 +66,9 @@ struct SpeedRow {
   bool fitted = false;
   double ns_per_eval = 0;
   double median_rms_de00 = 0, max_rms_de00 = 0;
-  bool pareto = false;      // no other row is at least as cheap (CPU ns) and at least as accurate, and better in one
-  GpuCost gpu{};            // the model's function under punctual lights
+  bool pareto = false;  // no other row is at least as cheap (CPU ns) and at least as accurate, and
+                        // better in one
+  GpuCost gpu{};        // the model's function under punctual lights
   bool pareto_gpu = false;  // as `pareto`, with the GPU instruction count as the cost
 };
 // Rows in model_specs() order, derived before fitted. Error over every studied material (the
@@ -76,7 +76,7 @@ struct SpeedRow {
 // (GPU instructions, median_rms_de00).
 std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
                                  const GpuCosts& gpu);
-Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
-                  const GpuCosts& gpu);
+Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                  const ModelCosts& costs, const GpuCosts& gpu);
 
 }  // namespace fl::analysis

@@ -30,9 +30,9 @@ PageStudies study_pages(const Context& ctx, const std::vector<std::string>& glob
 constexpr double kSpreadMinCoverage = 0.99;
 
 // One row per group with at least two pages (conductor pages among `pages` covering at least
-// kSpreadMinCoverage; the others are left out), for its bulk measurements and for all its pages: pairwise ΔE2000 between the pages' F0 colours and
-// between their F82 colours (largest and median), the range of their Schlick RMS ΔE2000, and the
-// pages at the ends.
+// kSpreadMinCoverage; the others are left out), for its bulk measurements and for all its pages:
+// pairwise ΔE2000 between the pages' F0 colours and between their F82 colours (largest and median),
+// the range of their Schlick RMS ΔE2000, and the pages at the ends.
 Table spread_table(const Context& ctx, const std::vector<MaterialStudy>& pages);
 
 // The page globs of the groups of the metals among `materials` that come from pages ("main/Au/**"),

@@ -9,8 +9,9 @@ namespace fl::analysis {
 
 struct Column {
   std::string name;
-  int precision = 4;         // decimals for numeric cells (significant digits if `significant`)
-  bool in_csv = true;        // false: Markdown/JSON only (the CSV keeps the stable columns of docs/conventions.md)
+  int precision = 4;  // decimals for numeric cells (significant digits if `significant`)
+  bool in_csv =
+      true;  // false: Markdown/JSON only (the CSV keeps the stable columns of docs/conventions.md)
   bool significant = false;  // CSV and Markdown print `precision` significant digits (%g)
 };
 
@@ -21,7 +22,7 @@ struct Table {
   std::string title;  // Markdown heading
   std::vector<Column> columns;
   std::vector<std::vector<Cell>> rows;
-  std::string reading;  // a short reading of what the table shows (Markdown)
+  std::string reading;             // a short reading of what the table shows (Markdown)
   std::vector<std::string> notes;  // conventions, flags (Markdown bullet list)
 };
 

@@ -28,9 +28,12 @@ const std::vector<ShadingPoint>& TableInputs::lut_points() {
 
 void TableInputs::prepare() {
   parallel_for(3, [this](size_t i) {
-    if (i == 0) studies();
-    else if (i == 1) group_pages();
-    else lut_points();
+    if (i == 0)
+      studies();
+    else if (i == 1)
+      group_pages();
+    else
+      lut_points();
   });
 }
 
@@ -38,34 +41,51 @@ const std::vector<TableSpec>& table_specs() {
   static const std::vector<TableSpec> specs{
       {"schlick", "Schlick (spectral F0) against spectral ground truth, every catalog material",
        [](TableInputs& in) { return schlick_table(in.ctx, in.materials); }},
-      {"methods", "the talk's ways to derive RGB parameters (point sampling, reflectance processing, fitting), metals",
+      {"methods",
+       "the talk's ways to derive RGB parameters (point sampling, reflectance processing, "
+       "fitting), metals",
        [](TableInputs& in) { return methods_table(in.ctx, in.studies()); }},
       {"models", "every Fresnel model with derived and fitted parameters, every catalog material",
        [](TableInputs& in) { return models_table(in.ctx, in.studies()); }},
-      {"blend", "parameter blending of Gulbrandsen (F0, g) against blending its results, every pair of metals",
+      {"blend",
+       "parameter blending of Gulbrandsen (F0, g) against blending its results, every pair of "
+       "metals",
        [](TableInputs& in) { return blend_table(in.ctx, in.studies(), in.blend); }},
       {"blend_models", "parameter blending for every model",
        [](TableInputs& in) { return blend_models_table(in.ctx, in.studies(), in.blend); }},
-      {"gamut", "gamut conversion of Gulbrandsen parameters against converting results (Rec.709, AP0)",
+      {"gamut",
+       "gamut conversion of Gulbrandsen parameters against converting results (Rec.709, AP0)",
        [](TableInputs& in) { return gamut_table(in.ctx, in.studies()); }},
       {"gamut_models", "gamut conversion for every model",
        [](TableInputs& in) { return gamut_models_table(in.ctx, in.studies()); }},
       {"media", "external media: exact against Schlick with adjusted F0, every material in 7 media",
        [](TableInputs& in) { return media_table(in.ctx, in.studies()); }},
-      {"internal", "internal reflection of dielectrics: exact against Schlick with the transmission angle",
+      {"internal",
+       "internal reflection of dielectrics: exact against Schlick with the transmission angle",
        [](TableInputs& in) { return internal_table(in.ctx, in.studies()); }},
       {"presets", "F0, F82, g, eta, kappa per material in the working space",
        [](TableInputs& in) { return presets_table(in.ctx, in.studies()); }},
-      {"presets_openpbr", "OpenPBR Surface parameters per material: metals F0 and F82 tint, dielectrics specular_ior and transmission",
+      {"presets_openpbr",
+       "OpenPBR Surface parameters per material: metals F0 and F82 tint, dielectrics specular_ior "
+       "and transmission",
        [](TableInputs& in) { return openpbr_table(in.ctx, in.studies()); }},
-      {"spread", "the spread between database pages of the same metal: F0, F82 colours and Schlick errors",
+      {"spread",
+       "the spread between database pages of the same metal: F0, F82 colours and Schlick errors",
        [](TableInputs& in) { return spread_table(in.ctx, in.group_pages().studies); }},
       {"talk_spread", "the talk's Schlick values against the spread of each metal's database pages",
-       [](TableInputs& in) { return talk_misses_table(in.ctx, in.materials, in.group_pages().studies); }},
-      {"lut-accuracy", "every model as rendered under IBL (DFG) and area lights (LTC moments) against brute-force spectral integration, metals",
+       [](TableInputs& in) {
+         return talk_misses_table(in.ctx, in.materials, in.group_pages().studies);
+       }},
+      {"lut-accuracy",
+       "every model as rendered under IBL (DFG) and area lights (LTC moments) against brute-force "
+       "spectral integration, metals",
        [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.studies(), in.lut_points()); }},
-      {"speed", "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, Pareto front",
-       [](TableInputs& in) { return speed_table(in.ctx, in.studies(), load_model_costs(), load_gpu_costs()); }},
+      {"speed",
+       "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, "
+       "Pareto front",
+       [](TableInputs& in) {
+         return speed_table(in.ctx, in.studies(), load_model_costs(), load_gpu_costs());
+       }},
   };
   return specs;
 }

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "analysis/lut/rendered.h"
-#include "analysis/tables/media_tables.h"
 #include "analysis/study/study.h"
+#include "analysis/tables/media_tables.h"
 #include "analysis/tables/spread.h"
 #include "analysis/tables/table.h"
 
@@ -18,8 +18,8 @@ namespace fl::analysis {
 // of a run. `study_progress` is called with (done, total) while the studies run.
 class TableInputs {
  public:
-  TableInputs(const Context& ctx, const std::vector<LoadedMaterial>& materials, const BlendOptions& blend = {},
-              std::function<void(int, int)> study_progress = {})
+  TableInputs(const Context& ctx, const std::vector<LoadedMaterial>& materials,
+              const BlendOptions& blend = {}, std::function<void(int, int)> study_progress = {})
       : ctx(ctx), materials(materials), blend(blend), study_progress_(std::move(study_progress)) {}
   const Context& ctx;
   const std::vector<LoadedMaterial>& materials;

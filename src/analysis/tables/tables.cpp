@@ -15,26 +15,31 @@ namespace fl::analysis {
 namespace {
 
 std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) {
-  return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}, ctx.cos_thetas());
+  return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b},
+                                 ctx.cos_thetas());
 }
 
 }  // namespace
 
 std::string out_of_range_note(int flagged) {
-  return fmt::format("out_of_range: the values below 0 or above 1 by more than {:g}, kept unclamped; {} materials "
-                     "flagged.",
-                     kOutOfRangeTolerance, flagged);
+  return fmt::format(
+      "out_of_range: the values below 0 or above 1 by more than {:g}, kept unclamped; {} materials "
+      "flagged.",
+      kOutOfRangeTolerance, flagged);
 }
 
 std::string setting_note(const Context& ctx) {
   const auto& s = ctx.settings();
-  const std::string space =
-      ctx.spaces().is_builtin() ? s.space
-                                : fmt::format("{} (OCIO config {}; {})", s.space, s.ocio_config, ctx.space().white_source);
-  return fmt::format("Working space {}, illuminant {}, {} adaptation, CIE 1931 2° observer, {:g}-{:g} nm at {:g} nm, "
-                     "{} angles over 0-90°, outside medium η = {:g}.",
-                     space, s.illuminant, s.adaptation, ctx.grid().start_nm, ctx.grid().end_nm(),
-                     ctx.grid().step_nm, s.angles, s.eta_outside);
+  const std::string space = ctx.spaces().is_builtin()
+                                ? s.space
+                                : fmt::format("{} (OCIO config {}; {})", s.space, s.ocio_config,
+                                              ctx.space().white_source);
+  return fmt::format(
+      "Working space {}, illuminant {}, {} adaptation, CIE 1931 2° observer, {:g}-{:g} nm at {:g} "
+      "nm, "
+      "{} angles over 0-90°, outside medium η = {:g}.",
+      space, s.illuminant, s.adaptation, ctx.grid().start_nm, ctx.grid().end_nm(),
+      ctx.grid().step_nm, s.angles, s.eta_outside);
 }
 
 void add_coverage_columns(Table& t) {
@@ -50,10 +55,13 @@ void add_coverage_cells(std::vector<Cell>& row, const LoadedMaterial& m) {
 std::string coverage_note(const std::vector<const LoadedMaterial*>& materials) {
   int held = 0;
   for (const auto* m : materials) held += m->coverage.extrapolated;
-  return fmt::format("coverage: the share of 360-830 nm, each wavelength weighted by the illuminant × ȳ, where the "
-                     "data measures n and k (coverage_n, coverage_k: each alone; data without k counts k as given); "
-                     "extrapolated: somewhere the nearest measured value is held ({} of {} materials).",
-                     held, materials.size());
+  return fmt::format(
+      "coverage: the share of 360-830 nm, each wavelength weighted by the illuminant × ȳ, where "
+      "the "
+      "data measures n and k (coverage_n, coverage_k: each alone; data without k counts k as "
+      "given); "
+      "extrapolated: somewhere the nearest measured value is held ({} of {} materials).",
+      held, materials.size());
 }
 
 std::vector<const LoadedMaterial*> materials_of(const std::vector<MaterialStudy>& studies) {
@@ -66,7 +74,8 @@ Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& mater
   Table t;
   t.name = "schlick";
   t.title = "Schlick against spectral ground truth (ΔE2000)";
-  t.columns = {{"material"}, {"class"}, {"source"}, {"rms_de00", 3}, {"mean_de00", 3}, {"max_de00", 3}};
+  t.columns = {{"material"},    {"class"},        {"source"},
+               {"rms_de00", 3}, {"mean_de00", 3}, {"max_de00", 3}};
   add_coverage_columns(t);
   std::vector<const LoadedMaterial*> all;
   for (const auto& m : materials) {
@@ -78,9 +87,12 @@ Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& mater
     all.push_back(&m);
   }
   t.reading =
-      "Schlick's model with F0 taken from the spectral ground truth at normal incidence, per material. "
-      "Metals with a strongly coloured grazing tint (chromium, zinc, iron) are where Schlick is weakest.";
-  t.notes = {setting_note(ctx), "ΔE2000 per Sharma, Wu & Dalal 2005; RMS, mean and max over the incidence angles.",
+      "Schlick's model with F0 taken from the spectral ground truth at normal incidence, per "
+      "material. "
+      "Metals with a strongly coloured grazing tint (chromium, zinc, iron) are where Schlick is "
+      "weakest.";
+  t.notes = {setting_note(ctx),
+             "ΔE2000 per Sharma, Wu & Dalal 2005; RMS, mean and max over the incidence angles.",
              coverage_note(all)};
   return t;
 }
@@ -97,8 +109,8 @@ bool wants_fitted(const std::string& kind) {
   return kind == "fitted";
 }
 
-MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one, const std::string& kind,
-                        const std::vector<fresnel::Model>& models) {
+MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one,
+                        const std::string& kind, const std::vector<fresnel::Model>& models) {
   StudyOptions o;
   o.fit = wants_fitted(kind);
   o.fitted_models = models;
@@ -106,7 +118,8 @@ MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& o
   return study_materials(ctx, one, o).front();
 }
 
-const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m, const std::string& kind) {
+const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m,
+                                        const std::string& kind) {
   const auto& r = st.result(m);
   return wants_fitted(kind) ? r.fitted.parameters : r.derived;
 }
@@ -114,40 +127,44 @@ const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model 
 namespace {
 
 // One material's rows of the curve table.
-void add_curve_rows(Table& t, const Context& ctx, const LoadedMaterial& m, const fresnel::ModelSpec& spec,
-                    const std::string& parameters) {
+void add_curve_rows(Table& t, const Context& ctx, const LoadedMaterial& m,
+                    const fresnel::ModelSpec& spec, const std::string& parameters) {
   const std::vector<LoadedMaterial> one{m};
   const auto st = study_one(ctx, one, parameters, {spec.model});
   const auto& params = model_params(st, spec.model, parameters);
   const auto approx = fresnel::evaluate_curve(spec.model, params, ctx.cos_thetas());
   const auto de = de2000_per_angle(ctx, st.truth, approx);
-  const std::string flags = wants_fitted(parameters) ? fit::fit_flags(st.result(spec.model).fitted) : "";
+  const std::string flags =
+      wants_fitted(parameters) ? fit::fit_flags(st.result(spec.model).fitted) : "";
   for (size_t i = 0; i < st.truth.size(); ++i) {
-    t.rows.push_back({ctx.angles_deg()[i], st.truth[i].r, st.truth[i].g, st.truth[i].b, approx[i].r, approx[i].g,
-                      approx[i].b, de[i], m.material.name});
+    t.rows.push_back({ctx.angles_deg()[i], st.truth[i].r, st.truth[i].g, st.truth[i].b, approx[i].r,
+                      approx[i].g, approx[i].b, de[i], m.material.name});
     add_coverage_cells(t.rows.back(), m);
     t.rows.back().push_back(flags);
   }
   const auto names = spec.param_names();
   std::string p;
-  for (size_t i = 0; i < names.size(); ++i) p += fmt::format("{}{}={:.6f}", i ? ", " : "", names[i], params[i]);
-  t.notes.push_back(fmt::format("{} parameters: {}{}", m.material.name, p, flags.empty() ? "" : " (fit: " + flags + ")"));
-  if (m.coverage.extrapolated) t.notes.push_back(fmt::format("{}: extrapolated, {}", m.material.name, m.coverage.uncovered));
+  for (size_t i = 0; i < names.size(); ++i)
+    p += fmt::format("{}{}={:.6f}", i ? ", " : "", names[i], params[i]);
+  t.notes.push_back(fmt::format("{} parameters: {}{}", m.material.name, p,
+                                flags.empty() ? "" : " (fit: " + flags + ")"));
+  if (m.coverage.extrapolated)
+    t.notes.push_back(fmt::format("{}: extrapolated, {}", m.material.name, m.coverage.uncovered));
 }
 
 }  // namespace
 
-Table curve_table(const Context& ctx, const std::vector<LoadedMaterial>& materials, const std::string& model,
-                  const std::string& parameters) {
+Table curve_table(const Context& ctx, const std::vector<LoadedMaterial>& materials,
+                  const std::string& model, const std::string& parameters) {
   const auto& spec = fresnel::model_from_name(model);
   wants_fitted(parameters);
   Table t;
   t.name = "curve";
   t.title = materials.size() == 1
-                ? fmt::format("{}: ground truth and {} ({} parameters) per angle", materials.front().material.name,
-                              spec.label, parameters)
-                : fmt::format("Ground truth and {} ({} parameters) per angle, {} materials", spec.label, parameters,
-                              materials.size());
+                ? fmt::format("{}: ground truth and {} ({} parameters) per angle",
+                              materials.front().material.name, spec.label, parameters)
+                : fmt::format("Ground truth and {} ({} parameters) per angle, {} materials",
+                              spec.label, parameters, materials.size());
   t.columns = {{"theta_deg", 2}, {"truth_r", 6}, {"truth_g", 6}, {"truth_b", 6}, {"model_r", 6},
                {"model_g", 6},   {"model_b", 6}, {"de00", 4},    {"material"}};
   add_coverage_columns(t);
@@ -165,7 +182,8 @@ namespace {
 std::string params_text(fresnel::Model m, const std::vector<double>& p) {
   const auto names = fresnel::model_spec(m).param_names();
   std::string out;
-  for (size_t i = 0; i < p.size(); ++i) out += fmt::format("{}{}={:.5f}", i ? " " : "", names[i], p[i]);
+  for (size_t i = 0; i < p.size(); ++i)
+    out += fmt::format("{}{}={:.5f}", i ? " " : "", names[i], p[i]);
   return out;
 }
 
@@ -176,11 +194,15 @@ std::string fit_flags_note(const std::vector<MaterialStudy>& studies) {
       ++fits;
       flagged += !fit::fit_flags(r.fitted).empty();
     }
-  return fmt::format("fit_flags ({} of {} fits): at_bound:NAME a parameter ended on its fit box where the model goes "
-                     "on; iteration_limit the solver stopped at its iteration limit; kept_start no solve improved on "
-                     "the best start, which is published instead (a fit never publishes worse than its best start). "
-                     "Lossless materials (k ≤ {:g} everywhere) keep κ = 0 in their fits.",
-                     flagged, fits, fit::kLosslessMaxK);
+  return fmt::format(
+      "fit_flags ({} of {} fits): at_bound:NAME a parameter ended on its fit box where the model "
+      "goes "
+      "on; iteration_limit the solver stopped at its iteration limit; kept_start no solve improved "
+      "on "
+      "the best start, which is published instead (a fit never publishes worse than its best "
+      "start). "
+      "Lossless materials (k ≤ {:g} everywhere) keep κ = 0 in their fits.",
+      flagged, fits, fit::kLosslessMaxK);
 }
 
 bool is_metal(const MaterialStudy& s) {
@@ -194,16 +216,21 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   Table t;
   t.name = "methods";
   t.title = "Ways to derive RGB parameters from spectral data (RMS ΔE2000, metals)";
-  t.columns = {{"material"}, {"schlick", 3}, {"ps_eta_kappa", 3}, {"refl_eta_kappa", 3},
-               {"refl_f0_ps_eta", 3}, {"refl_f0_refl_eta", 3}, {"fitted_eta_kappa", 3}};
+  t.columns = {{"material"},           {"schlick", 3},        {"ps_eta_kappa", 3},
+               {"refl_eta_kappa", 3},  {"refl_f0_ps_eta", 3}, {"refl_f0_refl_eta", 3},
+               {"fitted_eta_kappa", 3}};
   add_coverage_columns(t);
   int g_clamped_ps = 0, g_clamped_refl = 0;
   std::vector<const LoadedMaterial*> metals;
   for (const auto& s : studies) {
     if (!is_metal(s)) continue;
-    t.rows.push_back({s.material->material.name, s.result(fresnel::model_of<fresnel::models::Schlick>).derived_error.rms, s.ps_eta_kappa.rms,
-                      s.result(fresnel::model_of<fresnel::models::FresnelRgb>).derived_error.rms, s.refl_f0_ps_eta.rms,
-                      s.result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived_error.rms, s.result(fresnel::model_of<fresnel::models::FresnelRgb>).fitted_error.rms});
+    t.rows.push_back({s.material->material.name,
+                      s.result(fresnel::model_of<fresnel::models::Schlick>).derived_error.rms,
+                      s.ps_eta_kappa.rms,
+                      s.result(fresnel::model_of<fresnel::models::FresnelRgb>).derived_error.rms,
+                      s.refl_f0_ps_eta.rms,
+                      s.result(fresnel::model_of<fresnel::models::Gulbrandsen>).derived_error.rms,
+                      s.result(fresnel::model_of<fresnel::models::FresnelRgb>).fitted_error.rms});
     add_coverage_cells(t.rows.back(), *s.material);
     metals.push_back(s.material);
     g_clamped_ps += s.g_clamped_ps;
@@ -211,19 +238,26 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   }
   const auto& ps = fresnel::kDefaultPointSampleNm;
   t.reading =
-      "Deriving Gulbrandsen's (F0, g) from the spectral F0 and the reflectance-processed η is nearly as good as "
-      "fitting RGB η, κ numerically; point-sampled η, κ are much worse, and processing η, κ as reflectances and "
+      "Deriving Gulbrandsen's (F0, g) from the spectral F0 and the reflectance-processed η is "
+      "nearly as good as "
+      "fitting RGB η, κ numerically; point-sampled η, κ are much worse, and processing η, κ as "
+      "reflectances and "
       "using them directly in the Fresnel equations is worst for coloured metals.";
-  t.notes = {setting_note(ctx),
-             fmt::format("PS: η, κ point-sampled at {:g}, {:g}, {:g} nm (R, G, B): the monochromatic primaries of "
-                         "Rec.2020, the nearest thing an RGB space has to one wavelength per channel.",
-                         ps[0], ps[1], ps[2]),
-             "Refl.: η(λ), κ(λ) pushed through the reflectance → RGB procedure as if they were reflectances.",
-             "Gulbrandsen columns: g from (F0, η) by inverting η(r, g), clamped to [0, 1]; channels clamped: " +
-                 fmt::format("{} (PS η), {} (Refl. η).", g_clamped_ps, g_clamped_refl),
-             "Fitted: RGB η, κ fitted with Ceres (Levenberg-Marquardt, bounded) to minimize the RMS ΔE2000 over angles, "
-             "started from the Refl. η, κ, Gulbrandsen and PS values; the best start wins.",
-             coverage_note(metals)};
+  t.notes = {
+      setting_note(ctx),
+      fmt::format(
+          "PS: η, κ point-sampled at {:g}, {:g}, {:g} nm (R, G, B): the monochromatic primaries of "
+          "Rec.2020, the nearest thing an RGB space has to one wavelength per channel.",
+          ps[0], ps[1], ps[2]),
+      "Refl.: η(λ), κ(λ) pushed through the reflectance → RGB procedure as if they were "
+      "reflectances.",
+      "Gulbrandsen columns: g from (F0, η) by inverting η(r, g), clamped to [0, 1]; channels "
+      "clamped: " +
+          fmt::format("{} (PS η), {} (Refl. η).", g_clamped_ps, g_clamped_refl),
+      "Fitted: RGB η, κ fitted with Ceres (Levenberg-Marquardt, bounded) to minimize the RMS "
+      "ΔE2000 over angles, "
+      "started from the Refl. η, κ, Gulbrandsen and PS values; the best start wins.",
+      coverage_note(metals)};
   return t;
 }
 
@@ -231,9 +265,12 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
   Table t;
   t.name = "models";
   t.title = "Every Fresnel model, derived and fitted parameters (ΔE2000)";
-  t.columns = {{"material"},         {"class"},         {"model"},         {"parameters"},  {"rms_de00", 3},
-               {"mean_de00", 3},     {"max_de00", 3},   {"rms_weighted_de00", 3},        {"clamped"},
-               {"fit_iterations", 0}, {"fit_termination"}, {"values"}};
+  t.columns = {{"material"},        {"class"},
+               {"model"},           {"parameters"},
+               {"rms_de00", 3},     {"mean_de00", 3},
+               {"max_de00", 3},     {"rms_weighted_de00", 3},
+               {"clamped"},         {"fit_iterations", 0},
+               {"fit_termination"}, {"values"}};
   add_coverage_columns(t);
   t.columns.push_back({"fit_flags"});
   std::vector<double> med[2][2];  // [schlick, f82][metal] for the reading
@@ -245,16 +282,18 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
         const auto& e = fitted ? r.fitted_error : r.derived_error;
         const bool clamps = fitted ? r.fitted_clamps : r.derived_clamps;
         clamped_rows += clamps;
-        t.rows.push_back({s.material->material.name, std::string(spectral::to_string(s.material->material.material_class)),
-                          std::string(spec.name), std::string(fitted ? "fitted" : "derived"), e.rms, e.mean, e.max,
-                          e.rms_weighted, std::string(clamps ? "yes" : "no"),
+        t.rows.push_back({s.material->material.name,
+                          std::string(spectral::to_string(s.material->material.material_class)),
+                          std::string(spec.name), std::string(fitted ? "fitted" : "derived"), e.rms,
+                          e.mean, e.max, e.rms_weighted, std::string(clamps ? "yes" : "no"),
                           fitted ? static_cast<long long>(r.fitted.iterations) : 0LL,
                           std::string(fitted ? r.fitted.termination : "-"),
                           params_text(r.model, fitted ? r.fitted.parameters : r.derived)});
         add_coverage_cells(t.rows.back(), *s.material);
         t.rows.back().push_back(fitted ? fit::fit_flags(r.fitted) : std::string());
         // The talk's comparison: Schlick as derived (spectral F0) against the fitted F82 model.
-        const bool schlick_derived = r.model == fresnel::model_of<fresnel::models::Schlick> && !fitted;
+        const bool schlick_derived =
+            r.model == fresnel::model_of<fresnel::models::Schlick> && !fitted;
         const bool f82_fitted = r.model == fresnel::model_of<fresnel::models::F82> && fitted;
         if (is_metal(s) && (schlick_derived || f82_fitted)) med[f82_fitted][1].push_back(e.rms);
       }
@@ -262,17 +301,25 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
   }
   const double m_schlick = median(med[0][1]), m_f82 = median(med[1][1]);
   t.reading = fmt::format(
-      "Over the {} metals the fitted F82 model's median RMS ΔE2000 is {:.3f} against Schlick's (spectral F0) {:.3f} "
+      "Over the {} metals the fitted F82 model's median RMS ΔE2000 is {:.3f} against Schlick's "
+      "(spectral F0) {:.3f} "
       "({:.1f}× lower). "
-      "Derived parameters come straight from the spectral procedure; fitted ones minimize each material's error.",
+      "Derived parameters come straight from the spectral procedure; fitted ones minimize each "
+      "material's error.",
       med[1][1].size(), m_f82, m_schlick, m_schlick / m_f82);
   t.notes = {setting_note(ctx),
-             "rms_weighted_de00 weights each angle by sinθ·cosθ, the share of a sphere's image that sees it.",
-             fmt::format("clamped: the F82 model's result left [0, 1] somewhere and was clamped ({} rows).", clamped_rows),
-             "Derived: Schlick F0; generalized Schlick F0, F90 = 1, p through F82; Cook-Torrance F0 with the luminance "
-             "of Refl. η, κ as representative index; Lazányi F0, a from F82, α = 6; F82 model F0, F82; Gulbrandsen F0 "
+             "rms_weighted_de00 weights each angle by sinθ·cosθ, the share of a sphere's image "
+             "that sees it.",
+             fmt::format(
+                 "clamped: the F82 model's result left [0, 1] somewhere and was clamped ({} rows).",
+                 clamped_rows),
+             "Derived: Schlick F0; generalized Schlick F0, F90 = 1, p through F82; Cook-Torrance "
+             "F0 with the luminance "
+             "of Refl. η, κ as representative index; Lazányi F0, a from F82, α = 6; F82 model F0, "
+             "F82; Gulbrandsen F0 "
              "and g from Refl. η; RGB Fresnel Refl. η, κ.",
-             fit_flags_note(studies), coverage_note(materials_of(studies))};
+             fit_flags_note(studies),
+             coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -286,8 +333,10 @@ color::Rgb f82_average(const fresnel::DerivedParameters& d) {
   return fresnel::hemispherical_average(fresnel::model_of<fresnel::models::F82>, p);
 }
 constexpr const char* kF82AverageNote =
-    "f_avg (Markdown and JSON only): the F82 model's hemispherical average 2∫F(μ)μ dμ = F0 + (1 − F0)/21 − a/126 "
-    "from the spectral F0 and F82 (OpenPBR's F82-tint average albedo), for Kulla–Conty multiple-scattering "
+    "f_avg (Markdown and JSON only): the F82 model's hemispherical average 2∫F(μ)μ dμ = F0 + (1 − "
+    "F0)/21 − a/126 "
+    "from the spectral F0 and F82 (OpenPBR's F82-tint average albedo), for Kulla–Conty "
+    "multiple-scattering "
     "compensation.";
 void add_f_avg_columns(Table& t) {
   for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("f_avg_{}", c), 6, false});
@@ -314,8 +363,10 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   for (const auto& s : studies) {
     const auto& d = s.derived;
     const auto& eta_kappa = s.result(fresnel::model_of<fresnel::models::FresnelRgb>);
-    const auto& ek = eta_kappa.fitted.parameters.empty() ? eta_kappa.derived : eta_kappa.fitted.parameters;
-    std::vector<Cell> row{s.material->material.name, std::string(spectral::to_string(s.material->material.material_class)),
+    const auto& ek =
+        eta_kappa.fitted.parameters.empty() ? eta_kappa.derived : eta_kappa.fitted.parameters;
+    std::vector<Cell> row{s.material->material.name,
+                          std::string(spectral::to_string(s.material->material.material_class)),
                           ctx.settings().space};
     for (const auto* v : {&d.f0, &d.f82, &d.g_refl_eta})
       for (int c = 0; c < 3; ++c) row.push_back((*v)[c]);
@@ -330,16 +381,20 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     flagged += flags.empty() ? 0 : 1;
     row.push_back(flags);
     add_coverage_cells(row, *s.material);
-    row.push_back(eta_kappa.fitted.parameters.empty() ? std::string() : fit::fit_flags(eta_kappa.fitted));
+    row.push_back(eta_kappa.fitted.parameters.empty() ? std::string()
+                                                      : fit::fit_flags(eta_kappa.fitted));
     t.rows.push_back(std::move(row));
   }
   t.reading = "Parameters for shading models, per material, in the working space.";
-  t.notes = {setting_note(ctx),
-             "F0, F82: the spectral procedure at 0° and at arccos(1/7) ≈ 81.79°.",
-             "g: Gulbrandsen's edge tint from (F0, Refl. η), unclamped.",
-             "eta, kappa: RGB η, κ fitted with Ceres to minimize the RMS ΔE2000 against ground truth.",
-             kF82AverageNote, out_of_range_note(flagged),
-             "fit_flags: of the eta, kappa fit (see the models table's notes).", coverage_note(materials_of(studies))};
+  t.notes = {
+      setting_note(ctx),
+      "F0, F82: the spectral procedure at 0° and at arccos(1/7) ≈ 81.79°.",
+      "g: Gulbrandsen's edge tint from (F0, Refl. η), unclamped.",
+      "eta, kappa: RGB η, κ fitted with Ceres to minimize the RMS ΔE2000 against ground truth.",
+      kF82AverageNote,
+      out_of_range_note(flagged),
+      "fit_flags: of the eta, kappa fit (see the models table's notes).",
+      coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -357,8 +412,9 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   t.columns = {{"material"}};
   for (const char* q : {"base_color", "specular_color"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
-  t.columns.insert(t.columns.end(), {{"base_weight", 0}, {"base_metalness", 0}, {"specular_ior", 6},
-                                     {"transmission_weight", 0}});
+  t.columns.insert(
+      t.columns.end(),
+      {{"base_weight", 0}, {"base_metalness", 0}, {"specular_ior", 6}, {"transmission_weight", 0}});
   add_f_avg_columns(t);
   t.columns.push_back({"out_of_range"});
   add_coverage_columns(t);
@@ -379,12 +435,18 @@ Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     add_coverage_cells(row, *s.material);
     t.rows.push_back(std::move(row));
   }
-  t.reading = "OpenPBR Surface parameters. Metals: base_metalness 1, base_color = F0, specular_color = the ratio of "
-              "the true F82 to Schlick's value at arccos(1/7) (a tint above 1: the true curve is brighter there than "
-              "Schlick's). Dielectrics: base_metalness 0, specular_ior = the index whose normal-incidence reflectance "
-              "is F0's luminance, transmission_weight 1 when clear (κ ≤ 1e-4 over the visible), base_weight 0 when "
-              "opaque; their base_color and a metal's specular_ior are unused and keep OpenPBR's defaults.";
-  t.notes = {setting_note(ctx), kF82AverageNote, out_of_range_note(flagged), coverage_note(materials_of(studies))};
+  t.reading =
+      "OpenPBR Surface parameters. Metals: base_metalness 1, base_color = F0, specular_color = the "
+      "ratio of "
+      "the true F82 to Schlick's value at arccos(1/7) (a tint above 1: the true curve is brighter "
+      "there than "
+      "Schlick's). Dielectrics: base_metalness 0, specular_ior = the index whose normal-incidence "
+      "reflectance "
+      "is F0's luminance, transmission_weight 1 when clear (κ ≤ 1e-4 over the visible), "
+      "base_weight 0 when "
+      "opaque; their base_color and a metal's specular_ior are unused and keep OpenPBR's defaults.";
+  t.notes = {setting_note(ctx), kF82AverageNote, out_of_range_note(flagged),
+             coverage_note(materials_of(studies))};
   return t;
 }
 
@@ -394,7 +456,8 @@ Table catalog_table(const spectral::DataPaths& paths) {
   t.title = "Material catalog";
   t.columns = {{"key"}, {"material"}, {"class"}, {"source"}, {"reference"}};
   for (const auto& m : spectral::read_catalog(paths))
-    t.rows.push_back({m.key, m.name, std::string(spectral::to_string(m.material_class)), m.source, m.reference});
+    t.rows.push_back(
+        {m.key, m.name, std::string(spectral::to_string(m.material_class)), m.source, m.reference});
   return t;
 }
 

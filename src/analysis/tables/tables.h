@@ -37,25 +37,28 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 // OpenPBR Surface parameters per material (open_pbr_parameters).
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
-// The studies the presets tables read: the RGB η, κ fit only (presets_table), no fit (openpbr_table).
+// The studies the presets tables read: the RGB η, κ fit only (presets_table), no fit
+// (openpbr_table).
 StudyOptions presets_study_options(bool openpbr);
 
 // "schlick, generalized_schlick, ...": every model's name, for option help.
 std::string model_names();
 
-// A parameter set's name, "derived" or "fitted" (InputError otherwise): whether it is the fitted one.
+// A parameter set's name, "derived" or "fitted" (InputError otherwise): whether it is the fitted
+// one.
 bool wants_fitted(const std::string& kind);
 // The study of one material, fitting only for `kind` "fitted", and then only `models` (empty: every
 // model). `one` holds the material and must outlive the study, which points into it.
-MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one, const std::string& kind,
-                        const std::vector<fresnel::Model>& models = {});
+MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one,
+                        const std::string& kind, const std::vector<fresnel::Model>& models = {});
 // A model's derived or fitted parameters (`kind`) from a study.
-const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m, const std::string& kind);
+const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m,
+                                        const std::string& kind);
 
 // `curve`: per material and angle, ground truth, model and ΔE2000, then the material, its
 // coverage and the fit's flags (fit::fit_flags; empty for derived parameters). `parameters` is
 // "derived" or "fitted".
-Table curve_table(const Context& ctx, const std::vector<LoadedMaterial>& materials, const std::string& model,
-                  const std::string& parameters = "derived");
+Table curve_table(const Context& ctx, const std::vector<LoadedMaterial>& materials,
+                  const std::string& model, const std::string& parameters = "derived");
 
 }  // namespace fl::analysis

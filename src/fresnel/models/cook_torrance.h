@@ -41,7 +41,8 @@ struct CookTorrance {
   static constexpr std::array<ParamSpec, 1> kChannelParams{
       {{"f0", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}}}};
   static constexpr std::array<ParamSpec, 2> kSharedParams{{
-      // As wide as RGB η, κ (fresnel_rgb.h). The shape's limit as η_rep → 0 is reached at 0.01: fits
+      // As wide as RGB η, κ (fresnel_rgb.h). The shape's limit as η_rep → 0 is reached at 0.01:
+      // fits
       // of silver end there, and going on to 1e-5 changes their RMS ΔE2000 by under 0.001 (0.079 at
       // 0.01, 0.080 at 1e-5, main/Ag/nk/Babar), so 0.01 is the domain's end, not a pin.
       {"eta_rep", "relative index", ParamKind::Index, {0.01, 1000.0}, {0.01, kUnbounded}},
@@ -51,7 +52,8 @@ struct CookTorrance {
   // The shape comes from the exact equations of a per-material index: no shared table holds it.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
   // The representative index in all three lanes of the vector helper.
-  static constexpr ShaderCode kShader{kConductorHelpers, R"(  vec3 eta = vec3(eta_rep, eta_rep, eta_rep);
+  static constexpr ShaderCode kShader{kConductorHelpers,
+                                      R"(  vec3 eta = vec3(eta_rep, eta_rep, eta_rep);
   vec3 kappa = vec3(kappa_rep, kappa_rep, kappa_rep);
   float fp = fl_fresnel_conductor(cos_theta, eta, kappa).x;
   float fp0 = fl_fresnel_conductor(1.0, eta, kappa).x;

@@ -24,7 +24,8 @@ struct FresnelRgb {
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
-  static constexpr ShaderCode kShader{kConductorHelpers, "  return fl_fresnel_conductor(cos_theta, eta, kappa);\n"};
+  static constexpr ShaderCode kShader{kConductorHelpers,
+                                      "  return fl_fresnel_conductor(cos_theta, eta, kappa);\n"};
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {

@@ -71,7 +71,8 @@ T gulbrandsen(T cos_theta, T f0, T g) {
 }
 
 // Gulbrandsen parameters (F0, g) with g clamped to [0, 1]; `clamped` counts channels moved.
-inline std::vector<double> gulbrandsen_params(const color::Rgb& f0, const color::Rgb& g, int* clamped = nullptr) {
+inline std::vector<double> gulbrandsen_params(const color::Rgb& f0, const color::Rgb& g,
+                                              int* clamped = nullptr) {
   std::vector<double> p;
   for (int c = 0; c < 3; ++c) {
     const double gc = std::clamp(g[c], 0.0, 1.0);
@@ -88,7 +89,11 @@ struct Gulbrandsen {
   static constexpr const char* kName = "gulbrandsen";
   static constexpr const char* kLabel = "Gulbrandsen 2014 (F0, g)";
   static constexpr std::array<ParamSpec, 2> kChannelParams{{
-      {"f0", "reflectance", ParamKind::Reflectance, {0.0, kGulbrandsenMaxR}, {0.0, kGulbrandsenMaxR}},
+      {"f0",
+       "reflectance",
+       ParamKind::Reflectance,
+       {0.0, kGulbrandsenMaxR},
+       {0.0, kGulbrandsenMaxR}},
       {"g", "edge tint", ParamKind::Coefficient, {0.0, 1.0}, {0.0, 1.0}},
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
@@ -116,7 +121,9 @@ struct Gulbrandsen {
     return gulbrandsen_at(cos_theta, index);
   }
   // F0 and g from the reflectance-processed η, g clamped to [0, 1].
-  static std::vector<double> derive(const DerivedParameters& d) { return gulbrandsen_params(d.f0, d.g_refl_eta); }
+  static std::vector<double> derive(const DerivedParameters& d) {
+    return gulbrandsen_params(d.f0, d.g_refl_eta);
+  }
   // g from the point-sampled η, and a mid edge tint.
   static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
     return {gulbrandsen_params(d.f0, d.g_ps_eta), gulbrandsen_params(d.f0, {0.5, 0.5, 0.5})};

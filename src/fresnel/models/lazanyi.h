@@ -52,7 +52,8 @@ struct Lazanyi {
   // α = 6 and a through the measured F82 (the F82 model's coefficient).
   static std::vector<double> derive(const DerivedParameters& d) {
     std::vector<double> p;
-    for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], f82_coefficient(d.f0[c], d.f82[c]), 6.0});
+    for (int c = 0; c < 3; ++c)
+      p.insert(p.end(), {d.f0[c], f82_coefficient(d.f0[c], d.f82[c]), 6.0});
     return p;
   }
   // Plain Schlick with a shallower and a steeper exponent.

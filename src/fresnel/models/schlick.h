@@ -28,9 +28,12 @@ struct Schlick {
 
   // The split-sum DFG scale and bias and the LTC Schlick moment integrate it exactly.
   static constexpr const char* kIbl[] = {lut_channel::kDfgScale, lut_channel::kDfgBias};
-  static constexpr const char* kArea[] = {lut_channel::kLtcMatrix, lut_channel::kLtcNorm, lut_channel::kLtcSchlick};
-  static constexpr PreIntegration kPreIntegration{kPunctualAtVdotH, {kIbl, true, ""}, {kArea, true, ""}};
-  static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
+  static constexpr const char* kArea[] = {lut_channel::kLtcMatrix, lut_channel::kLtcNorm,
+                                          lut_channel::kLtcSchlick};
+  static constexpr PreIntegration kPreIntegration{
+      kPunctualAtVdotH, {kIbl, true, ""}, {kArea, true, ""}};
+  static constexpr ShaderCode kShader{{},
+                                      R"(  float m = 1.0 - cos_theta;
   float m2 = m * m;
   return f0 + (1.0 - f0) * (m2 * m2 * m);
 )",
