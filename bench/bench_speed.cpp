@@ -27,8 +27,9 @@
 #include "color/ciede2000_batch.h"
 #include "color/ciede2000_fast.h"
 #include "color/lab.h"
+#include "documents/table_formats.h"
 #include "fresnel/batch.h"
-#include "report/writer.h"
+#include "io/writer.h"
 #include "util/median.h"
 
 namespace {

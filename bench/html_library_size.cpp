@@ -10,9 +10,10 @@
 #include <vector>
 
 #include "analysis/tables/tables.h"
-#include "report/html.h"
-#include "report/pictures.h"
-#include "report/writer.h"
+#include "documents/html.h"
+#include "documents/table_formats.h"
+#include "io/writer.h"
+#include "jobs/pictures.h"
 
 using namespace fl;
 

@@ -18,7 +18,8 @@
 #include "analysis/lut/ltc_reference.h"
 #include "analysis/lut/lut.h"
 #include "analysis/tables/ltc_comparison.h"
-#include "report/writer.h"
+#include "documents/table_formats.h"
+#include "io/writer.h"
 #include "util/median.h"
 
 namespace {

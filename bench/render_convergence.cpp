@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "analysis/render/render.h"
-#include "report/environment.h"
-#include "report/pictures.h"
+#include "io/environment.h"
+#include "jobs/pictures.h"
 
 using namespace fl;
 

@@ -6,7 +6,7 @@
 
 #include "analysis/pipeline/context.h"
 #include "analysis/tables/media_tables.h"
-#include "report/writer.h"
+#include "io/writer.h"
 
 namespace fl::cli {
 

@@ -6,7 +6,8 @@
 
 #include "analysis/library/library.h"
 #include "cli/app.h"
-#include "report/library_files.h"
+#include "documents/table_formats.h"
+#include "jobs/library_files.h"
 #include "spectral/errors.h"
 
 namespace fl::cli {

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "cli/app.h"
-#include "report/lut_files.h"
+#include "jobs/lut_files.h"
 
 namespace fl::cli {
 namespace {

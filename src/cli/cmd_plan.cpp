@@ -6,7 +6,7 @@
 
 #include "analysis/plan/plan.h"
 #include "cli/app.h"
-#include "report/plan_report.h"
+#include "documents/plan_report.h"
 #include "spectral/errors.h"
 
 namespace fl::cli {

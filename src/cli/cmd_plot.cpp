@@ -3,7 +3,7 @@
 
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
-#include "report/pictures.h"
+#include "jobs/pictures.h"
 
 namespace fl::cli {
 namespace {

@@ -6,8 +6,9 @@
 #include "analysis/tables/speed.h"
 #include "analysis/tables/table_registry.h"
 #include "cli/app.h"
-#include "report/speed_plot.h"
-#include "report/writer.h"
+#include "documents/table_formats.h"
+#include "draw/speed_plot.h"
+#include "io/writer.h"
 
 namespace fl::cli {
 

@@ -3,10 +3,11 @@
 #include "analysis/tables/table_registry.h"
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
-#include "report/gltf.h"
-#include "report/materialx.h"
-#include "report/reproduce.h"
-#include "report/writer.h"
+#include "documents/gltf.h"
+#include "documents/materialx.h"
+#include "documents/table_formats.h"
+#include "io/writer.h"
+#include "jobs/reproduce.h"
 #include "spectral/errors.h"
 
 namespace fl::cli {

@@ -15,7 +15,7 @@
 
 #include "analysis/lut/lut.h"
 #include "analysis/lut/lut_layout.h"
-#include "report/exr.h"
+#include "io/exr.h"
 #include "test_util.h"
 
 namespace fl {

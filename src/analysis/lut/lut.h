@@ -1,7 +1,7 @@
 #pragma once
 // Pre-integrated GGX lookup tables: Filament's DFG table, Hill's LTC moments n_D and f_D with an
-// F82 moment l_D, and LTC fits (Heitz et al. 2016). Pure computations; writing them is report/'s
-// job.
+// F82 moment l_D, and LTC fits (Heitz et al. 2016). Pure computations; jobs/lut_files.h writes
+// them.
 //
 // Every integral is over the hemisphere of light directions l of the GGX lobe without Fresnel,
 // ρ(v, l)·(n·l) = D(h) V(v, l) (n·l) (brdf/ggx.h), estimated with GGX visible-normal sampling

@@ -1,6 +1,6 @@
 #pragma once
 // Where the files `lut` writes keep each lookup-table channel (fresnel::lut_channel): one place for
-// the plan's table list and the shaders' lookups (report/lut_files.cpp writes these layouts).
+// the plan's table list and the shaders' lookups (jobs/lut_files.cpp writes these layouts).
 #include <string>
 #include <vector>
 

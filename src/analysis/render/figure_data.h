@@ -1,5 +1,5 @@
 #pragma once
-// The numbers behind the figures, computed here so that report/figures.h only draws: ground truth
+// The numbers behind the figures, computed here so that draw/figures.h only draws: ground truth
 // and model curves with their ΔE2000, colour-strip samples, and display codes for sphere renders.
 // Display codes: working-space RGB → linear Rec.709 with the SpaceLibrary's (OCIO) matrix, then
 // sRGB display-encoded by OCIO (SpaceLibrary::encode_srgb_display), as 8-bit codes round(255·v).

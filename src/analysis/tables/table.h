@@ -1,5 +1,6 @@
 #pragma once
-// A table of results, independent of how it is written (CSV, Markdown, JSON live in report/).
+// A table of results, independent of how it is written (CSV, Markdown and JSON are in
+// documents/table_formats.h).
 #include <stdexcept>
 #include <string>
 #include <variant>

@@ -1,0 +1,335 @@
+#include "documents/html.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <regex>
+#include <vector>
+
+#include "documents/table_formats.h"
+#include "util/parallel.h"
+
+namespace fl::report {
+namespace {
+
+// The page's style: a light, dense layout; tables scroll inside their box with sticky headers.
+constexpr const char* kStyle = R"CSS(
+body{font:14px/1.45 "DejaVu Sans",system-ui,sans-serif;margin:0;color:#1e1e1e;background:#f7f7f7}
+header{background:#1e1e1e;color:#eee;padding:14px 20px}header h1{margin:0 0 6px;font-size:22px}
+header p{margin:4px 0;color:#ccc}header a{color:#9cf}header code{background:#333;color:#eee}nav{margin-top:8px}nav a{margin-right:14px}
+main{max-width:1280px;margin:0 auto;padding:8px 20px 40px}h2{margin:24px 0 8px}
+input[type=search]{font:inherit;padding:4px 8px;width:320px;max-width:90%;border:1px solid #bbb;border-radius:4px}
+.count{color:#666;margin-left:10px}
+.gallery{display:grid;grid-template-columns:repeat(auto-fill,minmax(290px,1fr));gap:12px;margin-top:12px}
+.card{background:#fff;border:1px solid #ddd;border-radius:6px;padding:10px 12px}.card[hidden]{display:none}
+.card h3{margin:0;font-size:16px}.cls{color:#777;font-weight:normal;font-size:13px;margin-left:6px}
+.src{color:#666;font-size:12px;word-break:break-all}
+.strip{height:20px;border-radius:3px;margin:8px 0 2px}.strip-axis{display:flex;justify-content:space-between;font-size:11px;color:#888}
+.sws{margin:6px 0}.sw{display:inline-block;width:26px;height:26px;border:1px solid #bbb;border-radius:3px;vertical-align:middle;margin-right:4px}
+.swl{margin-right:14px;font-size:12px}
+.flag{display:inline-block;background:#fde6c8;color:#7a3d00;border-radius:10px;padding:0 8px;font-size:12px;margin:2px 4px 2px 0}
+.facts{display:grid;grid-template-columns:auto 1fr;gap:0 10px;font-size:12px;margin:6px 0}.facts dt{color:#666}.facts dd{margin:0}
+.flip{margin:8px 0}.flip-img{cursor:pointer;background-repeat:no-repeat;border-radius:4px;background-color:#111}
+.flip-label{font-size:12px;color:#444;margin:2px 0}.flip button{font:inherit;font-size:12px;margin:0 4px 4px 0;padding:1px 8px;border:1px solid #bbb;background:#f3f3f3;border-radius:10px;cursor:pointer}
+.flip button[aria-pressed=true]{background:#1e1e1e;color:#fff}
+details.tbl{background:#fff;border:1px solid #ddd;border-radius:6px;margin:8px 0;padding:4px 12px}
+details.tbl>summary{cursor:pointer;padding:4px 0;font-weight:bold}.sum{font-weight:normal;color:#666}
+.tablewrap{overflow:auto;max-height:70vh;margin:8px 0;border:1px solid #ddd}
+table{border-collapse:collapse;font-size:12px}th,td{border:1px solid #e2e2e2;padding:2px 6px;text-align:right;white-space:nowrap}
+td.t,th.t{text-align:left}th{cursor:pointer;position:sticky;top:0;background:#eee;user-select:none}
+th[aria-sort=ascending]::after{content:" \25B2"}th[aria-sort=descending]::after{content:" \25BC"}
+tr[hidden]{display:none}code{background:#eee;padding:0 3px;border-radius:3px}img.fig{max-width:100%;margin-top:6px}
+)CSS";
+
+// The page's behaviour: sortable tables, row and gallery filters, flips.
+constexpr const char* kScript = R"JS(
+(function () {
+  'use strict';
+  function value(td) {
+    var v = td.getAttribute('data-v');
+    if (v === null) return td.textContent;
+    return v === '' ? NaN : parseFloat(v);
+  }
+  var collator = new Intl.Collator(undefined, { numeric: true });
+  function compare(x, y, sign) {
+    if (typeof x === 'number' && typeof y === 'number') {
+      if (isNaN(x) || isNaN(y)) return isNaN(x) ? (isNaN(y) ? 0 : 1) : -1;
+      return sign * (x - y);
+    }
+    return sign * collator.compare(String(x), String(y));
+  }
+  function sortBy(th) {
+    var table = th.closest('table'), index = Array.prototype.indexOf.call(th.parentNode.children, th);
+    var dir = th.getAttribute('aria-sort') === 'ascending' ? 'descending' : 'ascending';
+    table.querySelectorAll('th').forEach(function (h) { h.removeAttribute('aria-sort'); });
+    th.setAttribute('aria-sort', dir);
+    var body = table.tBodies[0], sign = dir === 'ascending' ? 1 : -1;
+    var keyed = Array.prototype.map.call(body.rows, function (r) { return [value(r.cells[index]), r]; });
+    keyed.sort(function (a, b) { return compare(a[0], b[0], sign); });
+    var rows = document.createDocumentFragment();
+    keyed.forEach(function (k) { rows.appendChild(k[1]); });
+    body.appendChild(rows);
+  }
+  function matches(text, query) {
+    var terms = query.toLowerCase().split(/\s+/).filter(Boolean);
+    text = text.toLowerCase();
+    return terms.every(function (t) { return text.indexOf(t) >= 0; });
+  }
+  function filterRows(input) {
+    var table = document.getElementById(input.getAttribute('data-table')), shown = 0;
+    Array.prototype.forEach.call(table.tBodies[0].rows, function (r) {
+      r.hidden = !matches(r.textContent, input.value);
+      if (!r.hidden) shown++;
+    });
+    input.nextElementSibling.textContent = shown + ' of ' + table.tBodies[0].rows.length + ' rows';
+  }
+  function filterGallery(input) {
+    var cards = document.querySelectorAll('.card'), shown = 0;
+    cards.forEach(function (c) {
+      c.hidden = !matches(c.getAttribute('data-search'), input.value);
+      if (!c.hidden) shown++;
+    });
+    document.getElementById('gallery-count').textContent = shown + ' of ' + cards.length + ' materials';
+  }
+  function setupFlip(flip) {
+    var img = flip.querySelector('.flip-img'), label = flip.querySelector('.flip-label');
+    var size = parseInt(flip.getAttribute('data-size'), 10), labels = JSON.parse(flip.getAttribute('data-labels'));
+    var buttons = flip.querySelectorAll('button');
+    function show(i) {
+      flip.setAttribute('data-frame', String(i));
+      img.style.backgroundPosition = (-i * size) + 'px 0';
+      label.textContent = labels[i];
+    }
+    function select(i) {
+      flip.setAttribute('data-model', String(i));
+      buttons.forEach(function (b) { b.setAttribute('aria-pressed', String(b.getAttribute('data-frame') === String(i))); });
+    }
+    buttons.forEach(function (b) {
+      var i = parseInt(b.getAttribute('data-frame'), 10);
+      b.addEventListener('mouseenter', function () { show(i); });
+      b.addEventListener('mouseleave', function () { show(0); });
+      b.addEventListener('click', function () { select(i); show(i); });
+    });
+    img.addEventListener('click', function () {
+      show(flip.getAttribute('data-frame') === '0' ? parseInt(flip.getAttribute('data-model'), 10) : 0);
+    });
+    select(parseInt(flip.getAttribute('data-model'), 10));
+  }
+  document.querySelectorAll('th').forEach(function (th) { th.addEventListener('click', function () { sortBy(th); }); });
+  document.querySelectorAll('input[data-table]').forEach(function (i) {
+    i.addEventListener('input', function () { filterRows(i); });
+  });
+  var g = document.getElementById('gallery-filter');
+  if (g) g.addEventListener('input', function () { filterGallery(g); });
+  document.querySelectorAll('.flip').forEach(setupFlip);
+})();
+)JS";
+
+std::string hex(Rgb8 c) {
+  return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b);
+}
+
+// Markdown's inline code and links in a table's reading and notes, the rest escaped.
+std::string inline_markdown(const std::string& text) {
+  static const std::regex kCode("`([^`]*)`"), kLink(R"(\[([^\]]*)\]\(([^)\s]*)\))");
+  std::string s = html_escape(text);
+  s = std::regex_replace(s, kCode, "<code>$1</code>");
+  return std::regex_replace(s, kLink, "<a href=\"$2\">$1</a>");
+}
+
+std::string cell_html(const analysis::Cell& cell, int precision) {
+  if (const auto* text = std::get_if<std::string>(&cell))
+    return "<td class=\"t\">" + html_escape(*text) + "</td>";
+  if (const auto* n = std::get_if<long long>(&cell))
+    return fmt::format("<td data-v=\"{}\">{}</td>", *n, *n);
+  const double v = std::get<double>(cell);
+  if (!std::isfinite(v)) return "<td data-v=\"\">n/a</td>";
+  return fmt::format("<td data-v=\"{}\">{}</td>", format_number(v, 12),
+                     format_number(v, precision));
+}
+
+std::string strip_gradient(const std::vector<Rgb8>& strip) {
+  std::string s = "linear-gradient(90deg";
+  for (size_t i = 0; i < strip.size(); ++i)
+    s += fmt::format(",{} {:.1f}%", hex(strip[i]),
+                     strip.size() > 1 ? 100.0 * i / (strip.size() - 1) : 0.0);
+  s += ")";
+  return s;
+}
+
+std::string flip_html(const Flip& f) {
+  std::string labels = "[";
+  for (size_t i = 0; i < f.labels.size(); ++i)
+    labels += (i ? "," : "") + fmt::format("\"{}\"", f.labels[i]);
+  labels += "]";
+  std::string s = fmt::format(
+      "<div class=\"flip\" data-frame=\"0\" data-model=\"1\" data-size=\"{}\" data-labels=\"{}\">"
+      "<div class=\"flip-img\" role=\"img\" aria-label=\"sphere render\" title=\"click: truth / "
+      "model\" "
+      "style=\"width:{}px;height:{}px;background-image:url('{}');background-position:0 0\"></div>"
+      "<div class=\"flip-label\">{}</div><div class=\"flip-models\">",
+      f.frame_px, html_escape(labels), f.frame_px, f.frame_px, html_escape(f.image),
+      html_escape(f.labels.at(0)));
+  for (size_t i = 1; i < f.labels.size(); ++i)
+    s += fmt::format("<button type=\"button\" data-frame=\"{}\" aria-pressed=\"false\">{}</button>",
+                     i, html_escape(f.labels[i]));
+  s += "</div></div>";
+  return s;
+}
+
+std::string search_text(const GalleryEntry& e) {
+  std::string s = e.name + " " + e.material_class + " " + e.source;
+  for (const auto& f : e.flags) s += " " + f;
+  for (const auto& [label, value] : e.facts) s += " " + label + " " + value;
+  return s;
+}
+
+std::string card_html(const GalleryEntry& e) {
+  std::string s = fmt::format(
+      "<article class=\"card\" id=\"m-{}\" data-search=\"{}\"><h3>{}<span "
+      "class=\"cls\">{}</span></h3>"
+      "<div class=\"src\">{}</div>",
+      html_escape(e.key), html_escape(search_text(e)), html_escape(e.name),
+      html_escape(e.material_class), html_escape(e.source));
+  if (!e.strip.empty())
+    s += fmt::format(
+        "<div class=\"strip\" title=\"ground truth, 0° to 90°\" style=\"background:{}\"></div>"
+        "<div class=\"strip-axis\"><span>0°</span><span>45°</span><span>90°</span></div>",
+        strip_gradient(e.strip));
+  s += fmt::format(
+      "<div class=\"sws\"><span class=\"sw\" style=\"background:{}\"></span><span "
+      "class=\"swl\">F0</span>"
+      "<span class=\"sw\" style=\"background:{}\"></span><span class=\"swl\">F82</span></div>",
+      hex(e.f0), hex(e.f82));
+  if (!e.flags.empty()) {
+    s += "<div class=\"flags\">";
+    for (const auto& f : e.flags) s += "<span class=\"flag\">" + html_escape(f) + "</span>";
+    s += "</div>";
+  }
+  if (!e.facts.empty()) {
+    s += "<dl class=\"facts\">";
+    for (const auto& [label, value] : e.facts)
+      s += "<dt>" + html_escape(label) + "</dt><dd>" + html_escape(value) + "</dd>";
+    s += "</dl>";
+  }
+  if (!e.flip.image.empty()) s += flip_html(e.flip);
+  if (!e.figures.empty()) {
+    s += "<details><summary>figures</summary>";
+    for (const auto& [caption, path] : e.figures)
+      s += fmt::format(
+          "<a href=\"{0}\"><img class=\"fig\" loading=\"lazy\" src=\"{0}\" alt=\"{1}\"></a>",
+          html_escape(path), html_escape(caption));
+    s += "</details>";
+  }
+  s += "</article>\n";
+  return s;
+}
+
+}  // namespace
+
+std::string html_escape(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string table_html(const analysis::Table& t, const std::string& id, int heading_level) {
+  std::string s = fmt::format("<section class=\"table\"><h{0}>{1}</h{0}>\n", heading_level,
+                              html_escape(t.title));
+  if (!t.reading.empty()) s += "<p>" + inline_markdown(t.reading) + "</p>\n";
+  s += fmt::format(
+      "<input type=\"search\" placeholder=\"filter rows\" aria-label=\"filter {0}\" "
+      "data-table=\"{0}\">"
+      "<span class=\"count\">{1} rows</span>\n<div class=\"tablewrap\"><table "
+      "id=\"{0}\"><thead><tr>",
+      html_escape(id), t.rows.size());
+  for (size_t c = 0; c < t.columns.size(); ++c) {
+    const bool text = !t.rows.empty() && std::holds_alternative<std::string>(t.rows[0][c]);
+    s += fmt::format("<th{}>{}</th>", text ? " class=\"t\"" : "", html_escape(t.columns[c].name));
+  }
+  s += "</tr></thead><tbody>\n";
+  for (const auto& row : t.rows) {
+    s += "<tr>";
+    for (size_t c = 0; c < row.size(); ++c) s += cell_html(row[c], t.columns[c].precision);
+    s += "</tr>\n";
+  }
+  s += "</tbody></table></div>\n";
+  if (!t.notes.empty()) {
+    s += "<ul>";
+    for (const auto& n : t.notes) s += "<li>" + inline_markdown(n) + "</li>";
+    s += "</ul>\n";
+  }
+  s += "</section>\n";
+  return s;
+}
+
+std::string gallery_html(const std::vector<GalleryEntry>& entries) {
+  std::string s = fmt::format(
+      "<input type=\"search\" id=\"gallery-filter\" placeholder=\"search materials, classes, "
+      "pages, flags\" "
+      "aria-label=\"search the gallery\"><span class=\"count\" id=\"gallery-count\">{0} of {0} "
+      "materials</span>\n"
+      "<div class=\"gallery\">\n",
+      entries.size());
+  for (const auto& e : entries) s += card_html(e);
+  s += "</div>\n";
+  return s;
+}
+
+std::string html_report(const HtmlReport& r) {
+  std::string s = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+      "<meta name=\"viewport\" content=\"width=device-width, "
+      "initial-scale=1\"><title>{}</title><style>{}</style>"
+      "</head>\n<body><header><h1>{}</h1>\n",
+      html_escape(r.title), kStyle, html_escape(r.title));
+  for (const auto& p : r.intro) s += "<p>" + inline_markdown(p) + "</p>\n";
+  s += "<nav><a href=\"#gallery\">Gallery</a><a href=\"#tables\">Tables</a>";
+  for (const auto& [text, href] : r.links)
+    s += fmt::format("<a href=\"{}\">{}</a>", html_escape(href), html_escape(text));
+  s += "</nav></header>\n<main>\n";
+  if (!r.gallery.empty())
+    s += "<section id=\"gallery\"><h2>Gallery</h2>\n" + gallery_html(r.gallery) + "</section>\n";
+  s += "<section id=\"tables\"><h2>Tables</h2>\n";
+  // The tables' sections are made concurrently (most of the page), then joined in order.
+  std::vector<std::string> sections(r.tables.size());
+  parallel_for(r.tables.size(), [&](size_t i) {
+    const auto& t = r.tables[i];
+    sections[i] = fmt::format(
+        "<details class=\"tbl\" id=\"t-{0}\"><summary>{0} <span class=\"sum\">{1} rows</span>"
+        "</summary>\n{2}</details>\n",
+        html_escape(t.name), t.rows.size(), table_html(t, "table-" + t.name, 3));
+  });
+  // Appended in place into one buffer of the page's size: the page is most of reproduce's output.
+  size_t size = s.size() + std::char_traits<char>::length(kScript) + 64;
+  for (const auto& section : sections) size += section.size();
+  s.reserve(size);
+  for (const auto& section : sections) s += section;
+  s += "</section>\n</main>\n<script>";
+  s += kScript;
+  s += "</script>\n</body></html>\n";
+  return s;
+}
+
+}  // namespace fl::report

@@ -1,0 +1,142 @@
+#include "documents/table_formats.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "documents/json.h"
+#include "spectral/errors.h"
+
+namespace fl::report {
+
+Format format_from_name(const std::string& name) {
+  if (name == "csv") return Format::Csv;
+  if (name == "md" || name == "markdown") return Format::Markdown;
+  if (name == "json") return Format::Json;
+  throw InputError(fmt::format("unknown format '{}' (expected csv, md or json)", name));
+}
+
+const char* extension(Format f) {
+  switch (f) {
+    case Format::Csv:
+      return "csv";
+    case Format::Markdown:
+      return "md";
+    default:
+      return "json";
+  }
+}
+
+std::string format_number(double v, int precision) {
+  std::string s = fmt::format("{:.{}f}", v, precision);
+  if (s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  return s;
+}
+
+namespace {
+
+std::string cell_text(const analysis::Cell& c, const analysis::Column& col,
+                      const char* non_finite) {
+  if (const auto* s = std::get_if<std::string>(&c)) return *s;
+  if (const auto* i = std::get_if<long long>(&c)) return std::to_string(*i);
+  const double v = std::get<double>(c);
+  if (!std::isfinite(v)) return non_finite;
+  return col.significant ? fmt::format("{:.{}g}", v == 0.0 ? 0.0 : v, col.precision)
+                         : format_number(v, col.precision);
+}
+
+std::string csv_quote(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char ch : s) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string to_csv(const analysis::Table& t) {
+  std::string out;
+  bool first = true;
+  for (const auto& col : t.columns) {
+    if (!col.in_csv) continue;
+    out += (first ? "" : ",") + csv_quote(col.name);
+    first = false;
+  }
+  out += '\n';
+  for (const auto& row : t.rows) {
+    first = true;
+    for (size_t c = 0; c < row.size(); ++c) {
+      if (!t.columns[c].in_csv) continue;
+      out += (first ? "" : ",") + csv_quote(cell_text(row[c], t.columns[c], ""));
+      first = false;
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string to_markdown(const analysis::Table& t, int level) {
+  std::string out = std::string(level, '#') + " " + t.title + "\n\n";
+  if (!t.reading.empty()) out += t.reading + "\n\n";
+  out += "|";
+  for (const auto& c : t.columns) out += " " + c.name + " |";
+  out += "\n|";
+  for (const auto& c : t.columns) {
+    (void)c;
+    out += "---|";
+  }
+  out += "\n";
+  for (const auto& row : t.rows) {
+    out += "|";
+    for (size_t c = 0; c < row.size(); ++c) {
+      std::string s = cell_text(row[c], t.columns[c], "n/a");
+      for (size_t p = s.find('|'); p != std::string::npos; p = s.find('|', p + 2))
+        s.replace(p, 1, "\\|");
+      out += " " + s + " |";
+    }
+    out += "\n";
+  }
+  if (!t.notes.empty()) {
+    out += "\n";
+    for (const auto& n : t.notes) out += "- " + n + "\n";
+  }
+  return out;
+}
+
+std::string to_json(const analysis::Table& t) {
+  std::map<std::string, int> decimals;
+  for (const auto& c : t.columns)
+    if (!decimals.emplace(c.name, c.precision).second)
+      throw std::logic_error(fmt::format("table {}: column '{}' appears twice", t.name, c.name));
+  Json rows = Json::array();
+  for (const auto& row : t.rows) {
+    Json r = Json::object();
+    for (size_t c = 0; c < row.size(); ++c)
+      std::visit([&](const auto& v) { r[t.columns[c].name] = v; }, row[c]);
+    rows.push_back(std::move(r));
+  }
+  const Json doc = {
+      {"name", t.name}, {"title", t.title}, {"rows", std::move(rows)}, {"notes", t.notes}};
+  return write_json(doc, [&](const std::string& key) {
+    const auto it = decimals.find(key);
+    return it == decimals.end() ? 0 : it->second;
+  });
+}
+
+std::string render(const analysis::Table& t, Format f) {
+  switch (f) {
+    case Format::Csv:
+      return to_csv(t);
+    case Format::Markdown:
+      return to_markdown(t);
+    default:
+      return to_json(t);
+  }
+}
+
+}  // namespace fl::report

@@ -1,0 +1,376 @@
+#include "draw/figures.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "draw/plot.h"
+
+namespace fl::report {
+namespace {
+
+// Strip layout (pixels): margin | row labels | spans, kStripGap apart | RMS ΔE2000 column | margin.
+constexpr int kStripMargin = 16, kStripLabelW = 190, kStripGap = 36, kStripErrGap = 14,
+              kStripErrW = 100;
+constexpr int kStripTop = 84, kStripRowGap = 6;
+
+std::vector<int> span_lefts(const analysis::StripData& d) {
+  std::vector<int> xs;
+  int x = kStripMargin + kStripLabelW;
+  for (const auto& sp : d.spans) {
+    xs.push_back(x);
+    x += sp.samples + kStripGap;
+  }
+  xs.push_back(x - kStripGap);  // right end of the last span
+  return xs;
+}
+
+int strip_row_top(size_t row) {
+  return kStripTop + static_cast<int>(row) * (kStripRowHeight + kStripRowGap);
+}
+
+std::string degrees(double v) {
+  return fmt::format("{:g}°", v);
+}
+
+// One span of one row: its sample colours, each stretched to a kStripRowHeight column.
+Image8 strip_picture(const analysis::StripRow& row, size_t first_sample, int samples) {
+  Image8 img(samples, kStripRowHeight);
+  for (int x = 0; x < samples; ++x) {
+    const std::uint8_t* p = &row.srgb[3 * (first_sample + x)];
+    for (int y = 0; y < kStripRowHeight; ++y) img.set(x, y, {p[0], p[1], p[2]});
+  }
+  return img;
+}
+
+void add_strip_rows(Drawing& dr, const analysis::StripData& d, const std::vector<int>& xs) {
+  const int label_x = xs.front() - 10, err_x = xs.back() + kStripErrGap;
+  for (size_t r = 0; r < d.rows.size(); ++r) {
+    const auto& row = d.rows[r];
+    const int top = strip_row_top(r), baseline = top + kStripRowHeight / 2 + 5;
+    size_t first = 0;
+    for (size_t s = 0; s < d.spans.size(); ++s) {
+      dr.add(Picture{xs[s], top, strip_picture(row, first, d.spans[s].samples)});
+      first += d.spans[s].samples;
+    }
+    dr.add(Text{double(label_x), double(baseline), row.label, 13, kInk, Align::Right, false});
+    if (row.rms_de2000)
+      dr.add(
+          Text{double(err_x), double(baseline), fmt::format("{:.2f}", *row.rms_de2000), 13, kInk});
+    else
+      dr.add(Text{double(err_x), double(baseline), "—", 13, kGreyInk});
+  }
+}
+
+// Ticks every label_step / 2 under a span, labelled every label_step.
+void add_strip_ticks(Drawing& dr, const analysis::StripSpan& sp, int left, int bottom) {
+  const double range = sp.theta1_deg - sp.theta0_deg;
+  const double label_step = range >= 45 ? 10 : range >= 20 ? 5 : 2;
+  for (double t = sp.theta0_deg; t <= sp.theta1_deg + 1e-9; t += 0.5 * label_step) {
+    const double x =
+        std::min(left + (t - sp.theta0_deg) / range * sp.samples, left + sp.samples - 0.5);
+    const bool labelled = std::fabs(std::remainder(t, label_step)) < 1e-9;
+    dr.add(Rect{std::floor(x), double(bottom + 2), 1, labelled ? 7.0 : 4.0, kInk});
+    if (labelled)
+      dr.add(Text{std::floor(x) + 0.5, double(bottom + 24), degrees(t), 12, kInk, Align::Center});
+  }
+}
+
+// Under the first span, where each later span (a zoom) lies.
+void add_zoom_marks(Drawing& dr, const analysis::StripData& d, const std::vector<int>& xs,
+                    int bottom) {
+  const auto& full = d.spans.front();
+  const auto to_x = [&](double t) {
+    return xs.front() + (t - full.theta0_deg) / (full.theta1_deg - full.theta0_deg) * full.samples;
+  };
+  for (size_t s = 1; s < d.spans.size(); ++s) {
+    const double x0 = std::round(to_x(d.spans[s].theta0_deg)),
+                 x1 = std::round(to_x(d.spans[s].theta1_deg));
+    dr.add(Rect{x0, double(bottom + 32), x1 - x0, 2, kGreyInk});
+    dr.add(Text{x0 - 6, double(bottom + 40), "zoomed", 11, kGreyInk, Align::Right});
+  }
+}
+
+std::string span_heading(const analysis::StripSpan& sp, bool first) {
+  return fmt::format("{} {}–{}", first ? "incidence angle" : "zoom", degrees(sp.theta0_deg),
+                     degrees(sp.theta1_deg));
+}
+
+}  // namespace
+
+Point strip_cell(const analysis::StripData& d, size_t row, size_t span, int sample) {
+  return {double(span_lefts(d)[span] + sample), double(strip_row_top(row))};
+}
+
+Drawing strip_drawing(const analysis::StripData& d) {
+  const auto xs = span_lefts(d);
+  const int err_x = xs.back() + kStripErrGap;
+  const int bottom = strip_row_top(d.rows.size()) - kStripRowGap;
+  Drawing dr;
+  dr.width = err_x + kStripErrW + kStripMargin;
+  dr.height = bottom + 56;
+  const auto& c = d.caption;
+  dr.add(Text{kStripMargin, 26,
+              fmt::format("{}: Fresnel reflectance, ground truth and models ({} parameters)",
+                          c.material, c.parameter_kind),
+              17, kInk});
+  dr.add(Text{kStripMargin, 46,
+              fmt::format("{} working space, {} illuminant; sRGB display encoding by OpenColorIO",
+                          c.space, c.illuminant),
+              12, kGreyInk});
+  for (size_t s = 0; s < d.spans.size(); ++s)
+    dr.add(Text{xs[s] + 0.5 * d.spans[s].samples, kStripTop - 10, span_heading(d.spans[s], s == 0),
+                13, kInk, Align::Center});
+  dr.add(Text{double(err_x), kStripTop - 10, "RMS ΔE2000", 13, kInk});
+  add_strip_rows(dr, d, xs);
+  for (size_t s = 0; s < d.spans.size(); ++s) add_strip_ticks(dr, d.spans[s], xs[s], bottom);
+  if (!d.spans.empty()) add_zoom_marks(dr, d, xs, bottom);
+  return dr;
+}
+
+namespace {
+
+const Rgb8 kChannel[3] = {{205, 40, 40}, {30, 150, 50}, {40, 80, 210}};
+const Rgb8 kModel[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
+                       {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127}};
+const Dash kDash[] = {{9, 5},  {2, 4},       {12, 4, 3, 4}, {5, 5},
+                      {16, 5}, {3, 3, 3, 8}, {1, 3},        {7, 3, 1, 3}};
+constexpr size_t kStyles = 8;
+const std::vector<double> kAngleTicks{0, 10, 20, 30, 40, 50, 60, 70, 80, 90};
+
+std::vector<double> channel(const std::vector<color::Rgb>& c, int k) {
+  std::vector<double> v;
+  for (const auto& rgb : c) v.push_back(rgb[k]);
+  return v;
+}
+
+void add_reflectance_panel(Drawing& dr, const analysis::CurveData& d) {
+  const Axes a{90, 80, 620, 390, 0, 90, 0, 1};
+  add_axes(dr, a, kAngleTicks, nice_ticks(0, 1, 5), "", "reflectance", 0, 1);
+  for (size_t m = 0; m < d.models.size(); ++m)
+    for (int k = 0; k < 3; ++k)
+      dr.add(data_line(a, d.angles_deg, channel(d.models[m].rgb, k), kChannel[k], 1.5,
+                       kDash[m % kStyles]));
+  for (int k = 0; k < 3; ++k)
+    dr.add(data_line(a, d.angles_deg, channel(d.truth, k), kChannel[k], 2.2));
+}
+
+void add_de_panel(Drawing& dr, const analysis::CurveData& d) {
+  double de_max = 0;
+  for (const auto& m : d.models)
+    for (double v : m.de2000)
+      if (std::isfinite(v)) de_max = std::max(de_max, v);
+  const Axes a{90, 530, 620, 220, 0, 90, 0, nice_ceiling(std::max(de_max, 0.5))};
+  const auto ticks = nice_ticks(0, a.y_max, 4);
+  add_axes(dr, a, kAngleTicks, ticks, "incidence angle θ (degrees)", "ΔE2000", 0,
+           tick_decimals(ticks));
+  for (size_t m = 0; m < d.models.size(); ++m)
+    dr.add(data_line(a, d.angles_deg, d.models[m].de2000, kModel[m % kStyles], 1.8,
+                     kDash[m % kStyles]));
+}
+
+void add_curve_legend(Drawing& dr, const analysis::CurveData& d) {
+  const double lx = 730;
+  double y = 96;
+  dr.add(Text{lx, y, "reflectance (top)", 13, kInk});
+  y += 20;
+  for (int k = 0; k < 3; ++k) {
+    dr.add(Polyline{{{lx, y - 4}, {lx + 34, y - 4}}, kChannel[k], 2.2, {}});
+    dr.add(Text{lx + 42, y, std::string(1, "RGB"[k]) + " ground truth", 12, kInk});
+    y += 18;
+  }
+  dr.add(Text{lx, y, "models: same colours, dashed", 12, kGreyInk});
+  y += 34;
+  dr.add(Text{lx, y, "models (dash styles)", 13, kInk});
+  y += 20;
+  for (size_t m = 0; m < d.models.size(); ++m) {
+    dr.add(Polyline{{{lx, y - 4}, {lx + 34, y - 4}}, kModel[m % kStyles], 1.8, kDash[m % kStyles]});
+    dr.add(Text{lx + 42, y, fmt::format("{} ({:.2f})", d.models[m].name, d.models[m].rms_de2000),
+                12, kInk});
+    y += 18;
+  }
+  dr.add(Text{lx, y + 4, "(RMS ΔE2000)", 12, kGreyInk});
+}
+
+}  // namespace
+
+Drawing curves_drawing(const analysis::CurveData& d) {
+  Drawing dr;
+  dr.width = 940;
+  dr.height = 820;
+  const auto& c = d.caption;
+  dr.add(Text{24, 28,
+              fmt::format("{}: reflectance and ΔE2000 against angle ({} parameters)", c.material,
+                          c.parameter_kind),
+              17, kInk});
+  dr.add(
+      Text{24, 48,
+           fmt::format("{} working space, {} illuminant; ΔE2000 against the spectral ground truth",
+                       c.space, c.illuminant),
+           12, kGreyInk});
+  add_reflectance_panel(dr, d);
+  add_de_panel(dr, d);
+  add_curve_legend(dr, d);
+  return dr;
+}
+
+Rgb8 inferno(double t) {
+  static const double kStops[5][3] = {
+      {0, 0, 4}, {87, 16, 110}, {188, 55, 84}, {249, 142, 9}, {252, 255, 164}};
+  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, static_cast<int>(t));
+  const double f = t - i;
+  const auto ch = [&](int c) {
+    return static_cast<std::uint8_t>(
+        std::lround(kStops[i][c] + (kStops[i + 1][c] - kStops[i][c]) * f));
+  };
+  return {ch(0), ch(1), ch(2)};
+}
+
+namespace {
+
+// Heat map layout (pixels): title band, then the image with the colour bar to its right.
+constexpr Rgb8 kNoSurface{235, 235, 235};
+constexpr int kHeatTop = kHeatmapImageTop, kHeatBarGap = 16, kHeatBarW = 18, kHeatRight = 110,
+              kHeatMinBar = 120;
+
+void add_colour_bar(Drawing& dr, const ColourBar& bar, double scale, double de_max) {
+  Image8 ramp(bar.width, bar.height);
+  for (int y = 0; y < bar.height; ++y) {
+    const Rgb8 c = inferno(bar.height > 1 ? 1.0 - static_cast<double>(y) / (bar.height - 1) : 1.0);
+    for (int x = 0; x < bar.width; ++x) ramp.set(x, y, c);
+  }
+  dr.add(Picture{bar.x, bar.y, std::move(ramp)});
+  const auto ticks = nice_ticks(0, scale, 4);
+  const int decimals = tick_decimals(ticks);
+  for (double t : ticks) {
+    const double y = bar.y + std::round((1.0 - t / scale) * (bar.height - 1));
+    dr.add(Rect{double(bar.x + bar.width), y, 4, 1, kInk});
+    dr.add(Text{double(bar.x + bar.width + 7), y + 4.5, tick_label(t, decimals), 11, kInk});
+  }
+  dr.add(Text{double(bar.x), double(bar.y + bar.height + 16), "ΔE2000", 11, kInk});
+  dr.add(Text{double(bar.x), double(bar.y - 8), fmt::format("max {:.2f}", de_max), 10, kGreyInk});
+}
+
+}  // namespace
+
+ColourBar heatmap_colour_bar(int width, int height) {
+  return {width + kHeatBarGap, kHeatTop + 16, kHeatBarW, std::max(height - 32, kHeatMinBar)};
+}
+
+double heatmap_scale(const std::vector<double>& de) {
+  double de_max = 0;
+  for (double v : de)
+    if (std::isfinite(v)) de_max = std::max(de_max, v);
+  return nice_ceiling(std::max(1.0, de_max));
+}
+
+Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale) {
+  Image8 map(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const double v = de[static_cast<size_t>(y) * width + x];
+      map.set(x, y, std::isfinite(v) ? inferno(v / scale) : kNoSurface);
+    }
+  return map;
+}
+
+Drawing heatmap_drawing(const std::vector<double>& de, int width, int height,
+                        const std::string& title, double scale) {
+  double de_max = 0;
+  for (double v : de)
+    if (std::isfinite(v)) de_max = std::max(de_max, v);
+  if (!(scale > 0)) scale = heatmap_scale(de);
+  const ColourBar bar = heatmap_colour_bar(width, height);
+  Drawing dr;
+  dr.width =
+      std::max(width + kHeatRight, static_cast<int>(std::ceil(8 + text_width_px(title, 13) + 8)));
+  dr.height = std::max(kHeatTop + height, bar.y + bar.height + 24) + 8;
+  dr.add(Text{8, 22, title, 13, kInk});
+  dr.add(Picture{0, kHeatTop, heatmap_image(de, width, height, scale)});
+  add_colour_bar(dr, bar, scale, de_max);
+  return dr;
+}
+
+namespace {
+
+// Contact sheet layout (pixels): title band, then one row per model with a label line above
+// its tiles, tiles kSheetGap apart, the shared colour bar at the right.
+constexpr int kSheetMargin = 16, kSheetTitle = 30, kSheetNoteLine = 18, kSheetNotes = 2,
+              kSheetGap = 12, kSheetLabel = 22, kSheetRowGap = 18, kSheetBar = 110;
+
+void add_sheet_row(Drawing& dr, const ContactSheet& s, size_t r, double scale) {
+  const auto& row = s.rows[r];
+  const int size = s.truth.width, top = sheet_row_top(s, r);
+  const std::string labels[3] = {
+      "ground truth (spectral)", row.label,
+      fmt::format("ΔE2000: mean {:.2f}, max {:.2f}", row.mean_de2000, row.max_de2000)};
+  for (int c = 0; c < 3; ++c) {
+    const Point p = sheet_tile(s, r, c);
+    dr.add(Text{p.x, double(top + 15), labels[c], 12, c == 2 ? kGreyInk : kInk});
+  }
+  dr.add(Picture{int(sheet_tile(s, r, 0).x), int(sheet_tile(s, r, 0).y), s.truth});
+  dr.add(Picture{int(sheet_tile(s, r, 1).x), int(sheet_tile(s, r, 1).y), row.render});
+  dr.add(Picture{int(sheet_tile(s, r, 2).x), int(sheet_tile(s, r, 2).y),
+                 heatmap_image(row.de2000, size, size, scale)});
+}
+
+}  // namespace
+
+int sheet_row_top(const ContactSheet& s, size_t row) {
+  const int notes = static_cast<int>(std::max<size_t>(s.notes.size(), kSheetNotes));
+  return kSheetTitle + 10 + notes * kSheetNoteLine + 8 +
+         static_cast<int>(row) * (kSheetLabel + s.truth.height + kSheetRowGap);
+}
+
+Point sheet_tile(const ContactSheet& s, size_t row, int column) {
+  return {double(kSheetMargin + column * (s.truth.width + kSheetGap)),
+          double(sheet_row_top(s, row) + kSheetLabel)};
+}
+
+double contact_sheet_scale(const ContactSheet& s) {
+  std::vector<double> all;
+  for (const auto& row : s.rows) all.insert(all.end(), row.de2000.begin(), row.de2000.end());
+  return heatmap_scale(all);
+}
+
+Drawing contact_sheet_drawing(const ContactSheet& s) {
+  if (s.rows.empty() || s.truth.width <= 0)
+    throw std::invalid_argument("contact_sheet_drawing: no rows");
+  double de_max = 0;
+  for (const auto& row : s.rows) de_max = std::max(de_max, row.max_de2000);
+  const double scale = contact_sheet_scale(s);
+  const int size = s.truth.width;
+  Drawing dr;
+  double text_w = text_width_px(s.title, 17);
+  for (const auto& line : s.notes) text_w = std::max(text_w, text_width_px(line, 12));
+  dr.width = std::max(kSheetMargin + 3 * (size + kSheetGap) + kSheetBar,
+                      static_cast<int>(std::ceil(2 * kSheetMargin + text_w)));
+  dr.height = sheet_row_top(s, s.rows.size()) + 8;
+  dr.add(Text{double(kSheetMargin), double(kSheetTitle), s.title, 17, kInk});
+  for (size_t i = 0; i < s.notes.size(); ++i)
+    dr.add(Text{double(kSheetMargin), double(kSheetTitle + 22 + kSheetNoteLine * i), s.notes[i], 12,
+                kGreyInk});
+  for (size_t r = 0; r < s.rows.size(); ++r) add_sheet_row(dr, s, r, scale);
+  const Point last = sheet_tile(s, 0, 2);
+  const ColourBar bar{
+      int(last.x) + size + kHeatBarGap, int(last.y) + 16, kHeatBarW,
+      std::max(sheet_row_top(s, s.rows.size()) - kSheetRowGap - int(last.y) - 48, kHeatMinBar / 2)};
+  add_colour_bar(dr, bar, scale, de_max);
+  return dr;
+}
+
+Image8 flip_frame(const Image8& render, const std::string& label) {
+  constexpr int kBand = 26;
+  Drawing dr;
+  dr.width = render.width;
+  dr.height = render.height + kBand;
+  dr.background = {24, 24, 24};
+  dr.add(Picture{0, 0, render});
+  dr.add(Text{render.width / 2.0, render.height + 18.0, label, 13, {235, 235, 235}, Align::Center});
+  return rasterize(dr);
+}
+
+}  // namespace fl::report

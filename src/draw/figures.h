@@ -1,0 +1,70 @@
+#pragma once
+// The figures as Drawings (draw.h), from data computed in analysis/figure_data.h: colour strips,
+// reflectance / ΔE2000 curves, and the ΔE2000 heat map of a sphere render.
+#include <string>
+#include <vector>
+
+#include "analysis/render/figure_data.h"
+#include "draw/drawing.h"
+
+namespace fl::report {
+
+// Stacked strips, one row per StripData row (ground truth, then each model), one pixel column per
+// sample of each span, spans side by side; the RMS ΔE2000 of each model on the right.
+Drawing strip_drawing(const analysis::StripData& d);
+
+// Where strip_drawing paints a sample: the top-left pixel of its column (kStripRowHeight tall).
+constexpr int kStripRowHeight = 30;
+Point strip_cell(const analysis::StripData& d, size_t row, size_t span, int sample);
+
+// R, G, B reflectance against angle (ground truth solid, models dashed) and ΔE2000 against angle.
+Drawing curves_drawing(const analysis::CurveData& d);
+
+// ΔE2000 per pixel (row-major, NaN: no surface) as a heat map on the inferno ramp, with a colour
+// bar from 0 to `scale` (0: heatmap_scale(de)), its ticks labelled.
+Drawing heatmap_drawing(const std::vector<double>& de, int width, int height,
+                        const std::string& title, double scale = 0);
+// The nice ceiling of the largest finite ΔE (at least 1).
+double heatmap_scale(const std::vector<double>& de);
+// The map's pixels: inferno(ΔE / scale), light grey where there is no surface.
+Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale);
+
+// A flip comparison on one page: per model a row of three square tiles — the ground truth render,
+// the model's render and its ΔE2000 heat map — with one colour bar for every row (the scale is
+// heatmap_scale over all rows, so rows compare).
+struct ContactSheetRow {
+  std::string label;  // the model (and its parameter set)
+  Image8 render;      // display codes, the truth's size
+  std::vector<double> de2000;
+  double mean_de2000 = 0, max_de2000 = 0;
+};
+struct ContactSheet {
+  std::string title;
+  std::vector<std::string> notes;  // lines under the title
+  Image8 truth;                    // square
+  std::vector<ContactSheetRow> rows;
+};
+// heatmap_scale over every row's ΔE2000: the one scale of the sheet and of its models' heat maps.
+double contact_sheet_scale(const ContactSheet& s);
+Drawing contact_sheet_drawing(const ContactSheet& sheet);
+// Where the sheet paints a tile (column 0 truth, 1 model, 2 heat map): its top-left pixel, and the
+// top of a row's band (its label line).
+Point sheet_tile(const ContactSheet& sheet, size_t row, int column);
+int sheet_row_top(const ContactSheet& sheet, size_t row);
+
+// One frame of a flip animation: the render above a dark band naming what it shows.
+Image8 flip_frame(const Image8& render, const std::string& label);
+
+// The map's pixels are drawn unscaled with their top-left corner at (0, kHeatmapImageTop); the
+// colour bar's top pixel row shows the scale's top, its bottom row 0.
+constexpr int kHeatmapImageTop = 34;
+struct ColourBar {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+ColourBar heatmap_colour_bar(int width, int height);
+
+// The ramp: five control points of matplotlib's "inferno" (van der Walt & Smith 2015, CC0),
+// sRGB-encoded, interpolated linearly between them; t is clamped to [0, 1].
+Rgb8 inferno(double t);
+
+}  // namespace fl::report

@@ -1,0 +1,94 @@
+#include "io/writer.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "spectral/errors.h"
+#include "util/parallel.h"
+
+namespace fl::report {
+
+namespace {
+
+// Writes `content` to a temporary file beside `path`; returns its name.
+std::string write_temporary(const std::string& path, const std::string& content) {
+  namespace fs = std::filesystem;
+  const fs::path p(path);
+  std::error_code ec;
+  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
+  if (fs::is_directory(p, ec))
+    throw InputError(path, 0, "is a directory, cannot write a file there");
+  const std::string tmp = fmt::format("{}.tmp.{}", path, static_cast<long>(::getpid()));
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) throw InputError(path, 0, "cannot write (folder missing or not writable)");
+  out << content;
+  out.close();
+  if (!out) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(fmt::format("{}: write failed", path));
+  }
+  return tmp;
+}
+
+}  // namespace
+
+void write_files_atomic(const Files& files) {
+  // The temporaries are written concurrently; on any failure every one written is removed and the
+  // first failure in file order is reported.
+  std::vector<std::string> temps(files.size());
+  try {
+    parallel_for_all(files.size(), [&](size_t i) {
+      temps[i] = write_temporary(files[i].first, files[i].second);
+    });
+  } catch (...) {
+    for (const auto& t : temps)
+      if (!t.empty()) std::remove(t.c_str());
+    throw;
+  }
+  for (size_t i = 0; i < files.size(); ++i) {
+    std::error_code ec;
+    std::filesystem::rename(temps[i], files[i].first, ec);
+    if (ec) {
+      for (size_t j = i; j < temps.size(); ++j) std::remove(temps[j].c_str());
+      throw std::runtime_error(fmt::format("{}: cannot move the finished file into place: {}",
+                                           files[i].first, ec.message()));
+    }
+  }
+}
+
+void write_file_atomic(const std::string& path, const std::string& content) {
+  write_files_atomic({{path, content}});
+}
+
+std::string file_list(const Files& files) {
+  std::string out;
+  for (size_t i = 0; i < files.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == files.size() ? " and " : ", ") + files[i].first;
+  return out;
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return ext;
+}
+
+std::string output_extension(const std::string& path, std::initializer_list<const char*> allowed) {
+  const std::string ext = lower_extension(path);
+  std::string list;
+  for (const char* a : allowed) {
+    if (ext == a) return ext;
+    list += (list.empty() ? "" : ", ") + std::string(a);
+  }
+  throw InputError(
+      path, 0,
+      fmt::format("unknown output type '{}' (expected {})", ext.empty() ? "(none)" : ext, list));
+}
+
+}  // namespace fl::report

@@ -1,0 +1,211 @@
+#include "jobs/library_files.h"
+
+#include <fmt/format.h>
+
+#include <map>
+
+#include "analysis/render/figure_data.h"
+#include "analysis/tables/spread.h"
+#include "analysis/tables/tables.h"
+#include "documents/html.h"
+#include "documents/materialx.h"
+#include "documents/table_formats.h"
+#include "draw/png.h"
+#include "jobs/pictures.h"
+#include "spectral/pages.h"
+#include "spectral/text_file.h"
+#include "util/parallel.h"
+
+namespace fl::report {
+namespace {
+
+// The ground truth's colour from 0° to 90° (3 samples per degree), 24 pixels tall.
+constexpr int kStripSamples = 270, kStripHeight = 24;
+
+std::string strip_png(const analysis::Context& ctx, const analysis::MaterialStudy& s) {
+  analysis::FigureRequest in;
+  in.material = s.material->material.name;
+  in.parameter_kind = "derived";
+  in.ior = &s.material->ior;
+  const auto d = analysis::strip_data(ctx, in, {{0.0, 90.0, kStripSamples}});
+  Image8 img(kStripSamples, kStripHeight);
+  for (int x = 0; x < kStripSamples; ++x)
+    for (int y = 0; y < kStripHeight; ++y) {
+      const auto* p = &d.rows.front().srgb[3 * static_cast<size_t>(x)];
+      img.set(x, y, {p[0], p[1], p[2]});
+    }
+  return encode_png(img);
+}
+
+std::string file_safe(std::string s) {
+  for (auto& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '_';
+  return s;
+}
+
+// The flags of one library row, space-separated in its flags column.
+std::vector<std::string> row_flags(const analysis::Table& t, size_t row) {
+  std::vector<std::string> out;
+  for (const auto f : spectral::split_fields(
+           std::get<std::string>(t.rows[row][analysis::column_index(t, "flags")]), " "))
+    out.emplace_back(f);
+  return out;
+}
+
+std::string rgb_text(const color::Rgb& v) {
+  return fmt::format("({:.3f}, {:.3f}, {:.3f})", v.r, v.g, v.b);
+}
+
+// One gallery entry: the strip, F0 and F82, class and coverage, and the flags, with the reason a
+// colour may not be measured.
+std::string gallery_entry(const analysis::MaterialStudy& s, const std::string& strip,
+                          const std::string& flags) {
+  const auto& m = *s.material;
+  std::string out =
+      fmt::format("### {}\n\n![{}]({})\n\n{} · F0 {} · F82 {} · coverage {:.4f}", m.material.source,
+                  m.material.source, strip, spectral::to_string(m.material.material_class),
+                  rgb_text(s.derived.f0), rgb_text(s.derived.f82), m.coverage.both);
+  if (!m.material.section.empty()) out += " · " + m.material.section;
+  out += "\n\n";
+  if (m.coverage.extrapolated)
+    out += fmt::format(
+        "**Extrapolated**: {}; the colours there are the nearest measured value held, not a "
+        "measurement.\n\n",
+        m.coverage.uncovered);
+  if (!flags.empty()) out += "Flags: `" + flags + "`\n\n";
+  return out;
+}
+
+std::string gallery(const analysis::Context& ctx, const analysis::Library& lib,
+                    const analysis::Table& t, Files& files) {
+  const size_t n = lib.studies.size();
+  std::vector<std::string> pngs(n);
+  parallel_for(n, [&](size_t i) { pngs[i] = strip_png(ctx, lib.studies[i]); });
+  std::string md =
+      "# Preset library gallery\n\nPer page: the spectral ground truth's colour from 0° (left) to "
+      "90° "
+      "(right), F0 and F82 in the working space, and the page's flags.\n\n" +
+      analysis::setting_note(ctx) + "\n\n";
+  std::string book;
+  for (size_t i = 0; i < n; ++i) {
+    const auto& mat = lib.studies[i].material->material;
+    const std::string b = mat.book_name.empty() ? spectral::book_of(mat.source) : mat.book_name;
+    if (b != book) md += "## " + b + "\n\n", book = b;
+    const std::string path = "strips/" + file_safe(mat.source) + ".png";
+    files.emplace_back(path, std::move(pngs[i]));
+    md += gallery_entry(lib.studies[i], path,
+                        std::get<std::string>(t.rows[i][analysis::column_index(t, "flags")]));
+  }
+  return md;
+}
+
+// Pages carrying each kind of flag, from the library table's flags column.
+std::map<std::string, int> flag_counts(const analysis::Table& t) {
+  std::map<std::string, int> counts;
+  for (size_t row = 0; row < t.rows.size(); ++row) {
+    std::map<std::string, bool> kinds;
+    for (const auto& token : row_flags(t, row)) {
+      const bool range = token.rfind("out_of_range:", 0) == 0;
+      std::string kind = range ? "out_of_range" : token == "extrapolated" ? token : "";
+      for (const char* fit : {"at_bound", "iteration_limit", "kept_start", "no_usable_solution"})
+        if (!range && token.find(std::string(":") + fit) != std::string::npos)
+          kind = std::string("fit ") + fit;
+      kinds[kind.empty() ? token : kind] = true;
+    }
+    for (const auto& [k, v] : kinds) ++counts[k];
+  }
+  return counts;
+}
+
+std::string readme(const analysis::Context& ctx, const analysis::Library& lib,
+                   const analysis::Table& t, const std::string& command, bool gallery) {
+  int metals = 0;
+  for (const auto& m : lib.set.materials)
+    metals += m.material.material_class == spectral::MaterialClass::Metal;
+  std::string md = fmt::format("# Fresnel Lab preset library\n\nGenerated by `{}`. {}\n\n", command,
+                               analysis::setting_note(ctx));
+  md += fmt::format(
+      "- Pages matched: {}\n- In the library: {} ({} metals, {} dielectrics)\n- Skipped: {}\n\n",
+      lib.set.requested, lib.set.materials.size(), metals, lib.set.materials.size() - metals,
+      lib.set.skipped.size());
+  md += "## Flags (pages carrying each)\n\n| flag | pages |\n|---|---|\n";
+  for (const auto& [flag, n] : flag_counts(t)) md += fmt::format("| {} | {} |\n", flag, n);
+  md += "\n" + to_markdown(analysis::skip_reasons_table(lib.set.skipped), 2);
+  md +=
+      "\n## Files\n\n- [library.csv](library.csv), [library.md](library.md), "
+      "[library.json](library.json): one row "
+      "per page (presets, every model's RMS ΔE2000, flags)\n- [models.csv](models.csv): "
+      "every model's derived and fitted parameters and errors per page\n- "
+      "[library.mtlx](library.mtlx), [library_openpbr.mtlx](library_openpbr.mtlx): MaterialX "
+      "(generalized_schlick_bsdf; open_pbr_surface)\n"
+      "- [skipped.csv](skipped.csv): every page left out, with its reason\n- "
+      "[spread.md](spread.md), "
+      "[spread.csv](spread.csv): the spread between pages of the same metal\n";
+  if (gallery) md += "- [gallery.md](gallery.md): a colour strip per page\n";
+  md +=
+      "- [index.html](index.html): the library as a searchable gallery (colour strip, F0 and F82 "
+      "swatches, flags) "
+      "and every table above, sortable and filterable\n";
+  return md;
+}
+
+// index.html: a gallery card per page (strip, F0/F82 swatches, flags, coverage, errors),
+// searchable, then the library, spread and skipped tables, sortable and filterable.
+std::string library_page(const analysis::Context& ctx, const analysis::Library& lib,
+                         const analysis::Table& t, const std::vector<analysis::Table>& tables,
+                         const std::string& command) {
+  HtmlReport page;
+  page.title = "Fresnel Lab preset library";
+  page.intro = {"Generated by `" + command +
+                    "`: presets of database pages, every model's error against spectral "
+                    "ground truth (ΔE2000) and each page's flags. The same tables are in CSV, "
+                    "Markdown and JSON beside this page.",
+                analysis::setting_note(ctx)};
+  for (size_t i = 0; i < lib.studies.size(); ++i) {
+    const auto& st = lib.studies[i];
+    auto card = study_card(ctx, st, row_flags(t, i));
+    card.key = file_safe(st.material->material.source);
+    const auto& c = st.material->coverage;
+    card.facts.insert(
+        card.facts.begin(),
+        {"coverage",
+         fmt::format("{:.4f}{}", c.both, c.uncovered.empty() ? "" : " (" + c.uncovered + ")")});
+    page.gallery.push_back(std::move(card));
+  }
+  page.tables = tables;
+  page.links = {{"README.md", "README.md"},
+                {"library.json", "library.json"},
+                {"library.mtlx", "library.mtlx"}};
+  return html_report(page);
+}
+
+}  // namespace
+
+Files library_files(const analysis::Context& ctx, const analysis::Library& lib, bool with_gallery,
+                    const std::string& command) {
+  Files files;
+  const auto t = analysis::library_table(ctx, lib.studies);
+  for (const auto f : {Format::Csv, Format::Markdown, Format::Json})
+    files.emplace_back(std::string("library.") + extension(f), render(t, f));
+  auto models = analysis::models_table(ctx, lib.studies);
+  models.name = "library_models";
+  files.emplace_back("models.csv", to_csv(models));
+  files.emplace_back("library.mtlx",
+                     presets_materialx(ctx, lib.studies, MaterialxShader::GeneralizedSchlick));
+  files.emplace_back("library_openpbr.mtlx",
+                     presets_materialx(ctx, lib.studies, MaterialxShader::OpenPbrSurface));
+  files.emplace_back("skipped.csv", to_csv(analysis::skipped_table(lib.set.skipped)));
+  const auto spread = analysis::spread_table(ctx, lib.studies);
+  files.emplace_back("spread.csv", to_csv(spread));
+  files.emplace_back("spread.md", to_markdown(spread));
+  if (with_gallery) files.emplace_back("gallery.md", gallery(ctx, lib, t, files));
+  files.emplace_back("index.html",
+                     library_page(ctx, lib, t,
+                                  {t, spread, analysis::skip_reasons_table(lib.set.skipped),
+                                   analysis::skipped_table(lib.set.skipped)},
+                                  command));
+  files.emplace_back("README.md", readme(ctx, lib, t, command, with_gallery));
+  return files;
+}
+
+}  // namespace fl::report

@@ -1,0 +1,18 @@
+#pragma once
+// `reproduce`: every report file, computed before anything is written.
+#include <functional>
+#include <string>
+
+#include "analysis/tables/table_registry.h"
+#include "io/writer.h"
+
+namespace fl::report {
+
+// Every table of table_specs() marked for reproduce as NAME.csv and NAME.md, presets.json,
+// presets.mtlx, the figures (reproduce_figures) when `figures` is set, and README.md indexing
+// them; paths relative to the output folder. `log` gets one progress line per table and one for the
+// figures.
+Files reproduce_files(analysis::TableInputs& in, bool figures,
+                      const std::function<void(const std::string&)>& log);
+
+}  // namespace fl::report

@@ -1,0 +1,46 @@
+// OpenEXR output (io/exr.h): round trip of pixels and attributes, atomic write.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/exr.h"
+#include "test_util.h"
+
+namespace fl::report {
+namespace {
+
+TEST(Exr, RoundTripKeepsFloatsAndAttributes) {
+  test::TempDir tmp;
+  ExrImage img;
+  img.width = 3;
+  img.height = 2;
+  img.channels = {"R", "G"};
+  for (int k = 0; k < 12; ++k) img.pixels.push_back(0.1f * k - 0.3f);
+  img.string_attributes = {{"fresnelLab:xAxis", "nov"}};
+  img.float_attributes = {{"fresnelLab:xMax", 0.75f}};
+  const auto path = tmp.path() + "/t.exr";
+  write_exr_atomic(path, img);
+  const auto back = read_exr(path);
+  ASSERT_EQ(back.width, 3);
+  ASSERT_EQ(back.height, 2);
+  // OpenEXR lists channels alphabetically: G, R.
+  ASSERT_EQ(back.channels, (std::vector<std::string>{"G", "R"}));
+  for (int p = 0; p < 6; ++p) {
+    EXPECT_EQ(back.pixels[2 * p + 0], img.pixels[2 * p + 1]);
+    EXPECT_EQ(back.pixels[2 * p + 1], img.pixels[2 * p + 0]);
+  }
+  const auto has_string = std::find(back.string_attributes.begin(), back.string_attributes.end(),
+                                    std::pair<std::string, std::string>{"fresnelLab:xAxis", "nov"});
+  EXPECT_NE(has_string, back.string_attributes.end());
+  const auto has_float = std::find(back.float_attributes.begin(), back.float_attributes.end(),
+                                   std::pair<std::string, float>{"fresnelLab:xMax", 0.75f});
+  EXPECT_NE(has_float, back.float_attributes.end());
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(tmp.path()), {}),
+            1);  // no temporary left
+}
+
+}  // namespace
+}  // namespace fl::report

@@ -1,0 +1,242 @@
+// Look-dev outputs: the animated flip (decoded by giflib's reader), the contact sheet's layout, the
+// HTML serializer (escaping, sortable values, a page libxml2 parses cleanly), and `render --env`
+// and `render --compare` through the CLI, bad environments included.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
+
+#include "documents/html.h"
+#include "draw/figures.h"
+#include "draw/png.h"
+#include "io/exr.h"
+#include "io/gif.h"
+#include "spectral/errors.h"
+#include "test_util.h"
+
+namespace fl {
+namespace {
+
+using report::Image8;
+using report::Rgb8;
+using test::cli;
+using test::run_command;
+
+// giflib's quantizer bins colours to 5 bits per channel before its median cut: a flat colour comes
+// back within one 5-bit step (8 codes).
+constexpr int kQuantizeCodes = 8;
+
+Image8 flat(int w, int h, Rgb8 c) {
+  return Image8(w, h, c);
+}
+
+TEST(Gif, FramesDelaysLoopAndOnePalette) {
+  Image8 a = flat(40, 30, {200, 40, 30}), b = flat(40, 30, {200, 40, 30});
+  for (int x = 0; x < 40; ++x)
+    for (int y = 0; y < 10; ++y)
+      b.set(x, y, {20, 90, 220});  // frame b differs only in its top third
+  const auto bytes = report::encode_gif({a, b, a}, 90);
+  EXPECT_EQ(bytes.substr(0, 6), "GIF89a");
+  const auto gif = report::decode_gif(bytes, "flip.gif");
+  ASSERT_EQ(gif.frames.size(), 3u);
+  EXPECT_EQ(gif.delays_cs, (std::vector<int>{90, 90, 90}));
+  EXPECT_EQ(gif.loop_count, 0);  // forever
+  EXPECT_LE(gif.palette_size, 256);
+  for (const auto& [x, y, c] :
+       {std::tuple{5, 5, Rgb8{20, 90, 220}}, std::tuple{5, 25, Rgb8{200, 40, 30}}}) {
+    const Rgb8 got = gif.frames[1].at(x, y);
+    EXPECT_NEAR(got.r, c.r, kQuantizeCodes);
+    EXPECT_NEAR(got.g, c.g, kQuantizeCodes);
+    EXPECT_NEAR(got.b, c.b, kQuantizeCodes);
+  }
+  // One palette: what is the same in two frames decodes the same.
+  EXPECT_EQ(gif.frames[0].at(5, 25), gif.frames[1].at(5, 25));
+  EXPECT_EQ(gif.frames[0].pixels, gif.frames[2].pixels);
+  EXPECT_EQ(report::encode_gif({a, b, a}, 90), bytes);  // deterministic
+  EXPECT_THROW(report::encode_gif({a, flat(10, 10, {})}, 90), std::invalid_argument);
+  EXPECT_THROW(report::decode_gif("not a gif", "x.gif"), InputError);
+}
+
+TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
+  const int n = 21;
+  report::ContactSheet s;
+  s.title = "Gold";
+  s.notes = {"one", "two"};
+  s.truth = flat(n, n, {10, 200, 10});
+  std::vector<double> de(static_cast<size_t>(n) * n, 0.5);
+  de[0] = std::numeric_limits<double>::quiet_NaN();
+  s.rows.push_back({"schlick", flat(n, n, {200, 10, 10}), de, 0.5, 0.5});
+  s.rows.push_back(
+      {"f82", flat(n, n, {10, 10, 200}), std::vector<double>(de.size(), 2.0), 2.0, 2.0});
+  const auto img = report::rasterize(report::contact_sheet_drawing(s));
+  const double scale = report::heatmap_scale({0.5, 2.0});  // shared by both rows: 2
+  for (size_t r = 0; r < 2; ++r) {
+    const auto at = [&](int col, int dx, int dy) {
+      const auto p = report::sheet_tile(s, r, col);
+      return img.at(int(p.x) + dx, int(p.y) + dy);
+    };
+    EXPECT_EQ(at(0, n / 2, n / 2), (Rgb8{10, 200, 10}));
+    EXPECT_EQ(at(1, n / 2, n / 2), s.rows[r].render.at(0, 0));
+    EXPECT_EQ(at(2, n / 2, n / 2), report::inferno(s.rows[r].de2000[1] / scale));
+    EXPECT_EQ(at(2, n - 1, n - 1), report::inferno(s.rows[r].de2000[1] / scale));
+  }
+  EXPECT_EQ(img.at(int(report::sheet_tile(s, 0, 2).x), int(report::sheet_tile(s, 0, 2).y)),
+            (Rgb8{235, 235, 235}));
+  EXPECT_GT(report::sheet_tile(s, 1, 0).y, report::sheet_tile(s, 0, 0).y + n);
+}
+
+TEST(Html, TableCellsAreEscapedAndSortable) {
+  analysis::Table t;
+  t.name = "x";
+  t.title = "A <b> & \"c\"";
+  t.columns = {{"name"}, {"value", 3}, {"count"}};
+  t.rows = {{std::string("a<b>&'"), 1.23456789, 7LL}, {std::string("z"), std::nan(""), 2LL}};
+  t.reading = "See `code` and [the file](x.md).";
+  const auto html = report::table_html(t, "table-x");
+  EXPECT_NE(html.find("A &lt;b&gt; &amp; &quot;c&quot;"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"t\">a&lt;b&gt;&amp;&#39;</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td data-v=\"1.234567890000\">1.235</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td data-v=\"\">n/a</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td data-v=\"7\">7</td>"), std::string::npos);
+  EXPECT_NE(html.find("<code>code</code>"), std::string::npos);
+  EXPECT_NE(html.find("<a href=\"x.md\">the file</a>"), std::string::npos);
+  EXPECT_NE(html.find("<table id=\"table-x\">"), std::string::npos);
+  EXPECT_NE(html.find("data-table=\"table-x\""), std::string::npos);
+}
+
+report::HtmlReport sample_page() {
+  report::HtmlReport r;
+  r.title = "Report & more";
+  r.intro = {"Hello `world`."};
+  report::GalleryEntry e;
+  e.key = "gold";
+  e.name = "Gold";
+  e.material_class = "metal";
+  e.source = "main/Au/nk/Johnson";
+  e.strip = {{255, 200, 100}, {255, 230, 180}, {255, 255, 255}};
+  e.f0 = {255, 200, 100};
+  e.f82 = {255, 230, 180};
+  e.flags = {"extrapolated"};
+  e.facts = {{"RMS", "schlick 0.8"}};
+  e.flip = {"figures/flip-gold.png", 97, {"truth", "schlick \"s\""}};
+  r.gallery = {e};
+  // The page shows its caller's tables (a span): these live as long as the test program.
+  static const std::vector<analysis::Table> tables = [] {
+    analysis::Table t;
+    t.name = "schlick";
+    t.title = "Schlick";
+    t.columns = {{"material"}, {"rms", 3}};
+    t.rows = {{std::string("Gold"), 0.8}};
+    return std::vector<analysis::Table>{t};
+  }();
+  r.tables = tables;
+  r.links = {{"README.md", "README.md"}};
+  return r;
+}
+
+TEST(Html, PageIsSelfContainedAndParses) {
+  const auto page = report::html_report(sample_page());
+  EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(page.find("<style>"), std::string::npos);
+  EXPECT_NE(page.find("<script>"), std::string::npos);
+  for (const char* external : {"http://", "https://", "src=\"//", "href=\"//", "@import"})
+    EXPECT_EQ(page.find(external), std::string::npos) << external;
+  EXPECT_NE(page.find("linear-gradient(90deg,#ffc864 0.0%,#ffe6b4 50.0%,#ffffff 100.0%)"),
+            std::string::npos);
+  EXPECT_NE(page.find("id=\"m-gold\""), std::string::npos);
+  EXPECT_NE(page.find("id=\"gallery-filter\""), std::string::npos);
+  EXPECT_EQ(report::html_report(sample_page()), page);
+  // libxml2's HTML parser (xmllint, libxml2-utils) finds no unclosed or mismatched element; it
+  // knows HTML 4 only, so HTML5's sectioning elements are the one complaint allowed.
+  test::TempDir tmp;
+  const auto path = tmp.file("index.html", page);
+  const auto r = run_command("xmllint --html --noout '" + path + "'");
+  static const std::regex kHtml5Tag(
+      R"(Tag (header|nav|main|section|article|details|summary) invalid)");
+  std::istringstream lines(r.err);
+  int errors = 0;
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("parser error") != std::string::npos && !std::regex_search(line, kHtml5Tag)) {
+      ++errors;
+      ADD_FAILURE() << line;
+    }
+  EXPECT_EQ(errors, 0);
+  EXPECT_NE(r.err.find("Tag details invalid"), std::string::npos)
+      << "xmllint did not parse the page: " << r.err;
+}
+
+const std::string kHdri = std::string(FL_SHARED_TESTDATA) + "/hdri";
+
+TEST(RenderCli, CompareUnderAnHdrEnvironment) {
+  test::TempDir tmp;
+  const std::string out = tmp.path() + "/g.exr";
+  const auto r = run_command(cli() + " render gold --env '" + kHdri +
+                             "/studio.exr' --compare schlick,f82 --size 41 "
+                             "--samples 8 --out '" +
+                             out + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("lin_rec709 (OpenEXR's default"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ΔE2000 truth vs f82"), std::string::npos);
+  for (const char* f : {"g.truth.png", "g.schlick.png", "g.schlick.de2000.png", "g.f82.png",
+                        "g.f82.de2000.png", "g.flip.gif", "g.sheet.png"})
+    EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/" + f)) << f;
+  const auto exr = report::read_exr(out);
+  for (const char* ch :
+       {"R", "G", "B", "A", "schlick.R", "schlick.B", "schlick.de2000", "f82.G", "f82.de2000"})
+    EXPECT_NE(std::find(exr.channels.begin(), exr.channels.end(), ch), exr.channels.end()) << ch;
+  ASSERT_TRUE(exr.chromaticities.has_value());
+  EXPECT_NEAR((*exr.chromaticities)[0], 0.713, 1e-4);  // ACEScg's red primary
+  std::ifstream in(tmp.path() + "/g.flip.gif", std::ios::binary);
+  const auto gif =
+      report::decode_gif(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.gif");
+  EXPECT_EQ(gif.frames.size(), 4u);  // truth, schlick, truth, f82
+  EXPECT_EQ(gif.frames[0].pixels, gif.frames[2].pixels);
+  EXPECT_NE(gif.frames[0].pixels, gif.frames[1].pixels);
+}
+
+// An EXR written by the tool's own encoder, for the bad-input cases.
+std::string exr_file(const test::TempDir& tmp, const std::string& name, int w, int h,
+                     std::vector<std::string> channels, float value) {
+  report::ExrImage img;
+  img.width = w;
+  img.height = h;
+  img.channels = std::move(channels);
+  img.pixels.assign(static_cast<size_t>(w) * h * img.channels.size(), 1.0f);
+  img.pixels[1] = value;
+  const std::string path = tmp.path() + "/" + name;
+  report::write_exr_atomic(path, img);
+  return path;
+}
+
+TEST(RenderCli, BadEnvironmentsExitTwoWithOneLine) {
+  test::TempDir tmp;
+  const std::string out = " --size 9 --samples 2 --out '" + tmp.path() + "/o.exr'";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {tmp.path() + "/missing.exr", "no such environment file"},
+      {tmp.file("junk.exr", "not an exr"), "cannot read EXR"},
+      {exr_file(tmp, "square.exr", 8, 8, {"B", "G", "R"}, 1.0f), "not a latitude-longitude map"},
+      {exr_file(tmp, "no_green.exr", 8, 4, {"B", "R"}, 1.0f), "no G channel"},
+      {exr_file(tmp, "nan.exr", 8, 4, {"B", "G", "R"}, std::nanf("")), "non-finite"},
+  };
+  for (const auto& [file, problem] : cases) {
+    const auto r = run_command(cli() + " render gold --env '" + file + "'" + out);
+    EXPECT_EQ(r.status, 2) << file << ": " << r.err;
+    EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(problem), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const auto good = exr_file(tmp, "good.exr", 8, 4, {"B", "G", "R"}, 1.0f);
+  EXPECT_EQ(
+      run_command(cli() + " render gold --env '" + good + "' --env-space nowhere" + out).status, 2);
+  EXPECT_EQ(run_command(cli() + " render gold --compare schlick,bogus" + out).status, 2);
+  EXPECT_EQ(run_command(cli() + " render gold --model f82 --compare schlick" + out).status, 2);
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/o.exr"));
+  EXPECT_EQ(run_command(cli() + " -q render gold --env '" + good + "'" + out).status, 0);
+}
+
+}  // namespace
+}  // namespace fl
