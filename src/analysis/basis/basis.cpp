@@ -1,16 +1,9 @@
 #include "analysis/basis/basis.h"
 
-#include <fmt/format.h>
-
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-
-#include "fresnel/exact.h"
-#include "spectral/cie.h"
-#include "util/median.h"
-#include "util/parallel.h"
 
 namespace fl::analysis {
 

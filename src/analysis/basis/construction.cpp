@@ -1,6 +1,5 @@
-// The basis of the database's pages and its tables (docs/basis.md).
-#include <fmt/format.h>
-
+// The basis of the database's pages: the curves, their stacked residuals, the terms, each page's
+// projection.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -8,7 +7,6 @@
 #include "analysis/basis/basis.h"
 #include "fresnel/exact.h"
 #include "spectral/cie.h"
-#include "util/median.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {
