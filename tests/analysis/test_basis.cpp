@@ -317,5 +317,24 @@ TEST(CommittedBasis, SampledTermsAreOrthogonalAndNormalized) {
   }
 }
 
+// The polynomials are least-squares fits in a space holding 1 and (1 − μ)⁵ (degree ≥ 5) of vectors
+// orthogonal to both, so they stay orthogonal to both; to each other only up to the fit error.
+constexpr double kPolynomialCosineTolerance = 1e-3;
+
+TEST(CommittedBasis, PolynomialsAreOrthogonalToTheFixedTerms) {
+  ASSERT_GE(fresnel::kBasisPolyDegree, 5);
+  const Vec mu = basis_mu_samples(91);
+  std::vector<Vec> terms(fresnel::kBasisTerms);
+  for (int k = 0; k < fresnel::kBasisTerms; ++k)
+    for (double m : mu) terms[k].push_back(fresnel::basis_term(k, m));
+  for (int a = 2; a < fresnel::kBasisTerms; ++a)
+    for (int b = 0; b < a; ++b) {
+      const double cosine =
+          dot(terms[a], terms[b]) / std::sqrt(dot(terms[a], terms[a]) * dot(terms[b], terms[b]));
+      EXPECT_NEAR(cosine, 0.0, b < 2 ? kRoundoff : kPolynomialCosineTolerance)
+          << "b" << a << " · b" << b;
+    }
+}
+
 }  // namespace
 }  // namespace fl::analysis

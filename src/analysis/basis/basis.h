@@ -3,6 +3,7 @@
 // pages, the fixed terms 1 and (1 − μ)⁵ projected out, the leading left singular vectors of the
 // stacked residuals, each written as a polynomial in μ. Eigen stays inside basis.cpp.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -69,7 +70,7 @@ class ResidualStack {
 
  private:
   struct Impl;
-  Impl* impl_;
+  std::unique_ptr<Impl> impl_;
 };
 
 // Least-squares polynomial Σ c_i x^i (degree `degree`, c_0 first) through (x_j, f_j).
