@@ -104,6 +104,7 @@ struct BasisTerm {
   double dense_max = 0;             // max |polynomial| on 10001 points of [0, 1]
   // Largest |float Horner − double| on those points, of poly (in x) and of poly_mu (in μ).
   double float_max = 0, float_max_mu = 0;
+  double average = 0;  // 2∫₀¹ b(μ) μ dμ, the hemispherical average (exact, from the coefficients)
   double operator()(double mu) const { return eval_polynomial(poly, 2 * mu - 1); }
 };
 
