@@ -112,8 +112,8 @@ std::string common_name(const std::string& book_name) {
 ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::string& spec) {
   if (const auto eq = spec.find('='); eq != std::string::npos) {
     ConsensusRequest r{spec.substr(0, eq), {}};
-    for (const auto glob : spectral::split_fields(spec.substr(eq + 1), ","))
-      r.globs.emplace_back(glob);
+    const std::string globs = spec.substr(eq + 1);
+    for (const auto glob : spectral::split_fields(globs, ",")) r.globs.emplace_back(glob);
     if (r.name.empty() || r.globs.empty())
       throw InputError(fmt::format("--consensus '{}': expected NAME=GLOB[,GLOB...]", spec));
     return r;

@@ -67,11 +67,19 @@ std::map<std::string, Published> read_peers(const std::string& dir) {
 
 // The glob of a page's group (spread_group): its book, or on the alloys shelf its composition.
 std::string group_glob(const std::string& page) {
-  const std::string group = spread_group(page);
-  const auto space = group.find(' ', group.rfind('/'));
-  return space == std::string::npos ? group + "/**"
-                                    : group.substr(0, space) + "/**-" + group.substr(space + 1);
+  const std::filesystem::path p(page);
+  const std::string book = p.parent_path().parent_path().generic_string();
+  const std::string name = p.filename().string();
+  const auto dash = name.find('-');
+  if (book.rfind("other/alloys/", 0) != 0 || dash == std::string::npos) return book + "/**";
+  return book + "/**-" + name.substr(dash + 1);
 }
+
+// The published values have three decimals: rounding one channel of a bright metal's F0 by 0.0005
+// moves it by up to about 0.05 ΔE2000, and the published F0 of a page differs from ours of the same
+// page by up to 0.09 (published_vs_page_f0_de00). A preset counts as outside the spread only
+// beyond this.
+constexpr double kPublishedRoundingDe00 = 0.1;
 
 // OpenPBR's F82 from F0 and specular_color: the tint times Schlick's F(1/7).
 color::Rgb f82_from_tint(const color::Rgb& f0, const color::Rgb& tint) {
@@ -94,7 +102,7 @@ void add_peer_row(Table& t, const Context& ctx, const std::string& metal, const 
       if (d.page->material->material.source == p.page) page = &d;
   std::vector<Cell> row{metal, p.page, p.openpbr_file};
   if (!g) {
-    row.insert(row.end(), {std::string(), 0LL, NAN, NAN, NAN, NAN, NAN, NAN, std::string(),
+    row.insert(row.end(), {std::string(), 0LL, NAN, NAN, NAN, NAN, NAN, NAN, std::string(), NAN,
                            std::string("no consensus: no bulk metal page covers the visible")});
     t.rows.push_back(std::move(row));
     return;
@@ -104,15 +112,20 @@ void add_peer_row(Table& t, const Context& ctx, const std::string& metal, const 
   const double pub_f0 = color::ciede2000_fast(ctx.rgb_to_lab(p.f0), c0);
   const double pub_f82 =
       color::ciede2000_fast(ctx.rgb_to_lab(f82_from_tint(p.f0, p.f82_tint)), c82);
-  const bool out = pub_f0 > g->f0_max || pub_f82 > g->f82_max;
-  if (out) outside.push_back(metal);
+  const bool out =
+      pub_f0 > g->f0_max + kPublishedRoundingDe00 || pub_f82 > g->f82_max + kPublishedRoundingDe00;
+  const std::string verdict = g->used < 2 ? "no spread: one bulk page" : out ? "outside" : "within";
+  if (out && g->used >= 2) outside.push_back(metal);
+  const double reproduced =
+      page ? color::ciede2000_fast(ctx.rgb_to_lab(p.f0), ctx.rgb_to_lab(page->page->derived.f0))
+           : NAN;
   row.insert(
       row.end(),
       {page ? std::string(spectral::to_string(page->page->material->material.page_class.kind))
-            : std::string("not a metal page covering the visible"),
+            : std::string("not in the group (class or coverage)"),
        static_cast<long long>(g->used), page ? page->f0_de00 : NAN, page ? page->f82_de00 : NAN,
        pub_f0, pub_f82, g->f0_max, g->f82_max, std::string(page && page->outlier ? "yes" : "no"),
-       std::string(out ? "outside" : "within")});
+       reproduced, verdict});
   t.rows.push_back(std::move(row));
 }
 
@@ -150,6 +163,7 @@ Table peer_table(const Context& ctx_in, const std::string& peer_dir,
                {"spread_f0_max", 2},
                {"spread_f82_max", 2},
                {"page_outlier"},
+               {"published_vs_page_f0_de00", 2},
                {"published"}};
   std::vector<std::string> outside;
   for (const auto& [metal, p] : peers) add_peer_row(t, ctx, metal, p, set, outside);
@@ -166,8 +180,13 @@ Table peer_table(const Context& ctx_in, const std::string& peer_dir,
       "its group's bulk pages; published_*: the published ACEScg f0 and F82 (f82tint × Schlick's "
       "F(1/7)) against the consensus; spread_*_max: the farthest bulk page's distance (0 with one "
       "bulk page: a single measurement has no spread).",
-      "published: outside when the published F0 or F82 is farther from the consensus than every "
-      "bulk measurement; page_outlier: yes when the page is an outlier (consensus table's rule)."};
+      fmt::format(
+          "published: outside when the published F0 or F82 is farther from the consensus than "
+          "every bulk measurement by more than {:g} ΔE2000 (the publication's rounding); no "
+          "spread with one bulk page. page_outlier: yes when the page is an outlier (consensus "
+          "table's rule). published_vs_page_f0_de00: the published F0 against ours from the same "
+          "page (how closely the publication is reproduced).",
+          kPublishedRoundingDe00)};
   return t;
 }
 
