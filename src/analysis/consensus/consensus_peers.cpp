@@ -77,8 +77,8 @@ std::string group_glob(const std::string& page) {
 
 // The published values have three decimals: rounding one channel of a bright metal's F0 by 0.0005
 // moves it by up to about 0.05 ΔE2000, and the published F0 of a page differs from ours of the same
-// page by up to 0.09 (published_vs_page_f0_de00). A preset counts as outside the spread only
-// beyond this.
+// page by up to 0.15 (published_vs_page_f0_de00, W/Werner-DFT). A preset counts as outside the
+// spread only beyond this.
 constexpr double kPublishedRoundingDe00 = 0.1;
 
 // OpenPBR's F82 from F0 and specular_color: the tint times Schlick's F(1/7).
@@ -112,10 +112,14 @@ void add_peer_row(Table& t, const Context& ctx, const std::string& metal, const 
   const double pub_f0 = color::ciede2000_fast(ctx.rgb_to_lab(p.f0), c0);
   const double pub_f82 =
       color::ciede2000_fast(ctx.rgb_to_lab(f82_from_tint(p.f0, p.f82_tint)), c82);
-  const bool out =
-      pub_f0 > g->f0_max + kPublishedRoundingDe00 || pub_f82 > g->f82_max + kPublishedRoundingDe00;
-  const std::string verdict = g->used < 2 ? "no spread: one bulk page" : out ? "outside" : "within";
-  if (out && g->used >= 2) outside.push_back(metal);
+  // With one bulk page there is no spread: beyond the outlier floor counts as outside.
+  const double f0_limit = g->used < 2 ? kOutlierMinDe00 : g->f0_max + kPublishedRoundingDe00;
+  const double f82_limit = g->used < 2 ? kOutlierMinDe00 : g->f82_max + kPublishedRoundingDe00;
+  const bool out = pub_f0 > f0_limit || pub_f82 > f82_limit;
+  const std::string verdict = !out          ? "within"
+                              : g->used < 2 ? "outside (one bulk page: beyond 2 ΔE2000 of it)"
+                                            : "outside";
+  if (out) outside.push_back(metal);
   const double reproduced =
       page ? color::ciede2000_fast(ctx.rgb_to_lab(p.f0), ctx.rgb_to_lab(page->page->derived.f0))
            : NAN;
@@ -182,11 +186,12 @@ Table peer_table(const Context& ctx_in, const std::string& peer_dir,
       "bulk page: a single measurement has no spread).",
       fmt::format(
           "published: outside when the published F0 or F82 is farther from the consensus than "
-          "every bulk measurement by more than {:g} ΔE2000 (the publication's rounding); no "
-          "spread with one bulk page. page_outlier: yes when the page is an outlier (consensus "
+          "every bulk measurement by more than {:g} ΔE2000 (the publication's rounding; with one "
+          "bulk page, farther than {:g} ΔE2000 from it). page_outlier: yes when the page is an "
+          "outlier (consensus "
           "table's rule). published_vs_page_f0_de00: the published F0 against ours from the same "
           "page (how closely the publication is reproduced).",
-          kPublishedRoundingDe00)};
+          kPublishedRoundingDe00, kOutlierMinDe00)};
   return t;
 }
 
