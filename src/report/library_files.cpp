@@ -139,7 +139,11 @@ std::string readme(const analysis::Context& ctx, const analysis::Library& lib,
       "(generalized_schlick_bsdf; open_pbr_surface)\n"
       "- [skipped.csv](skipped.csv): every page left out, with its reason\n- "
       "[spread.md](spread.md), "
-      "[spread.csv](spread.csv): the spread between pages of the same metal\n";
+      "[spread.csv](spread.csv): the spread between pages of the same metal\n"
+      "- [consensus.md](consensus.md), [consensus_pages.md](consensus_pages.md), "
+      "[outlier_kinds.md](outlier_kinds.md) (and .csv): each metal's consensus of its bulk "
+      "pages with its uncertainty, every page's kind and distance from it, outliers per page "
+      "kind (docs/consensus.md)\n";
   if (gallery) md += "- [gallery.md](gallery.md): a colour strip per page\n";
   md +=
       "- [index.html](index.html): the library as a searchable gallery (colour strip, F0 and F82 "
