@@ -19,6 +19,7 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected);     //
 void add_pages_command(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_library.cpp
 void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected);  // cli/cmd_library.cpp
 void add_shader_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_shader.cpp
+void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_basis.cpp
 
 // `presets --consensus`: cli/cmd_library.cpp.
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
@@ -195,6 +196,7 @@ const std::vector<Command>& commands() {
       {"library", add_library_command},
       {"consensus", add_consensus_command},
       {"shader", add_shader_command},
+      {"basis", add_basis_command},
   };
   return table;
 }

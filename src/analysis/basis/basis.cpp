@@ -1,0 +1,166 @@
+#include "analysis/basis/basis.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace fl::analysis {
+
+std::vector<double> basis_mu_samples(int m) {
+  std::vector<double> mu(m);
+  for (int j = 0; j < m; ++j) {
+    const double theta = (std::numbers::pi / 2) * j / (m - 1);
+    mu[j] = j == m - 1 ? 0.0 : std::cos(theta);
+  }
+  return mu;
+}
+
+double basis_fixed_term(int k, double mu) {
+  const double s = 1.0 - mu;
+  return k == 0 ? 1.0 : s * s * s * s * s;
+}
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+MatrixXd sampled_matrix(const std::vector<std::vector<double>>& functions) {
+  MatrixXd b(functions.front().size(), functions.size());
+  for (size_t k = 0; k < functions.size(); ++k)
+    for (size_t j = 0; j < functions[k].size(); ++j) b(j, k) = functions[k][j];
+  return b;
+}
+
+// The upper triangle of the QR factor of `stack` (its first `cols` rows; zero rows when shorter).
+MatrixXd triangular_factor(const MatrixXd& stack) {
+  const Eigen::Index n = stack.cols();
+  MatrixXd r = MatrixXd::Zero(n, n);
+  if (stack.rows() == 0) return r;
+  Eigen::HouseholderQR<MatrixXd> qr(stack);
+  const Eigen::Index k = std::min(stack.rows(), n);
+  r.topRows(k) = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
+  return r;
+}
+
+}  // namespace
+
+struct ResidualStack::Impl {
+  MatrixXd fixed_q;  // orthonormal basis of span{1, (1 − μ)⁵} at the samples
+  MatrixXd r;        // the stack's triangular factor
+  double total_energy = 0, residual_energy = 0;
+};
+
+ResidualStack::ResidualStack(const std::vector<double>& mu) : impl_(new Impl) {
+  std::vector<std::vector<double>> fixed(2, std::vector<double>(mu.size()));
+  for (size_t j = 0; j < mu.size(); ++j)
+    for (int k = 0; k < 2; ++k) fixed[k][j] = basis_fixed_term(k, mu[j]);
+  Eigen::HouseholderQR<MatrixXd> qr(sampled_matrix(fixed));
+  impl_->fixed_q = qr.householderQ() * MatrixXd::Identity(mu.size(), 2);
+  impl_->r = MatrixXd::Zero(mu.size(), mu.size());
+}
+
+ResidualStack::~ResidualStack() {
+  delete impl_;
+}
+
+void ResidualStack::add(const CurveRows& rows) {
+  const int m = static_cast<int>(impl_->r.cols());
+  MatrixXd stack(m + rows.rows(), m);
+  stack.topRows(m) = impl_->r;
+  for (int i = 0; i < rows.rows(); ++i) {
+    const VectorXd f = Eigen::Map<const VectorXd>(rows.values.data() + size_t(i) * m, m);
+    const VectorXd res = f - impl_->fixed_q * (impl_->fixed_q.transpose() * f);
+    const double w = rows.weights[i];
+    impl_->total_energy += w * f.squaredNorm();
+    impl_->residual_energy += w * res.squaredNorm();
+    stack.row(m + i) = std::sqrt(w) * res.transpose();
+  }
+  impl_->r = triangular_factor(stack);
+}
+
+void ResidualStack::merge(const ResidualStack& other) {
+  const Eigen::Index m = impl_->r.cols();
+  MatrixXd stack(2 * m, m);
+  stack << impl_->r, other.impl_->r;
+  impl_->r = triangular_factor(stack);
+  impl_->total_energy += other.impl_->total_energy;
+  impl_->residual_energy += other.impl_->residual_energy;
+}
+
+ResidualSvd ResidualStack::solve(int terms) const {
+  Eigen::JacobiSVD<MatrixXd> svd(impl_->r, Eigen::ComputeFullV);
+  ResidualSvd out;
+  out.total_energy = impl_->total_energy;
+  out.residual_energy = impl_->residual_energy;
+  const VectorXd& s = svd.singularValues();
+  out.singular_values.assign(s.data(), s.data() + s.size());
+  for (int k = 0; k < terms; ++k) {
+    VectorXd v = svd.matrixV().col(k);
+    Eigen::Index at = 0;
+    for (Eigen::Index j = 1; j < v.size(); ++j)
+      if (std::abs(v(j)) > std::abs(v(at))) at = j;
+    if (v(at) < 0) v = -v;
+    out.functions.emplace_back(v.data(), v.data() + v.size());
+  }
+  return out;
+}
+
+std::vector<double> fit_polynomial(const std::vector<double>& x, const std::vector<double>& f,
+                                   int degree) {
+  MatrixXd v(x.size(), degree + 1);
+  for (size_t j = 0; j < x.size(); ++j) {
+    double p = 1.0;
+    for (int i = 0; i <= degree; ++i, p *= x[j]) v(j, i) = p;
+  }
+  const VectorXd c = v.colPivHouseholderQr().solve(Eigen::Map<const VectorXd>(f.data(), f.size()));
+  return {c.data(), c.data() + c.size()};
+}
+
+double eval_polynomial(const std::vector<double>& c, double x) {
+  double p = 0.0;
+  for (size_t i = c.size(); i-- > 0;) p = p * x + c[i];
+  return p;
+}
+
+// Σ_i c_i (2μ − 1)^i = Σ_i c_i Σ_j C(i, j) 2^j μ^j (−1)^(i−j).
+std::vector<double> centred_to_mu(const std::vector<double>& c) {
+  const size_t n = c.size();
+  std::vector<double> out(n, 0.0);
+  std::vector<double> row = {1.0};  // binomial coefficients C(i, j)
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j <= i; ++j)
+      out[j] += c[i] * row[j] * std::ldexp(1.0, static_cast<int>(j)) * ((i - j) % 2 ? -1.0 : 1.0);
+    std::vector<double> next(i + 2, 1.0);
+    for (size_t j = 1; j <= i; ++j) next[j] = row[j - 1] + row[j];
+    row = next;
+  }
+  return out;
+}
+
+Projector::Projector(const std::vector<std::vector<double>>& basis) : basis_(basis) {
+  const MatrixXd b = sampled_matrix(basis);
+  const MatrixXd pinv = b.colPivHouseholderQr().solve(MatrixXd::Identity(b.rows(), b.rows()));
+  pinv_.resize(pinv.size());
+  // Row-major: coefficient k is the dot product of row k with f.
+  for (Eigen::Index k = 0; k < pinv.rows(); ++k)
+    for (Eigen::Index j = 0; j < pinv.cols(); ++j) pinv_[k * pinv.cols() + j] = pinv(k, j);
+}
+
+std::vector<double> Projector::coefficients(const std::vector<double>& f) const {
+  std::vector<double> c(basis_.size(), 0.0);
+  for (size_t k = 0; k < c.size(); ++k)
+    for (size_t j = 0; j < f.size(); ++j) c[k] += pinv_[k * f.size() + j] * f[j];
+  return c;
+}
+
+std::vector<double> Projector::residual(const std::vector<double>& f) const {
+  const auto c = coefficients(f);
+  std::vector<double> r = f;
+  for (size_t k = 0; k < c.size(); ++k)
+    for (size_t j = 0; j < f.size(); ++j) r[j] -= c[k] * basis_[k][j];
+  return r;
+}
+
+}  // namespace fl::analysis

@@ -1,0 +1,143 @@
+#pragma once
+// The data-driven Fresnel basis (docs/basis.md): spectral Fresnel curves R(λ, μ) of the database's
+// pages, the fixed terms 1 and (1 − μ)⁵ projected out, the leading left singular vectors of the
+// stacked residuals, each written as a polynomial in μ. Eigen stays inside basis.cpp.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analysis/pipeline/materials.h"
+#include "analysis/tables/table.h"
+
+namespace fl::analysis {
+
+// Pages whose normal-incidence reflectance (weighted over the construction's wavelengths) is
+// below this are left out of the construction, not of the projection tables: the gases
+// (|η − 1| ≈ 3e-4, F0 ≈ 1e-8) reflect only within a degree or two of grazing, a spike that
+// neither 91 angles nor a polynomial resolves and that no surface a renderer shades has. Every
+// condensed phase in the database lies above (F0 = 1e-4 is η ≈ 1.02).
+inline constexpr double kBasisMinF0 = 1e-4;
+
+// The construction's choices (docs/basis.md says why).
+struct BasisOptions {
+  int data_terms = 3;          // data-driven functions kept: K = 2..2 + data_terms
+  int poly_degree = 10;        // of each data-driven function's polynomial in μ
+  int mu_samples = 91;         // μ_j = cos(90°·j/(M − 1)): uniform in θ, as the error metric
+  double lambda_step_nm = 10;  // wavelengths 360, 370, ..., 830 nm, weighted by x̄ + ȳ + z̄
+  int singular_values = 8;     // listed in the energy table
+};
+
+// μ_j = cos(θ_j), θ_j = 90°·j/(m − 1), j = 0..m − 1 (μ = 1 first, exactly 0 last).
+std::vector<double> basis_mu_samples(int m);
+
+// The fixed terms: b0(μ) = 1, b1(μ) = (1 − μ)⁵ (Schlick's).
+double basis_fixed_term(int k, double mu);
+
+// Weighted curves sampled at the same μ values, one row each: r_c(μ_j), weight w_c ≥ 0.
+struct CurveRows {
+  std::vector<double> values;   // row-major, rows × samples
+  std::vector<double> weights;  // per row
+  int samples = 0;
+  int rows() const { return samples == 0 ? 0 : static_cast<int>(weights.size()); }
+};
+
+// The residual subspace of a set of curves (Belcour, Bati & Barla 2020, "Bringing an accurate
+// Fresnel to real-time rendering: a pre-integrable decomposition", §4: SVD of Fresnel curves):
+// each row minus its least-squares projection on span{1, (1 − μ)⁵} over the samples, scaled by
+// √w, stacked; the stack's right singular vectors (functions of μ: the left singular vectors of
+// the μ × curves matrix) and singular values. Vectors are unit-norm under Σ_j f(μ_j)g(μ_j), the
+// sign making the largest-magnitude sample positive.
+struct ResidualSvd {
+  std::vector<double> singular_values;         // all `samples` of them, descending
+  std::vector<std::vector<double>> functions;  // the first `terms` right singular vectors
+  double total_energy = 0;                     // Σ w‖r‖²
+  double residual_energy = 0;                  // Σ w‖r − P r‖² = Σ σ²
+};
+
+// Folds the rows into the stack's triangular factor in blocks (QR of [R; block]), in row order,
+// so the result does not depend on threads.
+class ResidualStack {
+ public:
+  explicit ResidualStack(const std::vector<double>& mu);
+  ~ResidualStack();
+  ResidualStack(const ResidualStack&) = delete;
+  ResidualStack& operator=(const ResidualStack&) = delete;
+  void add(const CurveRows& rows);
+  // Appends another stack's rows (after this one's): its factor and energies.
+  void merge(const ResidualStack& other);
+  ResidualSvd solve(int terms) const;
+
+ private:
+  struct Impl;
+  Impl* impl_;
+};
+
+// Least-squares polynomial Σ c_i x^i (degree `degree`, c_0 first) through (x_j, f_j).
+std::vector<double> fit_polynomial(const std::vector<double>& x, const std::vector<double>& f,
+                                   int degree);
+// Horner evaluation of c_0 + c_1 x + ... .
+double eval_polynomial(const std::vector<double>& c, double x);
+// The same polynomial in μ of one in x = 2μ − 1 (binomial expansion).
+std::vector<double> centred_to_mu(const std::vector<double>& c);
+
+// Least-squares coefficients of `f` on the functions `basis` (each sampled at the same points).
+class Projector {
+ public:
+  explicit Projector(const std::vector<std::vector<double>>& basis);
+  // The coefficients of f, and f − its projection.
+  std::vector<double> coefficients(const std::vector<double>& f) const;
+  std::vector<double> residual(const std::vector<double>& f) const;
+
+ private:
+  std::vector<std::vector<double>> basis_;
+  std::vector<double> pinv_;  // terms × samples
+};
+
+// A data-driven term. Its polynomial is fitted in x = 2μ − 1 (on [−1, 1] the monomials are far
+// better conditioned than on [0, 1]: coefficients stay small and float evaluation accurate).
+struct BasisTerm {
+  std::vector<double> sampled;  // the normalized singular vector at the μ samples (max |b| = 1)
+  std::vector<double> poly;     // its polynomial in x = 2μ − 1, c_0..c_degree
+  std::vector<double> poly_mu;  // the same polynomial in μ
+  double fit_max = 0, fit_rms = 0;  // polynomial − sampled at the samples
+  double dense_max = 0;             // max |polynomial| on 10001 points of [0, 1]
+  // Largest |float Horner − double| on those points, of poly (in x) and of poly_mu (in μ).
+  double float_max = 0, float_max_mu = 0;
+  double operator()(double mu) const { return eval_polynomial(poly, 2 * mu - 1); }
+};
+
+// Per page, per K: RMS reflectance residual and RMS ΔE2000 of the per-channel projection.
+struct PageProjection {
+  std::string page;
+  spectral::MaterialClass material_class;
+  double f0 = 0;        // normal-incidence reflectance, weighted over the wavelengths
+  bool stacked = true;  // part of the construction (f0 ≥ kBasisMinF0)
+  std::vector<double> rms_reflectance;  // K = 2..2 + data_terms, then the Hoffman span
+  std::vector<double> rms_de2000;
+};
+
+struct FresnelBasis {
+  BasisOptions options;
+  std::vector<double> mu;
+  std::vector<double> lambda_nm, lambda_weights;  // the construction's wavelengths
+  ResidualSvd svd;
+  std::vector<BasisTerm> terms;  // the data-driven terms
+  std::vector<PageProjection> pages;
+  std::vector<SkippedMaterial> skipped;
+  int requested = 0;
+};
+
+// The basis of the loaded pages (in their order; the skipped ones are listed). `progress` gets
+// (done, total): the pages stacked, then the pages projected.
+FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const BasisOptions& options,
+                         const std::function<void(int, int)>& progress = {});
+
+// The tables of `basis --out`: the functions sampled, the polynomials, the singular values, the
+// projection errors (summary and per page).
+Table basis_functions_table(const FresnelBasis& b);
+Table basis_polynomials_table(const FresnelBasis& b);
+Table basis_energy_table(const FresnelBasis& b);
+Table basis_projection_table(const Context& ctx, const FresnelBasis& b);
+Table basis_pages_table(const FresnelBasis& b);
+
+}  // namespace fl::analysis

@@ -1,0 +1,187 @@
+// The tables of `basis --out` (docs/basis.md).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "analysis/basis/basis.h"
+#include "analysis/tables/tables.h"
+#include "util/median.h"
+
+namespace fl::analysis {
+
+namespace {
+
+// Full double precision: 17 significant digits read back to the same double.
+constexpr int kFullDigits = 17;
+
+Column full(const std::string& name) {
+  return {name, kFullDigits, true, true};
+}
+
+// b0, b1 fixed; b2.. the data-driven terms.
+std::string term_name(size_t k) {
+  return fmt::format("b{}", k);
+}
+
+// The projection sets' labels, in projection_sets' order.
+std::vector<std::string> set_labels(const FresnelBasis& b) {
+  std::vector<std::string> labels;
+  for (size_t k = 2; k <= 2 + b.terms.size(); ++k) labels.push_back(fmt::format("k{}", k));
+  labels.push_back("hoffman3");
+  return labels;
+}
+
+// The q-quantile of `values` by linear interpolation between order statistics (Hyndman & Fan
+// 1996, definition 7); NaN when empty.
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return std::nan("");
+  std::sort(values.begin(), values.end());
+  const double h = q * (values.size() - 1);
+  const size_t lo = static_cast<size_t>(std::floor(h));
+  const size_t hi = std::min(values.size() - 1, lo + 1);
+  return values[lo] + (h - lo) * (values[hi] - values[lo]);
+}
+
+}  // namespace
+
+Table basis_functions_table(const FresnelBasis& b) {
+  Table t;
+  t.name = "basis_functions";
+  t.title = "The basis sampled: fixed terms, data-driven singular vectors and their polynomials";
+  t.columns = {full("theta_deg"), full("mu"), full("b0"), full("b1")};
+  for (size_t k = 0; k < b.terms.size(); ++k) t.columns.push_back(full(term_name(k + 2)));
+  for (size_t k = 0; k < b.terms.size(); ++k) t.columns.push_back(full(term_name(k + 2) + "_poly"));
+  const int m = static_cast<int>(b.mu.size());
+  for (int j = 0; j < m; ++j) {
+    std::vector<Cell> row = {90.0 * j / (m - 1), b.mu[j], basis_fixed_term(0, b.mu[j]),
+                             basis_fixed_term(1, b.mu[j])};
+    for (const auto& term : b.terms) row.push_back(term.sampled[j]);
+    for (const auto& term : b.terms) row.push_back(term(b.mu[j]));
+    t.rows.push_back(std::move(row));
+  }
+  t.reading = fmt::format(
+      "{} samples uniform in θ (μ = cos θ). b0 = 1 and b1 = (1 − μ)⁵ are fixed; b2.. are the "
+      "leading singular vectors of the residuals, orthogonal to b0, b1 and to each other under "
+      "Σ_j f(μ_j)g(μ_j), scaled to max |b| = 1 over the samples with that sample positive.",
+      m);
+  return t;
+}
+
+Table basis_polynomials_table(const FresnelBasis& b) {
+  Table t;
+  t.name = "basis_polynomials";
+  t.title = "The data-driven terms as polynomials: b(μ) = Σ c_i x^i";
+  t.columns = {{"term"}, {"variable"}, {"degree", 0}};
+  const int degree = b.options.poly_degree;
+  for (int i = 0; i <= degree; ++i) t.columns.push_back(full(fmt::format("c{}", i)));
+  t.columns.insert(t.columns.end(), {{"fit_max_abs", 3, true, true},
+                                     {"fit_rms", 3, true, true},
+                                     {"float32_horner_max", 2, true, true},
+                                     {"max_abs_on_0_1", 6},
+                                     {"at_mu_0", 6},
+                                     {"at_mu_1", 6}});
+  for (size_t k = 0; k < b.terms.size(); ++k) {
+    const auto& term = b.terms[k];
+    for (const bool centred : {true, false}) {
+      std::vector<Cell> row = {term_name(k + 2), std::string(centred ? "2mu-1" : "mu"),
+                               static_cast<long long>(degree)};
+      for (double c : centred ? term.poly : term.poly_mu) row.push_back(c);
+      row.insert(row.end(),
+                 {term.fit_max, term.fit_rms, centred ? term.float_max : term.float_max_mu,
+                  term.dense_max, term(0.0), term(1.0)});
+      t.rows.push_back(std::move(row));
+    }
+  }
+  t.reading =
+      "Least squares in x = 2μ − 1 on the samples of basis_functions; the same polynomial "
+      "expanded in x = μ. fit_max_abs and fit_rms are its difference from the sampled singular "
+      "vector there (whose max |b| is 1); float32_horner_max the largest difference between "
+      "Horner's rule in float and in double over 10001 points of [0, 1].";
+  return t;
+}
+
+Table basis_energy_table(const FresnelBasis& b) {
+  Table t;
+  t.name = "basis_energy";
+  t.title = "Energy per data-driven term (singular values of the stacked residuals)";
+  t.columns = {{"term"},
+               full("singular_value"),
+               {"residual_share", 6},
+               {"residual_share_cumulative", 6},
+               {"residual_left_of_total", 3, true, true}};
+  double sum2 = 0;
+  for (double s : b.svd.singular_values) sum2 += s * s;
+  double cumulative = 0;
+  const int n = std::min<int>(b.options.singular_values, b.svd.singular_values.size());
+  for (int k = 0; k < n; ++k) {
+    const double s = b.svd.singular_values[k];
+    cumulative += s * s;
+    t.rows.push_back({term_name(k + 2), s, s * s / sum2, cumulative / sum2,
+                      (sum2 - cumulative) / b.svd.total_energy});
+  }
+  t.reading = fmt::format(
+      "The curves' energy Σ w‖R‖² is {:.6g}; b0 and b1 leave {:.6g} of it ({:.3g}), which the "
+      "data-driven terms take in turn: residual_share is σ²/Σσ², residual_left_of_total what "
+      "remains after the term as a share of the curves' energy.",
+      b.svd.total_energy, b.svd.residual_energy, b.svd.residual_energy / b.svd.total_energy);
+  return t;
+}
+
+Table basis_projection_table(const Context& ctx, const FresnelBasis& b) {
+  Table t;
+  t.name = "basis_projection";
+  t.title = "Projection error per K over the pages";
+  t.columns = {
+      {"basis"},           {"class"},           {"pages", 0},         {"refl_rms_median", 5},
+      {"refl_rms_p90", 5}, {"refl_rms_max", 5}, {"de2000_median", 4}, {"de2000_p90", 4},
+      {"de2000_p99", 4},   {"de2000_max", 4}};
+  const auto labels = set_labels(b);
+  for (size_t s = 0; s < labels.size(); ++s) {
+    const std::string low = fmt::format("f0_below_{:g}", kBasisMinF0);
+    for (const std::string cls :
+         {std::string("metal"), std::string("dielectric"), low, std::string("all")}) {
+      std::vector<double> refl, de;
+      for (const auto& p : b.pages) {
+        const std::string c = p.stacked ? spectral::to_string(p.material_class) : low;
+        if (cls != "all" && c != cls) continue;
+        refl.push_back(p.rms_reflectance[s]);
+        de.push_back(p.rms_de2000[s]);
+      }
+      t.rows.push_back({labels[s], std::string(cls), static_cast<long long>(refl.size()),
+                        median(refl), quantile(refl, 0.9), quantile(refl, 1.0), median(de),
+                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0)});
+    }
+  }
+  t.reading =
+      "kK: the first K terms (b0, b1 and the data-driven polynomials); hoffman3: 1, (1 − μ)⁵, "
+      "μ(1 − μ)⁶. refl_rms: RMS over the samples of the spectral curve's least-squares residual, "
+      "weighted over the wavelengths; de2000: RMS ΔE2000 over the angles of the RGB truth curve "
+      "projected per channel (least squares over the angles). f0_below_...: the pages left out "
+      "of the construction (gases, whose curve is a spike at grazing that no basis follows); "
+      "metal and dielectric exclude them, all includes them.";
+  t.notes = {setting_note(ctx),
+             "Quantiles interpolate linearly between order statistics (Hyndman & Fan type 7)."};
+  return t;
+}
+
+Table basis_pages_table(const FresnelBasis& b) {
+  Table t;
+  t.name = "basis_pages";
+  t.title = "Projection error per page";
+  t.columns = {{"page"}, {"class"}, {"f0", 6, true, true}, {"in_basis"}};
+  const auto labels = set_labels(b);
+  for (const auto& l : labels) t.columns.push_back({"refl_rms_" + l, 5});
+  for (const auto& l : labels) t.columns.push_back({"de2000_" + l, 4});
+  for (const auto& p : b.pages) {
+    std::vector<Cell> row = {p.page, std::string(spectral::to_string(p.material_class)), p.f0,
+                             std::string(p.stacked ? "yes" : "no")};
+    for (double v : p.rms_reflectance) row.push_back(v);
+    for (double v : p.rms_de2000) row.push_back(v);
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+}  // namespace fl::analysis

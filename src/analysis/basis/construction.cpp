@@ -1,0 +1,218 @@
+// The basis of the database's pages: the curves, their stacked residuals, the terms, each page's
+// projection.
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "analysis/basis/basis.h"
+#include "fresnel/exact.h"
+#include "spectral/cie.h"
+#include "util/parallel.h"
+
+namespace fl::analysis {
+
+namespace {
+
+// Pages per block of the stack: each block's QR runs on its own thread, the blocks fold in order.
+constexpr size_t kBlockPages = 32;
+// Points of [0, 1] on which a polynomial's largest magnitude is taken.
+constexpr int kDensePoints = 10001;
+
+struct Wavelengths {
+  std::vector<int> index;  // into the context's grid
+  std::vector<double> lambda_nm, weights;
+};
+
+// Every `step_nm` from 360 nm, weighted by x̄ + ȳ + z̄ (CIE 1931 2°), normalized to sum 1.
+Wavelengths construction_wavelengths(const Context& ctx, double step_nm) {
+  const auto& s = ctx.settings();
+  const auto observer = spectral::cie1931_2deg(
+      ctx.grid(), s.colord_dir.empty() ? spectral::default_colord_dir() : s.colord_dir);
+  Wavelengths w;
+  double sum = 0;
+  for (int i = 0; i < ctx.grid().count; ++i) {
+    const double lambda = ctx.grid().lambda_nm(i);
+    if (std::abs(std::remainder(lambda - ctx.grid().start_nm, step_nm)) > 1e-9) continue;
+    const double cmf =
+        observer.x_bar.values[i] + observer.y_bar.values[i] + observer.z_bar.values[i];
+    w.index.push_back(i);
+    w.lambda_nm.push_back(lambda);
+    w.weights.push_back(cmf);
+    sum += cmf;
+  }
+  for (auto& v : w.weights) v /= sum;
+  return w;
+}
+
+// R(λ, μ_j) for each construction wavelength (exact unpolarized Fresnel, index relative to the
+// outside medium), weighted by the wavelength's weight.
+void add_page_rows(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w,
+                   const std::vector<double>& mu, double eta_outside, CurveRows& rows) {
+  for (size_t l = 0; l < w.index.size(); ++l) {
+    const std::complex<double> eta = ior.ior[w.index[l]] / eta_outside;
+    for (double m : mu) rows.values.push_back(fresnel::fresnel_conductor(m, eta));
+    rows.weights.push_back(w.weights[l]);
+  }
+}
+
+// The function sets projected on: K = 2..2 + terms (b0, b1, then the data-driven polynomials),
+// then Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, each sampled at `points`.
+std::vector<std::vector<std::vector<double>>> projection_sets(const std::vector<BasisTerm>& terms,
+                                                              const std::vector<double>& points) {
+  auto sample = [&](auto&& f) {
+    std::vector<double> v;
+    for (double m : points) v.push_back(f(m));
+    return v;
+  };
+  std::vector<std::vector<double>> functions = {
+      sample([](double m) { return basis_fixed_term(0, m); }),
+      sample([](double m) { return basis_fixed_term(1, m); })};
+  std::vector<std::vector<std::vector<double>>> sets = {functions};
+  for (const auto& t : terms) {
+    functions.push_back(sample([&](double m) { return t(m); }));
+    sets.push_back(functions);
+  }
+  sets.push_back(
+      {functions[0], functions[1], sample([](double m) { return m * std::pow(1.0 - m, 6); })});
+  return sets;
+}
+
+// Normal-incidence reflectance weighted over the construction's wavelengths.
+double weighted_f0(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w,
+                   double eta_outside) {
+  double f0 = 0;
+  for (size_t l = 0; l < w.index.size(); ++l)
+    f0 += w.weights[l] * fresnel::fresnel_conductor(1.0, ior.ior[w.index[l]] / eta_outside);
+  return f0;
+}
+
+ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages, const Wavelengths& w,
+                            const std::vector<double>& mu, double eta_outside, int terms,
+                            const std::function<void(int, int)>& progress) {
+  const size_t blocks = (pages.size() + kBlockPages - 1) / kBlockPages;
+  std::vector<std::unique_ptr<ResidualStack>> stacks(blocks);
+  ProgressCounter counter(progress, static_cast<int>(pages.size()));
+  parallel_for(blocks, [&](size_t b) {
+    CurveRows rows;
+    rows.samples = static_cast<int>(mu.size());
+    const size_t end = std::min(pages.size(), (b + 1) * kBlockPages);
+    for (size_t p = b * kBlockPages; p < end; ++p)
+      add_page_rows(pages[p]->ior, w, mu, eta_outside, rows);
+    stacks[b] = std::make_unique<ResidualStack>(mu);
+    stacks[b]->add(rows);
+    counter.add(static_cast<int>(end - b * kBlockPages));
+  });
+  ResidualStack all(mu);
+  for (const auto& s : stacks) all.merge(*s);
+  return all.solve(terms);
+}
+
+// Largest |float Horner − double| of a polynomial in x = scale·μ + shift on the dense points.
+double float_error(const std::vector<double>& c, double scale, double shift) {
+  double worst = 0;
+  for (int i = 0; i < kDensePoints; ++i) {
+    const double x = scale * (double(i) / (kDensePoints - 1)) + shift;
+    float p = 0.0f;
+    for (size_t k = c.size(); k-- > 0;) p = p * static_cast<float>(x) + static_cast<float>(c[k]);
+    worst = std::max(worst, std::abs(double(p) - eval_polynomial(c, x)));
+  }
+  return worst;
+}
+
+// A singular vector scaled to max |b| = 1 over the samples, and its polynomial.
+BasisTerm make_term(const std::vector<double>& mu, const std::vector<double>& vector, int degree) {
+  BasisTerm t;
+  double peak = 0;
+  for (double v : vector) peak = std::max(peak, std::abs(v));
+  for (double v : vector) t.sampled.push_back(v / peak);
+  std::vector<double> x;
+  for (double m : mu) x.push_back(2 * m - 1);
+  t.poly = fit_polynomial(x, t.sampled, degree);
+  t.poly_mu = centred_to_mu(t.poly);
+  double sum2 = 0;
+  for (size_t j = 0; j < mu.size(); ++j) {
+    const double e = std::abs(t(mu[j]) - t.sampled[j]);
+    t.fit_max = std::max(t.fit_max, e);
+    sum2 += e * e;
+  }
+  t.fit_rms = std::sqrt(sum2 / mu.size());
+  for (int i = 0; i < kDensePoints; ++i)
+    t.dense_max = std::max(t.dense_max, std::abs(t(double(i) / (kDensePoints - 1))));
+  t.float_max = float_error(t.poly, 2.0, -1.0);
+  t.float_max_mu = float_error(t.poly_mu, 1.0, 0.0);
+  return t;
+}
+
+PageProjection project_page(const Context& ctx, const LoadedMaterial& page, const Wavelengths& w,
+                            const std::vector<double>& mu,
+                            const std::vector<Projector>& spectral_projectors,
+                            const std::vector<Projector>& rgb_projectors) {
+  const double eta_outside = ctx.settings().eta_outside;
+  PageProjection out{page.material.source, page.material.material_class,
+                     weighted_f0(page.ior, w, eta_outside)};
+  out.stacked = out.f0 >= kBasisMinF0;
+  CurveRows rows;
+  rows.samples = static_cast<int>(mu.size());
+  add_page_rows(page.ior, w, mu, eta_outside, rows);
+  for (const auto& proj : spectral_projectors) {
+    double sum = 0;
+    for (int l = 0; l < rows.rows(); ++l) {
+      const std::vector<double> f(rows.values.begin() + size_t(l) * mu.size(),
+                                  rows.values.begin() + size_t(l + 1) * mu.size());
+      double e2 = 0;
+      for (double r : proj.residual(f)) e2 += r * r;
+      sum += rows.weights[l] * e2 / mu.size();
+    }
+    out.rms_reflectance.push_back(std::sqrt(sum));
+  }
+  const auto truth = ground_truth_curve(ctx, page.ior, eta_outside);
+  for (const auto& proj : rgb_projectors) {
+    std::vector<color::Rgb> approx = truth;
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> channel;
+      for (const auto& rgb : truth) channel.push_back(rgb[c]);
+      const auto r = proj.residual(channel);
+      for (size_t j = 0; j < r.size(); ++j) approx[j][c] -= r[j];
+    }
+    out.rms_de2000.push_back(curve_error(ctx, truth, approx).rms);
+  }
+  return out;
+}
+
+}  // namespace
+
+FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const BasisOptions& options,
+                         const std::function<void(int, int)>& progress) {
+  const auto& pages = set.materials;
+  FresnelBasis b;
+  b.skipped = set.skipped;
+  b.requested = set.requested;
+  b.options = options;
+  b.mu = basis_mu_samples(options.mu_samples);
+  const Wavelengths w = construction_wavelengths(ctx, options.lambda_step_nm);
+  b.lambda_nm = w.lambda_nm;
+  b.lambda_weights = w.weights;
+  std::vector<const LoadedMaterial*> stacked;
+  for (const auto& p : pages)
+    if (weighted_f0(p.ior, w, ctx.settings().eta_outside) >= kBasisMinF0) stacked.push_back(&p);
+  const int total = static_cast<int>(stacked.size() + pages.size());
+  b.svd = stack_residuals(stacked, w, b.mu, ctx.settings().eta_outside, options.data_terms,
+                          [&](int done, int) {
+                            if (progress) progress(done, total);
+                          });
+  for (const auto& v : b.svd.functions) b.terms.push_back(make_term(b.mu, v, options.poly_degree));
+
+  std::vector<Projector> spectral_projectors, rgb_projectors;
+  for (const auto& set : projection_sets(b.terms, b.mu)) spectral_projectors.emplace_back(set);
+  for (const auto& set : projection_sets(b.terms, ctx.cos_thetas()))
+    rgb_projectors.emplace_back(set);
+  b.pages.resize(pages.size());
+  ProgressCounter counter(progress, total, static_cast<int>(stacked.size()));
+  parallel_for(pages.size(), [&](size_t i) {
+    b.pages[i] = project_page(ctx, pages[i], w, b.mu, spectral_projectors, rgb_projectors);
+    counter.add(1);
+  });
+  return b;
+}
+
+}  // namespace fl::analysis

@@ -1,0 +1,82 @@
+// `basis` through the CLI on a few database pages: its files, nested projections that never lose
+// accuracy with more terms, and bad input refused with nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "test_util.h"
+
+namespace fl {
+namespace {
+
+using test::cli;
+using test::run_command;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The rows of a CSV without quoted cells as maps from column name to cell.
+std::vector<std::map<std::string, std::string>> records(const std::string& text) {
+  std::stringstream ss(text);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(ss, line);) {
+    std::vector<std::string> cells;
+    std::stringstream ls(line);
+    for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  std::vector<std::map<std::string, std::string>> out;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    std::map<std::string, std::string> r;
+    for (size_t c = 0; c < rows[0].size() && c < rows[i].size(); ++c) r[rows[0][c]] = rows[i][c];
+    out.push_back(r);
+  }
+  return out;
+}
+
+TEST(BasisCli, WritesTheBasisOfTheMatchedPages) {
+  test::TempDir tmp;
+  const std::string out = tmp.path() + "/basis";
+  const auto r =
+      run_command(cli() + " basis 'main/Au/nk/*' 'main/Cu/nk/*' 'main/SiO2/nk/*' --out " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* f :
+       {"basis.md", "basis_functions.csv", "basis_polynomials.csv", "basis_energy.csv",
+        "basis_projection.csv", "basis_pages.csv", "basis_polynomials.h"})
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+  EXPECT_NE(slurp(out + "/basis_polynomials.h").find("kBasisDataTerms = 3;"), std::string::npos);
+  // Each page's least-squares residual over nested spans never grows with K (5 decimals printed).
+  const auto pages = records(slurp(out + "/basis_pages.csv"));
+  ASSERT_FALSE(pages.empty());
+  for (const auto& p : pages)
+    for (int k = 3; k <= 5; ++k)
+      EXPECT_LE(std::stod(p.at("refl_rms_k" + std::to_string(k))),
+                std::stod(p.at("refl_rms_k" + std::to_string(k - 1))))
+          << p.at("page") << " K=" << k;
+  EXPECT_NE(r.err.find("basis: "), std::string::npos) << "progress on stderr";
+}
+
+TEST(BasisCli, RefusesBadInputWritingNothing) {
+  test::TempDir tmp;
+  const std::string out = tmp.path() + "/basis";
+  for (const std::string& args :
+       {" basis --terms 0 --out " + out, " basis 'main/NoSuchBook/*' --out " + out}) {
+    const auto r = run_command(cli() + args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  }
+  const auto help = run_command(cli() + " basis --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--out"), std::string::npos);
+  EXPECT_NE(help.out.find("--degree"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fl
