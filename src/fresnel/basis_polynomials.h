@@ -45,6 +45,10 @@ inline constexpr double kBasisPolyRmsError[kBasisDataTerms] = {
 // The terms' singular values σ (energy σ²) before normalization.
 inline constexpr double kBasisSingularValues[kBasisDataTerms] = {
     7.4709234440078154, 4.7387675840104553, 0.42986643882002334};
+// Each term's hemispherical average 2∫₀¹ b(μ) μ dμ (Kulla & Conty 2017's F_avg; b0's is 1,
+// b1's 1/21).
+inline constexpr double kBasisAverage[kBasisDataTerms] = {
+    0.0049033714688689889, 0.096178397081245065, -0.020744672417337018};
 
 }  // namespace fl::fresnel
 // clang-format on

@@ -57,8 +57,9 @@ std::string basis_header(const analysis::FresnelBasis& b, const std::string& com
       "inline constexpr double kBasisPolyMu[kBasisDataTerms][kBasisPolyDegree + 1] = {{\n",
       float_max_mu);
   for (const auto& t : b.terms) h += fmt::format("    {{{}}},\n", numbers(t.poly_mu));
-  std::vector<double> max_error, rms_error, sigma;
+  std::vector<double> max_error, rms_error, sigma, average;
   for (size_t k = 0; k < terms; ++k) {
+    average.push_back(b.terms[k].average);
     max_error.push_back(b.terms[k].fit_max);
     rms_error.push_back(b.terms[k].fit_rms);
     sigma.push_back(b.svd.singular_values[k]);
@@ -71,10 +72,14 @@ std::string basis_header(const analysis::FresnelBasis& b, const std::string& com
       "inline constexpr double kBasisPolyRmsError[kBasisDataTerms] = {{\n    {}}};\n"
       "// The terms' singular values σ (energy σ²) before normalization.\n"
       "inline constexpr double kBasisSingularValues[kBasisDataTerms] = {{\n    {}}};\n"
+      "// Each term's hemispherical average 2∫₀¹ b(μ) μ dμ (Kulla & Conty 2017's F_avg; b0's is "
+      "1,\n"
+      "// b1's 1/21).\n"
+      "inline constexpr double kBasisAverage[kBasisDataTerms] = {{\n    {}}};\n"
       "\n"
       "}}  // namespace fl::fresnel\n"
       "// clang-format on\n",
-      b.mu.size(), numbers(max_error), numbers(rms_error), numbers(sigma));
+      b.mu.size(), numbers(max_error), numbers(rms_error), numbers(sigma), numbers(average));
   return h;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -13,6 +14,7 @@
 
 #include "analysis/basis/basis.h"
 #include "fresnel/basis.h"
+#include "fresnel/exact.h"
 
 namespace fl::analysis {
 namespace {
@@ -314,6 +316,60 @@ TEST(CommittedBasis, SampledTermsAreOrthogonalAndNormalized) {
       EXPECT_NEAR(dot(terms[a], terms[b]), 0.0,
                   kRoundoff * std::sqrt(dot(terms[a], terms[a]) * dot(terms[b], terms[b])))
           << "b" << a << " · b" << b;
+  }
+}
+
+// The polynomials are least-squares fits in a space holding 1 and (1 − μ)⁵ (degree ≥ 5) of vectors
+// orthogonal to both, so they stay orthogonal to both; to each other only up to the fit error.
+constexpr double kPolynomialCosineTolerance = 1e-3;
+
+TEST(CommittedBasis, PolynomialsAreOrthogonalToTheFixedTerms) {
+  ASSERT_GE(fresnel::kBasisPolyDegree, 5);
+  const Vec mu = basis_mu_samples(91);
+  std::vector<Vec> terms(fresnel::kBasisTerms);
+  for (int k = 0; k < fresnel::kBasisTerms; ++k)
+    for (double m : mu) terms[k].push_back(fresnel::basis_term(k, m));
+  for (int a = 2; a < fresnel::kBasisTerms; ++a)
+    for (int b = 0; b < a; ++b) {
+      const double cosine =
+          dot(terms[a], terms[b]) / std::sqrt(dot(terms[a], terms[a]) * dot(terms[b], terms[b]));
+      EXPECT_NEAR(cosine, 0.0, b < 2 ? kRoundoff : kPolynomialCosineTolerance)
+          << "b" << a << " · b" << b;
+    }
+}
+
+// Kulla & Conty 2017's F_avg = 2∫₀¹ b(μ) μ dμ of each committed term by composite Simpson's rule
+// (20000 intervals: error below 1e-12 for these polynomials).
+TEST(CommittedBasis, HemisphericalAveragesMatchQuadrature) {
+  constexpr int kIntervals = 20000;
+  for (int k = 2; k < fresnel::kBasisTerms; ++k) {
+    double s = 0;
+    for (int i = 0; i <= kIntervals; ++i) {
+      const double mu = double(i) / kIntervals;
+      const double w = (i == 0 || i == kIntervals) ? 1 : (i % 2 ? 4 : 2);
+      s += w * fresnel::basis_term(k, mu) * mu;
+    }
+    EXPECT_NEAR(2 * s / (3.0 * kIntervals), fresnel::kBasisAverage[k - 2], 1e-10) << "b" << k;
+  }
+}
+
+// fresnel::basis_coefficients (normal equations, Cholesky) against Projector (Eigen's QR) on
+// gold-like and glass-like exact Fresnel curves.
+TEST(CommittedBasis, CoefficientsMatchTheQrProjection) {
+  const Vec mu = basis_mu_samples(91);
+  for (const auto& [eta, kappa] : {std::pair{0.27, 2.95}, std::pair{1.5, 0.0}}) {
+    Vec f;
+    for (double m : mu)
+      f.push_back(fresnel::fresnel_conductor(m, std::complex<double>(eta, kappa)));
+    for (int terms = 2; terms <= fresnel::kBasisTerms; ++terms) {
+      std::vector<Vec> functions(terms);
+      for (int k = 0; k < terms; ++k)
+        for (double m : mu) functions[k].push_back(fresnel::basis_term(k, m));
+      const Vec expected = Projector(functions).coefficients(f);
+      const auto c = fresnel::basis_coefficients(mu, f, terms);
+      for (int k = 0; k < fresnel::kBasisTerms; ++k)
+        EXPECT_NEAR(c[k], k < terms ? expected[k] : 0.0, 1e-10) << "K=" << terms << " c" << k;
+    }
   }
 }
 

@@ -52,7 +52,7 @@ struct ResidualStack::Impl {
   double total_energy = 0, residual_energy = 0;
 };
 
-ResidualStack::ResidualStack(const std::vector<double>& mu) : impl_(new Impl) {
+ResidualStack::ResidualStack(const std::vector<double>& mu) : impl_(std::make_unique<Impl>()) {
   std::vector<std::vector<double>> fixed(2, std::vector<double>(mu.size()));
   for (size_t j = 0; j < mu.size(); ++j)
     for (int k = 0; k < 2; ++k) fixed[k][j] = basis_fixed_term(k, mu[j]);
@@ -61,9 +61,7 @@ ResidualStack::ResidualStack(const std::vector<double>& mu) : impl_(new Impl) {
   impl_->r = MatrixXd::Zero(mu.size(), mu.size());
 }
 
-ResidualStack::~ResidualStack() {
-  delete impl_;
-}
+ResidualStack::~ResidualStack() = default;
 
 void ResidualStack::add(const CurveRows& rows) {
   const int m = static_cast<int>(impl_->r.cols());

@@ -3,6 +3,7 @@
 // pages, the fixed terms 1 and (1 − μ)⁵ projected out, the leading left singular vectors of the
 // stacked residuals, each written as a polynomial in μ. Eigen stays inside basis.cpp.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -69,7 +70,7 @@ class ResidualStack {
 
  private:
   struct Impl;
-  Impl* impl_;
+  std::unique_ptr<Impl> impl_;
 };
 
 // Least-squares polynomial Σ c_i x^i (degree `degree`, c_0 first) through (x_j, f_j).
@@ -103,6 +104,7 @@ struct BasisTerm {
   double dense_max = 0;             // max |polynomial| on 10001 points of [0, 1]
   // Largest |float Horner − double| on those points, of poly (in x) and of poly_mu (in μ).
   double float_max = 0, float_max_mu = 0;
+  double average = 0;  // 2∫₀¹ b(μ) μ dμ, the hemispherical average (exact, from the coefficients)
   double operator()(double mu) const { return eval_polynomial(poly, 2 * mu - 1); }
 };
 

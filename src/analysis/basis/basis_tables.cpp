@@ -80,6 +80,7 @@ Table basis_polynomials_table(const FresnelBasis& b) {
                                      {"fit_rms", 3, true, true},
                                      {"float32_horner_max", 2, true, true},
                                      {"max_abs_on_0_1", 6},
+                                     full("hemispherical_average"),
                                      {"at_mu_0", 6},
                                      {"at_mu_1", 6}});
   for (size_t k = 0; k < b.terms.size(); ++k) {
@@ -98,7 +99,8 @@ Table basis_polynomials_table(const FresnelBasis& b) {
       "Least squares in x = 2μ − 1 on the samples of basis_functions; the same polynomial "
       "expanded in x = μ. fit_max_abs and fit_rms are its difference from the sampled singular "
       "vector there (whose max |b| is 1); float32_horner_max the largest difference between "
-      "Horner's rule in float and in double over 10001 points of [0, 1].";
+      "Horner's rule in float and in double over 10001 points of [0, 1]; hemispherical_average "
+      "2∫₀¹ b(μ) μ dμ (b0's is 1, b1's 1/21).";
   return t;
 }
 

@@ -138,6 +138,9 @@ BasisTerm make_term(const std::vector<double>& mu, const std::vector<double>& ve
   t.fit_rms = std::sqrt(sum2 / mu.size());
   for (int i = 0; i < kDensePoints; ++i)
     t.dense_max = std::max(t.dense_max, std::abs(t(double(i) / (kDensePoints - 1))));
+  // Kulla & Conty 2017, F_avg = 2∫₀¹ F(μ) μ dμ; with μ = (x + 1)/2 each x^i contributes
+  // ∫₋₁¹ x^i (x + 1) dx / 2: 1/(i + 2) for odd i, 1/(i + 1) for even i.
+  for (size_t i = 0; i < t.poly.size(); ++i) t.average += t.poly[i] / double(i % 2 ? i + 2 : i + 1);
   t.float_max = float_error(t.poly, 2.0, -1.0);
   t.float_max_mu = float_error(t.poly_mu, 1.0, 0.0);
   return t;
