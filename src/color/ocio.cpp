@@ -7,7 +7,9 @@
 #include <cmath>
 
 #include "color/colorimetry.h"
+#include "color/ocio_checks.h"
 #include "spectral/errors.h"
+#include "spectral/text_file.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -88,14 +90,19 @@ SpaceLibrary SpaceLibrary::builtin() {
   return lib;
 }
 
+// The file is checked as every input is (a regular file of bounded size), then the config
+// (ocio_checks.h: roles naming defined spaces, OCIO's validation, the XYZ space not data); each
+// space is checked when used (defined, not data, a matrix from and to the others).
 SpaceLibrary SpaceLibrary::from_config(const std::string& path, const std::string& xyz_space) {
   SpaceLibrary lib;
   auto impl = std::make_shared<Impl>();
+  spectral::check_input_file(path);
   try {
     impl->config = OCIO::Config::CreateFromFile(path.c_str());
   } catch (const OCIO::Exception& e) {
     throw InputError(path, 0, std::string("cannot load OCIO config: ") + e.what());
   }
+  validate_config(*impl->config, path);
   std::string xyz = xyz_space;
   if (xyz.empty()) {
     if (impl->config->hasRole("cie_xyz_d65_interchange"))
@@ -106,9 +113,8 @@ SpaceLibrary SpaceLibrary::from_config(const std::string& path, const std::strin
       throw InputError(path, 0,
                        "the config has no CIE XYZ D65 space (role cie_xyz_d65_interchange or a "
                        "space CIE-XYZ-D65); name one with --ocio-xyz");
-  } else if (!impl->config->getColorSpace(xyz.c_str())) {
-    throw InputError(path, 0, fmt::format("no colour space '{}' in the config", xyz));
   }
+  require_colour_space(*impl->config, path, xyz, "the CIE XYZ D65 space");
   impl->xyz_space = xyz;
   lib.impl_ = impl;
   lib.config_path_ = path;
@@ -145,9 +151,12 @@ Mat3 SpaceLibrary::conversion(const std::string& from, const std::string& to) co
       return processor_matrix(impl_->config->getProcessor(g), what);
     }
     for (const auto& n : {from, to})
-      if (!impl_->config->getColorSpace(n.c_str()))
-        throw InputError(config_path_, 0, fmt::format("no colour space '{}' in the config", n));
-    return processor_matrix(impl_->config->getProcessor(from.c_str(), to.c_str()), what);
+      require_colour_space(*impl_->config, config_path_, n, "converted as a colour");
+    try {
+      return processor_matrix(impl_->config->getProcessor(from.c_str(), to.c_str()), what);
+    } catch (const InputError& e) {
+      throw InputError(config_path_, 0, e.what());
+    }
   } catch (const OCIO::Exception& e) {
     throw InputError(fmt::format("OpenColorIO cannot build the {}: {}", what, e.what()));
   }

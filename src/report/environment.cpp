@@ -2,10 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
-#include <filesystem>
-
+#include "report/environment_image.h"
 #include "report/exr.h"
 #include "spectral/errors.h"
 
@@ -14,13 +11,6 @@ namespace {
 
 // Agreement of an EXR chromaticities attribute (float) with a space's primaries and white.
 constexpr double kChromaticityTol = 1e-3;
-
-int channel_index(const ExrImage& exr, const std::string& path, const char* name) {
-  const auto it = std::find(exr.channels.begin(), exr.channels.end(), name);
-  if (it == exr.channels.end())
-    throw InputError(path, 0, fmt::format("no {} channel: an environment needs R, G and B", name));
-  return static_cast<int>(it - exr.channels.begin());
-}
 
 // The colour space the file's pixels are in, and how that was decided.
 std::pair<std::string, std::string> file_space(const analysis::Context& ctx, const ExrImage& exr,
@@ -57,37 +47,18 @@ std::string LoadedEnvironment::description() const {
 LoadedEnvironment load_environment(const analysis::Context& ctx, const std::string& path,
                                    const std::string& space, double rotation_deg,
                                    double exposure_ev) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(path, 0, "no such environment file");
-  const ExrImage exr = read_exr(path);
-  if (exr.width != 2 * exr.height)
-    throw InputError(
-        path, 0,
-        fmt::format("{} × {} is not a latitude-longitude map (width must be twice the height)",
-                    exr.width, exr.height));
-  const int ch[3] = {channel_index(exr, path, "R"), channel_index(exr, path, "G"),
-                     channel_index(exr, path, "B")};
+  const ExrImage exr = read_exr(path);  // InputError for what is not a bounded regular EXR file
+  auto env = environment_image(exr, path);
   const auto [space_name, basis] = file_space(ctx, exr, path, space);
-  analysis::LatLongImage img;
-  img.width = exr.width;
-  img.height = exr.height;
-  img.rgb.resize(3 * static_cast<size_t>(exr.width) * exr.height);
-  long long clamped = 0;
-  const size_t nc = exr.channels.size();
-  for (size_t k = 0; k < img.rgb.size() / 3; ++k)
-    for (int c = 0; c < 3; ++c) {
-      const float v = exr.pixels[k * nc + ch[c]];
-      if (!std::isfinite(v))
-        throw InputError(path, 0,
-                         fmt::format("pixel ({}, {}) has a non-finite {} value", k % exr.width,
-                                     k / exr.width, "RGB"[c]));
-      if (v < 0.0f) ++clamped;
-      img.rgb[3 * k + c] = std::max(0.0f, v);
-    }
   double scale = 1;
-  auto map =
-      analysis::environment_map(ctx, std::move(img), space_name, rotation_deg, exposure_ev, scale);
-  return {std::move(map), space_name, basis, exr.width, exr.height, clamped, exposure_ev, scale};
+  try {
+    auto map = analysis::environment_map(ctx, std::move(env.image), space_name, rotation_deg,
+                                         exposure_ev, scale);
+    return {std::move(map), space_name,           basis,       exr.width,
+            exr.height,     env.clamped_negative, exposure_ev, scale};
+  } catch (const InputError& e) {
+    throw InputError(path, 0, e.what());
+  }
 }
 
 }  // namespace fl::report

@@ -24,8 +24,9 @@ struct LoadedEnvironment {
 // attribute, linear Rec.709 (OpenEXR's default chromaticities); converted into the working space
 // through OpenColorIO (analysis::environment_map). Negative values (lossy compression's ringing)
 // are read as 0 and counted; exposed as analysis::environment_map says. InputError naming the file
-// for an unreadable file, missing R, G or B channels, a non-finite value, a shape that is not 2:1,
-// or chromaticities no known space has.
+// for what read_exr and environment_image refuse (not a bounded regular EXR file, missing R, G or B
+// channels, a non-finite value, a shape that is not 2:1, no light), chromaticities no known space
+// has, or a mean luminance in the working space that is not a positive finite number.
 LoadedEnvironment load_environment(const analysis::Context& ctx, const std::string& path,
                                    const std::string& space, double rotation_deg,
                                    double exposure_ev);

@@ -34,7 +34,9 @@ void write_exr_atomic(const std::string& path, const ExrImage& image);
 std::uint16_t half_bits(float v);
 
 // Reads every channel of an EXR file as float pixels (any pixel type, scanline or tiled), with the
-// string and float attributes and the chromaticities. Throws InputError naming the file.
+// string and float attributes and the chromaticities. Throws InputError naming the file for what
+// spectral::check_input_file refuses, a data window that is empty or holds more than 2^28 values,
+// and whatever OpenEXR cannot read.
 ExrImage read_exr(const std::string& path);
 
 }  // namespace fl::report

@@ -14,6 +14,12 @@
 namespace fl::report {
 namespace {
 
+constexpr const char* kCoveragePolicy =
+    "Each material's extras state its data source; coverage, the share of 360-830 nm (weighted by "
+    "the illuminant × ȳ) that the data measures, for n and k together and each alone (coverage_k "
+    "null without k data); and extrapolated: true when the nearest measured value is held "
+    "somewhere, with the held range in uncovered (a colour computed there is not measured).";
+
 Json rgb_array(const color::Rgb& v) {
   return Json::array({v.r, v.g, v.b});
 }
@@ -53,7 +59,13 @@ Json dielectric(const analysis::ShadingPreset& p, Json& extras, std::set<std::st
 Json material(const analysis::Context& ctx, const analysis::MaterialStudy& s,
               std::set<std::string>& used) {
   const auto p = analysis::shading_preset(ctx, s);
-  Json extras{{"source", s.material->material.source}};
+  const auto& c = s.material->coverage;
+  Json extras{{"source", s.material->material.source},
+              {"coverage", c.both},
+              {"coverage_n", c.n},
+              {"coverage_k", c.k},  // NaN (written as null) without k data
+              {"extrapolated", c.extrapolated}};
+  if (c.extrapolated) extras["uncovered"] = c.uncovered;
   Json m{{"name", s.material->material.name}};
   if (p.metal) {
     auto base = stored_color(ctx, "f0", p.f0);
@@ -91,11 +103,15 @@ std::string presets_gltf(const analysis::Context& ctx,
              {"generator", "Fresnel Lab"},
              {"extras",
               {{"fresnelLab",
-                {{"setting", analysis::setting_note(ctx)}, {"out_of_range_policy", policy}}}}}}}};
+                {{"setting", analysis::setting_note(ctx)},
+                 {"coverage_policy", kCoveragePolicy},
+                 {"out_of_range_policy", policy}}}}}}}};
   if (!used.empty())
     doc["extensionsUsed"] = Json(std::vector<std::string>(used.begin(), used.end()));
   doc["materials"] = std::move(materials);
-  return write_json(doc, [](const std::string& key) { return key == "de00_stored" ? 4 : 6; });
+  return write_json(doc, [](const std::string& key) {
+    return key == "de00_stored" || key.rfind("coverage", 0) == 0 ? 4 : 6;
+  });
 }
 
 }  // namespace fl::report

@@ -15,7 +15,8 @@ namespace fl::report {
 // KHR_materials_transmission (factor 1, white base colour) when clear; opaque ones have a black
 // base colour (no diffuse). A factor outside [0, 1] is stored through analysis::into_unit_range;
 // each material's extras give the true value, the out_of_range list and the ΔE2000 the stored
-// colour costs at normal incidence.
+// colour costs at normal incidence. Every material's extras also state its data source, coverage
+// (n and k, each alone), whether it is extrapolated and where (asset.extras explain these).
 inline constexpr double kSpecularColorMin = 1e-3;
 std::string presets_gltf(const analysis::Context& ctx,
                          const std::vector<analysis::MaterialStudy>& studies);

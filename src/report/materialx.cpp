@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cmath>
 
 #include "analysis/tables/shading_presets.h"
 #include "analysis/tables/tables.h"
@@ -128,8 +129,34 @@ std::string shader_nodes(const std::string& id, const analysis::ShadingPreset& p
   return s + fmt::format("  </{}>\n", node);
 }
 
+// What a material's data is and how much of the visible range it measures, for its doc attribute.
+std::string provenance(const analysis::LoadedMaterial& m) {
+  const auto& c = m.coverage;
+  std::string s = fmt::format(
+      "{}: {}; coverage {:.4f} (n {:.4f}, k {})", m.material.name, m.material.source, c.both, c.n,
+      std::isnan(c.k) ? std::string("not given") : fmt::format("{:.4f}", c.k));
+  if (!c.extrapolated) return s + "; extrapolated: no";
+  return s + "; extrapolated: yes, " + c.uncovered + " (the nearest measured value is held there)";
+}
+
+// How many of the materials hold a nearest value somewhere, and the lowest coverage.
+std::string extrapolation_summary(const std::vector<analysis::MaterialStudy>& studies) {
+  int held = 0;
+  const analysis::LoadedMaterial* lowest = nullptr;
+  for (const auto& s : studies) {
+    held += s.material->coverage.extrapolated;
+    if (!lowest || s.material->coverage.both < lowest->coverage.both) lowest = s.material;
+  }
+  std::string out = fmt::format("{} of {} materials are extrapolated", held, studies.size());
+  if (lowest)
+    out += fmt::format("; the lowest coverage is {:.4f} ({})", lowest->coverage.both,
+                       lowest->material.name);
+  return out + ".";
+}
+
 std::string document_comment(const analysis::Context& ctx, const MaterialxSpace& space,
-                             MaterialxShader shader) {
+                             MaterialxShader shader,
+                             const std::vector<analysis::MaterialStudy>& studies) {
   const char* model = shader == MaterialxShader::GeneralizedSchlick
                           ? "generalized_schlick_bsdf with color0 = F0 and color82 = the F82 tint "
                             "(true F82 / Schlick at arccos(1/7)); "
@@ -150,10 +177,13 @@ std::string document_comment(const analysis::Context& ctx, const MaterialxSpace&
       model, analysis::setting_note(ctx));
   if (!space.note.empty()) c += " " + space.note + ".";
   c += fmt::format(
-      " Colours are unclamped; each material's doc attribute lists those below 0 or above 1 by "
-      "more than "
-      "{:g} (out_of_range). -->\n",
-      analysis::kOutOfRangeTolerance);
+      " Each material's doc attribute states its data source; its coverage, the share of 360-830 "
+      "nm (weighted by the illuminant × ȳ) that the data measures, for n and k together and each "
+      "alone; whether it is extrapolated, the nearest measured value held where the data stops "
+      "({}); and the colours below 0 or above 1 by more than {:g} (out_of_range), which are kept "
+      "unclamped. {} -->\n",
+      "a colour computed there is not measured", analysis::kOutOfRangeTolerance,
+      extrapolation_summary(studies));
   return c;
 }
 
@@ -165,14 +195,14 @@ std::string presets_materialx(const analysis::Context& ctx,
   const MaterialxSpace space = materialx_space(ctx);
   std::string out =
       "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\" colorspace=\"" + space.name + "\">\n";
-  out += document_comment(ctx, space, shader);
+  out += document_comment(ctx, space, shader, studies);
   for (const auto& s : studies) {
     const auto p = analysis::shading_preset(ctx, s);
     const std::string id = node_id(s.material->material.key);
     Writer w{space, {}};
     out += shader_nodes(id, p, shader, w);
     const std::string flags = analysis::out_of_range_list(w.flags);
-    std::string doc = s.material->material.name + ": " + s.material->material.source;
+    std::string doc = provenance(*s.material);
     if (!flags.empty()) doc += "; out_of_range: " + flags;
     out += fmt::format(
         "  <surfacematerial name=\"{0}\" type=\"material\" doc=\"{1}\">\n"

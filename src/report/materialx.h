@@ -30,7 +30,9 @@ struct MaterialxSpace {
 MaterialxSpace materialx_space(const analysis::Context& ctx);
 
 // Every material of `studies` as a surfacematerial; each carries a `doc` attribute with its data
-// source and its out_of_range list (analysis/tables/shading_presets.h).
+// source, its coverage (n and k, each alone), whether it is extrapolated and where, and its
+// out_of_range list (analysis/tables/shading_presets.h). The document's comment explains these and
+// counts the extrapolated materials.
 std::string presets_materialx(const analysis::Context& ctx,
                               const std::vector<analysis::MaterialStudy>& studies,
                               MaterialxShader shader);

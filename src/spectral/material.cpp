@@ -13,6 +13,7 @@
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
 #include "util/parallel.h"
+#include "util/suggest.h"
 
 namespace fl::spectral {
 namespace fs = std::filesystem;
@@ -42,6 +43,12 @@ std::string lower(std::string s) {
   return s;
 }
 
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
 std::string database_file(const DataPaths& paths, const std::string& page) {
   return paths.database + "/data/" + page + ".yml";
 }
@@ -57,11 +64,67 @@ std::string scalar(const YamlNode& root, const char* key, const std::string& pat
   return n.scalar();
 }
 
+// InputError at the first key of `map` that is not one of `known`, with the nearest known key
+// when one is close.
+void require_known_keys(const YamlNode& map, const std::vector<std::string>& known,
+                        const std::string& path, const std::string& where) {
+  for (const auto& [key, value] : map.fields()) {
+    const std::string name = key.is_scalar() ? key.scalar() : std::string();
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+    const std::string hint = did_you_mean(name, known);
+    throw InputError(
+        path, key.line() + 1,
+        fmt::format("unknown key '{}' in {}{}", key.is_scalar() ? name : "(a list or map)", where,
+                    hint.empty() ? " (expected " + join(known) + ")" : hint));
+  }
+}
+
+// The keys a catalog entry may have; any other is an InputError at its line, suggesting the nearest
+// of these when one is close (a misspelt optional key would otherwise be silently ignored).
+const std::vector<std::string> kEntryKeys{
+    "name", "class", "reference", "order", "talk_schlick_rms_de00", "source", "file", "constant"};
+
+}  // namespace
+
+namespace {
+
+// The catalog's entry files (*.yml, *.yaml), sorted; InputError when the folder is missing or
+// cannot be listed.
+std::vector<std::string> catalog_files(const std::string& folder) {
+  std::vector<std::string> files;
+  for (auto& f : list_folder(folder, "material catalog folder")) {
+    const auto ext = fs::path(f).extension();
+    if (ext == ".yml" || ext == ".yaml") files.push_back(std::move(f));
+  }
+  return files;
+}
+
+// Keys and names select entries case-insensitively (resolve_material): two entries may not share
+// either. InputError at the later entry's name, naming the earlier one.
+void require_unique_names(const std::vector<std::string>& files, const std::vector<Material>& ms) {
+  std::map<std::string, size_t> keys, names;
+  for (size_t i = 0; i < ms.size(); ++i) {
+    if (const auto [it, added] = keys.emplace(lower(ms[i].key), i); !added)
+      throw InputError(files[i], 0,
+                       fmt::format("catalog key '{}' is also the key of {} (keys are compared "
+                                   "ignoring case)",
+                                   ms[i].key, files[it->second]));
+    if (const auto [it, added] = names.emplace(lower(ms[i].name), i); !added) {
+      const auto line = [](const std::string& f) { return read_yaml_file(f)["name"].line() + 1; };
+      throw InputError(files[i], line(files[i]),
+                       fmt::format("name '{}' is already the name of {}:{} (names are compared "
+                                   "ignoring case)",
+                                   ms[i].name, files[it->second], line(files[it->second])));
+    }
+  }
+}
+
 }  // namespace
 
 Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
   const YamlNode root = read_yaml_file(path);
   if (!root.is_map()) throw InputError(path, 1, "a catalog entry must be a YAML map");
+  require_known_keys(root, kEntryKeys, path, "a catalog entry");
   Material m;
   m.key = fs::path(path).stem().string();
   m.name = scalar(root, "name", path, true);
@@ -107,6 +170,7 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
     try {
       if (!c.is_map() || !c["n"])
         throw InputError(path, c.line() + 1, "'constant' needs n (and optional k)");
+      require_known_keys(c, {"n", "k"}, path, "'constant'");
       if (!parse_finite(c["n"].as_string(), n) || (c["k"] && !parse_finite(c["k"].as_string(), k)))
         throw InputError(path, c.line() + 1, "'constant' n and k must be finite numbers");
     } catch (const YamlError& e) {
@@ -121,17 +185,11 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
 }
 
 std::vector<Material> read_catalog(const DataPaths& paths) {
-  std::error_code ec;
-  if (!fs::is_directory(paths.materials, ec))
-    throw InputError(paths.materials, 0, "material catalog folder not found");
-  std::vector<std::string> files;
-  for (const auto& e : fs::directory_iterator(paths.materials))
-    if (e.path().extension() == ".yml" || e.path().extension() == ".yaml")
-      files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
+  const std::vector<std::string> files = catalog_files(paths.materials);
   // Read concurrently; the first broken entry in file order is the one reported.
   std::vector<Material> out(files.size());
   parallel_for_all(files.size(), [&](size_t i) { out[i] = read_catalog_entry(files[i], paths); });
+  require_unique_names(files, out);
   std::stable_sort(out.begin(), out.end(),
                    [](const Material& a, const Material& b) { return a.order < b.order; });
   return out;
@@ -143,26 +201,27 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
   std::error_code ec;
   if (fs::is_directory(paths.materials, ec)) {
     const std::string want = lower(spec);
-    for (const auto& e : fs::directory_iterator(paths.materials)) {
-      const auto ext = e.path().extension();
-      if (ext != ".yml" && ext != ".yaml") continue;
-      if (lower(e.path().stem().string()) == want)
-        return read_catalog_entry(e.path().string(), paths);
-    }
-    for (const auto& e : fs::directory_iterator(paths.materials)) {
-      const auto ext = e.path().extension();
-      if (ext != ".yml" && ext != ".yaml") continue;
+    const std::vector<std::string> files = catalog_files(paths.materials);
+    for (const auto& f : files)
+      if (lower(fs::path(f).stem().string()) == want) return read_catalog_entry(f, paths);
+    std::vector<std::string> named;
+    for (const auto& f : files) {
       // A file that cannot be read as YAML names nothing here; the entry that matches is then read
       // with every error it has.
-      bool named = false;
       try {
-        const YamlNode root = read_yaml_file(e.path().string());
-        named = root.is_map() && root["name"] && lower(root["name"].as_string()) == want;
+        const YamlNode root = read_yaml_file(f);
+        if (root.is_map() && root["name"] && lower(root["name"].as_string()) == want)
+          named.push_back(f);
       } catch (const YamlError&) {
       } catch (const InputError&) {
       }
-      if (named) return read_catalog_entry(e.path().string(), paths);
     }
+    if (named.size() > 1) {
+      std::vector<Material> ms;
+      for (const auto& f : named) ms.push_back(read_catalog_entry(f, paths));
+      require_unique_names(named, ms);
+    }
+    if (!named.empty()) return read_catalog_entry(named.front(), paths);
   }
   // A file path.
   if (fs::exists(spec, ec)) {

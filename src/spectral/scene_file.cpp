@@ -5,9 +5,19 @@
 #include "spectral/errors.h"
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
+#include "util/suggest.h"
 
 namespace fl::spectral {
 namespace {
+
+// " (did you mean 'X'?)" when a known name is close, else " (expected A, B, C)".
+std::string hint_or_list(const std::string& name, const std::vector<std::string>& known) {
+  const std::string hint = did_you_mean(name, known);
+  if (!hint.empty()) return hint;
+  std::string list;
+  for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+  return " (expected " + list + ")";
+}
 
 int line_of(const YamlNode& n) {
   return n.line() + 1;
@@ -54,8 +64,9 @@ SceneFileMaterial scene_material(const std::string& path, const YamlNode& m) {
     else if (key == "roughness")
       out.roughness = roughness_list(path, kv.second, line_of(kv.first));
     else
-      throw InputError(path, line_of(kv.first),
-                       fmt::format("unknown material key '{}' (expected name, roughness)", key));
+      throw InputError(
+          path, line_of(kv.first),
+          "unknown material key '" + key + "'" + hint_or_list(key, {"name", "roughness"}));
   }
   if (out.spec.empty())
     throw InputError(path, out.line, "a material given as a map needs a 'name'");
@@ -114,15 +125,15 @@ SceneFile read_scene_file(const std::string& path) {
         else
           throw InputError(
               path, line_of(*x),
-              fmt::format("unknown lighting '{}' (expected punctual, ibl or area)", l));
+              "unknown lighting '" + l + "'" + hint_or_list(l, {"punctual", "ibl", "area"}));
       }
     } else if (key == "roughness") {
       s.roughness = roughness_list(path, v, line);
     } else {
       throw InputError(
           path, line,
-          fmt::format("unknown key '{}' (expected materials, max_de00, space, lighting, roughness)",
-                      key));
+          "unknown key '" + key + "'" +
+              hint_or_list(key, {"materials", "max_de00", "space", "lighting", "roughness"}));
     }
   }
   if (!have_materials)

@@ -1,11 +1,17 @@
 #include "spectral/text_file.h"
 
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "spectral/errors.h"
 
@@ -13,19 +19,35 @@ namespace fl::spectral {
 
 namespace {
 
-// The file's bytes.
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot be opened for reading");
-  std::string raw;
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec) raw.reserve(size);
-  char chunk[1 << 16];
-  while (in.read(chunk, sizeof chunk) || in.gcount() > 0)
-    raw.append(chunk, static_cast<size_t>(in.gcount()));
-  return raw;
+std::string kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "is a directory, expected a file";
+  if (S_ISFIFO(mode)) return "is a FIFO (named pipe), expected a regular file";
+  if (S_ISCHR(mode)) return "is a character device, expected a regular file";
+  if (S_ISBLK(mode)) return "is a block device, expected a regular file";
+  if (S_ISSOCK(mode)) return "is a socket, expected a regular file";
+  return "is not a regular file";
 }
+
+std::string limit_text(std::uintmax_t max_bytes) {
+  return max_bytes % (1 << 20) == 0 ? fmt::format("{} MiB", max_bytes >> 20)
+                                    : fmt::format("{} bytes", max_bytes);
+}
+
+void check_status(const std::string& path, const struct stat& st, std::uintmax_t max_bytes) {
+  if (!S_ISREG(st.st_mode)) throw InputError(path, 0, kind_of(st.st_mode));
+  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes)
+    throw InputError(path, 0,
+                     fmt::format("is {} bytes, more than the {} an input file may hold",
+                                 static_cast<std::uintmax_t>(st.st_size), limit_text(max_bytes)));
+}
+
+// Closes a file descriptor on every path out.
+struct Descriptor {
+  int fd;
+  ~Descriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
 
 // Whether a byte needs read_text_file's attention: a carriage return or a control byte other than
 // a tab or a line feed.
@@ -35,13 +57,60 @@ bool special(unsigned char c) {
 
 }  // namespace
 
-std::string read_text_file(const std::string& path) {
+void check_input_file(const std::string& path, std::uintmax_t max_bytes) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT || errno == ENOTDIR) throw InputError(path, 0, "no such file");
+    throw InputError(path, 0, fmt::format("cannot be read ({})", std::strerror(errno)));
+  }
+  check_status(path, st, max_bytes);
+}
+
+std::string read_input_bytes(const std::string& path, std::uintmax_t max_bytes) {
+  check_input_file(path, max_bytes);
+  // O_NONBLOCK: should the path have become a FIFO since the check, open() does not wait for a
+  // writer; fstat then refuses it.
+  const Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  if (file.fd < 0)
+    throw InputError(path, 0,
+                     fmt::format("cannot be opened for reading ({})", std::strerror(errno)));
+  struct stat st {};
+  if (::fstat(file.fd, &st) != 0)
+    throw InputError(path, 0, fmt::format("cannot be read ({})", std::strerror(errno)));
+  check_status(path, st, max_bytes);
+  std::string raw;
+  raw.reserve(static_cast<size_t>(st.st_size));
+  char chunk[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(file.fd, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw InputError(path, 0, fmt::format("cannot be read ({})", std::strerror(errno)));
+    if (n == 0) break;
+    if (raw.size() + static_cast<size_t>(n) > max_bytes)  // grew while being read
+      throw InputError(path, 0,
+                       fmt::format("grew past the {} an input file may hold while being read",
+                                   limit_text(max_bytes)));
+    raw.append(chunk, static_cast<size_t>(n));
+  }
+  return raw;
+}
+
+std::vector<std::string> list_folder(const std::string& dir, const std::string& what) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const auto status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) throw InputError(path, 0, "no such file");
-  if (fs::is_directory(status)) throw InputError(path, 0, "is a directory, expected a file");
-  std::string raw = read_bytes(path);
+  const auto status = fs::status(dir, ec);
+  if (!fs::exists(status)) throw InputError(dir, 0, what + " not found");
+  if (!fs::is_directory(status)) throw InputError(dir, 0, what + " is not a folder");
+  std::vector<std::string> out;
+  fs::directory_iterator it(dir, ec), end;
+  for (; !ec && it != end; it.increment(ec)) out.push_back(it->path().string());
+  if (ec) throw InputError(dir, 0, fmt::format("{} cannot be listed ({})", what, ec.message()));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string read_text_file(const std::string& path) {
+  std::string raw = read_input_bytes(path);
   const size_t bom = raw.size() >= 3 && static_cast<unsigned char>(raw[0]) == 0xEF &&
                              static_cast<unsigned char>(raw[1]) == 0xBB &&
                              static_cast<unsigned char>(raw[2]) == 0xBF

@@ -115,9 +115,17 @@ class YamlBuilder {
     } else if (event_.type == YAML_MAPPING_START_EVENT) {
       take_anchor(event_.data.mapping_start.anchor);
       out.kind_ = YamlNode::Kind::Map;
+      std::map<std::string, int> keys;  // a scalar key's first line
       for (next(); event_.type != YAML_MAPPING_END_EVENT; next()) {
         auto& field = out.fields_.emplace_back();
         node(field.first, depth + 1);
+        if (field.first.is_scalar()) {
+          const auto [first, added] = keys.emplace(field.first.text_, field.first.line_);
+          if (!added)
+            throw YamlError(field.first.line_, "repeated key '" + field.first.text_ +
+                                                   "' (first at line " +
+                                                   std::to_string(first->second + 1) + ")");
+        }
         next();
         node(field.second, depth + 1);
       }

@@ -30,8 +30,7 @@ class YamlNode {
   bool is_map() const { return kind_ == Kind::Map; }
   int line() const { return line_; }  // 0-based, where the node starts
 
-  // The value under `key` (the first, if a map repeats it); undefined when this is not a map or
-  // has no such key.
+  // The value under `key`; undefined when this is not a map or has no such key.
   const YamlNode& operator[](std::string_view key) const;
   // A scalar's text ("" for anything else).
   const std::string& scalar() const { return text_; }
@@ -54,7 +53,8 @@ class YamlNode {
 
 // The first document of `text` (a null node when there is none). A syntax error is a YamlError at
 // the line libyaml found it, its message libyaml's ("did not find expected ',' or '}'"); so is text
-// that is not UTF-8, collections nested deeper than kMaxYamlDepth, and a document of more than
+// that is not UTF-8, a map that repeats a key (YAML requires unique keys; libyaml does not check),
+// collections nested deeper than kMaxYamlDepth, and a document of more than
 // kMaxYamlNodes nodes once its aliases are copied (a few aliases of aliases can stand for
 // billions).
 inline constexpr int kMaxYamlDepth = 1000;

@@ -11,6 +11,7 @@
 
 #include "analysis/render/render.h"
 #include "quadrature.h"
+#include "spectral/errors.h"
 
 namespace fl {
 namespace {
@@ -227,6 +228,21 @@ TEST(Environment, Rec709IsConvertedToAcescgAndExposed) {
                             kPi, 0.5) /
                         (4 * kPi);
     EXPECT_NEAR(mean, std::exp2(ev), 1e-3 * std::exp2(ev));
+  }
+}
+
+// A map without light cannot be exposed to a mean luminance: refused, not rendered black.
+TEST(Environment, ABlackMapIsRefused) {
+  const analysis::Context ctx(ctx_settings());
+  double scale = 0;
+  const auto black = image(16, 8, [](int, int) { return color::Rgb{0, 0, 0}; });
+  try {
+    analysis::environment_map(ctx, black, "lin_rec709", 0.0, 0.0, scale);
+    FAIL() << "a black environment was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "the environment's mean luminance in acescg is 0, not a positive number: nothing "
+                 "to expose");
   }
 }
 

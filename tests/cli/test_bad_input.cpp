@@ -3,6 +3,7 @@
 // the problem, nothing on stdout and no output file; byte-order marks and CRLF line endings are
 // valid input (tests/good_input/).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -166,6 +167,15 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
       args += "--illuminant " + target.substr(15, target.size() - 15 - 3) + " ";
     args += "reproduce --out " + quote(out_dir);
     env = "FRESNEL_LAB_COLORD=" + quote(colord);
+  } else if (c.command.rfind("ocio:", 0) == 0) {  // ocio:SPACE, the config's working space
+    file = kBadDir + "/" + c.reader + "/" + c.file;
+    args = "--materials " + quote(empty_catalog) + " --ocio-config " + quote(file) + " --space " +
+           quote(c.command.substr(5)) + " curve " + quote(kGoodDir + "/nk_no_k.csv");
+    writes_output = false;
+  } else if (c.command == "render-env") {  // environment maps
+    file = kBadDir + "/" + c.reader + "/" + c.file;
+    args = "--materials " + quote(empty_catalog) + " render " + quote(kGoodDir + "/nk_no_k.csv") +
+           " --env " + quote(file) + " --size 9 --samples 1 --out " + quote(out_dir / "r.exr");
   } else if (c.command == "plan") {  // scene files
     file = c.file == "<missing>" ? (s.dir / "does_not_exist.yaml").string()
                                  : kBadDir + "/" + c.reader + "/" + c.file;
@@ -195,12 +205,81 @@ TEST(BadInputCorpus, EveryCorpusEntryIsInTheManifestAndThereAreAtLeast30) {
   for (const auto& c : load_manifest())
     if (c.file != "<missing>") listed.insert(c.reader + "/" + c.file);
   std::set<std::string> present;
-  for (const char* reader : {"ri_yaml", "csv", "text", "sopra", "spd", "cgats", "catalog", "scene"})
+  for (const char* reader :
+       {"ri_yaml", "csv", "text", "sopra", "spd", "cgats", "catalog", "scene", "ocio", "env"})
     for (const auto& e : fs::directory_iterator(kBadDir + "/" + reader))
       present.insert(std::string(reader) + "/" + e.path().filename().string());
   EXPECT_EQ(listed, present);
   constexpr size_t kMinimumCorpus = 30;
   EXPECT_GE(present.size(), kMinimumCorpus);
+}
+
+// ---- Inputs that are not regular files, and folders that cannot be listed. ----
+
+// The one-line error of a run that must be refused as bad input (exit 2, nothing on stdout).
+std::string refused(const Result& r) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  return r.err;
+}
+
+TEST(SpecialInputs, FifoAndDevicesAreRefusedWithoutReading) {
+  Scratch s("special");
+  const fs::path fifo = s.dir / "pipe.csv";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // Nothing ever writes to the FIFO: a tool that opened it would wait until CTest's timeout.
+  EXPECT_NE(refused(run_cli(s.dir, "curve " + quote(fifo)))
+                .find(fifo.string() + ": is a FIFO (named pipe), expected a regular file"),
+            std::string::npos);
+  EXPECT_NE(refused(run_cli(s.dir, "curve /dev/zero"))
+                .find("/dev/zero: is a character device, expected a regular file"),
+            std::string::npos);
+  EXPECT_NE(refused(run_cli(s.dir, "--ocio-config " + quote(fifo) + " --space ACEScg curve gold"))
+                .find(fifo.string() + ": is a FIFO"),
+            std::string::npos);
+  const fs::path fifo_exr = s.dir / "pipe.exr";
+  ASSERT_EQ(::mkfifo(fifo_exr.c_str(), 0600), 0);
+  EXPECT_NE(refused(run_cli(s.dir, "render gold --env " + quote(fifo_exr) + " --out " +
+                                       quote(s.dir / "out/r.exr")))
+                .find(fifo_exr.string() + ": is a FIFO"),
+            std::string::npos);
+  EXPECT_EQ(count_files(s.dir / "out"), 0u);
+}
+
+TEST(SpecialInputs, AnUnreadableCatalogFolderIsBadInput) {
+  Scratch s("unreadable");
+  const fs::path catalog = s.dir / "catalog";
+  fs::create_directories(catalog);
+  std::ofstream(catalog / "glass.yml") << "name: Glass\nclass: dielectric\nconstant: {n: 1.5}\n";
+  fs::permissions(catalog, fs::perms::none);
+  fs::permissions(s.dir, fs::perms::all);  // the unprivileged user writes stdout.txt here
+  // Permissions do not bind root: run as nobody then (util-linux's setpriv).
+  const std::string as =
+      ::geteuid() == 0 ? "setpriv --reuid=nobody --regid=nogroup --clear-groups " : "";
+  if (!as.empty() && std::system("command -v setpriv >/dev/null") != 0)
+    GTEST_SKIP() << "running as root without setpriv";
+  const Result r = run_cli(s.dir, "--materials " + quote(catalog) + " materials", as);
+  fs::permissions(catalog, fs::perms::owner_all);
+  EXPECT_NE(refused(r).find(catalog.string() +
+                            ": material catalog folder cannot be listed (Permission denied)"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(SpecialInputs, CatalogNamesAreUnique) {
+  Scratch s("duplicate");
+  const fs::path catalog = s.dir / "catalog";
+  fs::create_directories(catalog);
+  std::ofstream(catalog / "a.yml") << "name: Glass\nclass: dielectric\nconstant: {n: 1.5}\n";
+  std::ofstream(catalog / "b.yml") << "class: dielectric\nname: GLASS\nconstant: {n: 1.6}\n";
+  const std::string want = (catalog / "b.yml").string() +
+                           ":2: name 'GLASS' is already the name of " +
+                           (catalog / "a.yml").string() + ":1";
+  for (const char* command : {"materials", "presets glass"})
+    EXPECT_NE(refused(run_cli(s.dir, "--materials " + quote(catalog) + " " + command)).find(want),
+              std::string::npos)
+        << command;
 }
 
 // ---- Valid inputs: BOM, CRLF and CR line endings change nothing. ----

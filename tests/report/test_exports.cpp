@@ -195,6 +195,62 @@ TEST(Exports, GltfOutOfRangePolicyOnGold) {
   EXPECT_LT(de, de2000_rec709(truth, scaled));
 }
 
+// The `doc` attributes of a MaterialX document, in order.
+std::vector<std::string> doc_attributes(const std::string& mtlx) {
+  std::vector<std::string> out;
+  for (size_t p = mtlx.find(" doc=\""); p != std::string::npos; p = mtlx.find(" doc=\"", p + 1))
+    out.push_back(mtlx.substr(p + 6, mtlx.find('"', p + 6) - p - 6));
+  return out;
+}
+
+// Exports state where their data comes from and how much of 360-830 nm it measures, as the presets
+// table does for the same materials: Chen's gold (its published data stops at 605 nm: coverage
+// 0.86, extrapolated) and a lossless file measured over the whole range (coverage 1, no k data).
+TEST(Exports, ProvenanceStatesSourceCoverageAndExtrapolation) {
+  test::TempDir tmp;
+  const std::string full = tmp.file("full.csv", "lambda_nm,n\n350,1.52\n600,1.51\n850,1.50\n");
+  const std::string args = "--space lin_rec709 presets main/Au/nk/Chen '" + full + "' --format ";
+  const auto table = csv_rows(run_ok(args + "csv"));
+  const auto mtlx = run_ok(args + "mtlx");
+  const auto gltf = nlohmann::json::parse(run_ok(args + "gltf"));
+  ASSERT_EQ(table.size(), 2u);
+  constexpr double kIssueCoverage = 0.86, kIssueCoverageDigits = 0.005;
+  EXPECT_NEAR(std::stod(table[0].at("coverage")), kIssueCoverage, kIssueCoverageDigits);
+  EXPECT_EQ(table[0].at("extrapolated"), "yes");
+  EXPECT_EQ(table[1].at("coverage"), "1.0000");
+  EXPECT_EQ(table[1].at("extrapolated"), "no");
+  const auto docs = doc_attributes(mtlx);
+  ASSERT_EQ(docs.size(), 2u);
+  ASSERT_EQ(gltf.at("materials").size(), 2u);
+  const std::string sources[2] = {"main/Au/nk/Chen", full};
+  for (size_t i = 0; i < 2; ++i) {
+    const auto& row = table[i];
+    EXPECT_EQ(docs[i].rfind(row.at("material") + ": " + sources[i] + "; coverage " +
+                                row.at("coverage") + " (n " + row.at("coverage_n") + ", k ",
+                            0),
+              0u)
+        << docs[i];
+    EXPECT_NE(docs[i].find("; extrapolated: " + row.at("extrapolated")), std::string::npos)
+        << docs[i];
+    const auto& x = gltf["materials"][i]["extras"]["fresnelLab"];
+    EXPECT_EQ(x.at("source"), sources[i]);
+    EXPECT_NEAR(x.at("coverage").get<double>(), std::stod(row.at("coverage")), 5e-5);
+    EXPECT_NEAR(x.at("coverage_n").get<double>(), std::stod(row.at("coverage_n")), 5e-5);
+    EXPECT_EQ(x.at("extrapolated").get<bool>(), row.at("extrapolated") == "yes");
+    EXPECT_EQ(x.contains("uncovered"), row.at("extrapolated") == "yes");
+  }
+  // Chen: the held range is named; the lossless file has no k data.
+  EXPECT_NE(docs[0].find("extrapolated: yes, n and k data does not cover 605-830 nm"),
+            std::string::npos)
+      << docs[0];
+  EXPECT_TRUE(gltf["materials"][1]["extras"]["fresnelLab"].at("coverage_k").is_null());
+  EXPECT_NE(docs[1].find("k not given"), std::string::npos) << docs[1];
+  EXPECT_NE(mtlx.find("1 of 2 materials are extrapolated; the lowest coverage is " +
+                      table[0].at("coverage") + " (main/Au/nk/Chen)"),
+            std::string::npos);
+  EXPECT_TRUE(gltf.at("asset").at("extras").at("fresnelLab").contains("coverage_policy"));
+}
+
 TEST(Exports, GltfRefusesOtherSpaces) {
   const auto r = test::run_command(test::cli() + " -q presets --format gltf");
   EXPECT_EQ(r.status, 2);

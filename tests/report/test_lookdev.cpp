@@ -216,7 +216,7 @@ TEST(RenderCli, BadEnvironmentsExitTwoWithOneLine) {
   test::TempDir tmp;
   const std::string out = " --size 9 --samples 2 --out '" + tmp.path() + "/o.exr'";
   const std::vector<std::pair<std::string, std::string>> cases{
-      {tmp.path() + "/missing.exr", "no such environment file"},
+      {tmp.path() + "/missing.exr", "no such file"},
       {tmp.file("junk.exr", "not an exr"), "cannot read EXR"},
       {exr_file(tmp, "square.exr", 8, 8, {"B", "G", "R"}, 1.0f), "not a latitude-longitude map"},
       {exr_file(tmp, "no_green.exr", 8, 4, {"B", "R"}, 1.0f), "no G channel"},

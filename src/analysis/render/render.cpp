@@ -1,5 +1,7 @@
 #include "analysis/render/render.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -8,6 +10,7 @@
 #include "analysis/tables/tables.h"
 #include "color/lab.h"
 #include "fresnel/ground_truth.h"
+#include "spectral/errors.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {
@@ -425,7 +428,13 @@ EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std
     weighted += sin_theta * (luminance.r * o[0] + luminance.g * o[1] + luminance.b * o[2]);
     solid_angle += sin_theta;
   }
-  scale = weighted > 0 ? std::exp2(exposure_ev) * solid_angle / weighted : 1.0;
+  // A dark image cannot be exposed to a mean luminance: every render would be black, and ΔE2000
+  // between black renders 0 whatever the model.
+  if (!(weighted > 0) || !std::isfinite(weighted))
+    throw InputError(fmt::format(
+        "the environment's mean luminance in {} is {:g}, not a positive number: nothing to expose",
+        ctx.settings().space, weighted / solid_angle));
+  scale = std::exp2(exposure_ev) * solid_angle / weighted;
   for (auto& v : image.rgb) v = static_cast<float>(v * scale);
   return EnvironmentMap(std::move(image), luminance, rotation_deg);
 }
