@@ -4,8 +4,12 @@
 #include <chrono>
 #include <memory>
 
+#include "analysis/consensus/consensus.h"
 #include "analysis/library/library.h"
+#include "analysis/tables/tables.h"
 #include "cli/app.h"
+#include "documents/gltf.h"
+#include "documents/materialx.h"
 #include "documents/table_formats.h"
 #include "jobs/library_files.h"
 #include "spectral/errors.h"
@@ -92,6 +96,94 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
               "library: {} of {} pages in the library, {} skipped; wrote {} files to {} ({:.1f} s)",
               lib.studies.size(), lib.set.requested, lib.set.skipped.size(), files.size(), a->out,
               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
+      return 0;
+    };
+  });
+}
+
+namespace {
+
+std::vector<analysis::ConsensusRequest> requests_of(const GlobalOptions& g,
+                                                    const std::vector<std::string>& specs) {
+  std::vector<analysis::ConsensusRequest> out;
+  for (const auto& spec : specs) out.push_back(analysis::consensus_request(g.settings.paths, spec));
+  return out;
+}
+
+}  // namespace
+
+int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
+                      const std::string& format, bool openpbr, const std::string& shader_name) {
+  const bool document = format == "mtlx" || format == "gltf";
+  if (!document) report::format_from_name(format);  // validate before the work
+  const auto shader = report::materialx_shader_from_name(!shader_name.empty() ? shader_name
+                                                         : openpbr            ? "open_pbr_surface"
+                                                                   : "generalized_schlick");
+  const auto requests = requests_of(g, specs);
+  const auto ctx = make_context(g);
+  analysis::StudyOptions options = analysis::presets_study_options(openpbr || document);
+  const auto c =
+      analysis::consensus_for(ctx, requests, options, periodic_progress(g, "consensus: reading "));
+  if (document) {
+    fmt::print("{}", format == "mtlx" ? report::presets_materialx(ctx, c.set.studies, shader)
+                                      : report::presets_gltf(ctx, c.set.studies));
+    return 0;
+  }
+  auto t = openpbr ? analysis::openpbr_table(ctx, c.set.studies)
+                   : analysis::presets_table(ctx, c.set.studies);
+  analysis::add_uncertainty_columns(t, c.set);
+  fmt::print("{}", report::render(t, report::format_from_name(format)));
+  return 0;
+}
+
+void add_consensus_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
+  auto* sub = app.add_subcommand(
+      "consensus",
+      "consensus of the bulk measurements per element or group: F0/F82, uncertainty, every "
+      "page's distance, outliers, recommended page; or published presets against it");
+  struct Args {
+    std::vector<std::string> specs;
+    std::string table = "groups", format = "csv", peers;
+  };
+  auto a = std::make_shared<Args>();
+  sub->add_option("GROUP", a->specs,
+                  "an element ('Au', 'gold'), a page glob, or NAME=GLOB[,GLOB...]; default: every "
+                  "metal group of the database ('**')");
+  sub->add_option("--table", a->table,
+                  "groups (one row per group), pages (every page's distance), kinds (outliers per "
+                  "page kind) or peers (published presets, with --peers)")
+      ->capture_default_str();
+  sub->add_option("--peers", a->peers,
+                  "folder of physicallybased.csv, physicallybased_pages.csv, openpbr_examples.csv");
+  sub->add_option("--format", a->format, "csv, md or json")->capture_default_str();
+  sub->callback([&g, &selected, a] {
+    if (a->table != "groups" && a->table != "pages" && a->table != "kinds" && a->table != "peers")
+      throw InputError("--table must be groups, pages, kinds or peers, not '" + a->table + "'");
+    if ((a->table == "peers") != !a->peers.empty())
+      throw InputError("--peers DIR goes with --table peers (and only with it)");
+    selected = [&g, a] {
+      const auto f = report::format_from_name(a->format);
+      const auto ctx = make_context(g);
+      const auto read = periodic_progress(g, "consensus: reading ");
+      if (a->table == "peers") {
+        fmt::print("{}", report::render(analysis::peer_table(ctx, a->peers, read), f));
+        return 0;
+      }
+      analysis::StudyOptions derived_only;
+      derived_only.fit = false;
+      derived_only.method_errors = false;
+      analysis::RequestedConsensus c;
+      if (a->specs.empty()) {
+        c.pages = analysis::study_pages(ctx, {"**"}, read);
+        c.set =
+            analysis::build_consensus(ctx, analysis::page_groups(c.pages.studies), derived_only);
+      } else {
+        c = analysis::consensus_for(ctx, requests_of(g, a->specs), derived_only, read);
+      }
+      const auto t = a->table == "groups"  ? analysis::consensus_table(ctx, c.set)
+                     : a->table == "pages" ? analysis::consensus_pages_table(c.set)
+                                           : analysis::outlier_kinds_table(c.set);
+      fmt::print("{}", report::render(t, f));
       return 0;
     };
   });

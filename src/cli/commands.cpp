@@ -22,6 +22,11 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected);  //
 void add_shader_command(CLI::App& app, GlobalOptions& g, Runner& selected);   // cli/cmd_shader.cpp
 void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected);    // cli/cmd_basis.cpp
 
+// `presets --consensus`: cli/cmd_library.cpp.
+int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
+                      const std::string& format, bool openpbr, const std::string& shader);
+void add_consensus_command(CLI::App& app, GlobalOptions& g, Runner& selected);
+
 namespace {
 
 void add_materials(CLI::App& app, GlobalOptions& g, Runner& selected) {
@@ -97,7 +102,7 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   struct Args {
     std::string format = "csv", shader;
     bool openpbr = false;
-    std::vector<std::string> materials;
+    std::vector<std::string> materials, consensus;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("MATERIALS", a->materials,
@@ -108,7 +113,18 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_flag("--openpbr", a->openpbr, "the OpenPBR Surface form (with mtlx: open_pbr_surface)");
   sub->add_option("--shader", a->shader,
                   "mtlx: generalized_schlick (default), open_pbr_surface or standard_surface");
+  sub->add_option("--consensus", a->consensus,
+                  "consensus presets instead, with their uncertainty: an element ('Au', 'gold'), a "
+                  "page glob, or NAME=GLOB[,GLOB...] (repeatable; docs/consensus.md)");
   sub->callback([&g, &selected, a] {
+    if (!a->consensus.empty()) {
+      if (!a->materials.empty())
+        throw InputError("presets: name MATERIALS or --consensus, not both");
+      selected = [&g, a] {
+        return consensus_presets(g, a->consensus, a->format, a->openpbr, a->shader);
+      };
+      return;
+    }
     selected = [&g, a] {
       const bool document = a->format == "mtlx" || a->format == "gltf";
       if (!document) report::format_from_name(a->format);  // validate before the work
@@ -179,6 +195,7 @@ const std::vector<Command>& commands() {
       {"plan", add_plan_command},
       {"pages", add_pages_command},
       {"library", add_library_command},
+      {"consensus", add_consensus_command},
       {"shader", add_shader_command},
       {"basis", add_basis_command},
   };

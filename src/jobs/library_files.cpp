@@ -78,9 +78,9 @@ std::string gallery_entry(const analysis::MaterialStudy& s, const std::string& s
 
 std::string gallery(const analysis::Context& ctx, const analysis::Library& lib,
                     const analysis::Table& t, Files& files) {
-  const size_t n = lib.studies.size();
+  const size_t n = lib.rows.size();
   std::vector<std::string> pngs(n);
-  parallel_for(n, [&](size_t i) { pngs[i] = strip_png(ctx, lib.studies[i]); });
+  parallel_for(n, [&](size_t i) { pngs[i] = strip_png(ctx, lib.rows[i]); });
   std::string md =
       "# Preset library gallery\n\nPer page: the spectral ground truth's colour from 0° (left) to "
       "90° "
@@ -88,12 +88,12 @@ std::string gallery(const analysis::Context& ctx, const analysis::Library& lib,
       analysis::setting_note(ctx) + "\n\n";
   std::string book;
   for (size_t i = 0; i < n; ++i) {
-    const auto& mat = lib.studies[i].material->material;
+    const auto& mat = lib.rows[i].material->material;
     const std::string b = mat.book_name.empty() ? spectral::book_of(mat.source) : mat.book_name;
     if (b != book) md += "## " + b + "\n\n", book = b;
     const std::string path = "strips/" + file_safe(mat.source) + ".png";
     files.emplace_back(path, std::move(pngs[i]));
-    md += gallery_entry(lib.studies[i], path,
+    md += gallery_entry(lib.rows[i], path,
                         std::get<std::string>(t.rows[i][analysis::column_index(t, "flags")]));
   }
   return md;
@@ -140,13 +140,40 @@ std::string readme(const analysis::Context& ctx, const analysis::Library& lib,
       "(generalized_schlick_bsdf; open_pbr_surface)\n"
       "- [skipped.csv](skipped.csv): every page left out, with its reason\n- "
       "[spread.md](spread.md), "
-      "[spread.csv](spread.csv): the spread between pages of the same metal\n";
+      "[spread.csv](spread.csv): the spread between pages of the same metal\n"
+      "- [consensus.md](consensus.md), [consensus_pages.md](consensus_pages.md), "
+      "[outlier_kinds.md](outlier_kinds.md) (and .csv): each metal's consensus of its bulk "
+      "pages with its uncertainty, every page's kind and distance from it, outliers per page "
+      "kind (docs/consensus.md)\n";
   if (gallery) md += "- [gallery.md](gallery.md): a colour strip per page\n";
   md +=
       "- [index.html](index.html): the library as a searchable gallery (colour strip, F0 and F82 "
       "swatches, flags) "
       "and every table above, sortable and filterable\n";
   return md;
+}
+
+// A card's kind and its place against the consensus: a page's kind and distance (with the outlier
+// reason), a consensus's spread (its bulk pages' median and largest ΔE2000).
+std::pair<std::string, std::string> consensus_fact(const analysis::Table& t, size_t row) {
+  const auto text = [&](const char* col) {
+    return std::get<std::string>(t.rows[row][analysis::column_index(t, col)]);
+  };
+  const auto number = [&](const char* col) {
+    return std::get<double>(t.rows[row][analysis::column_index(t, col)]);
+  };
+  const std::string kind = text("kind"), detail = text("kind_detail");
+  if (kind == "consensus")
+    return {"consensus",
+            fmt::format("{}; spread F0 {:.2f} / {:.2f}, F82 {:.2f} / {:.2f} ΔE2000 (median / max)",
+                        detail, number("spread_f0_de00_median"), number("spread_f0_de00_max"),
+                        number("spread_f82_de00_median"), number("spread_f82_de00_max"))};
+  std::string value = kind + (detail.empty() ? "" : " " + detail);
+  if (!std::isnan(number("consensus_f0_de00")))
+    value += fmt::format("; from the consensus F0 {:.2f}, F82 {:.2f} ΔE2000",
+                         number("consensus_f0_de00"), number("consensus_f82_de00"));
+  if (text("outlier") == "yes") value += "; outlier";
+  return {"kind", value};
 }
 
 // index.html: a gallery card per page (strip, F0/F82 swatches, flags, coverage, errors),
@@ -161,8 +188,8 @@ std::string library_page(const analysis::Context& ctx, const analysis::Library& 
                     "ground truth (ΔE2000) and each page's flags. The same tables are in CSV, "
                     "Markdown and JSON beside this page.",
                 analysis::setting_note(ctx)};
-  for (size_t i = 0; i < lib.studies.size(); ++i) {
-    const auto& st = lib.studies[i];
+  for (size_t i = 0; i < lib.rows.size(); ++i) {
+    const auto& st = lib.rows[i];
     auto card = study_card(ctx, st, row_flags(t, i));
     card.key = file_safe(st.material->material.source);
     const auto& c = st.material->coverage;
@@ -170,6 +197,7 @@ std::string library_page(const analysis::Context& ctx, const analysis::Library& 
         card.facts.begin(),
         {"coverage",
          fmt::format("{:.4f}{}", c.both, c.uncovered.empty() ? "" : " (" + c.uncovered + ")")});
+    card.facts.insert(card.facts.begin(), consensus_fact(t, i));
     page.gallery.push_back(std::move(card));
   }
   page.tables = tables;
@@ -184,26 +212,33 @@ std::string library_page(const analysis::Context& ctx, const analysis::Library& 
 Files library_files(const analysis::Context& ctx, const analysis::Library& lib, bool with_gallery,
                     const std::string& command) {
   Files files;
-  const auto t = analysis::library_table(ctx, lib.studies);
+  const auto t = analysis::library_table(ctx, lib.rows, &lib.consensus);
   for (const auto f : {Format::Csv, Format::Markdown, Format::Json})
     files.emplace_back(std::string("library.") + extension(f), render(t, f));
-  auto models = analysis::models_table(ctx, lib.studies);
+  auto models = analysis::models_table(ctx, lib.rows);
   models.name = "library_models";
   files.emplace_back("models.csv", to_csv(models));
   files.emplace_back("library.mtlx",
-                     presets_materialx(ctx, lib.studies, MaterialxShader::GeneralizedSchlick));
+                     presets_materialx(ctx, lib.rows, MaterialxShader::GeneralizedSchlick));
   files.emplace_back("library_openpbr.mtlx",
-                     presets_materialx(ctx, lib.studies, MaterialxShader::OpenPbrSurface));
+                     presets_materialx(ctx, lib.rows, MaterialxShader::OpenPbrSurface));
   files.emplace_back("skipped.csv", to_csv(analysis::skipped_table(lib.set.skipped)));
   const auto spread = analysis::spread_table(ctx, lib.studies);
   files.emplace_back("spread.csv", to_csv(spread));
   files.emplace_back("spread.md", to_markdown(spread));
+  const auto consensus = analysis::consensus_table(ctx, lib.consensus);
+  const auto consensus_pages = analysis::consensus_pages_table(lib.consensus);
+  const auto kinds = analysis::outlier_kinds_table(lib.consensus);
+  for (const auto* c : {&consensus, &consensus_pages, &kinds}) {
+    files.emplace_back(c->name + ".csv", to_csv(*c));
+    files.emplace_back(c->name + ".md", to_markdown(*c));
+  }
   if (with_gallery) files.emplace_back("gallery.md", gallery(ctx, lib, t, files));
-  files.emplace_back("index.html",
-                     library_page(ctx, lib, t,
-                                  {t, spread, analysis::skip_reasons_table(lib.set.skipped),
-                                   analysis::skipped_table(lib.set.skipped)},
-                                  command));
+  files.emplace_back("index.html", library_page(ctx, lib, t,
+                                                {t, consensus, kinds, spread,
+                                                 analysis::skip_reasons_table(lib.set.skipped),
+                                                 analysis::skipped_table(lib.set.skipped)},
+                                                command));
   files.emplace_back("README.md", readme(ctx, lib, t, command, with_gallery));
   return files;
 }

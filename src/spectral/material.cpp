@@ -159,6 +159,7 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
   if (!page.empty()) {
     m.source = page;
     m.constants = read_refractiveindex_file(database_file(paths, page));
+    m.page_class = classify_page(page_entry(paths.database, page));
   } else if (!file.empty()) {
     const fs::path f =
         fs::path(file).is_absolute() ? fs::path(file) : fs::path(path).parent_path() / file;
@@ -270,7 +271,8 @@ Material read_database_page(const std::string& page, const DataPaths& paths) {
   m.material_class = classify(m.constants);
   const PageEntry* entry = page_entry(paths.database, page);
   if (entry) m.book_name = entry->book_name, m.section = entry->section;
-  m.bulk_measurement = is_bulk_measurement(entry);
+  m.page_class = classify_page(entry);
+  m.bulk_measurement = m.page_class.kind == PageKind::Bulk;
   return m;
 }
 

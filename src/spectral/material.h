@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "spectral/pages.h"
 #include "spectral/ri_database.h"
 
 namespace fl::spectral {
@@ -11,7 +12,7 @@ enum class MaterialClass { Metal, Dielectric };
 const char* to_string(MaterialClass c);
 
 struct Material {
-  enum class Origin { Catalog, Page, File };
+  enum class Origin { Catalog, Page, File, Consensus };  // Consensus: analysis/consensus
   Origin origin = Origin::Catalog;
   std::string key;   // catalog file stem ("gold"), or the argument it was loaded from
   std::string name;  // display name ("Gold")
@@ -21,8 +22,9 @@ struct Material {
   std::string book_name;  // a page's book in the database's catalog ("Au (Gold)"), if listed
   std::string section;    // a page's catalog section ("Experimental data: thin film"), if listed
   bool bulk_measurement =
-      false;      // a page measuring the bulk material (pages.h, is_bulk_measurement)
-  int order = 0;  // catalog order (the talk's table order)
+      false;             // a page measuring the bulk material (pages.h, is_bulk_measurement)
+  PageClass page_class;  // a page's kind from the catalog (pages.h, classify_page)
+  int order = 0;         // catalog order (the talk's table order)
   double talk_schlick_rms_de00 = -1.0;  // Hoffman 2020's Schlick RMS ΔE2000, when the talk lists it
   OpticalConstants constants;
 };

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <mutex>
+#include <optional>
+#include <regex>
 
 #include "spectral/errors.h"
 #include "spectral/yaml_file.h"
@@ -131,13 +133,93 @@ const PageEntry* page_entry(const std::string& database, const std::string& page
   return e == it->second.end() ? nullptr : &e->second;
 }
 
-bool is_bulk_measurement(const PageEntry* entry) {
-  if (!entry) return false;
-  std::string s = entry->section;
+const char* to_string(PageKind kind) {
+  switch (kind) {
+    case PageKind::Bulk:
+      return "bulk";
+    case PageKind::ThinFilm:
+      return "thin film";
+    case PageKind::Nanostructure:
+      return "nanostructure";
+    case PageKind::Model:
+      return "model";
+    case PageKind::Computed:
+      return "computed";
+    case PageKind::Variant:
+      return "variant";
+    case PageKind::Unlisted:
+      return "unlisted";
+  }
+  return "unlisted";
+}
+
+namespace {
+
+std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  for (const char* word : {"model", "simulation", "thin film", "nanoparticle", "flake", "2d"})
-    if (s.find(word) != std::string::npos) return false;
-  return true;
+  return s;
+}
+
+bool has_any(const std::string& s, std::initializer_list<const char*> words) {
+  for (const char* w : words)
+    if (s.find(w) != std::string::npos) return true;
+  return false;
+}
+
+std::string first_match(const std::string& s, const std::regex& re, int group = 0) {
+  std::smatch m;
+  return std::regex_search(s, m, re) ? m[group].str() : std::string();
+}
+
+// A temperature in the page name ("298 K", "225 °C"), with whether it is room temperature.
+std::optional<std::pair<std::string, bool>> temperature(const std::string& name) {
+  static const std::regex re(
+      "(\\d+(?:\\.\\d+)?) ?(K|\xC2\xB0"
+      "C)(?![A-Za-z])");
+  std::smatch m;
+  if (!std::regex_search(name, m, re)) return std::nullopt;
+  const double value = std::stod(m[1].str());
+  const double kelvin = m[2].str() == "K" ? value : value + 273.15;
+  return std::make_pair(m[0].str(), kelvin >= 288.0 && kelvin <= 303.0);
+}
+
+}  // namespace
+
+PageClass classify_page(const PageEntry* entry) {
+  PageClass c;
+  if (!entry) return c;
+  // A year is four digits that are not part of a decimal number ("0.2066" is no year).
+  static const std::regex year_re("(?:^|[^0-9.])((?:19|20)\\d\\d)(?![0-9])");
+  static const std::regex thickness_re("(\\d+(?:\\.\\d+)?)[- ]?nm film");
+  static const std::regex radius_re("R ?= ?\\d+(?:\\.\\d+)? ?nm");
+  static const std::regex pressure_re("\\d ?(GPa|MPa|kbar)(?![A-Za-z])");
+  const std::string year = first_match(entry->page_name, year_re, 1);
+  c.year = year.empty() ? 0 : std::stoi(year);
+  const std::string both = lower(entry->section + " | " + entry->page_name);
+  const std::string thickness = first_match(entry->page_name, thickness_re, 1);
+  if (has_any(both, {"dft", "ab initio", "first-principles", "calculation", "computed"})) {
+    c.kind = PageKind::Computed;
+  } else if (has_any(both, {"model", "simulation"})) {
+    c.kind = PageKind::Model;
+  } else if (has_any(both, {"nanoparticle", "island", "flake", "2d structure"})) {
+    c.kind = PageKind::Nanostructure;
+    c.detail = first_match(entry->page_name, radius_re);
+  } else if (both.find("thin film") != std::string::npos || !thickness.empty()) {
+    c.kind = PageKind::ThinFilm;
+    c.detail = thickness.empty() ? std::string() : thickness + " nm";
+  } else if (const auto t = temperature(entry->page_name)) {
+    c.kind = t->second ? PageKind::Bulk : PageKind::Variant;
+    c.detail = t->first;
+  } else if (std::regex_search(entry->page_name, pressure_re)) {
+    c.kind = PageKind::Variant;
+  } else {
+    c.kind = PageKind::Bulk;
+  }
+  return c;
+}
+
+bool is_bulk_measurement(const PageEntry* entry) {
+  return classify_page(entry).kind == PageKind::Bulk;
 }
 
 }  // namespace fl::spectral

@@ -39,9 +39,34 @@ std::map<std::string, PageEntry> read_page_catalog(const std::string& database);
 // read_page_catalog(database)'s entry for `page`, read once per database and kept (thread-safe);
 // nullptr when the catalog lacks the page.
 const PageEntry* page_entry(const std::string& database, const std::string& page);
-// A measurement of the bulk material: the page's catalog section is not one of models and
-// simulations, thin films, nanoparticles, flakes or 2D structures (an empty section counts as bulk:
-// books without sections are measurements); false for a page the catalog does not list.
+// What a page holds, from its catalog section and page name (classify_page).
+enum class PageKind {
+  Bulk,           // a measurement of the bulk material (or a thick film), at room temperature
+  ThinFilm,       // a film thin enough that its thickness is part of the result
+  Nanostructure,  // nanoparticles, islands, flakes, 2D structures
+  Model,          // a dispersion model fitted to measurements (Drude, Lorentz, Brendel-Bormann...)
+  Computed,       // DFT or other computed (ab initio) data
+  Variant,        // measured away from room temperature, or under pressure
+  Unlisted        // not in the catalog
+};
+const char* to_string(PageKind kind);
+
+struct PageClass {
+  PageKind kind = PageKind::Unlisted;
+  std::string detail;  // "12 nm" (film), "404 K" (temperature), "R=7.2 nm"; empty when none
+  int year = 0;        // the first 19xx/20xx in the page name (0: none)
+};
+// The rule, first match wins, over the section and page name (case-insensitive):
+// 1. no entry: Unlisted;
+// 2. "dft", "ab initio", "first-principles", "calculation", "computed": Computed;
+// 3. "model" or "simulation": Model;
+// 4. "nanoparticle", "island", "flake", "2d structure": Nanostructure;
+// 5. "thin film", or a page name holding a thickness ("25-nm film", "12 nm film"): ThinFilm;
+// 6. a temperature outside 288-303 K (15-30 °C) or a pressure (GPa, MPa, kbar) in the page name:
+//    Variant (a room-temperature page is Bulk, its temperature in `detail`);
+// 7. otherwise Bulk (books without sections hold measurements).
+PageClass classify_page(const PageEntry* entry);
+// classify_page(entry).kind == PageKind::Bulk.
 bool is_bulk_measurement(const PageEntry* entry);
 // The book folder of a page path: the folder above the page's own ("main/Au/nk/Johnson" → "Au").
 std::string book_of(const std::string& page);

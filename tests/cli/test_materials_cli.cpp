@@ -1,6 +1,7 @@
 // Any material, first class: lists of catalog names, database pages, page globs and files in every
 // command; coverage in the outputs and --min-coverage; `pages`; `library`; fits that never publish
 // worse than their best start. Run through the CLI on the database pages named in each test.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -304,6 +305,79 @@ TEST(MaterialsCli, NoFitPublishesWorseThanItsDerivedStart) {
     }
   }
   EXPECT_EQ(checked, 28 * 7);
+}
+
+// A database with a catalog: three bulk pages of one metal whose k differ by a constant (so B lies
+// between A and C at every wavelength, in both reflectances), and a model far from them.
+std::string consensus_db(const test::TempDir& tmp) {
+  const auto page = [&](const std::string& name, double n, double k) {
+    tmp.file("db/data/main/M/nk/" + name + ".yml",
+             fmt::format("DATA:\n  - type: tabulated nk\n    data: |\n        0.30 {} {}\n"
+                         "        0.90 {} {}\n",
+                         n, k, n + 0.1, k + 1.0));
+  };
+  page("A", 0.5, 2.0);
+  page("B", 0.5, 2.2);
+  page("C", 0.5, 2.4);
+  page("D", 1.5, 1.0);
+  tmp.file("db/catalog-nk.yml",
+           "- SHELF: main\n  content:\n    - BOOK: M\n      name: \"M (Metallium)\"\n"
+           "      content:\n        - DIVIDER: \"Experimental data\"\n"
+           "        - PAGE: A\n          name: \"A 1990: n,k\"\n          data: main/M/nk/A.yml\n"
+           "        - PAGE: B\n          name: \"B 2001: n,k\"\n          data: main/M/nk/B.yml\n"
+           "        - PAGE: C\n          name: \"C 2010: n,k\"\n          data: main/M/nk/C.yml\n"
+           "        - DIVIDER: \"Models and simulations\"\n"
+           "        - PAGE: D\n          name: \"D 2000: Drude model\"\n"
+           "          data: main/M/nk/D.yml\n");
+  return tmp.path() + "/db";
+}
+
+// The consensus' F0 and F82 from the pages' output: the median page's (B's) own values.
+constexpr double kPrintedTolerance = 2e-6;  // the CSV's 6 decimals
+
+TEST(MaterialsCli, ConsensusOfThreePagesIsTheMiddleOneWithTheirSpreadAndTheModelAnOutlier) {
+  test::TempDir tmp;
+  const auto db = consensus_db(tmp);
+  const auto base =
+      std::string("'") + FL_CLI + "' -q --db '" + db + "' --materials '" + tmp.path() + "/none'";
+  const auto c = run_command(base + " presets --consensus metallium");
+  ASSERT_EQ(c.status, 0) << c.err;
+  const auto rows = records(c.out);
+  ASSERT_EQ(rows.size(), 1u);
+  const auto& r = rows[0];
+  EXPECT_EQ(r.at("material"), "main/M/consensus");
+  EXPECT_EQ(r.at("page_kind"), "consensus");
+  EXPECT_EQ(r.at("pages_used"), "3");
+  EXPECT_EQ(r.at("recommended"), "main/M/nk/B");
+  EXPECT_EQ(r.at("outliers"), "1");
+  EXPECT_NE(r.at("outlier_pages").find("D (model:"), std::string::npos) << r.at("outlier_pages");
+  const auto b = records(run_command(base + " presets main/M/nk/B").out).at(0);
+  EXPECT_EQ(b.at("page_kind"), "bulk");
+  for (const char* q : {"f0_r", "f0_g", "f0_b", "f82_r", "f82_g", "f82_b"})
+    EXPECT_NEAR(std::stod(r.at(q)), std::stod(b.at(q)), kPrintedTolerance) << q;
+  for (const char* ch : {"r", "g", "b"}) {
+    const double f0 = std::stod(r.at(std::string("f0_") + ch));
+    EXPECT_LT(std::stod(r.at(std::string("f0_") + ch + "_lo")), f0) << ch;
+    EXPECT_GT(std::stod(r.at(std::string("f0_") + ch + "_hi")), f0) << ch;
+  }
+  EXPECT_GT(std::stod(r.at("f0_de00_max")), 0.0);
+  EXPECT_GE(std::stod(r.at("f0_de00_max")), std::stod(r.at("f0_de00_median")));
+
+  const auto pages = records(run_command(base + " consensus M --table pages").out);
+  ASSERT_EQ(pages.size(), 4u);
+  EXPECT_EQ(pages[3].at("page"), "main/M/nk/D");
+  EXPECT_EQ(pages[3].at("kind"), "model");
+  EXPECT_EQ(pages[3].at("used"), "no");
+  EXPECT_EQ(pages[3].at("outlier"), "yes");
+  EXPECT_EQ(pages[1].at("f0_de00"), "0.000");
+
+  const auto bad = run_command(base + " presets --consensus Unobtainium");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(lines(bad.err), 1) << bad.err;
+  const auto kinds = records(run_command(base + " pages").out);
+  ASSERT_EQ(kinds.size(), 4u);
+  EXPECT_EQ(kinds[0].at("kind"), "bulk");
+  EXPECT_EQ(kinds[3].at("kind"), "model");
 }
 
 }  // namespace

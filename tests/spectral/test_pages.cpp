@@ -144,3 +144,89 @@ TEST(PageCatalog, MissingOrBrokenCatalogIsEmpty) {
 
 }  // namespace
 }  // namespace fl::spectral
+
+namespace fl::spectral {
+namespace {
+
+// Page kinds from a hand-written catalog in the database's layout: each rule of classify_page once,
+// with the pages of the real catalog's patterns (sections, thicknesses, temperatures, DFT).
+TEST(PageKinds, EachRuleFromSectionAndPageName) {
+  test::TempDir db;
+  db.file("catalog-nk.yml",
+          "- SHELF: main\n"
+          "  content:\n"
+          "    - BOOK: Au\n"
+          "      name: \"Au (Gold)\"\n"
+          "      content:\n"
+          "        - DIVIDER: \"Experimental data: bulk, thick film\"\n"
+          "        - PAGE: J\n"
+          "          name: \"Johnson and Christy 1972: n,k 0.2066\u20131.937 \u00b5m\"\n"
+          "          data: main/Au/nk/J.yml\n"
+          "        - PAGE: M25\n"
+          "          name: \"Magnozzi et al. 2019: n,k 0.252\u20131.45 \u00b5m; 25 \u00b0C\"\n"
+          "          data: main/Au/nk/M25.yml\n"
+          "        - PAGE: M225\n"
+          "          name: \"Magnozzi et al. 2019: n,k 0.252\u20131.45 \u00b5m; 225 \u00b0C\"\n"
+          "          data: main/Au/nk/M225.yml\n"
+          "        - PAGE: F404\n"
+          "          name: \"Ferrera et al. 2019: n,k 0.245\u20131.45 \u00b5m; 404 K\"\n"
+          "          data: main/Au/nk/F404.yml\n"
+          "        - PAGE: P\n"
+          "          name: \"Someone 2001: n 0.4\u20130.7 \u00b5m; 3.2 GPa\"\n"
+          "          data: main/Au/nk/P.yml\n"
+          "        - DIVIDER: \"Experimental data: thin film\"\n"
+          "        - PAGE: Y\n"
+          "          name: \"Yakubovsky et al. 2017: 25-nm film; n,k 0.30\u20132.0 \u00b5m\"\n"
+          "          data: main/Au/nk/Y.yml\n"
+          "        - DIVIDER: \"Experimental data: nanoparticles\"\n"
+          "        - PAGE: K\n"
+          "          name: \"Klinavi\u010dius 2025: R=7.2 nm; n,k 0.4\u20130.9 \u00b5m\"\n"
+          "          data: main/Au/nk/K.yml\n"
+          "        - DIVIDER: \"Models and simulations\"\n"
+          "        - PAGE: BB\n"
+          "          name: \"Raki\u0107 et al. 1998: Brendel-Bormann model; n,k 0.248\u20136.20 "
+          "\u00b5m\"\n"
+          "          data: main/Au/nk/BB.yml\n"
+          "        - PAGE: DFT\n"
+          "          name: \"Werner et al. 2009: DFT calculations; n,k 0.0176\u20132.48 \u00b5m\"\n"
+          "          data: main/Au/nk/DFT.yml\n"
+          "    - BOOK: Cr\n"
+          "      content:\n"
+          "        - DIVIDER: \"Experimental data\"\n"
+          "        - PAGE: S\n"
+          "          name: \"Sytchkova et al. 2021: 12 nm film; n,k 0.262\u20132.50 \u00b5m\"\n"
+          "          data: main/Cr/nk/S.yml\n"
+          "        - PAGE: Flakes\n"
+          "          name: \"Someone 2020: islands on glass\"\n"
+          "          data: main/Cr/nk/I.yml\n");
+  const auto catalog = read_page_catalog(db.path());
+  const auto kind = [&](const std::string& page) { return classify_page(&catalog.at(page)); };
+  const auto j = kind("main/Au/nk/J");
+  EXPECT_EQ(j.kind, PageKind::Bulk);
+  EXPECT_EQ(j.year, 1972);  // not 2066 from "0.2066"
+  EXPECT_EQ(j.detail, "");
+  EXPECT_EQ(kind("main/Au/nk/M25").kind, PageKind::Bulk);  // room temperature
+  EXPECT_EQ(kind("main/Au/nk/M25").detail, "25 \u00b0C");
+  EXPECT_EQ(kind("main/Au/nk/M225").kind, PageKind::Variant);
+  EXPECT_EQ(kind("main/Au/nk/F404").kind, PageKind::Variant);
+  EXPECT_EQ(kind("main/Au/nk/F404").detail, "404 K");
+  EXPECT_EQ(kind("main/Au/nk/P").kind, PageKind::Variant);
+  EXPECT_EQ(kind("main/Au/nk/Y").kind, PageKind::ThinFilm);
+  EXPECT_EQ(kind("main/Au/nk/Y").detail, "25 nm");
+  EXPECT_EQ(kind("main/Au/nk/K").kind, PageKind::Nanostructure);
+  EXPECT_EQ(kind("main/Au/nk/K").detail, "R=7.2 nm");
+  EXPECT_EQ(kind("main/Au/nk/BB").kind, PageKind::Model);
+  EXPECT_EQ(kind("main/Au/nk/DFT").kind, PageKind::Computed);  // listed under models: DFT first
+  // A film's thickness in the page name makes it a thin film whatever its section says.
+  EXPECT_EQ(kind("main/Cr/nk/S").kind, PageKind::ThinFilm);
+  EXPECT_EQ(kind("main/Cr/nk/S").detail, "12 nm");
+  EXPECT_EQ(kind("main/Cr/nk/I").kind, PageKind::Nanostructure);
+  EXPECT_EQ(classify_page(nullptr).kind, PageKind::Unlisted);
+  EXPECT_FALSE(is_bulk_measurement(nullptr));
+  EXPECT_TRUE(is_bulk_measurement(&catalog.at("main/Au/nk/M25")));
+  EXPECT_FALSE(is_bulk_measurement(&catalog.at("main/Au/nk/F404")));
+  EXPECT_STREQ(to_string(PageKind::ThinFilm), "thin film");
+}
+
+}  // namespace
+}  // namespace fl::spectral

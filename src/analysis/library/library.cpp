@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 
+#include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
 #include "fresnel/model_set.h"
 #include "spectral/pages.h"
@@ -15,8 +16,13 @@ namespace fl::analysis {
 namespace {
 
 std::vector<Cell> page_row(const std::string& page, const spectral::PageEntry* entry) {
-  return {page, spectral::book_of(page), entry ? entry->book_name : std::string(),
-          entry ? entry->section : std::string()};
+  const auto kind = spectral::classify_page(entry);
+  return {page,
+          spectral::book_of(page),
+          entry ? entry->book_name : std::string(),
+          entry ? entry->section : std::string(),
+          std::string(spectral::to_string(kind.kind)),
+          kind.detail};
 }
 
 }  // namespace
@@ -28,7 +34,8 @@ Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
   Table t;
   t.name = "pages";
   t.title = "Database pages";
-  t.columns = {{"page"}, {"book"}, {"book_name"}, {"section"}, {"class"}};
+  t.columns = {{"page"}, {"book"},        {"book_name"}, {"section"},
+               {"kind"}, {"kind_detail"}, {"class"}};
   add_coverage_columns(t);
   t.columns.insert(t.columns.end(), {{"reference"}, {"status"}});
   std::map<std::string, std::vector<Cell>> rows;  // sorted by page
@@ -50,6 +57,10 @@ Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
   t.reading = fmt::format("{} pages: {} read, {} that cannot be read (status says why).",
                           rows.size(), set.materials.size(), set.skipped.size());
   t.notes = {setting_note(ctx),
+             "kind: bulk, thin film, nanostructure, model, computed (DFT and other computed "
+             "data), variant (away from room temperature or under pressure) or unlisted, from the "
+             "catalog's section and page name (docs/consensus.md, \"Page kinds\"); kind_detail: "
+             "a film's thickness, a particle's radius, a temperature.",
              "class: metal when the mean k over 400-700 nm exceeds 0.5 (light entering is absorbed "
              "within 0.1 µm), "
              "dielectric otherwise.",
@@ -71,6 +82,16 @@ Library build_library(const Context& ctx, const LibraryOptions& options,
   Library lib;
   lib.set = load_materials(ctx, options.globs, policy, load_progress);
   lib.studies = study_materials(ctx, lib.set.materials, StudyOptions{}, fit_progress);
+  lib.consensus = build_consensus(ctx, page_groups(lib.studies), StudyOptions{});
+  std::map<std::string, const MaterialStudy*> by_group;
+  for (size_t i = 0; i < lib.consensus.groups.size(); ++i)
+    by_group[lib.consensus.groups[i].name] = &lib.consensus.studies[i];
+  for (const auto& s : lib.studies) {
+    const auto* d = find_distance(lib.consensus, s);
+    const auto it = d ? by_group.find(spread_group(s.material->material.source)) : by_group.end();
+    if (it != by_group.end()) lib.rows.push_back(*it->second), by_group.erase(it);
+    lib.rows.push_back(s);
+  }
   return lib;
 }
 
@@ -94,7 +115,47 @@ std::string quality_flags(const MaterialStudy& s, const std::string& out_of_rang
 
 }  // namespace
 
-Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
+namespace {
+
+// The page kind, the distance from the consensus and the outlier flag of a page; the uncertainty
+// of a consensus row.
+void add_consensus_columns(Table& t, const std::vector<MaterialStudy>& studies,
+                           const ConsensusSet& set) {
+  t.columns.insert(t.columns.end(), {{"kind"},
+                                     {"kind_detail"},
+                                     {"consensus_f0_de00", 3},
+                                     {"consensus_f82_de00", 3},
+                                     {"outlier"},
+                                     {"outlier_reason"},
+                                     {"spread_f0_de00_median", 3},
+                                     {"spread_f0_de00_max", 3},
+                                     {"spread_f82_de00_median", 3},
+                                     {"spread_f82_de00_max", 3}});
+  for (size_t i = 0; i < studies.size(); ++i) {
+    const auto& m = studies[i].material->material;
+    auto& row = t.rows[i];
+    const ConsensusGroup* g = nullptr;
+    for (size_t c = 0; c < set.studies.size(); ++c)
+      if (set.studies[c].material == studies[i].material) g = &set.groups[c];
+    if (g) {
+      row.insert(row.end(), {std::string("consensus"), m.section, NAN, NAN, std::string(),
+                             std::string(), g->f0_median, g->f0_max, g->f82_median, g->f82_max});
+      continue;
+    }
+    const auto* d = find_distance(set, studies[i]);
+    row.insert(row.end(), {m.origin == spectral::Material::Origin::Page
+                               ? std::string(spectral::to_string(m.page_class.kind))
+                               : std::string(),
+                           m.page_class.detail, d ? d->f0_de00 : NAN, d ? d->f82_de00 : NAN,
+                           std::string(d ? (d->outlier ? "yes" : "no") : ""),
+                           d ? d->reason : std::string(), NAN, NAN, NAN, NAN});
+  }
+}
+
+}  // namespace
+
+Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                    const ConsensusSet* consensus) {
   Table t = presets_table(ctx, studies);
   t.name = "library";
   t.title = fmt::format("Preset library in {}: {} pages", ctx.settings().space, studies.size());
@@ -118,6 +179,7 @@ Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     flagged += !flags.empty();
     row.insert(row.end(), {flags, static_cast<long long>(s.material->warnings.size())});
   }
+  if (consensus) add_consensus_columns(t, studies, *consensus);
   t.reading = fmt::format(
       "{} pages, {} of them flagged. Every value comes with its flags: a page whose data does "
       "not cover the visible range is marked extrapolated and says which wavelengths it holds.",
@@ -128,6 +190,18 @@ Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       "(the fit's flags, models table); out_of_range:NAME (a value outside [0, 1]); warnings: what "
       "the "
       "reader dropped or merged outside 360-830 nm.");
+  if (consensus) {
+    t.notes.push_back(
+        "kind: the page's kind from the database catalog (docs/consensus.md); consensus rows "
+        "(GROUP/consensus) are the per-wavelength median of the group's bulk pages' reflectance at "
+        "0° and arccos(1/7); consensus_f0_de00, consensus_f82_de00: a page's ΔE2000 from its "
+        "group's consensus; spread_*: a consensus row's uncertainty, the median and largest "
+        "distance of its bulk pages.");
+    t.notes.push_back(fmt::format(
+        "outlier: beyond the bulk pages' median distance + {:g} × {:g} × MAD and beyond {:g} "
+        "ΔE2000, in F0 or F82.",
+        kOutlierMads, kMadToSigma, kOutlierMinDe00));
+  }
   return t;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/consensus/consensus.h"
 #include "analysis/pipeline/materials.h"
 #include "analysis/study/study.h"
 #include "analysis/tables/table.h"
@@ -32,6 +33,9 @@ struct LibraryOptions {
 struct Library {
   MaterialSet set;  // the pages in the library and the skipped ones with their reasons
   std::vector<MaterialStudy> studies;
+  ConsensusSet consensus;  // per group of metal pages with a bulk measurement (every model)
+  // The library's rows: the pages, each group's consensus just before its first page.
+  std::vector<MaterialStudy> rows;
 };
 
 // Loads the pages and studies them (every model, derived and fitted). `load_progress` and
@@ -43,7 +47,10 @@ Library build_library(const Context& ctx, const LibraryOptions& options,
 // One row per page: the presets table's columns, then the page's book and catalog section, what
 // the data does not cover, every model's derived and fitted RMS ΔE2000, the quality flags
 // (extrapolated, each model's fit flags, values out of range) and the reader's warning count.
-Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
+// With `consensus`, each page's kind, distance from its group's consensus and outlier flag, and
+// for a consensus row its uncertainty (the spread of its pages).
+Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                    const ConsensusSet* consensus = nullptr);
 
 // The skipped pages with their reasons, and their count by reason (the reason with the file, line
 // and numbers taken out).

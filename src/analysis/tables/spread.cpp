@@ -167,10 +167,9 @@ Table spread_table(const Context& ctx, const std::vector<MaterialStudy>& pages) 
                   "visible range; a "
                   "metal is a database book (on the alloys shelf, a book and its composition).",
                   kSpreadMinCoverage),
-      "bulk measurements: pages the database's catalog lists under neither models and simulations "
-      "nor thin "
-      "films, nanoparticles, flakes or 2D structures; all pages: every page (a row only when it "
-      "differs).",
+      "bulk measurements: pages of kind bulk (from the database catalog's section and page name: "
+      "not models, computed data, thin films, nanostructures, or measurements away from room "
+      "temperature; docs/consensus.md); all pages: every page (a row only when it differs).",
       "f0_de00, f82_de00: ΔE2000 between every pair of pages' F0 (F82) colours from the spectral "
       "procedure; "
       "schlick_rms: each page's RMS ΔE2000 of Schlick against its own ground truth (the schlick "

@@ -348,6 +348,15 @@ void add_f_avg(std::vector<Cell>& row, const fresnel::DerivedParameters& d) {
 
 }  // namespace
 
+std::string page_kind_text(const spectral::Material& m) {
+  if (m.origin == spectral::Material::Origin::Consensus) return "consensus";
+  if (m.page_class.kind == spectral::PageKind::Unlisted &&
+      m.origin != spectral::Material::Origin::Page)
+    return {};
+  const auto& c = m.page_class;
+  return std::string(spectral::to_string(c.kind)) + (c.detail.empty() ? "" : " " + c.detail);
+}
+
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
   t.name = "presets";
@@ -358,7 +367,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   add_f_avg_columns(t);
   t.columns.push_back({"out_of_range"});
   add_coverage_columns(t);
-  t.columns.push_back({"fit_flags"});
+  t.columns.insert(t.columns.end(), {{"fit_flags"}, {"page_kind"}});
   int flagged = 0;
   for (const auto& s : studies) {
     const auto& d = s.derived;
@@ -383,6 +392,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     add_coverage_cells(row, *s.material);
     row.push_back(eta_kappa.fitted.parameters.empty() ? std::string()
                                                       : fit::fit_flags(eta_kappa.fitted));
+    row.push_back(page_kind_text(s.material->material));
     t.rows.push_back(std::move(row));
   }
   t.reading = "Parameters for shading models, per material, in the working space.";
@@ -394,6 +404,9 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       kF82AverageNote,
       out_of_range_note(flagged),
       "fit_flags: of the eta, kappa fit (see the models table's notes).",
+      "page_kind: a database page's kind from the catalog (bulk, thin film, nanostructure, model, "
+      "computed, variant; docs/consensus.md), with a film's thickness or a temperature; "
+      "\"consensus\" for a consensus preset.",
       coverage_note(materials_of(studies))};
   return t;
 }

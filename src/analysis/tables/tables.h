@@ -32,6 +32,10 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
 // Every material × every model × {derived, fitted}: RMS, mean, max and render-weighted RMS.
 Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
+// A page's kind and its detail ("thin film 25 nm"), "consensus" for a consensus material, empty for
+// other materials.
+std::string page_kind_text(const spectral::Material& m);
+
 // F0, F82, g, η, κ per material (values outside [0, 1] kept and flagged in out_of_range,
 // analysis/tables/shading_presets.h).
 Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
