@@ -131,12 +131,7 @@ ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::
 std::vector<GroupPages> page_groups(const std::vector<MaterialStudy>& pages) {
   std::map<std::string, std::vector<const MaterialStudy*>> by_group;
   for (const auto& s : pages) {
-    const auto& m = *s.material;
-    if (m.material.origin != spectral::Material::Origin::Page ||
-        m.material.material_class != spectral::MaterialClass::Metal ||
-        m.coverage.both < kSpreadMinCoverage)
-      continue;
-    const std::string g = spread_group(m.material.source);
+    const std::string g = spread_group_of(*s.material);
     if (!g.empty()) by_group[g].push_back(&s);
   }
   std::vector<GroupPages> out;

@@ -14,6 +14,14 @@
 
 namespace fl::analysis {
 
+std::string spread_group_of(const LoadedMaterial& m) {
+  if (m.material.origin != spectral::Material::Origin::Page ||
+      m.material.material_class != spectral::MaterialClass::Metal ||
+      m.coverage.both < kSpreadMinCoverage)
+    return {};
+  return spread_group(m.material.source);
+}
+
 std::string spread_group(const std::string& page) {
   const std::filesystem::path p(page);
   const std::string book = p.parent_path().parent_path().generic_string();
@@ -69,12 +77,7 @@ std::map<std::string, std::vector<PageColours>> groups_of(const Context& ctx,
   std::map<std::string, std::vector<PageColours>> groups;
   const auto schlick = fresnel::model_of<fresnel::models::Schlick>;
   for (const auto& s : pages) {
-    const auto& m = *s.material;
-    if (m.material.origin != spectral::Material::Origin::Page ||
-        m.material.material_class != spectral::MaterialClass::Metal ||
-        m.coverage.both < kSpreadMinCoverage)
-      continue;
-    const std::string g = spread_group(m.material.source);
+    const std::string g = spread_group_of(*s.material);
     if (g.empty()) continue;
     groups[g].push_back({&s, ctx.rgb_to_lab(s.derived.f0), ctx.rgb_to_lab(s.derived.f82),
                          s.result(schlick).derived_error.rms});

@@ -29,6 +29,10 @@ PageStudies study_pages(const Context& ctx, const std::vector<std::string>& glob
 // The pages a spread uses cover at least this share of the visible range.
 constexpr double kSpreadMinCoverage = 0.99;
 
+// The group a studied material joins in a spread or a consensus: a database page of a metal
+// covering kSpreadMinCoverage of the visible range; empty for any other material.
+std::string spread_group_of(const LoadedMaterial& m);
+
 // One row per group with at least two pages (conductor pages among `pages` covering at least
 // kSpreadMinCoverage; the others are left out), for its bulk measurements and for all its pages:
 // pairwise ΔE2000 between the pages' F0 colours and between their F82 colours (largest and median),
