@@ -57,7 +57,8 @@ class MemoryInput : public Imf::IStream {
   MemoryInput(const std::string& path, const std::string& bytes)
       : Imf::IStream(path.c_str()), bytes_(bytes) {}
   bool read(char c[], int n) override {
-    if (n < 0 || position_ + static_cast<size_t>(n) > bytes_.size())
+    // position_ may lie past the end after a seek; compare without forming position_ + n.
+    if (n < 0 || position_ > bytes_.size() || static_cast<size_t>(n) > bytes_.size() - position_)
       throw std::runtime_error("early end of file");
     std::memcpy(c, bytes_.data() + position_, static_cast<size_t>(n));
     position_ += static_cast<size_t>(n);
