@@ -150,7 +150,8 @@ SphereImage render_sphere(const SceneLight& light, const FresnelTable& fresnel,
 // is 2^exposure_ev. At 0 EV a white Lambertian sphere lit by it has mean luminance 1 (the working
 // space's white, Y = 1, the reference of CIELAB and so of the heat maps), as a look-dev artist
 // exposes a plate so that an 18% grey ball reads 0.18; ΔE2000 then compares across environments.
-// `scale` receives the factor applied. A black image stays black.
+// `scale` receives the factor applied. An image whose mean luminance is not positive and finite
+// (black, all negative, overflowing) is an InputError: no exposure can light it.
 EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std::string& space,
                                double rotation_deg, double exposure_ev, double& scale);
 
