@@ -111,7 +111,7 @@ TEST(StrictCatalog, UnknownKeysNameTheLineAndTheNearestKnownKey) {
   const std::string far = tmp.file("far.yml", "name: T\nclass: dielectric\ncolour: red\n");
   EXPECT_EQ(input_error([&] { read_catalog_entry(far, paths); }),
             far +
-                ":3: unknown key 'colour' in a catalog entry (expected name, class, reference, "
+                ":3: unknown key 'colour' in a catalog entry (expected name, class, aliases, reference, "
                 "order, talk_schlick_rms_de00, source, file, constant)");
   const std::string inner =
       tmp.file("inner.yml", "name: T\nclass: dielectric\nconstant:\n  n: 1.5\n  kappa: 0\n");
