@@ -350,9 +350,8 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
     if (name.rfind("tables/", 0) == 0)
       md += fmt::format("| {} | {} |\n", name.substr(7), num(res.median_seconds() * 1e3, 2));
   md += "\n## Targets\n\n";
-  md += fmt::format(
-      "- ΔE2000: ours (template) {} ns, Little CMS {} ns per pair: {}× faster.\n", num(t, 1),
-      num(l, 1), num(l / t, 2));
+  md += fmt::format("- ΔE2000: ours (template) {} ns, Little CMS {} ns per pair: {}× faster.\n",
+                    num(t, 1), num(l, 1), num(l / t, 2));
   md += fmt::format(
       "- ΔE2000 batched: ours {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 5×).\n",
       num(bt, 1), num(l, 1), num(l / bt, 2));

@@ -112,8 +112,8 @@ HWY_INLINE V weighted_difference(D d, V dl, V dc, V d_big_h, V l_bar, V cp_bar, 
 }
 
 // Sharma, Wu & Dalal 2005, "The CIEDE2000 color-difference formula: implementation notes", from
-// the unit hue vectors u = (a′, b)/C′ instead of hue angles: one atan2 (the mean hue in degrees, for
-// the Δθ term) instead of two, and the T term's four cosines and sin(Δh′/2) by vector algebra.
+// the unit hue vectors u = (a′, b)/C′ instead of hue angles: one atan2 (the mean hue in degrees,
+// for the Δθ term) instead of two, and the T term's four cosines and sin(Δh′/2) by vector algebra.
 // ΔE00 of the lanes' pairs; `reference` marks achromatic colours (or chromas near underflow) and
 // opposite hues (where the formula's hue conventions decide, not geometry), whose results the
 // caller replaces with the reference's (the template ciede2000<double>).

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "analysis/basis/basis.h"
+#include "csv_reader.h"
 #include "fresnel/basis.h"
 #include "fresnel/exact.h"
-#include "csv_reader.h"
 
 namespace fl::analysis {
 namespace {
@@ -247,7 +247,8 @@ std::map<std::string, Vec> committed_functions() {
       test::csv_file_rows(std::string(FL_SOURCE_DIR) + "/data/basis/basis_functions.csv");
   std::map<std::string, Vec> columns;
   for (size_t i = 1; i < rows.size(); ++i)
-    for (size_t c = 0; c < rows[0].size(); ++c) columns[rows[0][c]].push_back(std::stod(rows[i][c]));
+    for (size_t c = 0; c < rows[0].size(); ++c)
+      columns[rows[0][c]].push_back(std::stod(rows[i][c]));
   return columns;
 }
 

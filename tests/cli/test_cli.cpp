@@ -44,10 +44,10 @@ TEST(Cli, HelpForEveryCommand) {
       pending.push_back(cmd.empty() ? sub : cmd + " " + sub);
   }
   // The README's command list, by name: each is registered (and so was visited above).
-  for (const char* cmd :
-       {"materials", "curve", "presets", "table", "reproduce", "lut", "lut dfg", "lut ltc-moments",
-        "lut ltc", "plot", "plot strip", "plot curves", "render", "speed", "plan", "pages",
-        "library", "consensus", "shader", "basis"})
+  for (const char* cmd : {"materials",  "curve",       "presets",         "table",   "reproduce",
+                          "lut",        "lut dfg",     "lut ltc-moments", "lut ltc", "plot",
+                          "plot strip", "plot curves", "render",          "speed",   "plan",
+                          "pages",      "library",     "consensus",       "shader",  "basis"})
     EXPECT_NE(std::find(visited.begin(), visited.end(), cmd), visited.end()) << cmd;
 }
 

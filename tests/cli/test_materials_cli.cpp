@@ -240,7 +240,8 @@ TEST(MaterialsCli, LibraryListsEveryPageInOrSkippedWithItsReasonAndFlagsExtrapol
   // coverage.
   const auto def = run_command(base + " -q library --out '" + tmp.path() + "/def'");
   ASSERT_EQ(def.status, 0) << def.err;
-  EXPECT_EQ(csv_records(test::run_command("cat '" + tmp.path() + "/def/library.csv'").out).size(), 1u);
+  EXPECT_EQ(csv_records(test::run_command("cat '" + tmp.path() + "/def/library.csv'").out).size(),
+            1u);
 }
 
 // main/Zn/nk/Querry has RGB η ≈ 13.7: the fit box no longer pins it, and the fit ends no worse than

@@ -32,7 +32,9 @@ constexpr double kBiasTolerance = 2e-3;
 
 const std::string kPresets = std::string(FL_SHARED_TESTDATA) + "/peer_presets";
 
-std::vector<test::CsvRow> read_csv(const std::string& path) { return test::csv_file_rows(path); }
+std::vector<test::CsvRow> read_csv(const std::string& path) {
+  return test::csv_file_rows(path);
+}
 
 using Rgb = std::array<double, 3>;
 // (metal, space, quantity) → published value.
@@ -67,8 +69,8 @@ std::map<std::string, Preset> run_presets(const std::string& options) {
   const auto rows = test::csv_rows(r.out);
   EXPECT_FALSE(rows.empty());
   if (rows.empty()) return out;
-  const std::vector<std::string> want{"material",         "base_color_r",     "base_color_g",
-                                      "base_color_b",     "specular_color_r", "specular_color_g",
+  const std::vector<std::string> want{"material",        "base_color_r",     "base_color_g",
+                                      "base_color_b",    "specular_color_r", "specular_color_g",
                                       "specular_color_b"};
   EXPECT_TRUE(rows[0].size() >= want.size() &&
               std::equal(want.begin(), want.end(), rows[0].begin()));

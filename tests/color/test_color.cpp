@@ -10,9 +10,9 @@
 #include "color/lab.h"
 #include "color/ocio.h"
 #include "color/rgb_space.h"
+#include "csv_reader.h"
 #include "spectral/errors.h"
 #include "test_util.h"
-#include "csv_reader.h"
 
 namespace fl::color {
 namespace {

@@ -38,8 +38,9 @@ struct Pair {
 
 std::vector<Pair> sharma_pairs() {
   std::vector<Pair> out;
-  for (const auto& row : fl::test::csv_file_rows(
-           std::string(FL_SHARED_TESTDATA) + "/ciede2000_sharma2005.csv", {.skip_comments = true})) {
+  for (const auto& row :
+       fl::test::csv_file_rows(std::string(FL_SHARED_TESTDATA) + "/ciede2000_sharma2005.csv",
+                               {.skip_comments = true})) {
     if (row[0] == "pair") continue;  // the header
     const auto v = fl::test::csv_numbers(row);
     if (v.size() != 8) continue;

@@ -21,7 +21,9 @@ namespace {
 
 using Row = test::CsvRecord;
 
-std::vector<Row> csv_rows(const std::string& text) { return test::csv_records(text); }
+std::vector<Row> csv_rows(const std::string& text) {
+  return test::csv_records(text);
+}
 
 std::string run_ok(const std::string& args) {
   const auto r = test::run_command(test::cli() + " -q " + args);

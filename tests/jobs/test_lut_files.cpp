@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "analysis/lut/lut.h"
+#include "csv_reader.h"
 #include "dfg_reference.h"
 #include "quadrature.h"
-#include "csv_reader.h"
 #include "test_util.h"
 
 namespace fl {
@@ -182,8 +182,8 @@ TEST(LutFiles, SplitSumCsvCarriesItsFormulaAndReproducesTheIntegral) {
   EXPECT_EQ(comments, 3);  // axes, channels, shader
   const auto table = test::csv_rows(text, {.skip_comments = true});
   ASSERT_FALSE(table.empty());
-  EXPECT_EQ(table[0], (test::CsvRow{"nov", "perceptual_roughness", "alpha", "dfg1", "dfg2",
-                                    "dfg_f82"}));
+  EXPECT_EQ(table[0],
+            (test::CsvRow{"nov", "perceptual_roughness", "alpha", "dfg1", "dfg2", "dfg_f82"}));
   for (size_t i = 1; i < table.size(); ++i) {
     const auto c = test::csv_numbers(table[i]);
     ASSERT_EQ(c.size(), 6u);
