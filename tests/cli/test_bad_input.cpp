@@ -35,8 +35,8 @@ void PrintTo(const Case& c, std::ostream* os) {
 
 std::vector<Case> load_manifest() {
   std::vector<Case> out;
-  for (const auto& f :
-       test::csv_file_rows(kBadDir + "/manifest.tsv", {.separator = '\t', .skip_comments = true})) {
+  for (const auto& f : fl::test::csv_file_rows(kBadDir + "/manifest.tsv",
+                                               {.separator = '\t', .skip_comments = true})) {
     if (f.size() != 4) throw std::runtime_error("manifest.tsv: bad row: " + f[0]);
     out.push_back({f[0], f[1], f[2], f[3]});
   }
@@ -284,7 +284,7 @@ TEST(SpecialInputs, CatalogNamesAreUnique) {
 // A curve CSV without its material column (the file's name, which differs between the copies).
 std::string without_material(const std::string& csv) {
   std::string out;
-  for (auto cells : test::csv_rows(csv)) {
+  for (auto cells : fl::test::csv_rows(csv)) {
     if (cells.size() > 8) cells.erase(cells.begin() + 8);
     for (size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + cells[i];
     out += "\n";
