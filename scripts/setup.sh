@@ -17,7 +17,7 @@ PACKAGES=(
   colord-data
   googletest libgtest-dev libgmock-dev libbenchmark-dev libxml2-utils
   liblcms2-dev libcairo2-dev fonts-dejavu-core libgif-dev
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format python3
   glslang-tools spirv-tools
   chromium nodejs npm
 )

@@ -125,21 +125,9 @@ std::optional<std::string> unknown_command(int argc, char** argv) {
   return std::nullopt;
 }
 
-}  // namespace
-
-int run(int argc, char** argv) {
-  CLI::App app{
-      "Fresnel Lab: spectral ground truth, Fresnel approximations and their parameters, in "
-      "CIEDE2000."};
-  app.name("fresnel-lab");
-  app.require_subcommand(1);
-  GlobalOptions g;
+// The global options, into g (their defaults already set).
+void add_global_options(CLI::App& app, GlobalOptions& g) {
   auto& s = g.settings;
-  const char* env_db = std::getenv("FRESNEL_LAB_DB");
-  s.paths.database = env_db && *env_db ? env_db : FRESNEL_LAB_DEFAULT_DB;
-  s.paths.materials = FRESNEL_LAB_DEFAULT_MATERIALS;
-  if (const char* env_ocio = std::getenv("OCIO"); env_ocio && *env_ocio) s.ocio_config = env_ocio;
-
   app.add_option(
          "--db", s.paths.database,
          "refractiveindex.info database root (the folder holding data/); default $FRESNEL_LAB_DB")
@@ -176,6 +164,24 @@ int run(int argc, char** argv) {
                  "this share of the visible range, weighted by the illuminant x ybar (0-1; default "
                  "0.99: a material measured over part of the visible is mostly extrapolation)")
       ->check(CLI::Range(0.0, 1.0));
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  CLI::App app{
+      "Fresnel Lab: spectral ground truth, Fresnel approximations and their parameters, in "
+      "CIEDE2000."};
+  app.name("fresnel-lab");
+  app.require_subcommand(1);
+  GlobalOptions g;
+  auto& s = g.settings;
+  const char* env_db = std::getenv("FRESNEL_LAB_DB");
+  s.paths.database = env_db && *env_db ? env_db : FRESNEL_LAB_DEFAULT_DB;
+  s.paths.materials = FRESNEL_LAB_DEFAULT_MATERIALS;
+  if (const char* env_ocio = std::getenv("OCIO"); env_ocio && *env_ocio) s.ocio_config = env_ocio;
+
+  add_global_options(app, g);
 
   // Global options are accepted after the command as well as before it: a subcommand passes the
   // options it does not know to the program (CLI11's fallthrough, inherited by every subcommand).

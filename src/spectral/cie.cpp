@@ -12,6 +12,50 @@
 
 namespace fl::spectral {
 
+namespace {
+
+// One data row of a CGATS file: `columns` finite numbers (any number when the format is not given).
+template <class Fields>
+std::vector<double> cgats_row(const std::string& path, int line, const Fields& fields,
+                              size_t columns) {
+  std::vector<double> row;
+  for (auto f : fields) {
+    double v;
+    if (!parse_finite(f, v))
+      throw InputError(path, line, fmt::format("'{}' is not a finite number", f));
+    row.push_back(v);
+  }
+  if (columns != 0 && row.size() != columns)
+    throw InputError(path, line, fmt::format("expected {} values, found {}", columns, row.size()));
+  return row;
+}
+
+// The wavelengths of SPECTRAL_BANDS samples over [start, end], once the range and every data set
+// are checked against them.
+std::vector<double> cgats_wavelengths(const std::string& path, double start, double end,
+                                      double bands, const std::vector<std::vector<double>>& sets) {
+  if (bands < 2 || bands > 100000 || !(end > start) || bands != std::floor(bands))
+    throw InputError(path, 0, "SPECTRAL_BANDS / range are inconsistent");
+  if (!(start > 0.0))
+    throw InputError(path, 0, fmt::format("SPECTRAL_START_NM {:g} must be positive", start));
+  // Every spectrum read here is resampled onto 360-830 nm: a file that misses it is not usable.
+  if (end < 360.0 || start > 830.0)
+    throw InputError(
+        path, 0,
+        fmt::format("range {:g}-{:g} nm misses the visible range 360-830 nm entirely", start, end));
+  if (sets.empty()) throw InputError(path, 0, "no data");
+  const int n = static_cast<int>(bands);
+  for (const auto& s : sets)
+    if (static_cast<int>(s.size()) != n)
+      throw InputError(
+          path, 0, fmt::format("SPECTRAL_BANDS is {} but a data set has {} values", n, s.size()));
+  std::vector<double> lambda_nm;
+  for (int i = 0; i < n; ++i) lambda_nm.push_back(start + (end - start) * i / (n - 1));
+  return lambda_nm;
+}
+
+}  // namespace
+
 CgatsSpectra read_cgats_spectra(const std::string& path) {
   const std::string text = read_text_file(path);
   const auto lines = split_lines(text);
@@ -38,17 +82,7 @@ CgatsSpectra read_cgats_spectra(const std::string& path) {
         in_data = false;
         continue;
       }
-      std::vector<double> row;
-      for (auto f : fields) {
-        double v;
-        if (!parse_finite(f, v))
-          throw InputError(path, line, fmt::format("'{}' is not a finite number", f));
-        row.push_back(v);
-      }
-      if (columns != 0 && row.size() != columns)
-        throw InputError(path, line,
-                         fmt::format("expected {} values, found {}", columns, row.size()));
-      out.sets.push_back(std::move(row));
+      out.sets.push_back(cgats_row(path, line, fields, columns));
       continue;
     }
     auto number = [&](double& v, bool& have) {
@@ -72,22 +106,7 @@ CgatsSpectra read_cgats_spectra(const std::string& path) {
         path, 0, "not a spectral CGATS file (SPECTRAL_START_NM, SPECTRAL_END_NM, SPECTRAL_BANDS)");
   if (in_data || in_format)
     throw InputError(path, static_cast<int>(lines.size()), "truncated: missing END_DATA");
-  if (bands < 2 || bands > 100000 || !(end > start) || bands != std::floor(bands))
-    throw InputError(path, 0, "SPECTRAL_BANDS / range are inconsistent");
-  if (!(start > 0.0))
-    throw InputError(path, 0, fmt::format("SPECTRAL_START_NM {:g} must be positive", start));
-  // Every spectrum read here is resampled onto 360-830 nm: a file that misses it is not usable.
-  if (end < 360.0 || start > 830.0)
-    throw InputError(
-        path, 0,
-        fmt::format("range {:g}-{:g} nm misses the visible range 360-830 nm entirely", start, end));
-  if (out.sets.empty()) throw InputError(path, 0, "no data");
-  const int n = static_cast<int>(bands);
-  for (const auto& s : out.sets)
-    if (static_cast<int>(s.size()) != n)
-      throw InputError(
-          path, 0, fmt::format("SPECTRAL_BANDS is {} but a data set has {} values", n, s.size()));
-  for (int i = 0; i < n; ++i) out.lambda_nm.push_back(start + (end - start) * i / (n - 1));
+  out.lambda_nm = cgats_wavelengths(path, start, end, bands, out.sets);
   return out;
 }
 

@@ -63,14 +63,17 @@ TEST(Registry, BatchMatchesScalarInDoubleAndFloat) {
   }
 }
 
-// Every corner of the fit box, at normal, intermediate and grazing incidence: finite values, and
-// for models whose first channel parameter is F0, exactly F0 at normal incidence.
+// Every corner of the fit box (each parameter at its lower or upper bound, all 2^n combinations),
+// at normal, intermediate and grazing incidence: finite values, and for models whose first channel
+// parameter is F0, exactly F0 at normal incidence. Every bound of every parameter is visited.
 TEST(Registry, FiniteAtTheCornersOfTheFitBox) {
   for (const auto& spec : fresnel::model_specs()) {
     const auto box = spec.bounds();
     const size_t n = box.size();
-    ASSERT_LE(n, 12u);
-    for (unsigned corner = 0; corner < (1u << n); corner += 1u + (n > 6 ? 7u : 0u)) {
+    ASSERT_LE(n, 12u);  // at most 4096 corners
+    std::vector<std::array<bool, 2>> met(n, {false, false});
+    for (unsigned corner = 0; corner < (1u << n); ++corner) {
+      for (size_t i = 0; i < n; ++i) met[i][(corner >> i) & 1u] = true;
       std::vector<double> p(n);
       for (size_t i = 0; i < n; ++i) p[i] = (corner >> i) & 1u ? box[i].hi : box[i].lo;
       for (double c : {0.0, 1e-7, 1.0 / 7.0, 0.5, 1.0 - 1e-9, 1.0}) {
@@ -91,6 +94,8 @@ TEST(Registry, FiniteAtTheCornersOfTheFitBox) {
         }
       }
     }
+    for (size_t i = 0; i < n; ++i)
+      EXPECT_TRUE(met[i][0] && met[i][1]) << spec.name << " parameter " << i;
   }
 }
 
@@ -128,6 +133,7 @@ struct FlatMaterial {
                                          fresnel::kDefaultPointSampleNm);
   }
   double truth(double cos_theta) const { return fresnel::fresnel_conductor(cos_theta, ior); }
+  fresnel::DeriveInput input() const { return {derived, spectrum, 1.0, ctx.rgb_weights()}; }
 };
 
 // Every model's derived parameters reproduce a flat material's normal-incidence colour, and the
@@ -138,14 +144,14 @@ TEST(Registry, DerivationOnAFlatMaterialIsExactAtNormalIncidence) {
                          std::complex<double>(2.8, 3.5)}) {
     const FlatMaterial m(ior);
     for (const auto& spec : fresnel::model_specs()) {
-      const auto p = fresnel::derived_model_params(spec.model, m.derived);
+      const auto p = fresnel::derived_model_params(spec.model, m.input());
       const auto at0 = spec.evaluate(1.0, p.data(), false);
       for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(at0[c], m.truth(1.0) * m.flat_response[c], 1e-9) << spec.name << " ior " << ior;
     }
     // RGB η, κ: processed as reflectances, a constant η, κ comes back scaled by the flat response.
     const auto eta_kappa =
-        fresnel::derived_model_params(fresnel::model_of<fresnel::models::FresnelRgb>, m.derived);
+        fresnel::derived_model_params(fresnel::model_of<fresnel::models::FresnelRgb>, m.input());
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(eta_kappa[2 * c], ior.real() * m.flat_response[c], 1e-9);
       EXPECT_NEAR(eta_kappa[2 * c + 1], ior.imag() * m.flat_response[c], 1e-9);
@@ -167,9 +173,10 @@ TEST(Registry, JacobiansMatchFiniteDifferencesAtSeveralPoints) {
   const auto target = analysis::curve_target(ctx, truth);
   const auto d = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, gold.ior,
                                             1.0, fresnel::kDefaultPointSampleNm);
+  const fresnel::DeriveInput in{d, gold.ior, 1.0, ctx.rgb_weights(), ctx.cos_thetas(), truth};
   for (const auto& spec : fresnel::model_specs()) {
     const auto fitted =
-        fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d)).parameters;
+        fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, in)).parameters;
     for (const double scale : {0.97, 0.995, 1.004}) {
       auto p = fitted;
       for (size_t i = 0; i < p.size(); ++i) p[i] *= i % 2 ? scale : 2.0 - scale;
