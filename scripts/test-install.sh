@@ -31,7 +31,7 @@ grep -Eq '^fresnel-lab [0-9]+\.[0-9]+\.[0-9]+ \(commit [0-9a-f]+|unknown\)' "$tm
   fail "--version printed: $(cat "$tmp/version.out")"
 cat "$tmp/version.out"
 step presets "$tool" --db "$db" -q presets gold
-grep -q '^gold,' "$tmp/presets.out" || fail "presets gold printed no gold row"
+grep -q '^Gold,metal,' "$tmp/presets.out" || fail "presets gold printed no gold row"
 step reproduce "$tool" --db "$db" -q reproduce --out "$tmp/elsewhere/reports"
 [ -s reports/index.html ] && [ -s reports/schlick.csv ] || fail "reproduce wrote no report"
 echo "ok: reproduce wrote $(find reports -type f | wc -l) files"
