@@ -42,6 +42,18 @@ std::string error_name(const analysis::PlanChoice& c) {
              : fmt::format("rendered ({})", analysis::lighting_name(c.error_lighting));
 }
 
+// A cost, or "unmeasured" (no row in the cost file).
+template <class T>
+Json cost_json(const std::optional<T>& c) {
+  return c ? Json(*c) : Json(analysis::kUnmeasured);
+}
+std::string gpu_text(const std::optional<int>& c) {
+  return c ? std::to_string(*c) : std::string(analysis::kUnmeasured);
+}
+std::string cpu_text(const std::optional<double>& c) {
+  return c ? format_number(*c, kCostDecimals) : std::string(analysis::kUnmeasured);
+}
+
 Json params_json(const analysis::PlanChoice& m) {
   const auto names = fresnel::model_spec(m.model).param_names();
   Json params = Json::object();
@@ -64,8 +76,8 @@ Json choice_json(const analysis::Scene& scene, const analysis::PlanChoice& m) {
           {"shading", how},
           {"error_used",
            {{"lighting", analysis::lighting_name(m.error_lighting)}, {"rms_de00", m.error}}},
-          {"gpu_instructions", m.gpu_instructions},
-          {"cpu_ns_per_eval", m.ns_per_eval},
+          {"gpu_instructions", cost_json(m.gpu_instructions)},
+          {"cpu_ns_per_eval", cost_json(m.ns_per_eval)},
           {"meets_budget", m.meets_budget},
           {"f_avg", {m.f_avg.r, m.f_avg.g, m.f_avg.b}}};
 }
@@ -88,20 +100,21 @@ std::string plan_json(const analysis::Plan& p) {
   for (const auto& m : p.materials) materials.push_back(choice_json(p.scene, m));
   for (const auto& m : p.scene_choice.materials) scene_materials.push_back(choice_json(p.scene, m));
   const auto& sc = p.scene_choice;
-  const Json doc = {{"scene", p.scene.path},
-                    {"space", p.space},
-                    {"max_de00", p.scene.max_de00},
-                    {"lighting", lighting_list(p.scene)},
-                    {"materials", std::move(materials)},
-                    {"luts", luts_json(p.luts)},
-                    {"scene_shader",
-                     {{"model", fresnel::model_spec(sc.model).name},
-                      {"meets_every_budget", sc.failing.empty()},
-                      {"failing", sc.failing},
-                      {"gpu_instructions", sc.gpu_instructions},
-                      {"cpu_ns_per_eval", sc.ns_per_eval},
-                      {"materials", std::move(scene_materials)},
-                      {"luts", luts_json(p.scene_luts)}}}};
+  Json doc = {{"scene", p.scene.path},
+              {"space", p.space},
+              {"max_de00", p.scene.max_de00},
+              {"lighting", lighting_list(p.scene)},
+              {"materials", std::move(materials)},
+              {"luts", luts_json(p.luts)},
+              {"scene_shader",
+               {{"model", fresnel::model_spec(sc.model).name},
+                {"meets_every_budget", sc.failing.empty()},
+                {"failing", sc.failing},
+                {"gpu_instructions", cost_json(sc.gpu_instructions)},
+                {"cpu_ns_per_eval", cost_json(sc.ns_per_eval)},
+                {"materials", std::move(scene_materials)},
+                {"luts", luts_json(p.scene_luts)}}}};
+  if (!p.unmeasured.empty()) doc["unmeasured"] = p.unmeasured;
   return write_json(doc, [](const std::string& key) {
     if (key == "max_de00" || key == "rms_de00" || key == "punctual" || key == "ibl" ||
         key == "area" || key == "roughness")
@@ -167,8 +180,8 @@ std::string scene_markdown(const analysis::Plan& p) {
   s += fmt::format(
       ". Cost: {} GPU instructions ({}), {} CPU ns per evaluation. Shader: `fresnel-lab plan {} "
       "--shader`.\n\n",
-      sc.gpu_instructions, join(lighting_list(p.scene), " + "),
-      format_number(sc.ns_per_eval, kCostDecimals), p.scene.path);
+      gpu_text(sc.gpu_instructions), join(lighting_list(p.scene), " + "), cpu_text(sc.ns_per_eval),
+      p.scene.path);
   s += table_header(p.scene, false);
   for (const auto& m : sc.materials)
     s += fmt::format("| {} | {} |{} {} | {} | {} | {} |\n", m.material,
@@ -220,6 +233,11 @@ std::string plan_markdown(const analysis::Plan& p, const analysis::PlanCosts& co
       unserved ? fmt::format(" {} material(s) cannot be served within the budget by any model.",
                              unserved)
                : std::string());
+  if (!p.unmeasured.empty())
+    s += fmt::format(
+        "\nUnmeasured cost (no row in a cost file; scripts/bench.sh and scripts/gpu_costs.sh "
+        "measure them): {}. Their cost is unknown, so they rank after every measured model.\n",
+        join(p.unmeasured, ", "));
   return s;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "draw/plot.h"
 #include "io/writer.h"
@@ -70,7 +71,7 @@ SpeedAxes speed_axes(const std::vector<analysis::SpeedRow>& rows) {
   if (rows.empty()) return {log_axis(0.1, 10), log_axis(0.1, 10)};
   double xmin = 1e300, xmax = 0, ymin = 1e300, ymax = 0;
   for (const auto& r : rows) {
-    xmin = std::min(xmin, r.ns_per_eval), xmax = std::max(xmax, r.ns_per_eval);
+    xmin = std::min(xmin, *r.ns_per_eval), xmax = std::max(xmax, *r.ns_per_eval);
     const double e = std::max(r.median_rms_de00, kFloorDe);
     ymin = std::min(ymin, e), ymax = std::max(ymax, e);
   }
@@ -111,7 +112,7 @@ void add_pareto_front(Drawing& d, const SpeedAxes& a, const std::vector<analysis
   });
   Polyline line{{}, kFront, 2.0, {}};
   for (size_t i = 0; i < front.size(); ++i) {
-    const Point p = a.map(front[i].ns_per_eval, front[i].median_rms_de00);
+    const Point p = a.map(*front[i].ns_per_eval, front[i].median_rms_de00);
     if (i > 0) line.points.push_back({p.x, line.points.back().y});
     line.points.push_back(p);
   }
@@ -148,7 +149,11 @@ void add_speed_legend(Drawing& d) {
 
 }  // namespace
 
-Drawing speed_plot(const std::vector<analysis::SpeedRow>& rows) {
+Drawing speed_plot(const std::vector<analysis::SpeedRow>& all_rows) {
+  // Only the rows with a measured CPU cost have a place on the cost axis.
+  std::vector<analysis::SpeedRow> rows;
+  std::copy_if(all_rows.begin(), all_rows.end(), std::back_inserter(rows),
+               [](const analysis::SpeedRow& r) { return r.ns_per_eval.has_value(); });
   Drawing d;
   d.width = kWidth;
   d.height = kHeight;
@@ -156,7 +161,7 @@ Drawing speed_plot(const std::vector<analysis::SpeedRow>& rows) {
   add_speed_axes(d, a);
   add_pareto_front(d, a, rows);
   for (const auto& r : rows)
-    d.add(marker(a.map(r.ns_per_eval, r.median_rms_de00), model_colour(r.model), r.fitted));
+    d.add(marker(a.map(*r.ns_per_eval, r.median_rms_de00), model_colour(r.model), r.fitted));
   add_speed_legend(d);
   return d;
 }

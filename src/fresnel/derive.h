@@ -3,6 +3,7 @@
 // wavelength per channel), η, κ processed as if they were reflectances, and Gulbrandsen's edge
 // tint from each. Each model's unit (models/) maps these to its "derived" parameter set.
 #include <array>
+#include <span>
 #include <vector>
 
 #include "fresnel/ground_truth.h"
@@ -17,6 +18,19 @@ struct DerivedParameters {
   color::Rgb g_refl_eta, g_ps_eta;  // Gulbrandsen g from (F0, Refl. η) and (F0, PS η), unclamped
   double eta_rep = 1,
          kappa_rep = 0;  // Cook-Torrance representative index: luminance (Y) of Refl. η, κ
+};
+
+// What a unit's derivation (derive, extra_starts) receives: the spectral procedure's RGB parameters
+// and the material's spectral data itself, so that a model can derive its parameters from the
+// spectrum or the ground-truth curve (a projection onto a basis, say). Views into the caller's
+// data, valid for the call.
+struct DeriveInput {
+  const DerivedParameters& derived;
+  const spectral::ComplexIorSpectrum& ior;  // as measured: absolute, on the pipeline's grid
+  double eta_outside = 1;                   // the outside medium's real index
+  std::span<const color::Rgb> rgb_weights;  // the colour pipeline: RGB = Σ R(λ)·w(λ) over ior
+  std::span<const double> cos_thetas;       // the angles of `truth`
+  std::span<const color::Rgb> truth;        // the ground-truth curve (empty when not computed)
 };
 
 // Every index is taken relative to the outside medium eta_outside. `rgb_to_xyz` gives the

@@ -1,7 +1,8 @@
 #pragma once
 // What every Fresnel model declares about itself. A model is one unit (one file in models/): its
 // kernel, its parameters, its derivation from spectral data, its fit starts and what can
-// pre-integrate it. The registry (registry.h) lists the units; everything else is generic.
+// pre-integrate it; unit.h states the members every unit must have (ModelUnit). The registry
+// (registry.h) lists the units and checks each; everything else is generic.
 //
 // Parameter layout, shared by evaluation, derivation, fitting and reports: the per-channel
 // parameters first (R block, G block, B block), then the parameters shared by the channels.
@@ -134,6 +135,7 @@ struct ModelSpec {
   bool can_leave_unit_range;  // the curve can leave [0, 1] for some parameters (reported, not
                               // clamped)
   bool has_output_clamp;      // the kernel clamps its output; evaluate(..., unclamped) skips that
+  bool identifiable;          // a fit from a nearby start recovers the parameters (UnitFeatures)
 
   // Evaluations over the flat parameter layout.
   color::Rgb (*evaluate)(double cos_theta, const double* params, bool unclamped);
@@ -182,20 +184,18 @@ color::RgbT<T> evaluate_unit(T cos_theta, const T* params) {
           M::channel(cos_theta, params + 2 * kPer, shared)};
 }
 
-// A unit may split its channel at the angle: prepare(p, shared) does the work that does not depend
-// on it, channel_at(cos_theta, prepared) the rest, with the operations of channel() in its order,
-// so the values are channel()'s bit for bit. A fit evaluating every angle at one parameter point
-// then prepares each channel once. For a unit without the split, prepare_channel keeps the
-// pointers and channel_at calls channel().
+// A unit may split its channel at the angle (UnitFeatures::prepared_channel): prepare(p, shared)
+// does the work that does not depend on it, channel_at(cos_theta, prepared) the rest, with the
+// operations of channel() in its order, so the values are channel()'s bit for bit. A fit evaluating
+// every angle at one parameter point then prepares each channel once. For a unit without the split,
+// prepare_channel keeps the pointers and channel_at calls channel().
 template <class T>
 struct UnpreparedChannel {
   const T* p;
   const T* shared;
 };
 template <class M, class T>
-concept PreparesChannel = requires(const T* p) {
-  M::prepare(p, p);
-};
+concept PreparesChannel = M::kFeatures.prepared_channel;
 template <class M, class T>
 auto prepare_channel(const T* p, const T* shared) {
   if constexpr (PreparesChannel<M, T>)

@@ -33,10 +33,10 @@ int reflectances_outside_unit(Model m, const std::vector<double>& params);
 // Moves parameters into the model's domain (ParamSpec::domain). Returns how many moved.
 int clamp_to_domain(Model m, std::vector<double>& params);
 
-// The model's "derived" parameter set from the spectral procedure, and its fit starts: the
-// derived set first, then the unit's other derivations (deterministic).
-std::vector<double> derived_model_params(Model m, const DerivedParameters& d);
-std::vector<std::vector<double>> fit_starts(Model m, const DerivedParameters& d);
+// The model's "derived" parameter set from the material's spectral data (DeriveInput), and its fit
+// starts: the derived set first, then the unit's other derivations (deterministic).
+std::vector<double> derived_model_params(Model m, const DeriveInput& in);
+std::vector<std::vector<double>> fit_starts(Model m, const DeriveInput& in);
 
 // Plausible parameters (gold in ACEScg, roughly) for benchmarks and examples.
 std::vector<double> example_params(Model m);

@@ -11,9 +11,7 @@ namespace fl::fresnel {
 namespace {
 
 template <class Unit>
-constexpr bool kHasOutputClamp = requires(const double* p) {
-  Unit::channel_unclamped(0.0, p, p);
-};
+constexpr bool kHasOutputClamp = Unit::kFeatures.output_clamp;
 
 // Unit with its output clamp removed (where it has one).
 template <class Unit>
@@ -25,15 +23,6 @@ struct Unclamped : Unit {
     else
       return Unit::channel(cos_theta, p, shared);
   }
-};
-
-template <class Unit>
-constexpr bool kHasTableTerms = requires(const double* p) {
-  Unit::table_terms(p, p);
-};
-template <class Unit>
-constexpr bool kHasAverage = requires(const double* p) {
-  Unit::average(p, p);
 };
 
 // Channel c's parameters and the shared ones, from the flat layout.
@@ -56,14 +45,14 @@ double average_flat(const double* params, int c) {
 
 template <class Unit>
 constexpr TableTerms (*table_terms_of())(const double*, int) {
-  if constexpr (kHasTableTerms<Unit>)
+  if constexpr (Unit::kFeatures.table_terms)
     return &table_terms_flat<Unit>;
   else
     return nullptr;
 }
 template <class Unit>
 constexpr double (*average_of())(const double*, int) {
-  if constexpr (kHasAverage<Unit>)
+  if constexpr (Unit::kFeatures.closed_form_average)
     return &average_flat<Unit>;
   else
     return nullptr;
@@ -86,6 +75,7 @@ ModelSpec make_spec() {
           Unit::kShader,
           Unit::kCanLeaveUnitRange,
           kHasOutputClamp<Unit>,
+          Unit::kFeatures.identifiable,
           &evaluate_flat<Unit>,
           &evaluate_unit<Unit, float>,
           &detail::batch_channels<Unit, float>,
@@ -203,16 +193,16 @@ int clamp_to_domain(Model m, std::vector<double>& params) {
   return moved;
 }
 
-std::vector<double> derived_model_params(Model m, const DerivedParameters& d) {
+std::vector<double> derived_model_params(Model m, const DeriveInput& in) {
   std::vector<double> p;
-  visit_model(m, [&](auto unit) { p = decltype(unit)::derive(d); });
+  visit_model(m, [&](auto unit) { p = decltype(unit)::derive(in); });
   return p;
 }
 
-std::vector<std::vector<double>> fit_starts(Model m, const DerivedParameters& d) {
-  std::vector<std::vector<double>> s{derived_model_params(m, d)};
+std::vector<std::vector<double>> fit_starts(Model m, const DeriveInput& in) {
+  std::vector<std::vector<double>> s{derived_model_params(m, in)};
   visit_model(m, [&](auto unit) {
-    for (auto& p : decltype(unit)::extra_starts(d)) s.push_back(std::move(p));
+    for (auto& p : decltype(unit)::extra_starts(in)) s.push_back(std::move(p));
   });
   return s;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The registry: every Fresnel model Fresnel Lab compares, in report order. A new model is one
-// file in models/ and one entry in `Registry`; every generic test runs over this list.
+// file in models/ and one entry in `Registry`; every entry must be a ModelUnit (unit.h), checked
+// below, and every generic test runs over this list.
 #include <type_traits>
 
 #include "fresnel/models/cook_torrance.h"
@@ -10,6 +11,7 @@
 #include "fresnel/models/gulbrandsen.h"
 #include "fresnel/models/lazanyi.h"
 #include "fresnel/models/schlick.h"
+#include "fresnel/unit.h"
 
 namespace fl::fresnel {
 
@@ -20,6 +22,14 @@ struct ModelList {
 
 using Registry = ModelList<models::Schlick, models::GeneralizedSchlick, models::CookTorrance,
                            models::Lazanyi, models::F82, models::Gulbrandsen, models::FresnelRgb>;
+
+namespace detail {
+template <class... Units>
+constexpr bool all_units(ModelList<Units...>) {
+  return (check_unit<Units>() && ...);
+}
+}  // namespace detail
+static_assert(detail::all_units(Registry{}), "every registry entry must be a ModelUnit (unit.h)");
 
 namespace detail {
 template <class Unit, class... Units>

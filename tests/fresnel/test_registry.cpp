@@ -128,6 +128,7 @@ struct FlatMaterial {
                                          fresnel::kDefaultPointSampleNm);
   }
   double truth(double cos_theta) const { return fresnel::fresnel_conductor(cos_theta, ior); }
+  fresnel::DeriveInput input() const { return {derived, spectrum, 1.0, ctx.rgb_weights()}; }
 };
 
 // Every model's derived parameters reproduce a flat material's normal-incidence colour, and the
@@ -138,14 +139,14 @@ TEST(Registry, DerivationOnAFlatMaterialIsExactAtNormalIncidence) {
                          std::complex<double>(2.8, 3.5)}) {
     const FlatMaterial m(ior);
     for (const auto& spec : fresnel::model_specs()) {
-      const auto p = fresnel::derived_model_params(spec.model, m.derived);
+      const auto p = fresnel::derived_model_params(spec.model, m.input());
       const auto at0 = spec.evaluate(1.0, p.data(), false);
       for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(at0[c], m.truth(1.0) * m.flat_response[c], 1e-9) << spec.name << " ior " << ior;
     }
     // RGB η, κ: processed as reflectances, a constant η, κ comes back scaled by the flat response.
     const auto eta_kappa =
-        fresnel::derived_model_params(fresnel::model_of<fresnel::models::FresnelRgb>, m.derived);
+        fresnel::derived_model_params(fresnel::model_of<fresnel::models::FresnelRgb>, m.input());
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(eta_kappa[2 * c], ior.real() * m.flat_response[c], 1e-9);
       EXPECT_NEAR(eta_kappa[2 * c + 1], ior.imag() * m.flat_response[c], 1e-9);
@@ -167,9 +168,10 @@ TEST(Registry, JacobiansMatchFiniteDifferencesAtSeveralPoints) {
   const auto target = analysis::curve_target(ctx, truth);
   const auto d = fresnel::derive_parameters(ctx.rgb_weights(), ctx.space().rgb_to_xyz, gold.ior,
                                             1.0, fresnel::kDefaultPointSampleNm);
+  const fresnel::DeriveInput in{d, gold.ior, 1.0, ctx.rgb_weights(), ctx.cos_thetas(), truth};
   for (const auto& spec : fresnel::model_specs()) {
     const auto fitted =
-        fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d)).parameters;
+        fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, in)).parameters;
     for (const double scale : {0.97, 0.995, 1.004}) {
       auto p = fitted;
       for (size_t i = 0; i < p.size(); ++i) p[i] *= i % 2 ? scale : 2.0 - scale;

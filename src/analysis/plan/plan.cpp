@@ -77,6 +77,32 @@ std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, Scene& scen
   return out;
 }
 
+namespace {
+
+// The model's GPU instructions summed over the scene's lightings; nullopt if one is unmeasured.
+std::optional<int> scene_gpu_instructions(const Scene& scene, const GpuCosts& gpu, Model m) {
+  int sum = 0;
+  for (Lighting l : scene.lightings()) {
+    const auto c = gpu.of(m, l);
+    if (!c) return std::nullopt;
+    sum += c->instructions;
+  }
+  return sum;
+}
+
+// Orders costs: measured ones by value, then the unmeasured (unknown) ones.
+template <class T>
+bool cost_less(const std::optional<T>& a, const std::optional<T>& b) {
+  if (a.has_value() != b.has_value()) return a.has_value();
+  return a && *a < *b;
+}
+template <class T>
+bool cost_differs(const std::optional<T>& a, const std::optional<T>& b) {
+  return cost_less(a, b) || cost_less(b, a);
+}
+
+}  // namespace
+
 std::vector<PlanChoice> plan_candidates(const Scene& scene,
                                         const std::vector<RenderedCandidate>& rendered,
                                         const std::string& material,
@@ -99,8 +125,8 @@ std::vector<PlanChoice> plan_candidates(const Scene& scene,
         c.error = r.rms_under(l);
         c.error_lighting = l;
       }
-      c.gpu_instructions += costs.gpu.of(r.model, l).instructions;
     }
+    c.gpu_instructions = scene_gpu_instructions(scene, costs.gpu, r.model);
     c.ns_per_eval = costs.cpu.ns_per_eval(r.model);
     c.meets_budget = c.error <= scene.max_de00;
     c.f_avg = fresnel::hemispherical_average(r.model, r.params);
@@ -114,8 +140,9 @@ PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de
   std::vector<PlanChoice> sorted = candidates;
   // stable_sort keeps model_specs() order (derived before fitted) among exact ties.
   std::stable_sort(sorted.begin(), sorted.end(), [](const PlanChoice& a, const PlanChoice& b) {
-    if (a.gpu_instructions != b.gpu_instructions) return a.gpu_instructions < b.gpu_instructions;
-    if (a.ns_per_eval != b.ns_per_eval) return a.ns_per_eval < b.ns_per_eval;
+    if (cost_differs(a.gpu_instructions, b.gpu_instructions))
+      return cost_less(a.gpu_instructions, b.gpu_instructions);
+    if (cost_differs(a.ns_per_eval, b.ns_per_eval)) return cost_less(a.ns_per_eval, b.ns_per_eval);
     return a.error < b.error;
   });
   for (auto c : sorted)
@@ -164,8 +191,9 @@ SceneChoice choose_scene_model(const std::vector<std::vector<PlanChoice>>& candi
   auto better = [](const SceneChoice& a, const SceneChoice& b) {
     if (a.failing.size() != b.failing.size()) return a.failing.size() < b.failing.size();
     if (!a.failing.empty() && a.max_error != b.max_error) return a.max_error < b.max_error;
-    if (a.gpu_instructions != b.gpu_instructions) return a.gpu_instructions < b.gpu_instructions;
-    if (a.ns_per_eval != b.ns_per_eval) return a.ns_per_eval < b.ns_per_eval;
+    if (cost_differs(a.gpu_instructions, b.gpu_instructions))
+      return cost_less(a.gpu_instructions, b.gpu_instructions);
+    if (cost_differs(a.ns_per_eval, b.ns_per_eval)) return cost_less(a.ns_per_eval, b.ns_per_eval);
     return a.max_error < b.max_error;
   };
   return *std::min_element(options.begin(), options.end(), better);
@@ -213,6 +241,9 @@ Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<Materia
   p.luts = needed_luts(scene, chosen);
   p.scene_choice = choose_scene_model(candidates, scene.max_de00);
   p.scene_luts = needed_luts(scene, {p.scene_choice.model});
+  for (const auto& spec : fresnel::model_specs())
+    if (!scene_gpu_instructions(scene, costs.gpu, spec.model) || !costs.cpu.ns_per_eval(spec.model))
+      p.unmeasured.push_back(spec.name);
   return p;
 }
 

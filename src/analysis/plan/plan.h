@@ -10,11 +10,14 @@
 // integration of the GGX lobe; under `punctual` the curve's RMS ΔE2000. With several lightings
 // the budget applies to the largest of their errors, and the plan names which lighting that was.
 // Cost: the GPU instruction count of the model's shader functions for the scene's lightings
-// (bench/gpu_costs.csv), then CPU ns per evaluation (bench/model_costs.csv), then the error.
+// (bench/gpu_costs.csv), then CPU ns per evaluation (bench/model_costs.csv), then the error. A
+// model without a row in a cost file is unmeasured: its cost is unknown, so it ranks after every
+// measured cost, and the plan names it.
 //
 // Scene file: spectral/scene_file.h. Defaults: max_de00 1.0, space --space, lighting punctual,
 // roughness kDefaultRoughness. Relative file paths are taken relative to the scene file's folder
 // when they exist there.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,8 +71,8 @@ struct PlanChoice {
   double punctual_rms = 0, ibl_rms = 0, area_rms = 0;  // the scene's lightings only
   double error = 0;                                    // the budgeted one: the largest
   Lighting error_lighting = Lighting::Punctual;        // whose error that is
-  int gpu_instructions = 0;                            // summed over the scene's lightings
-  double ns_per_eval = 0;
+  std::optional<int> gpu_instructions;  // summed over the scene's lightings; nullopt: unmeasured
+  std::optional<double> ns_per_eval;    // nullopt: unmeasured
   bool meets_budget =
       false;           // per material: false means no model meets it; this is the most accurate
   color::Rgb f_avg{};  // hemispherical average 2∫F μ dμ (fresnel/average.h)
@@ -81,18 +84,18 @@ std::vector<PlanChoice> plan_candidates(const Scene& scene,
                                         const std::string& material,
                                         const std::vector<double>& roughness,
                                         const PlanCosts& costs);
-// The cheapest candidate with error ≤ max_de00 (ties: CPU ns, then error); when none qualifies,
-// the most accurate, with meets_budget = false.
+// The cheapest candidate with error ≤ max_de00 (ties: CPU ns, then error; an unmeasured cost
+// after every measured one); when none qualifies, the most accurate, with meets_budget = false.
 PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de00);
 
 // One shader for the scene: one model for every material, each material with its parameter set
 // (derived or fitted) of lower error.
 struct SceneChoice {
   fresnel::Model model{};
-  std::vector<PlanChoice> materials;  // meets_budget per material
-  std::vector<std::string> failing;   // materials over the budget
-  int gpu_instructions = 0;
-  double ns_per_eval = 0;
+  std::vector<PlanChoice> materials;    // meets_budget per material
+  std::vector<std::string> failing;     // materials over the budget
+  std::optional<int> gpu_instructions;  // nullopt: unmeasured
+  std::optional<double> ns_per_eval;
   double max_error = 0;
 };
 // The cheapest model meeting every budget (ties: CPU ns, then the largest error); if none does, the
@@ -117,7 +120,8 @@ struct Plan {
   std::vector<PlanChoice> materials;
   std::vector<PlanLut> luts;  // for the per-material choices
   SceneChoice scene_choice;
-  std::vector<PlanLut> scene_luts;  // for the scene-wide model
+  std::vector<PlanLut> scene_luts;      // for the scene-wide model
+  std::vector<std::string> unmeasured;  // models without a CPU or GPU cost for the scene's lighting
 };
 Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<MaterialStudy>& studies,
                const PlanCosts& costs);

@@ -40,6 +40,7 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
                                           o.point_sample_nm);
   const auto& d = st.derived;
   const auto& cos = ctx.cos_thetas();
+  const fresnel::DeriveInput in{d, m.ior, eta_e, ctx.rgb_weights(), cos, st.truth};
   // The truth in CIELAB once, for the fits and for every curve measured against it.
   const auto target = curve_target(ctx, st.truth);
   const auto& truth_lab = target.truth_lab;
@@ -56,13 +57,13 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
         const auto& spec = *specs[k];
         ModelResult& r = st.models[k];
         r.model = spec.model;
-        r.derived = fresnel::derived_model_params(spec.model, d);
+        r.derived = fresnel::derived_model_params(spec.model, in);
         r.derived_error =
             curve_error(ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.derived, cos));
         r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
         if (o.fits(spec.model)) {
           r.fitted =
-              fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, d), fit_options);
+              fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, in), fit_options);
           r.fitted_error = curve_error(
               ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.fitted.parameters, cos));
           r.fitted_clamps = fresnel::output_clamped(spec.model, r.fitted.parameters, cos);

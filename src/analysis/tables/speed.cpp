@@ -18,10 +18,10 @@ namespace fl::analysis {
 
 using fresnel::Model;
 
-double ModelCosts::ns_per_eval(Model m) const {
+std::optional<double> ModelCosts::ns_per_eval(Model m) const {
   for (const auto& c : costs)
     if (c.model == m) return c.ns_per_eval;
-  throw std::logic_error("model without a cost");
+  return std::nullopt;
 }
 
 namespace {
@@ -95,22 +95,17 @@ ModelCosts read_model_costs(const std::string& path) {
         throw InputError(path, line_no, fmt::format("model '{}' listed twice", spec.name));
     out.costs.push_back({spec.model, ns});
   }
-  for (const auto& spec : fresnel::model_specs()) {
-    if (std::none_of(out.costs.begin(), out.costs.end(),
-                     [&](const ModelCost& c) { return c.model == spec.model; }))
-      throw InputError(path, 0, fmt::format("no cost for model '{}'", spec.name));
-  }
-  std::vector<ModelCost> ordered;
+  std::vector<ModelCost> ordered;  // model_specs() order; a model without a row is unmeasured
   for (const auto& spec : fresnel::model_specs())
-    ordered.push_back({spec.model, out.ns_per_eval(spec.model)});
+    if (const auto ns = out.ns_per_eval(spec.model)) ordered.push_back({spec.model, *ns});
   out.costs = std::move(ordered);
   return out;
 }
 
-const GpuCost& GpuCosts::of(Model m, Lighting l) const {
+std::optional<GpuCost> GpuCosts::of(Model m, Lighting l) const {
   for (const auto& c : costs)
     if (c.model == m && c.lighting == l) return c;
-  throw std::logic_error("model without a GPU cost");
+  return std::nullopt;
 }
 
 namespace {
@@ -154,13 +149,6 @@ GpuCosts read_gpu_costs(const std::string& path) {
                                      fresnel::model_spec(c.model).name, lighting_name(c.lighting)));
     out.costs.push_back(c);
   }
-  for (const auto& spec : fresnel::model_specs())
-    for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area})
-      if (std::none_of(out.costs.begin(), out.costs.end(),
-                       [&](const GpuCost& c) { return c.model == spec.model && c.lighting == l; }))
-        throw InputError(
-            path, 0,
-            fmt::format("no GPU cost for model '{}' under {}", spec.name, lighting_name(l)));
   return out;
 }
 
@@ -210,6 +198,35 @@ ModelCosts measure_model_costs(int repeats, double min_ms) {
   return costs;
 }
 
+namespace {
+
+// A row on a front: its cost is measured and no other measured row is at least as cheap and as
+// accurate, and better in one.
+template <class Cost>
+bool on_front(const std::vector<SpeedRow>& rows, const SpeedRow& a, Cost cost) {
+  if (!cost(a)) return false;
+  return std::none_of(rows.begin(), rows.end(), [&](const SpeedRow& b) {
+    if (!cost(b)) return false;
+    const bool no_worse = *cost(b) <= *cost(a) && b.median_rms_de00 <= a.median_rms_de00;
+    const bool better = *cost(b) < *cost(a) || b.median_rms_de00 < a.median_rms_de00;
+    return no_worse && better;
+  });
+}
+
+void mark_pareto_fronts(std::vector<SpeedRow>& rows) {
+  const auto cpu = [](const SpeedRow& r) { return r.ns_per_eval; };
+  const auto gpu = [](const SpeedRow& r) -> std::optional<double> {
+    if (!r.gpu) return std::nullopt;
+    return static_cast<double>(r.gpu->instructions);
+  };
+  for (auto& a : rows) {
+    a.pareto = on_front(rows, a, cpu);
+    a.pareto_gpu = on_front(rows, a, gpu);
+  }
+}
+
+}  // namespace
+
 std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
                                  const GpuCosts& gpu) {
   std::vector<SpeedRow> rows;
@@ -230,20 +247,48 @@ std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, cons
       rows.push_back(row);
     }
   }
-  auto dominated = [&](const SpeedRow& a, auto cost) {
-    return std::any_of(rows.begin(), rows.end(), [&](const SpeedRow& b) {
-      const bool no_worse = cost(b) <= cost(a) && b.median_rms_de00 <= a.median_rms_de00;
-      const bool better = cost(b) < cost(a) || b.median_rms_de00 < a.median_rms_de00;
-      return no_worse && better;
-    });
-  };
-  for (auto& a : rows) {
-    a.pareto = !dominated(a, [](const SpeedRow& r) { return r.ns_per_eval; });
-    a.pareto_gpu =
-        !dominated(a, [](const SpeedRow& r) { return static_cast<double>(r.gpu.instructions); });
-  }
+  mark_pareto_fronts(rows);
   return rows;
 }
+
+namespace {
+
+std::vector<Cell> speed_cells(const SpeedRow& r) {
+  const auto count = [&](int GpuCost::*member) -> Cell {
+    if (!r.gpu) return std::string(kUnmeasured);
+    return static_cast<long long>((*r.gpu).*member);
+  };
+  const Cell cpu = r.ns_per_eval ? Cell(*r.ns_per_eval) : Cell(std::string(kUnmeasured));
+  return {std::string(fresnel::model_spec(r.model).name),
+          std::string(r.fitted ? "fitted" : "derived"),
+          cpu,
+          count(&GpuCost::instructions),
+          count(&GpuCost::arithmetic),
+          count(&GpuCost::extended),
+          r.median_rms_de00,
+          r.max_rms_de00,
+          std::string(r.pareto ? "yes" : "no"),
+          std::string(r.pareto_gpu ? "yes" : "no")};
+}
+
+// Names the models without a measured cost, or "" when every one has both.
+std::string unmeasured_note(const std::vector<SpeedRow>& rows) {
+  std::string cpu, gpu;
+  for (const auto& r : rows) {
+    if (r.fitted) continue;
+    const std::string name = fresnel::model_spec(r.model).name;
+    if (!r.ns_per_eval) cpu += (cpu.empty() ? "" : ", ") + name;
+    if (!r.gpu) gpu += (gpu.empty() ? "" : ", ") + name;
+  }
+  if (cpu.empty() && gpu.empty()) return "";
+  return fmt::format(
+      "unmeasured: no row in the cost files for the CPU cost of {} and the GPU cost of {}; they "
+      "are "
+      "on neither front until scripts/bench.sh and scripts/gpu_costs.sh measure them.",
+      cpu.empty() ? "none" : cpu, gpu.empty() ? "none" : gpu);
+}
+
+}  // namespace
 
 Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
                   const ModelCosts& costs, const GpuCosts& gpu) {
@@ -263,13 +308,9 @@ Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
   const auto rows = speed_rows(studies, costs, gpu);
   std::string front, front_gpu;
   for (const auto& r : rows) {
-    const auto* name = fresnel::model_spec(r.model).name;
-    t.rows.push_back(
-        {std::string(name), std::string(r.fitted ? "fitted" : "derived"), r.ns_per_eval,
-         static_cast<long long>(r.gpu.instructions), static_cast<long long>(r.gpu.arithmetic),
-         static_cast<long long>(r.gpu.extended), r.median_rms_de00, r.max_rms_de00,
-         std::string(r.pareto ? "yes" : "no"), std::string(r.pareto_gpu ? "yes" : "no")});
-    const auto item = fmt::format("{} ({})", name, r.fitted ? "fitted" : "derived");
+    t.rows.push_back(speed_cells(r));
+    const auto item =
+        fmt::format("{} ({})", fresnel::model_spec(r.model).name, r.fitted ? "fitted" : "derived");
     if (r.pareto) front += (front.empty() ? "" : ", ") + item;
     if (r.pareto_gpu) front_gpu += (front_gpu.empty() ? "" : ", ") + item;
   }
@@ -303,6 +344,7 @@ Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
                          static_cast<int>(studies.size()) - metals, st.space, st.illuminant),
              "pareto_cpu, pareto_gpu: judged on (cpu_ns_per_eval, median_rms_de00) and "
              "(gpu_instructions, median_rms_de00)."};
+  if (const auto note = unmeasured_note(rows); !note.empty()) t.notes.push_back(note);
   return t;
 }
 

@@ -6,6 +6,7 @@
 // scripts/bench.sh) writes bench/model_costs.csv, which is committed; `table speed` and `plan`
 // read it, so the same inputs give byte-identical reports. `fresnel-lab speed --measure` times
 // the batched kernels live instead (for a quick look on another machine; not reproducible).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@
 
 namespace fl::analysis {
 
+// A model without a row in a cost file is unmeasured: shown as such, never an error (the
+// scripts fill the files in). Tables print this word in its cost columns.
+inline constexpr const char* kUnmeasured = "unmeasured";
+
 // Cost of one evaluation (one RGB value at one angle) of a model, batched over an array of
 // angles, in float: what a shader or a bulk evaluation pays.
 struct ModelCost {
@@ -25,13 +30,13 @@ struct ModelCost {
 struct ModelCosts {
   std::string source;            // the file the costs came from, or "measured live"
   std::string machine;           // '# machine:' line of the file (CPU, cores, compiler)
-  std::vector<ModelCost> costs;  // every model, model_specs() order
-  double ns_per_eval(fresnel::Model m) const;
+  std::vector<ModelCost> costs;  // the measured models, model_specs() order
+  std::optional<double> ns_per_eval(fresnel::Model m) const;  // nullopt: unmeasured
 };
 
 // bench/model_costs.csv: '#' comment lines (one '# machine: …'), then a header whose first two
-// columns are model,ns_per_eval_float_batched, then one row per model (every model exactly once).
-// InputError (file:line) for anything else.
+// columns are model,ns_per_eval_float_batched, then at most one row per model (a model without
+// one is unmeasured). InputError (file:line) for anything else.
 ModelCosts read_model_costs(const std::string& path);
 // read_model_costs(file.path), its source named file.name (the path when empty). The command line
 // resolves which file (--costs, $FRESNEL_LAB_COSTS, the tool's bench/model_costs.csv).
@@ -51,12 +56,12 @@ struct GpuCost {
 struct GpuCosts {
   std::string source;          // the file
   std::string tools;           // its '# tools:' line (compiler and optimizer versions)
-  std::vector<GpuCost> costs;  // every model × lighting
-  const GpuCost& of(fresnel::Model m, Lighting l) const;
+  std::vector<GpuCost> costs;  // the measured model × lighting pairs
+  std::optional<GpuCost> of(fresnel::Model m, Lighting l) const;  // nullopt: unmeasured
 };
 // bench/gpu_costs.csv: '#' comment lines (one '# tools: …'), the header
-// model,lighting,instructions,arithmetic,extended,texture, one row per model × lighting.
-// InputError (file:line) for anything else.
+// model,lighting,instructions,arithmetic,extended,texture, at most one row per model × lighting
+// (a pair without one is unmeasured). InputError (file:line) for anything else.
 GpuCosts read_gpu_costs(const std::string& path);
 // read_gpu_costs(file.path), its source named file.name (the path when empty); resolved like
 // load_model_costs (--gpu-costs, $FRESNEL_LAB_GPU_COSTS, the tool's bench/gpu_costs.csv).
@@ -66,16 +71,17 @@ GpuCosts load_gpu_costs(const spectral::DataFile& file);
 struct SpeedRow {
   fresnel::Model model;
   bool fitted = false;
-  double ns_per_eval = 0;
+  std::optional<double> ns_per_eval;  // nullopt: unmeasured
   double median_rms_de00 = 0, max_rms_de00 = 0;
   bool pareto = false;  // no other row is at least as cheap (CPU ns) and at least as accurate, and
                         // better in one
-  GpuCost gpu{};        // the model's function under punctual lights
-  bool pareto_gpu = false;  // as `pareto`, with the GPU instruction count as the cost
+  std::optional<GpuCost> gpu{};  // the model's function under punctual lights; nullopt: unmeasured
+  bool pareto_gpu = false;       // as `pareto`, with the GPU instruction count as the cost
 };
 // Rows in model_specs() order, derived before fitted. Error over every studied material (the
 // catalog's metals and dielectrics); Pareto fronts on (ns_per_eval, median_rms_de00) and
-// (GPU instructions, median_rms_de00).
+// (GPU instructions, median_rms_de00) among the rows whose cost is measured (an unmeasured row is
+// on neither front and dominates nothing).
 std::vector<SpeedRow> speed_rows(const std::vector<MaterialStudy>& studies, const ModelCosts& costs,
                                  const GpuCosts& gpu);
 Table speed_table(const Context& ctx, const std::vector<MaterialStudy>& studies,

@@ -7,6 +7,7 @@
 #include "fresnel/exact.h"
 #include "fresnel/exact_shader.h"
 #include "fresnel/model.h"
+#include "fresnel/unit.h"
 
 namespace fl::fresnel {
 
@@ -49,6 +50,7 @@ struct CookTorrance {
       {"kappa_rep", "extinction", ParamKind::Extinction, {0.0, 1000.0}, {0.0, kUnbounded}},
   }};
   static constexpr bool kCanLeaveUnitRange = false;
+  static constexpr UnitFeatures kFeatures{.prepared_channel = true};
   // The shape comes from the exact equations of a per-material index: no shared table holds it.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
   // The representative index in all three lanes of the vector helper.
@@ -74,12 +76,14 @@ struct CookTorrance {
     return cook_torrance_at(cos_theta, shape);
   }
   // F0 and the luminance (Y) of the reflectance-processed η, κ.
-  static std::vector<double> derive(const DerivedParameters& d) {
-    return {d.f0.r, d.f0.g, d.f0.b, d.eta_rep, d.kappa_rep};
+  static std::vector<double> derive(const DeriveInput& in) {
+    return {in.derived.f0.r, in.derived.f0.g, in.derived.f0.b, in.derived.eta_rep,
+            in.derived.kappa_rep};
   }
   // The green channel's reflectance-processed index.
-  static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
-    return {{d.f0.r, d.f0.g, d.f0.b, d.eta_refl.g, d.kappa_refl.g}};
+  static std::vector<std::vector<double>> extra_starts(const DeriveInput& in) {
+    return {{in.derived.f0.r, in.derived.f0.g, in.derived.f0.b, in.derived.eta_refl.g,
+             in.derived.kappa_refl.g}};
   }
   static std::vector<double> example() { return {0.93, 0.68, 0.30, 0.35, 2.6}; }
 };

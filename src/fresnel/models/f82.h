@@ -6,6 +6,7 @@
 #include "fresnel/derive.h"
 #include "fresnel/model.h"
 #include "fresnel/models/schlick.h"
+#include "fresnel/unit.h"
 
 namespace fl::fresnel {
 
@@ -41,6 +42,8 @@ struct F82 {
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
+  static constexpr UnitFeatures kFeatures{
+      .output_clamp = true, .closed_form_average = true, .table_terms = true, .identifiable = true};
 
   // Schlick's channels plus the F82 term's: F = F0·dfg1 + dfg2 − a·dfg_f82 under IBL,
   // and n_d, f_d, l_d under LTC.
@@ -83,12 +86,12 @@ struct F82 {
     return p[0] + (1.0 - p[0]) / 21.0 - f82_coefficient(p[0], p[1]) / 126.0;
   }
   // The spectral F0 and F82.
-  static std::vector<double> derive(const DerivedParameters& d) {
+  static std::vector<double> derive(const DeriveInput& in) {
     std::vector<double> p;
-    for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], d.f82[c]});
+    for (int c = 0; c < 3; ++c) p.insert(p.end(), {in.derived.f0[c], in.derived.f82[c]});
     return p;
   }
-  static std::vector<std::vector<double>> extra_starts(const DerivedParameters&) { return {}; }
+  static std::vector<std::vector<double>> extra_starts(const DeriveInput&) { return {}; }
   static std::vector<double> example() { return {0.93, 0.90, 0.68, 0.72, 0.30, 0.45}; }
 };
 

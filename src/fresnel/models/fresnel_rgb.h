@@ -9,6 +9,7 @@
 #include "fresnel/exact_shader.h"
 #include "fresnel/model.h"
 #include "fresnel/models/gulbrandsen.h"
+#include "fresnel/unit.h"
 
 namespace fl::fresnel::models {
 
@@ -23,6 +24,7 @@ struct FresnelRgb {
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
+  static constexpr UnitFeatures kFeatures{.identifiable = true};
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
   static constexpr ShaderCode kShader{kConductorHelpers,
                                       "  return fl_fresnel_conductor(cos_theta, eta, kappa);\n"};
@@ -32,24 +34,25 @@ struct FresnelRgb {
     return fresnel_conductor(cos_theta, p[0], p[1]);
   }
   // η, κ processed as reflectances.
-  static std::vector<double> derive(const DerivedParameters& d) {
+  static std::vector<double> derive(const DeriveInput& in) {
     std::vector<double> p;
-    for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.eta_refl[c], d.kappa_refl[c]});
+    for (int c = 0; c < 3; ++c)
+      p.insert(p.end(), {in.derived.eta_refl[c], in.derived.kappa_refl[c]});
     return p;
   }
   // Gulbrandsen's η, κ for (F0, g) from both η derivations, and the point-sampled η, κ.
-  static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
+  static std::vector<std::vector<double>> extra_starts(const DeriveInput& in) {
     std::vector<std::vector<double>> s;
-    for (const auto* g : {&d.g_refl_eta, &d.g_ps_eta}) {
+    for (const auto* g : {&in.derived.g_refl_eta, &in.derived.g_ps_eta}) {
       std::vector<double> p;
       for (int c = 0; c < 3; ++c) {
-        const double eta = gulbrandsen_eta(d.f0[c], std::clamp((*g)[c], 0.0, 1.0));
-        p.insert(p.end(), {eta, gulbrandsen_kappa(d.f0[c], eta)});
+        const double eta = gulbrandsen_eta(in.derived.f0[c], std::clamp((*g)[c], 0.0, 1.0));
+        p.insert(p.end(), {eta, gulbrandsen_kappa(in.derived.f0[c], eta)});
       }
       s.push_back(p);
     }
     std::vector<double> ps;
-    for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {d.eta_ps[c], d.kappa_ps[c]});
+    for (int c = 0; c < 3; ++c) ps.insert(ps.end(), {in.derived.eta_ps[c], in.derived.kappa_ps[c]});
     s.push_back(ps);
     return s;
   }

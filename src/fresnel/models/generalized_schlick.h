@@ -7,6 +7,7 @@
 
 #include "fresnel/derive.h"
 #include "fresnel/model.h"
+#include "fresnel/unit.h"
 
 namespace fl::fresnel {
 
@@ -34,6 +35,7 @@ struct GeneralizedSchlick {
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = true;
+  static constexpr UnitFeatures kFeatures{.closed_form_average = true};
   // A per-material exponent: no shared table holds it.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
   static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
@@ -51,19 +53,19 @@ struct GeneralizedSchlick {
   }
   // F0, F90 = 1, and p through the measured F82: F82 = F0 + (1 − F0)(6/7)^p ⇒
   // p = ln((F82 − F0)/(1 − F0)) / ln(6/7); Schlick's 5 when the curve dips below F0 there.
-  static std::vector<double> derive(const DerivedParameters& d) {
+  static std::vector<double> derive(const DeriveInput& in) {
     std::vector<double> p;
     for (int c = 0; c < 3; ++c) {
-      const double t = (d.f82[c] - d.f0[c]) / (1.0 - d.f0[c]);
+      const double t = (in.derived.f82[c] - in.derived.f0[c]) / (1.0 - in.derived.f0[c]);
       const double pc = t > 0.0 && t < 1.0 ? std::log(t) / std::log(1.0 - kCosTheta82) : 5.0;
-      p.insert(p.end(), {d.f0[c], 1.0, std::clamp(pc, kExponentFit.lo, kExponentFit.hi)});
+      p.insert(p.end(), {in.derived.f0[c], 1.0, std::clamp(pc, kExponentFit.lo, kExponentFit.hi)});
     }
     return p;
   }
   // Schlick's exponent.
-  static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
+  static std::vector<std::vector<double>> extra_starts(const DeriveInput& in) {
     std::vector<double> p;
-    for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], 1.0, 5.0});
+    for (int c = 0; c < 3; ++c) p.insert(p.end(), {in.derived.f0[c], 1.0, 5.0});
     return {p};
   }
   static std::vector<double> example() { return {0.93, 1.0, 5.2, 0.68, 1.0, 5.6, 0.30, 1.0, 6.1}; }

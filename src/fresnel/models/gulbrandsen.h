@@ -9,6 +9,7 @@
 #include "fresnel/exact.h"
 #include "fresnel/exact_shader.h"
 #include "fresnel/model.h"
+#include "fresnel/unit.h"
 
 namespace fl::fresnel {
 
@@ -98,6 +99,7 @@ struct Gulbrandsen {
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
+  static constexpr UnitFeatures kFeatures{.prepared_channel = true, .identifiable = true};
   // Exact conductor equations of a per-channel index: no shared table holds them.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
   static constexpr ShaderCode kShader{kConductorHelpers, R"(  vec3 r = clamp(f0, 1e-9, 0.99999);
@@ -121,12 +123,13 @@ struct Gulbrandsen {
     return gulbrandsen_at(cos_theta, index);
   }
   // F0 and g from the reflectance-processed η, g clamped to [0, 1].
-  static std::vector<double> derive(const DerivedParameters& d) {
-    return gulbrandsen_params(d.f0, d.g_refl_eta);
+  static std::vector<double> derive(const DeriveInput& in) {
+    return gulbrandsen_params(in.derived.f0, in.derived.g_refl_eta);
   }
   // g from the point-sampled η, and a mid edge tint.
-  static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
-    return {gulbrandsen_params(d.f0, d.g_ps_eta), gulbrandsen_params(d.f0, {0.5, 0.5, 0.5})};
+  static std::vector<std::vector<double>> extra_starts(const DeriveInput& in) {
+    return {gulbrandsen_params(in.derived.f0, in.derived.g_ps_eta),
+            gulbrandsen_params(in.derived.f0, {0.5, 0.5, 0.5})};
   }
   static std::vector<double> example() { return {0.93, 0.35, 0.68, 0.55, 0.30, 0.75}; }
 };

@@ -8,6 +8,7 @@
 #include "fresnel/model.h"
 #include "fresnel/models/f82.h"
 #include "fresnel/models/schlick.h"
+#include "fresnel/unit.h"
 
 namespace fl::fresnel {
 
@@ -33,6 +34,7 @@ struct Lazanyi {
   }};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = true;
+  static constexpr UnitFeatures kFeatures{.closed_form_average = true};
   // A per-channel exponent α: only α = 6 (the F82 model) has a shared table.
   static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
   static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
@@ -50,18 +52,19 @@ struct Lazanyi {
     return lazanyi(cos_theta, p[0], p[1], p[2]);
   }
   // α = 6 and a through the measured F82 (the F82 model's coefficient).
-  static std::vector<double> derive(const DerivedParameters& d) {
+  static std::vector<double> derive(const DeriveInput& in) {
     std::vector<double> p;
     for (int c = 0; c < 3; ++c)
-      p.insert(p.end(), {d.f0[c], f82_coefficient(d.f0[c], d.f82[c]), 6.0});
+      p.insert(p.end(),
+               {in.derived.f0[c], f82_coefficient(in.derived.f0[c], in.derived.f82[c]), 6.0});
     return p;
   }
   // Plain Schlick with a shallower and a steeper exponent.
-  static std::vector<std::vector<double>> extra_starts(const DerivedParameters& d) {
+  static std::vector<std::vector<double>> extra_starts(const DeriveInput& in) {
     std::vector<std::vector<double>> s;
     for (double alpha : {3.0, 10.0}) {
       std::vector<double> p;
-      for (int c = 0; c < 3; ++c) p.insert(p.end(), {d.f0[c], 0.0, alpha});
+      for (int c = 0; c < 3; ++c) p.insert(p.end(), {in.derived.f0[c], 0.0, alpha});
       s.push_back(p);
     }
     return s;

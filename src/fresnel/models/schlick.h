@@ -5,6 +5,7 @@
 
 #include "fresnel/derive.h"
 #include "fresnel/model.h"
+#include "fresnel/unit.h"
 
 namespace fl::fresnel {
 
@@ -25,6 +26,8 @@ struct Schlick {
       {{"f0", "reflectance", ParamKind::Reflectance, kReflectanceFit, {-kUnbounded, kUnbounded}}}};
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
+  static constexpr UnitFeatures kFeatures{
+      .closed_form_average = true, .table_terms = true, .identifiable = true};
 
   // The split-sum DFG scale and bias and the LTC Schlick moment integrate it exactly.
   static constexpr const char* kIbl[] = {lut_channel::kDfgScale, lut_channel::kDfgBias};
@@ -48,8 +51,10 @@ struct Schlick {
   // 2∫(1 − μ)⁵μ dμ = 2·B(2, 6) = 1/21.
   static double average(const double* p, const double*) { return p[0] + (1.0 - p[0]) / 21.0; }
   // The spectral F0.
-  static std::vector<double> derive(const DerivedParameters& d) { return {d.f0.r, d.f0.g, d.f0.b}; }
-  static std::vector<std::vector<double>> extra_starts(const DerivedParameters&) { return {}; }
+  static std::vector<double> derive(const DeriveInput& in) {
+    return {in.derived.f0.r, in.derived.f0.g, in.derived.f0.b};
+  }
+  static std::vector<std::vector<double>> extra_starts(const DeriveInput&) { return {}; }
   // Gold in ACEScg, roughly (for benchmarks and examples).
   static std::vector<double> example() { return {0.93, 0.68, 0.30}; }
 };
