@@ -118,22 +118,9 @@ std::optional<std::string> unknown_command(int argc, char** argv) {
   return std::nullopt;
 }
 
-}  // namespace
-
-int run(int argc, char** argv) {
-  CLI::App app{
-      "Fresnel Lab: spectral ground truth, Fresnel approximations and their parameters, in "
-      "CIEDE2000."};
-  app.name("fresnel-lab");
-  app.require_subcommand(1);
-  app.set_version_flag("--version", version_text(), "print the version and the git commit");
-  GlobalOptions g;
+// The options every command shares, into g (whose defaults are set).
+void add_global_options(CLI::App& app, GlobalOptions& g) {
   auto& s = g.settings;
-  g.locations = find_locations(std::filesystem::path(executable_path()).parent_path().string());
-  s.paths = default_paths(g.locations);
-  s.ocio_config = default_ocio_config();
-  report::use_label_font(label_font_file());
-
   app.add_option(
          "--db", s.paths.database,
          "refractiveindex.info database root (the folder holding data/); default $FRESNEL_LAB_DB")
@@ -170,6 +157,25 @@ int run(int argc, char** argv) {
                  "this share of the "
                  "visible range, weighted by the illuminant x ybar (0-1; default 0, library 0.99)")
       ->check(CLI::Range(0.0, 1.0));
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  CLI::App app{
+      "Fresnel Lab: spectral ground truth, Fresnel approximations and their parameters, in "
+      "CIEDE2000."};
+  app.name("fresnel-lab");
+  app.require_subcommand(1);
+  app.set_version_flag("--version", version_text(), "print the version and the git commit");
+  GlobalOptions g;
+  auto& s = g.settings;
+  g.locations = find_locations(std::filesystem::path(executable_path()).parent_path().string());
+  s.paths = default_paths(g.locations);
+  s.ocio_config = default_ocio_config();
+  report::use_label_font(label_font_file());
+
+  add_global_options(app, g);
 
   Runner selected;
   for (const auto& c : commands()) c.add(app, g, selected);
