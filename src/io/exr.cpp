@@ -84,6 +84,19 @@ class MemoryInput : public Imf::IStream {
   bool after_zero_byte_ = false;
 };
 
+// The header as OpenEXR's C++ reader reads it (Imf::InputFile reads the same way, then allocates
+// its line buffers): the 4-byte magic number and 4-byte version field, then the attributes.
+Imf::Header cpp_header(const std::string& path, const std::string& bytes) {
+  MemoryInput stream(path, bytes);
+  char start[8];
+  stream.read(start, 8);
+  int version = 0;
+  std::memcpy(&version, start + 4, 4);  // little-endian, as the file and x86-64
+  Imf::Header header;
+  header.readFrom(stream, version);
+  return header;
+}
+
 // The most values a compressed EXR decodes to per byte of file: 4096, four times deflate's
 // limit (a constant image in ZIP compresses about 500:1).
 constexpr std::int64_t kMaxExrExpansion = 4096;
@@ -114,6 +127,21 @@ void core_error(exr_const_context_t ctxt, exr_result_t, const char* message) {
   if (exr_get_user_data(ctxt, &user) == EXR_ERR_SUCCESS && user)
     if (static_cast<CoreInput*>(user)->error.empty())
       static_cast<CoreInput*>(user)->error = message;
+}
+
+// InputError when `width` × `height` pixels of `nc` channels (and `chunks` chunk offsets) cannot
+// come from `file_bytes` bytes: uncompressed, 2 bytes per value at least; compressed, at most
+// kMaxExrExpansion values per byte.
+void require_room(const std::string& path, std::int64_t width, std::int64_t height, std::int64_t nc,
+                  bool compressed, std::int64_t chunks, std::int64_t file_bytes) {
+  const std::int64_t values = width * height * nc;
+  if ((compressed ? values / kMaxExrExpansion : values * 2) > file_bytes || chunks * 8 > file_bytes)
+    throw InputError(
+        path, 0,
+        fmt::format("EXR header claims {} × {} pixels of {} channels{}, more than "
+                    "the file's {} bytes can hold",
+                    width, height, nc, chunks > 0 ? fmt::format(" in {} chunks", chunks) : "",
+                    file_bytes));
 }
 
 // What OpenEXR would allocate from the header's word, bounded before the C++ reader reads it: a
@@ -158,13 +186,7 @@ void check_exr_header(const std::string& bytes, const std::string& path) {
                      fmt::format("data window {} × {} with {} channels is empty or holds more "
                                  "than {} values",
                                  width, height, nc, kMaxExrValues));
-  const std::int64_t values = width * height * nc;
-  if ((compression == EXR_COMPRESSION_NONE ? values * 2 : values / kMaxExrExpansion) > room ||
-      std::int64_t{chunks} * 8 > room)
-    throw InputError(path, 0,
-                     fmt::format("EXR header claims {} × {} pixels of {} channels in {} chunks, "
-                                 "more than the file's {} bytes can hold",
-                                 width, height, nc, chunks, bytes.size()));
+  require_room(path, width, height, nc, compression != EXR_COMPRESSION_NONE, chunks, room);
 }
 
 }  // namespace
@@ -212,40 +234,53 @@ void write_exr_atomic(const std::string& path, const ExrImage& image) {
   write_file_atomic(path, encode_exr(image));
 }
 
+namespace {
+
+// The header's string and float attributes and its chromaticities, into `image`.
+void copy_attributes(const Imf::Header& header, ExrImage& image) {
+  for (auto it = header.begin(); it != header.end(); ++it) {
+    if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+      image.string_attributes.emplace_back(it.name(), s->value());
+    else if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&it.attribute()))
+      image.float_attributes.emplace_back(it.name(), f->value());
+  }
+  if (Imf::hasChromaticities(header)) {
+    const auto& c = Imf::chromaticities(header);
+    image.chromaticities = std::array<float, 8>{c.red.x,  c.red.y,  c.green.x, c.green.y,
+                                                c.blue.x, c.blue.y, c.white.x, c.white.y};
+  }
+}
+
+}  // namespace
+
 ExrImage read_exr(const std::string& path) {
   const std::string bytes = spectral::read_input_bytes(path);
   check_exr_header(bytes, path);
   try {
-    MemoryInput stream(path, bytes);
-    Imf::InputFile in(stream);
-    const auto& header = in.header();
+    // The C++ reader's own view of the header, read alone before any pixel buffer exists (it may
+    // differ from the core's where the file is malformed, e.g. a garbled attribute name): bound
+    // what the reader would allocate and decode.
+    const Imf::Header header = cpp_header(path, bytes);
     const auto dw = header.dataWindow();
     ExrImage image;
     const std::int64_t width = std::int64_t{dw.max.x} - dw.min.x + 1,
                        height = std::int64_t{dw.max.y} - dw.min.y + 1;
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
       image.channels.push_back(it.name());
+    const std::int64_t channel_count = std::max<std::int64_t>(std::ssize(image.channels), 1);
     if (width <= 0 || height <= 0 ||
-        static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
-                std::max<size_t>(image.channels.size(), 1) >
-            kMaxExrValues)
+        width > static_cast<std::int64_t>(kMaxExrValues) / height / channel_count)
       throw InputError(path, 0,
                        fmt::format("data window {} × {} with {} channels is empty or holds more "
                                    "than {} values",
                                    width, height, image.channels.size(), kMaxExrValues));
+    require_room(path, width, height, channel_count, header.compression() != Imf::NO_COMPRESSION, 0,
+                 std::ssize(bytes));
+    MemoryInput stream(path, bytes);
+    Imf::InputFile in(stream);
     image.width = static_cast<int>(width);
     image.height = static_cast<int>(height);
-    for (auto it = header.begin(); it != header.end(); ++it) {
-      if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
-        image.string_attributes.emplace_back(it.name(), s->value());
-      else if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&it.attribute()))
-        image.float_attributes.emplace_back(it.name(), f->value());
-    }
-    if (Imf::hasChromaticities(header)) {
-      const auto& c = Imf::chromaticities(header);
-      image.chromaticities = std::array<float, 8>{c.red.x,  c.red.y,  c.green.x, c.green.y,
-                                                  c.blue.x, c.blue.y, c.white.x, c.white.y};
-    }
+    copy_attributes(header, image);
     const size_t nc = image.channels.size();
     image.pixels.assign(static_cast<size_t>(image.width) * image.height * nc, 0.0f);
     Imf::FrameBuffer fb;
