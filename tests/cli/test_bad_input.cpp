@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "csv_reader.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -32,14 +34,9 @@ void PrintTo(const Case& c, std::ostream* os) {
 
 std::vector<Case> load_manifest() {
   std::vector<Case> out;
-  std::ifstream in(kBadDir + "/manifest.tsv");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
-    if (f.size() != 4) throw std::runtime_error("manifest.tsv: bad row: " + line);
+  for (const auto& f : fl::test::csv_file_rows(kBadDir + "/manifest.tsv",
+                                               {.separator = '\t', .skip_comments = true})) {
+    if (f.size() != 4) throw std::runtime_error("manifest.tsv: bad row: " + f[0]);
     out.push_back({f[0], f[1], f[2], f[3]});
   }
   return out;
@@ -269,11 +266,7 @@ TEST(SpecialInputs, CatalogNamesAreUnique) {
 // A curve CSV without its material column (the file's name, which differs between the copies).
 std::string without_material(const std::string& csv) {
   std::string out;
-  std::stringstream ss(csv);
-  for (std::string line; std::getline(ss, line);) {
-    std::vector<std::string> cells;
-    std::stringstream ls(line);
-    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+  for (auto cells : fl::test::csv_rows(csv)) {
     if (cells.size() > 8) cells.erase(cells.begin() + 8);
     for (size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + cells[i];
     out += "\n";

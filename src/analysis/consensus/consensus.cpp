@@ -9,7 +9,7 @@
 
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
-#include "color/ciede2000_fast.h"
+#include "color/lab.h"
 #include "fresnel/exact.h"
 #include "spectral/errors.h"
 #include "spectral/pages.h"
@@ -257,8 +257,8 @@ ConsensusGroup summarize(const Context& ctx, const GroupPages& in, const Materia
   std::vector<double> used_f0, used_f82;
   for (const auto* s : in.pages) {
     PageDistance p{s,
-                   color::ciede2000_fast(ctx.rgb_to_lab(s->derived.f0), f0),
-                   color::ciede2000_fast(ctx.rgb_to_lab(s->derived.f82), f82),
+                   color::ciede2000<double>(ctx.rgb_to_lab(s->derived.f0), f0),
+                   color::ciede2000<double>(ctx.rgb_to_lab(s->derived.f82), f82),
                    used_for_consensus(*s),
                    false,
                    {}};
