@@ -25,7 +25,6 @@
 #include "analysis/tables/speed.h"
 #include "analysis/tables/table_registry.h"
 #include "color/ciede2000_batch.h"
-#include "color/ciede2000_fast.h"
 #include "color/lab.h"
 #include "documents/table_formats.h"
 #include "fresnel/batch.h"
@@ -111,14 +110,6 @@ void bm_de2000_template(benchmark::State& state) {
   for (auto _ : state)
     for (std::size_t i = 0; i < kLabPairs; ++i)
       benchmark::DoNotOptimize(fl::color::ciede2000<double>(p.a[i], p.b[i]));
-  state.counters["evals"] = static_cast<double>(kLabPairs);
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kLabPairs));
-}
-void bm_de2000_fast(benchmark::State& state) {
-  const auto& p = lab_pairs();
-  for (auto _ : state)
-    for (std::size_t i = 0; i < kLabPairs; ++i)
-      benchmark::DoNotOptimize(fl::color::ciede2000_fast(p.a[i], p.b[i]));
   state.counters["evals"] = static_cast<double>(kLabPairs);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kLabPairs));
 }
@@ -220,7 +211,6 @@ void register_all() {
                       spec.model);
   }
   RegisterBenchmark("de2000/ours_template", bm_de2000_template);
-  RegisterBenchmark("de2000/ours_fast", bm_de2000_fast);
   RegisterBenchmark("de2000/ours_batch", bm_de2000_batch);
   RegisterBenchmark("de2000/lcms", bm_de2000_lcms);
   RegisterBenchmark("ground_truth/rgb_one_angle", bm_ground_truth_rgb);
@@ -330,25 +320,22 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
                       num(ns(p + "/float/scalar"), 2), num(ns(p + "/double/batched"), 2),
                       num(ns(p + "/double/scalar"), 2));
   }
-  const double t = ns("de2000/ours_template"), f = ns("de2000/ours_fast"), l = ns("de2000/lcms");
+  const double t = ns("de2000/ours_template"), l = ns("de2000/lcms");
   const double bt = ns("de2000/ours_batch");
   md += "\n## CIEDE2000 (ns per colour pair, 1024 pairs across CIELAB)\n\n";
   md += "| implementation | ns per pair | Little CMS time / this |\n|---|---|---|\n";
   md += fmt::format(
       "| Fresnel Lab `color::ciede2000_batch` (double, SIMD, Highway target {}) | {} | {}× |\n",
       fl::color::ciede2000_batch_targets().front(), num(bt, 1), num(l / bt, 2));
-  md += fmt::format("| Fresnel Lab `color::ciede2000_fast` (double) | {} | {}× |\n", num(f, 1),
-                    num(l / f, 2));
   md += fmt::format(
       "| Fresnel Lab `color::ciede2000<double>` (template, differentiable) | {} | {}× |\n",
       num(t, 1), num(l / t, 2));
   md += fmt::format("| Little CMS `cmsCIE2000DeltaE` | {} | 1.00× |\n", num(l, 1));
   md +=
-      "\nAgreement: tests/color/test_lcms_agreement.cpp checks all three of ours against Little "
+      "\nAgreement: tests/color/test_lcms_agreement.cpp checks both of ours against Little "
       "CMS within 1e-9 on the "
       "34 pairs of Sharma, Wu & Dalal 2005 (the batched kernel on every instruction set the CPU "
-      "runs), and the fast "
-      "path and the batched kernel against the template within 1e-12 on random pairs across "
+      "runs), and the batched kernel against the template within 1e-12 on random pairs across "
       "CIELAB.\n";
   md += "\n## Spectral ground truth (gold)\n\n| what | time |\n|---|---|\n";
   md += fmt::format("| one RGB value at one angle | {} µs |\n",
@@ -363,9 +350,8 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
     if (name.rfind("tables/", 0) == 0)
       md += fmt::format("| {} | {} |\n", name.substr(7), num(res.median_seconds() * 1e3, 2));
   md += "\n## Targets\n\n";
-  md += fmt::format(
-      "- ΔE2000: ours (fast path) {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 2×).\n",
-      num(f, 1), num(l, 1), num(l / f, 2));
+  md += fmt::format("- ΔE2000: ours (template) {} ns, Little CMS {} ns per pair: {}× faster.\n",
+                    num(t, 1), num(l, 1), num(l / t, 2));
   md += fmt::format(
       "- ΔE2000 batched: ours {} ns, Little CMS {} ns per pair: {}× faster (target ≥ 5×).\n",
       num(bt, 1), num(l, 1), num(l / bt, 2));

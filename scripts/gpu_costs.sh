@@ -8,20 +8,21 @@
 # extended: GLSL.std.450 instructions (pow, sqrt, exp, clamp, mix, fma, ...); texture: image samples.
 #   scripts/gpu_costs.sh [BUILD_DIR]          writes bench/gpu_costs.csv
 #   scripts/gpu_costs.sh --check [BUILD_DIR]  counts again and compares with bench/gpu_costs.csv
+#   scripts/gpu_costs.sh --count FILE.comp    counts one GLSL compute shader's entry point the same
+#                                              way (instructions,arithmetic,extended,texture)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-check=0
+check=0 count_file=""
 if [ "${1:-}" = "--check" ]; then check=1; shift; fi
+if [ "${1:-}" = "--count" ]; then count_file="$2"; shift 2; fi
 build="${1:-build}"
 tool="$build/src/fresnel-lab"
 for t in glslangValidator spirv-val spirv-opt spirv-dis; do
   command -v "$t" >/dev/null || { echo "gpu_costs: $t not found (Debian glslang-tools, spirv-tools; scripts/setup.sh)" >&2; exit 2; }
 done
-[ -x "$tool" ] || { echo "gpu_costs: $tool not built" >&2; exit 2; }
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-models=$(grep -v '^#' bench/model_costs.csv | tail -n +2 | cut -d, -f1)
 
 count() {  # disassembly -> instructions,arithmetic,extended,texture of %main
   awk '
@@ -38,6 +39,22 @@ count() {  # disassembly -> instructions,arithmetic,extended,texture of %main
     END { printf "%d,%d,%d,%d\n", total, arith, ext, tex }'
 }
 
+# FILE.comp -> its disassembly after spirv-opt -O, both SPIR-V modules validated.
+optimized() {
+  glslangValidator -V "$1" -o "$work/a.spv" > "$work/log" || { cat "$work/log" >&2; exit 1; }
+  spirv-val "$work/a.spv"
+  spirv-opt -O "$work/a.spv" -o "$work/o.spv"
+  spirv-val "$work/o.spv"
+  spirv-dis "$work/o.spv"
+}
+
+if [ -n "$count_file" ]; then
+  optimized "$count_file" | count
+  exit 0
+fi
+[ -x "$tool" ] || { echo "gpu_costs: $tool not built" >&2; exit 2; }
+models=$(grep -v '^#' bench/model_costs.csv | tail -n +2 | cut -d, -f1)
+
 out="$work/gpu_costs.csv"
 {
   echo "# GPU cost of each model's shader function, written by scripts/gpu_costs.sh; read by \`table speed\` and \`plan\`."
@@ -49,11 +66,7 @@ out="$work/gpu_costs.csv"
     for l in punctual ibl area; do
       src="$work/$m-$l.comp"
       "$tool" -q shader "$m" --lighting "$l" --harness > "$src"
-      glslangValidator -V "$src" -o "$work/a.spv" > "$work/log" || { cat "$work/log" >&2; exit 1; }
-      spirv-val "$work/a.spv"
-      spirv-opt -O "$work/a.spv" -o "$work/o.spv"
-      spirv-val "$work/o.spv"
-      echo "$m,$l,$(spirv-dis "$work/o.spv" | count)"
+      echo "$m,$l,$(optimized "$src" | count)"
     done
   done
 } > "$out"

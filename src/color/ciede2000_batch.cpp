@@ -84,7 +84,7 @@ HWY_INLINE V t_term(D d, V c, V s) {
 }
 
 // R_T = −sin(2Δθ)·R_C with Δθ = 30°·exp(−((h̄′ − 275°)/25°)²), h̄′ in [0°, 360°); zero for h̄′ in
-// [0°, 134°), where Δθ is under 5e-13° (exp(−31.8)), as in ciede2000_fast.
+// [0°, 134°), where Δθ is under 5e-13° (exp(−31.8)).
 HWY_INLINE V rotation_term(D d, V c, V s, V cp_bar) {
   const M negligible = hn::And(hn::Ge(s, hn::Zero(d)), hn::Gt(c, hn::Set(d, kCos134)));
   const V q = hn::Mul(hn::Sub(atan2_deg(d, s, c), hn::Set(d, 275.0)), hn::Set(d, 1.0 / 25.0));
@@ -111,10 +111,12 @@ HWY_INLINE V weighted_difference(D d, V dl, V dc, V d_big_h, V l_bar, V cp_bar, 
   return hn::IfThenElseZero(hn::Gt(e2, hn::Zero(d)), hn::Sqrt(e2));
 }
 
-// Sharma, Wu & Dalal 2005, "The CIEDE2000 color-difference formula: implementation notes", with
-// ciede2000_fast's hue vectors: ΔE00 of the lanes' pairs; `reference` marks achromatic colours (or
-// chromas near underflow) and opposite hues (see ciede2000_fast), whose results the caller replaces
-// with the reference's.
+// Sharma, Wu & Dalal 2005, "The CIEDE2000 color-difference formula: implementation notes", from
+// the unit hue vectors u = (a′, b)/C′ instead of hue angles: one atan2 (the mean hue in degrees,
+// for the Δθ term) instead of two, and the T term's four cosines and sin(Δh′/2) by vector algebra.
+// ΔE00 of the lanes' pairs; `reference` marks achromatic colours (or chromas near underflow) and
+// opposite hues (where the formula's hue conventions decide, not geometry), whose results the
+// caller replaces with the reference's (the template ciede2000<double>).
 HWY_INLINE V de2000_lanes(D d, const double* p1, const double* p2, M& reference) {
   V l1, a1, b1, l2, a2, b2;
   hn::LoadInterleaved3(d, p1, l1, a1, b1);

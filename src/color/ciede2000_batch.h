@@ -13,7 +13,7 @@
 namespace fl::color {
 
 // Sharma, Wu & Dalal 2005, "The CIEDE2000 color-difference formula": out[i] = ΔE00(lab1[i],
-// lab2[i]) with kL = kC = kH = 1 and ciede2000_fast's hue vectors, without branches; the widest
+// lab2[i]) with kL = kC = kH = 1, from unit hue vectors, without branches; the widest
 // instruction set the CPU has is chosen at run time. Throws std::invalid_argument unless the three
 // spans have one length.
 void ciede2000_batch(std::span<const Lab> lab1, std::span<const Lab> lab2, std::span<double> out);

@@ -1,6 +1,6 @@
 #pragma once
-// Constants of CIEDE2000 (Sharma, Wu & Dalal 2005) shared by the hue-vector implementations
-// ciede2000_fast.cpp and ciede2000_batch.cpp.
+// Constants of CIEDE2000 (Sharma, Wu & Dalal 2005) for the hue-vector formula of
+// ciede2000_batch.cpp.
 
 namespace fl::color::detail {
 

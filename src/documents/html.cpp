@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "documents/table_formats.h"
-#include "util/parallel.h"
 
 namespace fl::report {
 namespace {
@@ -312,20 +311,11 @@ std::string html_report(const HtmlReport& r) {
   if (!r.gallery.empty())
     s += "<section id=\"gallery\"><h2>Gallery</h2>\n" + gallery_html(r.gallery) + "</section>\n";
   s += "<section id=\"tables\"><h2>Tables</h2>\n";
-  // The tables' sections are made concurrently (most of the page), then joined in order.
-  std::vector<std::string> sections(r.tables.size());
-  parallel_for(r.tables.size(), [&](size_t i) {
-    const auto& t = r.tables[i];
-    sections[i] = fmt::format(
+  for (const auto& t : r.tables)
+    s += fmt::format(
         "<details class=\"tbl\" id=\"t-{0}\"><summary>{0} <span class=\"sum\">{1} rows</span>"
         "</summary>\n{2}</details>\n",
         html_escape(t.name), t.rows.size(), table_html(t, "table-" + t.name, 3));
-  });
-  // Appended in place into one buffer of the page's size: the page is most of reproduce's output.
-  size_t size = s.size() + std::char_traits<char>::length(kScript) + 64;
-  for (const auto& section : sections) size += section.size();
-  s.reserve(size);
-  for (const auto& section : sections) s += section;
   s += "</section>\n</main>\n<script>";
   s += kScript;
   s += "</script>\n</body></html>\n";

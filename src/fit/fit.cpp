@@ -10,7 +10,6 @@
 
 #include "color/ciede2000_batch.h"
 #include "color/dual.h"
-#include "fit/kept_evaluation.h"
 #include "fresnel/registry.h"
 #include "util/codegen.h"
 
@@ -20,12 +19,12 @@ namespace {
 using fresnel::Model;
 
 // Three residuals per angle whose squares sum to ΔE2000² between the ground truth and the model's
-// RGB (color::ciede2000_residuals), both in the working space's CIELAB. Residuals and Jacobian come
-// from one pass (KeptEvaluation::evaluate_joint). The Jacobian is formed by the chain rule: each
+// RGB (color::ciede2000_residuals), both in the working space's CIELAB, for every angle at once in
+// SIMD lanes (color::ciede2000_residuals_batch). The Jacobian is formed by the chain rule: each
 // channel differentiated over the parameters it reads (its own block and the shared ones, as a
 // color::Dual of kChannelLanes lanes whose value is the double computation's, bit for bit; a
 // channel never reads another channel's block, so those entries are zero), and the residuals over
-// RGB, for every angle at once in SIMD lanes (color::ciede2000_residuals_batch).
+// RGB from the same batch.
 template <class Unit>
 class ModelCurveCost : public ceres::CostFunction {
  public:
@@ -37,7 +36,6 @@ class ModelCurveCost : public ceres::CostFunction {
 
   explicit ModelCurveCost(const CurveTarget* target)
       : target_(target),
-        kept_(3 * target->cos_thetas.size()),
         rgb_(target->cos_thetas.size()),
         channels_(target->cos_thetas.size()),
         d_rgb_(9 * target->cos_thetas.size()) {
@@ -45,12 +43,12 @@ class ModelCurveCost : public ceres::CostFunction {
     mutable_parameter_block_sizes()->push_back(kParams);
   }
 
-  // The last point's evaluation is kept (KeptEvaluation).
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    kept_.evaluate_joint(
-        parameters[0], residuals, jacobians ? jacobians[0] : nullptr,
-        [this](const double* p, double* r, double* jac) { evaluate_at(p, r, jac); });
+    if (jacobians && jacobians[0])
+      evaluate_with_jacobian(parameters[0], residuals, jacobians[0]);
+    else
+      evaluate_residuals(parameters[0], residuals);
     return true;
   }
 
@@ -59,8 +57,22 @@ class ModelCurveCost : public ceres::CostFunction {
   }
 
  private:
+  // The residuals alone: the channels in double.
+  void evaluate_residuals(const double* p, double* residuals) const {
+    using Prepared = decltype(fresnel::prepare_channel<Unit>(p, p));
+    const Prepared q[3] = {fresnel::prepare_channel<Unit>(p, p + 3 * kPer),
+                           fresnel::prepare_channel<Unit>(p + kPer, p + 3 * kPer),
+                           fresnel::prepare_channel<Unit>(p + 2 * kPer, p + 3 * kPer)};
+    const size_t n = target_->cos_thetas.size();
+    for (size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c)
+        rgb_[i][c] = fresnel::channel_at<Unit>(target_->cos_thetas[i], q[c]);
+    color::ciede2000_residuals_batch(target_->to_lab, target_->truth_lab, rgb_,
+                                     std::span(residuals, 3 * n), d_rgb_);
+  }
+
   // Flattened (FL_FLATTEN): the Dual lanes' loops are inlined.
-  FL_FLATTEN void evaluate_at(const double* p, double* residuals, double* jac) const {
+  FL_FLATTEN void evaluate_with_jacobian(const double* p, double* residuals, double* jac) const {
     // Channel c's lanes: its own parameters, then the shared ones.
     ChannelDual pd[3][kChannelLanes];
     for (int c = 0; c < 3; ++c) {
@@ -102,7 +114,6 @@ class ModelCurveCost : public ceres::CostFunction {
   }
 
   const CurveTarget* target_;
-  mutable KeptEvaluation<kParams> kept_;
   // Per-angle scratch of evaluate_at (a cost function serves one single-threaded solve).
   mutable std::vector<color::Rgb> rgb_;
   mutable std::vector<std::array<ChannelDual, 3>> channels_;

@@ -7,7 +7,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "fit/kept_evaluation.h"
 #include "util/codegen.h"
 
 namespace fl::fit {
@@ -328,14 +327,12 @@ double sum_squared_residuals(const LtcProblem& pr, const LtcParams& p) {
 
 // ½ Σ r² estimates ½ ∫ |ρ cos − n_D D_LTC|³ dω / B₃; the Jacobian is analytic (ltc_jacobian).
 // A step that would make A singular or flip it (β ≤ 0) is rejected as invalid.
-// The last point's evaluation is kept (KeptEvaluation); the Jacobian reuses the residual pass's
-// terms in columns_, which are always those of the same point.
+// The Jacobian reuses the residual pass's terms in columns_, computed just before at the same
+// point.
 class LtcCost final : public ceres::CostFunction {
  public:
   explicit LtcCost(const LtcProblem& problem)
-      : magnitude_(problem.magnitude),
-        columns_(ltc_columns(problem)),
-        kept_(problem.samples.size()) {
+      : magnitude_(problem.magnitude), columns_(ltc_columns(problem)) {
     set_num_residuals(static_cast<int>(problem.samples.size()));
     mutable_parameter_block_sizes()->push_back(4);
   }
@@ -343,20 +340,15 @@ class LtcCost final : public ceres::CostFunction {
                 double** jacobians) const override {
     const double* p = parameters[0];
     if (!(p[0] - p[2] * p[3] > kLtcMinScale * p[0])) return false;
-    kept_.evaluate(
-        p, residuals, jacobians ? jacobians[0] : nullptr,
-        [this](const double* q, double* out) {
-          ltc_residuals(magnitude_, q, columns_);
-          std::copy(columns_.residual.begin(), columns_.residual.end(), out);
-        },
-        [this](const double* q, double* out) { ltc_jacobian(magnitude_, q, columns_, out); });
+    ltc_residuals(magnitude_, p, columns_);
+    std::copy(columns_.residual.begin(), columns_.residual.end(), residuals);
+    if (jacobians && jacobians[0]) ltc_jacobian(magnitude_, p, columns_, jacobians[0]);
     return true;
   }
 
  private:
   double magnitude_;
   mutable LtcColumns columns_;
-  mutable KeptEvaluation<4> kept_;
 };
 
 LtcParams clamp_to_bounds(const LtcParams& p) {

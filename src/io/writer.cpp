@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "spectral/errors.h"
-#include "util/parallel.h"
 
 namespace fl::report {
 
@@ -39,13 +38,11 @@ std::string write_temporary(const std::string& path, const std::string& content)
 }  // namespace
 
 void write_files_atomic(const Files& files) {
-  // The temporaries are written concurrently; on any failure every one written is removed and the
-  // first failure in file order is reported.
+  // The temporaries are written in file order; on a failure every one written is removed.
   std::vector<std::string> temps(files.size());
   try {
-    parallel_for_all(files.size(), [&](size_t i) {
+    for (size_t i = 0; i < files.size(); ++i)
       temps[i] = write_temporary(files[i].first, files[i].second);
-    });
   } catch (...) {
     for (const auto& t : temps)
       if (!t.empty()) std::remove(t.c_str());

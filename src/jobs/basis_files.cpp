@@ -19,6 +19,33 @@ std::string numbers(const std::vector<double>& values) {
   return out;
 }
 
+// The header's tail: each term's polynomial errors, singular value and average.
+std::string basis_header_errors(const analysis::FresnelBasis& b) {
+  std::vector<double> max_error, rms_error, sigma, average;
+  for (size_t k = 0; k < b.terms.size(); ++k) {
+    average.push_back(b.terms[k].average);
+    max_error.push_back(b.terms[k].fit_max);
+    rms_error.push_back(b.terms[k].fit_rms);
+    sigma.push_back(b.svd.singular_values[k]);
+  }
+  return fmt::format(
+      "}};\n"
+      "// Largest and RMS |polynomial − sampled singular vector| over the {} samples (uniform in\n"
+      "// θ); each sampled vector has max |b| = 1 there.\n"
+      "inline constexpr double kBasisPolyMaxError[kBasisDataTerms] = {{\n    {}}};\n"
+      "inline constexpr double kBasisPolyRmsError[kBasisDataTerms] = {{\n    {}}};\n"
+      "// The terms' singular values σ (energy σ²) before normalization.\n"
+      "inline constexpr double kBasisSingularValues[kBasisDataTerms] = {{\n    {}}};\n"
+      "// Each term's hemispherical average 2∫₀¹ b(μ) μ dμ (Kulla & Conty 2017's F_avg; b0's is "
+      "1,\n"
+      "// b1's 1/21).\n"
+      "inline constexpr double kBasisAverage[kBasisDataTerms] = {{\n    {}}};\n"
+      "\n"
+      "}}  // namespace fl::fresnel\n"
+      "// clang-format on\n",
+      b.mu.size(), numbers(max_error), numbers(rms_error), numbers(sigma), numbers(average));
+}
+
 }  // namespace
 
 std::string basis_header(const analysis::FresnelBasis& b, const std::string& command) {
@@ -58,30 +85,7 @@ std::string basis_header(const analysis::FresnelBasis& b, const std::string& com
       "inline constexpr double kBasisPolyMu[kBasisDataTerms][kBasisPolyDegree + 1] = {{\n",
       float_max_mu);
   for (const auto& t : b.terms) h += fmt::format("    {{{}}},\n", numbers(t.poly_mu));
-  std::vector<double> max_error, rms_error, sigma, average;
-  for (size_t k = 0; k < terms; ++k) {
-    average.push_back(b.terms[k].average);
-    max_error.push_back(b.terms[k].fit_max);
-    rms_error.push_back(b.terms[k].fit_rms);
-    sigma.push_back(b.svd.singular_values[k]);
-  }
-  h += fmt::format(
-      "}};\n"
-      "// Largest and RMS |polynomial − sampled singular vector| over the {} samples (uniform in\n"
-      "// θ); each sampled vector has max |b| = 1 there.\n"
-      "inline constexpr double kBasisPolyMaxError[kBasisDataTerms] = {{\n    {}}};\n"
-      "inline constexpr double kBasisPolyRmsError[kBasisDataTerms] = {{\n    {}}};\n"
-      "// The terms' singular values σ (energy σ²) before normalization.\n"
-      "inline constexpr double kBasisSingularValues[kBasisDataTerms] = {{\n    {}}};\n"
-      "// Each term's hemispherical average 2∫₀¹ b(μ) μ dμ (Kulla & Conty 2017's F_avg; b0's is "
-      "1,\n"
-      "// b1's 1/21).\n"
-      "inline constexpr double kBasisAverage[kBasisDataTerms] = {{\n    {}}};\n"
-      "\n"
-      "}}  // namespace fl::fresnel\n"
-      "// clang-format on\n",
-      b.mu.size(), numbers(max_error), numbers(rms_error), numbers(sigma), numbers(average));
-  return h;
+  return h + basis_header_errors(b);
 }
 
 Files basis_files(const analysis::Context& ctx, const analysis::FresnelBasis& b,

@@ -21,13 +21,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The files of the writers, made concurrently, in the writers' order.
-std::vector<File> make_concurrently(const std::vector<std::function<File()>>& writers) {
-  std::vector<File> out(writers.size());
-  parallel_for(writers.size(), [&](size_t i) { out[i] = writers[i](); });
-  return out;
-}
-
 // The tables as CSV and Markdown, with their rows of the index; the tables themselves for the HTML.
 // The studies come first, then the tables are built concurrently (each logged with its own time).
 std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files, std::string& index,
@@ -45,16 +38,11 @@ std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files,
     tables[i] = specs[i]->build(in);
     seconds[i] = seconds_since(t1);
   });
-  std::vector<std::function<File()>> writers;
-  for (size_t i = 0; i < specs.size(); ++i) {
-    const std::string name(specs[i]->name);
-    writers.push_back([&, i, name] { return File{name + ".csv", to_csv(tables[i])}; });
-    writers.push_back([&, i, name] { return File{name + ".md", to_markdown(tables[i])}; });
-  }
-  for (auto& f : make_concurrently(writers)) files.push_back(std::move(f));
   for (size_t i = 0; i < specs.size(); ++i) {
     const auto& spec = *specs[i];
     const auto& t = tables[i];
+    files.emplace_back(std::string(spec.name) + ".csv", to_csv(t));
+    files.emplace_back(std::string(spec.name) + ".md", to_markdown(t));
     log(fmt::format("reproduce: {} ({} rows, {:.2f} s)", spec.name, t.rows.size(), seconds[i]));
     index += fmt::format("| {} | {} | [{}.md]({}.md), [{}.csv]({}.csv) |\n", spec.name,
                          spec.summary, spec.name, spec.name, spec.name, spec.name);
@@ -95,6 +83,44 @@ std::string report_page(const analysis::Context& ctx,
   return html_report(page);
 }
 
+// The presets as JSON and three MaterialX documents, with their row of the index.
+void add_documents(const analysis::Context& ctx,
+                   const std::vector<analysis::MaterialStudy>& studies,
+                   const analysis::Table& presets, Files& files, std::string& index) {
+  files.emplace_back("presets.json", to_json(presets));
+  files.emplace_back("presets.mtlx",
+                     presets_materialx(ctx, studies, MaterialxShader::GeneralizedSchlick));
+  files.emplace_back("presets_openpbr.mtlx",
+                     presets_materialx(ctx, studies, MaterialxShader::OpenPbrSurface));
+  files.emplace_back("presets_standard_surface.mtlx",
+                     presets_materialx(ctx, studies, MaterialxShader::StandardSurface));
+  index +=
+      "| presets (JSON, MaterialX) | the presets as JSON, and MaterialX documents: one "
+      "generalized_schlick_bsdf, "
+      "open_pbr_surface or standard_surface per material | [presets.json](presets.json), "
+      "[presets.mtlx](presets.mtlx), [presets_openpbr.mtlx](presets_openpbr.mtlx), "
+      "[presets_standard_surface.mtlx](presets_standard_surface.mtlx) |\n";
+}
+
+// The figures and the sphere flips, with their row of the index; the flips for index.html.
+std::vector<Flip> add_figures(const analysis::Context& ctx,
+                              const std::vector<analysis::MaterialStudy>& studies, Files& files,
+                              std::string& index,
+                              const std::function<void(const std::string&)>& log) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto pictures = reproduce_figures(ctx, studies);
+  auto flip_files = reproduce_flips(ctx, studies);
+  log(fmt::format("reproduce: figures ({} PNGs, {:.2f} s)",
+                  pictures.size() - 1 + flip_files.files.size(), seconds_since(t0)));
+  for (auto& f : pictures) files.push_back(std::move(f));
+  for (auto& f : flip_files.files) files.push_back(std::move(f));
+  index +=
+      "| figures | colour strips and reflectance / ΔE2000 curves per material (PNG), and the "
+      "sphere flips index.html shows | "
+      "[figures.md](figures.md) |\n";
+  return std::move(flip_files.flips);
+}
+
 }  // namespace
 
 Files reproduce_files(analysis::TableInputs& in, bool figures,
@@ -110,60 +136,13 @@ Files reproduce_files(analysis::TableInputs& in, bool figures,
   const auto& studies = in.studies();
   const auto presets = *std::find_if(tables.begin(), tables.end(),
                                      [](const analysis::Table& t) { return t.name == "presets"; });
-  File page;
-  double page_seconds = 0;
-  const auto write_page = [&](const std::vector<Flip>& flips) {
-    const auto t0 = std::chrono::steady_clock::now();
-    File f{"index.html", report_page(ctx, studies, presets, tables, figures, flips)};
-    page_seconds = seconds_since(t0);
-    return f;
-  };
-  // The presets as JSON and three MaterialX documents, and without figures index.html beside them.
-  std::vector<std::function<File()>> writers{
-      [&] {
-        return File{"presets.json", to_json(presets)};
-      },
-      [&] {
-        return File{"presets.mtlx",
-                    presets_materialx(ctx, studies, MaterialxShader::GeneralizedSchlick)};
-      },
-      [&] {
-        return File{"presets_openpbr.mtlx",
-                    presets_materialx(ctx, studies, MaterialxShader::OpenPbrSurface)};
-      },
-      [&] {
-        return File{"presets_standard_surface.mtlx",
-                    presets_materialx(ctx, studies, MaterialxShader::StandardSurface)};
-      }};
-  if (!figures) writers.push_back([&] { return write_page({}); });
-  auto documents = make_concurrently(writers);
-  if (!figures) page = std::move(documents.back()), documents.pop_back();
-  for (auto& f : documents) files.push_back(std::move(f));
-  index +=
-      "| presets (JSON, MaterialX) | the presets as JSON, and MaterialX documents: one "
-      "generalized_schlick_bsdf, "
-      "open_pbr_surface or standard_surface per material | [presets.json](presets.json), "
-      "[presets.mtlx](presets.mtlx), [presets_openpbr.mtlx](presets_openpbr.mtlx), "
-      "[presets_standard_surface.mtlx](presets_standard_surface.mtlx) |\n";
-  std::vector<Flip> flips;
-  if (figures) {
-    const auto t0 = std::chrono::steady_clock::now();
-    auto pictures = reproduce_figures(ctx, studies);
-    auto flip_files = reproduce_flips(ctx, studies);
-    log(fmt::format("reproduce: figures ({} PNGs, {:.2f} s)",
-                    pictures.size() - 1 + flip_files.files.size(), seconds_since(t0)));
-    for (auto& f : pictures) files.push_back(std::move(f));
-    for (auto& f : flip_files.files) files.push_back(std::move(f));
-    flips = std::move(flip_files.flips);
-    index +=
-        "| figures | colour strips and reflectance / ΔE2000 curves per material (PNG), and the "
-        "sphere flips index.html shows | "
-        "[figures.md](figures.md) |\n";
-  }
-  if (figures) page = write_page(flips);
+  add_documents(ctx, studies, presets, files, index);
+  const auto flips = figures ? add_figures(ctx, studies, files, index, log) : std::vector<Flip>{};
+  const auto t0 = std::chrono::steady_clock::now();
+  File page{"index.html", report_page(ctx, studies, presets, tables, figures, flips)};
+  log(fmt::format("reproduce: index.html ({} bytes, {:.2f} s)", page.second.size(),
+                  seconds_since(t0)));
   files.push_back(std::move(page));
-  log(fmt::format("reproduce: index.html ({} bytes, {:.2f} s)", files.back().second.size(),
-                  page_seconds));
   index +=
       "| index.html | the HTML report: the gallery and every table, sortable and filterable | "
       "[index.html](index.html) |\n";

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 #include "spectral/errors.h"
 #include "spectral/nk_text.h"
@@ -119,24 +120,8 @@ void require_unique_names(const std::vector<std::string>& files, const std::vect
   }
 }
 
-}  // namespace
-
-Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
-  const YamlNode root = read_yaml_file(path);
-  if (!root.is_map()) throw InputError(path, 1, "a catalog entry must be a YAML map");
-  require_known_keys(root, kEntryKeys, path, "a catalog entry");
-  Material m;
-  m.key = fs::path(path).stem().string();
-  m.name = scalar(root, "name", path, true);
-  const std::string cls = scalar(root, "class", path, true);
-  if (cls == "metal")
-    m.material_class = MaterialClass::Metal;
-  else if (cls == "dielectric")
-    m.material_class = MaterialClass::Dielectric;
-  else
-    throw InputError(path, root["class"].line() + 1,
-                     fmt::format("class '{}' must be metal or dielectric", cls));
-  m.reference = scalar(root, "reference", path, false);
+// A catalog entry's optional numbers: 'order' and the talk's Schlick error.
+void read_entry_numbers(const YamlNode& root, const std::string& path, Material& m) {
   for (const char* key : {"order", "talk_schlick_rms_de00"}) {
     const std::string v = scalar(root, key, path, false);
     double x = 0;
@@ -151,6 +136,11 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
     } else
       m.talk_schlick_rms_de00 = x;
   }
+}
+
+// A catalog entry's data: a database page ('source'), a file, or a constant index.
+void read_entry_data(const YamlNode& root, const std::string& path, const DataPaths& paths,
+                     Material& m) {
   const std::string page = scalar(root, "source", path, false);
   const std::string file = scalar(root, "file", path, false);
   if (!page.empty() && !file.empty())
@@ -159,7 +149,7 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
   if (!page.empty()) {
     m.source = page;
     m.constants = read_refractiveindex_file(database_file(paths, page));
-    m.page_class = classify_page(page_entry(paths.database, page));
+    m.page_class = classify_page(page_catalog(paths)->find(page));
   } else if (!file.empty()) {
     const fs::path f =
         fs::path(file).is_absolute() ? fs::path(file) : fs::path(path).parent_path() / file;
@@ -181,6 +171,28 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
   } else {
     throw InputError(path, 0, "needs 'source' (a database page), 'file' or 'constant'");
   }
+}
+
+}  // namespace
+
+Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
+  const YamlNode root = read_yaml_file(path);
+  if (!root.is_map()) throw InputError(path, 1, "a catalog entry must be a YAML map");
+  require_known_keys(root, kEntryKeys, path, "a catalog entry");
+  Material m;
+  m.key = fs::path(path).stem().string();
+  m.name = scalar(root, "name", path, true);
+  const std::string cls = scalar(root, "class", path, true);
+  if (cls == "metal")
+    m.material_class = MaterialClass::Metal;
+  else if (cls == "dielectric")
+    m.material_class = MaterialClass::Dielectric;
+  else
+    throw InputError(path, root["class"].line() + 1,
+                     fmt::format("class '{}' must be metal or dielectric", cls));
+  m.reference = scalar(root, "reference", path, false);
+  read_entry_numbers(root, path, m);
+  read_entry_data(root, path, paths, m);
   return m;
 }
 
@@ -195,53 +207,66 @@ std::vector<Material> read_catalog(const DataPaths& paths) {
   return out;
 }
 
+namespace {
+
+// The catalog entry whose key or display name is `spec` (ignoring case), if any.
+std::optional<Material> find_in_catalog(const std::string& spec, const DataPaths& paths) {
+  std::error_code ec;
+  if (!fs::is_directory(paths.materials, ec)) return std::nullopt;
+  const std::string want = lower(spec);
+  const std::vector<std::string> files = catalog_files(paths.materials);
+  for (const auto& f : files)
+    if (lower(fs::path(f).stem().string()) == want) return read_catalog_entry(f, paths);
+  std::vector<std::string> named;
+  for (const auto& f : files) {
+    // A file that cannot be read as YAML names nothing here; the entry that matches is then read
+    // with every error it has.
+    try {
+      const YamlNode root = read_yaml_file(f);
+      if (root.is_map() && root["name"] && lower(root["name"].as_string()) == want)
+        named.push_back(f);
+    } catch (const YamlError&) {
+    } catch (const InputError&) {
+    }
+  }
+  if (named.size() > 1) {
+    std::vector<Material> ms;
+    for (const auto& f : named) ms.push_back(read_catalog_entry(f, paths));
+    require_unique_names(named, ms);
+  }
+  if (!named.empty()) return read_catalog_entry(named.front(), paths);
+  return std::nullopt;
+}
+
+// A material file: a catalog entry, a refractiveindex.info page or a table of optical constants.
+Material read_material_file(const std::string& spec, const DataPaths& paths) {
+  Material m;
+  m.origin = Material::Origin::File;
+  m.key = spec;
+  m.name = fs::path(spec).stem().string();
+  if (lower(fs::path(spec).extension().string()) == ".spd")  // NAME.eta.spd or NAME.k.spd: NAME
+    m.name = fs::path(m.name).stem().string();
+  m.source = spec;
+  const auto ext = lower(fs::path(spec).extension().string());
+  if (ext == ".yml" || ext == ".yaml") {
+    // A catalog entry has 'class'; a database file has 'DATA'.
+    const YamlNode root = read_yaml_file(spec);
+    if (root.is_map() && root["class"] && !root["DATA"]) return read_catalog_entry(spec, paths);
+  }
+  m.constants = read_optical_file(spec);
+  m.material_class = classify(m.constants);
+  return m;
+}
+
+}  // namespace
+
 Material resolve_material(const std::string& spec, const DataPaths& paths) {
   if (spec.empty()) throw InputError("empty material name");
   // A catalog key or display name.
-  std::error_code ec;
-  if (fs::is_directory(paths.materials, ec)) {
-    const std::string want = lower(spec);
-    const std::vector<std::string> files = catalog_files(paths.materials);
-    for (const auto& f : files)
-      if (lower(fs::path(f).stem().string()) == want) return read_catalog_entry(f, paths);
-    std::vector<std::string> named;
-    for (const auto& f : files) {
-      // A file that cannot be read as YAML names nothing here; the entry that matches is then read
-      // with every error it has.
-      try {
-        const YamlNode root = read_yaml_file(f);
-        if (root.is_map() && root["name"] && lower(root["name"].as_string()) == want)
-          named.push_back(f);
-      } catch (const YamlError&) {
-      } catch (const InputError&) {
-      }
-    }
-    if (named.size() > 1) {
-      std::vector<Material> ms;
-      for (const auto& f : named) ms.push_back(read_catalog_entry(f, paths));
-      require_unique_names(named, ms);
-    }
-    if (!named.empty()) return read_catalog_entry(named.front(), paths);
-  }
+  if (auto m = find_in_catalog(spec, paths)) return *std::move(m);
   // A file path.
-  if (fs::exists(spec, ec)) {
-    Material m;
-    m.origin = Material::Origin::File;
-    m.key = spec;
-    m.name = fs::path(spec).stem().string();
-    if (lower(fs::path(spec).extension().string()) == ".spd")  // NAME.eta.spd or NAME.k.spd: NAME
-      m.name = fs::path(m.name).stem().string();
-    m.source = spec;
-    const auto ext = lower(fs::path(spec).extension().string());
-    if (ext == ".yml" || ext == ".yaml") {
-      // A catalog entry has 'class'; a database file has 'DATA'.
-      const YamlNode root = read_yaml_file(spec);
-      if (root.is_map() && root["class"] && !root["DATA"]) return read_catalog_entry(spec, paths);
-    }
-    m.constants = read_optical_file(spec);
-    m.material_class = classify(m.constants);
-    return m;
-  }
+  std::error_code ec;
+  if (fs::exists(spec, ec)) return read_material_file(spec, paths);
   // A database page.
   const std::string page = spec.size() > 4 && spec.substr(spec.size() - 4) == ".yml"
                                ? spec.substr(0, spec.size() - 4)
@@ -260,6 +285,10 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
       spec, paths.materials, paths.database));
 }
 
+std::shared_ptr<const PageCatalog> page_catalog(const DataPaths& paths) {
+  return paths.pages ? paths.pages : std::make_shared<const PageCatalog>(paths.database);
+}
+
 Material read_database_page(const std::string& page, const DataPaths& paths) {
   Material m;
   m.origin = Material::Origin::Page;
@@ -269,7 +298,8 @@ Material read_database_page(const std::string& page, const DataPaths& paths) {
   m.constants = read_refractiveindex_file(database_file(paths, page));
   m.reference = m.constants.reference;
   m.material_class = classify(m.constants);
-  const PageEntry* entry = page_entry(paths.database, page);
+  const auto pages = page_catalog(paths);
+  const PageEntry* entry = pages->find(page);
   if (entry) m.book_name = entry->book_name, m.section = entry->section;
   m.page_class = classify_page(entry);
   m.bulk_measurement = m.page_class.kind == PageKind::Bulk;

@@ -73,6 +73,30 @@ SceneFileMaterial scene_material(const std::string& path, const YamlNode& m) {
   return out;
 }
 
+// The scene's 'lighting': one of punctual, ibl, area or a list of them.
+void read_lighting(const std::string& path, const YamlNode& v, int line, SceneFile& s) {
+  std::vector<const YamlNode*> items;
+  if (v.is_scalar())
+    items.push_back(&v);
+  else if (v.is_sequence())
+    for (const auto& x : v.items()) items.push_back(&x);
+  if (items.empty())
+    throw InputError(path, line, "'lighting' must list any of punctual, ibl, area");
+  for (const YamlNode* x : items) {
+    const std::string l = scalar_text(path, *x, "each lighting");
+    if (l == "punctual")
+      s.punctual = true;
+    else if (l == "ibl")
+      s.ibl = true;
+    else if (l == "area")
+      s.area = true;
+    else
+      throw InputError(
+          path, line_of(*x),
+          "unknown lighting '" + l + "'" + hint_or_list(l, {"punctual", "ibl", "area"}));
+  }
+}
+
 }  // namespace
 
 SceneFile read_scene_file(const std::string& path) {
@@ -107,26 +131,7 @@ SceneFile read_scene_file(const std::string& path) {
       if (s.space.empty()) throw InputError(path, line, "'space' is empty");
       s.space_line = line;
     } else if (key == "lighting") {
-      std::vector<const YamlNode*> items;
-      if (v.is_scalar())
-        items.push_back(&v);
-      else if (v.is_sequence())
-        for (const auto& x : v.items()) items.push_back(&x);
-      if (items.empty())
-        throw InputError(path, line, "'lighting' must list any of punctual, ibl, area");
-      for (const YamlNode* x : items) {
-        const std::string l = scalar_text(path, *x, "each lighting");
-        if (l == "punctual")
-          s.punctual = true;
-        else if (l == "ibl")
-          s.ibl = true;
-        else if (l == "area")
-          s.area = true;
-        else
-          throw InputError(
-              path, line_of(*x),
-              "unknown lighting '" + l + "'" + hint_or_list(l, {"punctual", "ibl", "area"}));
-      }
+      read_lighting(path, v, line, s);
     } else if (key == "roughness") {
       s.roughness = roughness_list(path, v, line);
     } else {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "analysis/basis/basis.h"
+#include "csv_reader.h"
 #include "fresnel/basis.h"
 #include "fresnel/exact.h"
 
@@ -242,20 +243,12 @@ TEST(Basis, CentredPolynomialExpandsToTheSameInMu) {
 // The committed basis (data/basis/basis_functions.csv, src/fresnel/basis_polynomials.h): columns by
 // name, one vector per column.
 std::map<std::string, Vec> committed_functions() {
-  std::ifstream in(std::string(FL_SOURCE_DIR) + "/data/basis/basis_functions.csv");
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  for (std::stringstream ss(line); std::getline(ss, line, ',');) names.push_back(line);
+  const auto rows =
+      test::csv_file_rows(std::string(FL_SOURCE_DIR) + "/data/basis/basis_functions.csv");
   std::map<std::string, Vec> columns;
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    for (const auto& name : names) {
-      std::string cell;
-      std::getline(ss, cell, ',');
-      columns[name].push_back(std::stod(cell));
-    }
-  }
+  for (size_t i = 1; i < rows.size(); ++i)
+    for (size_t c = 0; c < rows[0].size(); ++c)
+      columns[rows[0][c]].push_back(std::stod(rows[i][c]));
   return columns;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "csv_reader.h"
 #include "test_util.h"
 
 namespace fl {
@@ -20,25 +21,6 @@ using test::run_command;
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-// The rows of a CSV without quoted cells as maps from column name to cell.
-std::vector<std::map<std::string, std::string>> records(const std::string& text) {
-  std::stringstream ss(text);
-  std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(ss, line);) {
-    std::vector<std::string> cells;
-    std::stringstream ls(line);
-    for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  std::vector<std::map<std::string, std::string>> out;
-  for (size_t i = 1; i < rows.size(); ++i) {
-    std::map<std::string, std::string> r;
-    for (size_t c = 0; c < rows[0].size() && c < rows[i].size(); ++c) r[rows[0][c]] = rows[i][c];
-    out.push_back(r);
-  }
-  return out;
 }
 
 TEST(BasisCli, WritesTheBasisOfTheMatchedPages) {
@@ -53,7 +35,7 @@ TEST(BasisCli, WritesTheBasisOfTheMatchedPages) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
   EXPECT_NE(slurp(out + "/basis_polynomials.h").find("kBasisDataTerms = 3;"), std::string::npos);
   // Each page's least-squares residual over nested spans never grows with K (5 decimals printed).
-  const auto pages = records(slurp(out + "/basis_pages.csv"));
+  const auto pages = test::csv_records(slurp(out + "/basis_pages.csv"));
   ASSERT_FALSE(pages.empty());
   for (const auto& p : pages)
     for (int k = 3; k <= 5; ++k)

@@ -1,8 +1,12 @@
 // The command-line contract: exit statuses, messages, atomic output, determinism.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "test_util.h"
 
@@ -12,13 +16,39 @@ namespace {
 using test::cli;
 using test::run_command;
 
+// The subcommands a help page lists: the first word of each line of its "Subcommands:" section.
+std::vector<std::string> listed_subcommands(const std::string& help) {
+  std::vector<std::string> out;
+  const auto at = help.find("\nSubcommands:\n");
+  if (at == std::string::npos) return out;
+  std::istringstream in(help.substr(at + 14));
+  for (std::string line; std::getline(in, line) && !line.empty();) {
+    if (line.rfind("  ", 0) != 0 || line[2] == ' ') continue;  // a wrapped description
+    out.push_back(line.substr(2, line.find(' ', 2) - 2));
+  }
+  return out;
+}
+
+// Every command the CLI registers, found from the help pages themselves (the top level's and, for
+// commands with their own subcommands, theirs): each prints its usage and exits 0.
 TEST(Cli, HelpForEveryCommand) {
-  for (const char* cmd : {"", "materials", "curve", "presets", "table", "reproduce", "lut",
-                          "lut dfg", "plot", "plot strip", "render", "speed", "plan"}) {
+  std::vector<std::string> pending{""}, visited;
+  while (!pending.empty()) {
+    const std::string cmd = pending.back();
+    pending.pop_back();
     const auto r = run_command(cli() + " " + cmd + " --help");
     EXPECT_EQ(r.status, 0) << cmd;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << cmd;
+    visited.push_back(cmd);
+    for (const auto& sub : listed_subcommands(r.out))
+      pending.push_back(cmd.empty() ? sub : cmd + " " + sub);
   }
+  // The README's command list, by name: each is registered (and so was visited above).
+  for (const char* cmd : {"materials",  "curve",       "presets",         "table",   "reproduce",
+                          "lut",        "lut dfg",     "lut ltc-moments", "lut ltc", "plot",
+                          "plot strip", "plot curves", "render",          "speed",   "plan",
+                          "pages",      "library",     "consensus",       "shader",  "basis"})
+    EXPECT_NE(std::find(visited.begin(), visited.end(), cmd), visited.end()) << cmd;
 }
 
 TEST(Cli, UsageErrorsExitTwo) {

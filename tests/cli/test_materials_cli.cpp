@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "csv_reader.h"
 #include "fresnel/model_set.h"
 #include "test_util.h"
 
@@ -20,38 +21,9 @@ namespace {
 using test::cli;
 using test::run_command;
 
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream ss(text);
-  for (std::string line; std::getline(ss, line);) {
-    std::vector<std::string> cells;
-    std::string cell;
-    bool quoted = false;
-    for (const char c : line) {
-      if (c == '"')
-        quoted = !quoted;
-      else if (c == ',' && !quoted)
-        cells.push_back(cell), cell.clear();
-      else
-        cell += c;
-    }
-    cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
+using test::csv_rows;
 
-// The rows of a CSV as maps from column name to cell.
-std::vector<std::map<std::string, std::string>> records(const std::string& text) {
-  const auto rows = csv_rows(text);
-  std::vector<std::map<std::string, std::string>> out;
-  for (size_t i = 1; i < rows.size(); ++i) {
-    std::map<std::string, std::string> r;
-    for (size_t c = 0; c < rows[0].size() && c < rows[i].size(); ++c) r[rows[0][c]] = rows[i][c];
-    out.push_back(r);
-  }
-  return out;
-}
+using test::csv_records;
 
 int lines(const std::string& s) {
   return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
@@ -62,7 +34,7 @@ TEST(MaterialsCli, PresetsTakeDatabasePagesCatalogNamesAndFiles) {
   const auto csv = tmp.file("glass.csv", "Wavelength (nm),n\n350,1.53\n850,1.51\n");
   const auto r = run_command(cli() + " -q presets main/Co/nk/Werner-DFT gold '" + csv + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = records(r.out);
+  const auto rows = csv_records(r.out);
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].at("material"), "main/Co/nk/Werner-DFT");
   EXPECT_EQ(rows[1].at("material"), "Gold");
@@ -94,7 +66,7 @@ TEST(MaterialsCli, EveryInputFormatThroughTheCli) {
   const auto r = run_command(cli() + " -q curve '" + table + "' '" + download + "' '" + sopra +
                              "' '" + spd + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = records(r.out);
+  const auto rows = csv_records(r.out);
   ASSERT_EQ(rows.size(), 4u * 91);
   for (size_t m = 1; m < 4; ++m)
     for (const char* c : {"truth_r", "truth_g", "truth_b"})
@@ -105,7 +77,7 @@ TEST(MaterialsCli, EveryInputFormatThroughTheCli) {
 TEST(MaterialsCli, GlobsExpandToSortedPagesAndAGlobMatchingNothingIsAnError) {
   const auto r = run_command(cli() + " -q table schlick 'main/Ti/nk/Rakic-*'");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = records(r.out);
+  const auto rows = csv_records(r.out);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].at("material"), "main/Ti/nk/Rakic-BB");
   EXPECT_EQ(rows[1].at("material"), "main/Ti/nk/Rakic-LD");
@@ -119,7 +91,7 @@ TEST(MaterialsCli, GlobsExpandToSortedPagesAndAGlobMatchingNothingIsAnError) {
 TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesOneAndSkipsMany) {
   const auto r = run_command(cli() + " -q presets main/Au/nk/Ordal main/Au/nk/Johnson");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = records(r.out);
+  const auto rows = csv_records(r.out);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_LT(std::stod(rows[0].at("coverage")), 0.5);
   EXPECT_EQ(rows[0].at("extrapolated"), "yes");
@@ -142,14 +114,14 @@ TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesOneAndSkipsMany) {
   const auto many =
       run_command(cli() + " --min-coverage 0.9 presets main/Au/nk/Ordal main/Au/nk/Johnson");
   ASSERT_EQ(many.status, 0) << many.err;
-  EXPECT_EQ(records(many.out).size(), 1u);
+  EXPECT_EQ(csv_records(many.out).size(), 1u);
   EXPECT_NE(many.err.find("skipped main/Au/nk/Ordal: covers 0.004"), std::string::npos) << many.err;
 }
 
 TEST(MaterialsCli, CurveOverSeveralMaterialsNamesEachRowsMaterial) {
   const auto r = run_command(cli() + " -q curve gold main/Cu/nk/Johnson");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = records(r.out);
+  const auto rows = csv_records(r.out);
   ASSERT_EQ(rows.size(), 2u * 91);
   EXPECT_EQ(rows.front().at("material"), "Gold");
   EXPECT_EQ(rows.back().at("material"), "main/Cu/nk/Johnson");
@@ -163,7 +135,7 @@ TEST(MaterialsCli, CatalogEntryMayPointAtAFile) {
   const auto r = run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB +
                              "' --materials '" + tmp.path() + "/catalog' presets");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = records(r.out);
+  const auto rows = csv_records(r.out);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].at("material"), "My silver");
 }
@@ -200,7 +172,7 @@ TEST(MaterialsCli, PagesListsBookClassCoverageAndReference) {
                              "main/Au/nk/Ordal 'main/AgBr/n2/*'");
   ASSERT_EQ(r.status, 0) << r.err;
   std::map<std::string, std::map<std::string, std::string>> by_page;
-  for (const auto& row : records(r.out)) by_page[row.at("page")] = row;
+  for (const auto& row : csv_records(r.out)) by_page[row.at("page")] = row;
   ASSERT_TRUE(by_page.count("main/Cs/nk/Smith")) << r.out;
   EXPECT_EQ(by_page["main/Cs/nk/Smith"].at("class"), "metal");
   EXPECT_EQ(by_page["main/Cs/nk/Smith"].at("book"), "Cs");
@@ -239,12 +211,12 @@ TEST(MaterialsCli, LibraryListsEveryPageInOrSkippedWithItsReasonAndFlagsExtrapol
       std::string("'") + FL_CLI + "' --db '" + db + "' --materials '" + tmp.path() + "/none'";
   const auto r = run_command(base + " --min-coverage 0 library --out '" + out + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto lib = records(test::run_command("cat '" + out + "/library.csv'").out);
+  const auto lib = csv_records(test::run_command("cat '" + out + "/library.csv'").out);
   ASSERT_EQ(lib.size(), 2u);  // Good and Red; Glass is a dielectric, Bad cannot be read
   EXPECT_EQ(lib[1].at("material"), "main/M/nk/Red");
   EXPECT_NE(lib[1].at("flags").find("extrapolated"), std::string::npos);
   EXPECT_NE(lib[1].at("uncovered").find("360-695 nm"), std::string::npos) << lib[1].at("uncovered");
-  const auto skipped = records(test::run_command("cat '" + out + "/skipped.csv'").out);
+  const auto skipped = csv_records(test::run_command("cat '" + out + "/skipped.csv'").out);
   ASSERT_EQ(skipped.size(), 2u);
   EXPECT_EQ(skipped[0].at("page"), "main/G/nk/Glass");
   EXPECT_EQ(skipped[0].at("reason_class"), "class dielectric");
@@ -270,7 +242,8 @@ TEST(MaterialsCli, LibraryListsEveryPageInOrSkippedWithItsReasonAndFlagsExtrapol
   // coverage.
   const auto def = run_command(base + " -q library --out '" + tmp.path() + "/def'");
   ASSERT_EQ(def.status, 0) << def.err;
-  EXPECT_EQ(records(test::run_command("cat '" + tmp.path() + "/def/library.csv'").out).size(), 1u);
+  EXPECT_EQ(csv_records(test::run_command("cat '" + tmp.path() + "/def/library.csv'").out).size(),
+            1u);
 }
 
 // main/Zn/nk/Querry has RGB η ≈ 13.7: the fit box no longer pins it, and the fit ends no worse than
@@ -280,7 +253,7 @@ TEST(MaterialsCli, FittedRgbEtaKappaOfZincQuerryIsNoWorseThanDerived) {
   ASSERT_EQ(r.status, 0) << r.err;
   double derived = -1, fitted = -1;
   std::string flags;
-  for (const auto& row : records(r.out))
+  for (const auto& row : csv_records(r.out))
     if (row.at("model") == "fresnel_rgb") {
       (row.at("parameters") == "derived" ? derived : fitted) = std::stod(row.at("rms_de00"));
       if (row.at("parameters") == "fitted") flags = row.at("fit_flags");
@@ -297,7 +270,7 @@ TEST(MaterialsCli, NoFitPublishesWorseThanItsDerivedStart) {
   ASSERT_EQ(r.status, 0) << r.err;
   std::map<std::string, double> derived;
   int checked = 0;
-  for (const auto& row : records(r.out)) {
+  for (const auto& row : csv_records(r.out)) {
     const std::string key = row.at("material") + "|" + row.at("model");
     if (row.at("parameters") == "derived")
       derived[key] = std::stod(row.at("rms_de00"));
@@ -344,7 +317,7 @@ TEST(MaterialsCli, ConsensusOfThreePagesIsTheMiddleOneWithTheirSpreadAndTheModel
       std::string("'") + FL_CLI + "' -q --db '" + db + "' --materials '" + tmp.path() + "/none'";
   const auto c = run_command(base + " presets --consensus metallium");
   ASSERT_EQ(c.status, 0) << c.err;
-  const auto rows = records(c.out);
+  const auto rows = csv_records(c.out);
   ASSERT_EQ(rows.size(), 1u);
   const auto& r = rows[0];
   EXPECT_EQ(r.at("material"), "main/M/consensus");
@@ -353,7 +326,7 @@ TEST(MaterialsCli, ConsensusOfThreePagesIsTheMiddleOneWithTheirSpreadAndTheModel
   EXPECT_EQ(r.at("recommended"), "main/M/nk/B");
   EXPECT_EQ(r.at("outliers"), "1");
   EXPECT_NE(r.at("outlier_pages").find("D (model:"), std::string::npos) << r.at("outlier_pages");
-  const auto b = records(run_command(base + " presets main/M/nk/B").out).at(0);
+  const auto b = csv_records(run_command(base + " presets main/M/nk/B").out).at(0);
   EXPECT_EQ(b.at("page_kind"), "bulk");
   for (const char* q : {"f0_r", "f0_g", "f0_b", "f82_r", "f82_g", "f82_b"})
     EXPECT_NEAR(std::stod(r.at(q)), std::stod(b.at(q)), kPrintedTolerance) << q;
@@ -365,7 +338,7 @@ TEST(MaterialsCli, ConsensusOfThreePagesIsTheMiddleOneWithTheirSpreadAndTheModel
   EXPECT_GT(std::stod(r.at("f0_de00_max")), 0.0);
   EXPECT_GE(std::stod(r.at("f0_de00_max")), std::stod(r.at("f0_de00_median")));
 
-  const auto pages = records(run_command(base + " consensus M --table pages").out);
+  const auto pages = csv_records(run_command(base + " consensus M --table pages").out);
   ASSERT_EQ(pages.size(), 4u);
   EXPECT_EQ(pages[3].at("page"), "main/M/nk/D");
   EXPECT_EQ(pages[3].at("kind"), "model");
@@ -376,7 +349,7 @@ TEST(MaterialsCli, ConsensusOfThreePagesIsTheMiddleOneWithTheirSpreadAndTheModel
   const auto bad = run_command(base + " presets --consensus Unobtainium");
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(lines(bad.err), 1) << bad.err;
-  const auto kinds = records(run_command(base + " pages").out);
+  const auto kinds = csv_records(run_command(base + " pages").out);
   ASSERT_EQ(kinds.size(), 4u);
   EXPECT_EQ(kinds[0].at("kind"), "bulk");
   EXPECT_EQ(kinds[3].at("kind"), "model");

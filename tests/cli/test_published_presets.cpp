@@ -7,6 +7,7 @@
 // Cesium's. lin_rec709's f82tint is not listed as clean or as biased; it is checked too.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "csv_reader.h"
 #include "test_util.h"
 
 namespace fl {
@@ -30,40 +32,8 @@ constexpr double kBiasTolerance = 2e-3;
 
 const std::string kPresets = std::string(FL_SHARED_TESTDATA) + "/peer_presets";
 
-// Rows of CSV text, split on commas (quoted fields keep theirs).
-std::vector<std::vector<std::string>> read_csv_text(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::string cell;
-    bool quoted = false;
-    for (const char ch : line) {
-      if (ch == '"')
-        quoted = !quoted;
-      else if (ch == ',' && !quoted)
-        cells.push_back(cell), cell.clear();
-      else
-        cell += ch;
-    }
-    cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    rows.push_back(cells);
-  }
-  return rows;
+std::vector<test::CsvRow> read_csv(const std::string& path) {
+  return test::csv_file_rows(path);
 }
 
 using Rgb = std::array<double, 3>;
@@ -96,18 +66,16 @@ std::map<std::string, Preset> run_presets(const std::string& options) {
                                    " presets --openpbr --format csv");
   EXPECT_EQ(r.status, 0) << r.err;
   std::map<std::string, Preset> out;
-  std::stringstream ss(r.out);
-  std::string line;
-  std::getline(ss, line);
-  EXPECT_EQ(line.rfind("material,base_color_r,base_color_g,base_color_b,specular_color_r,specular_"
-                       "color_g,specular_color_b",
-                       0),
-            0u)
-      << line;
-  while (std::getline(ss, line)) {
-    std::vector<std::string> c;
-    std::stringstream ls(line);
-    for (std::string x; std::getline(ls, x, ',');) c.push_back(x);
+  const auto rows = test::csv_rows(r.out);
+  EXPECT_FALSE(rows.empty());
+  if (rows.empty()) return out;
+  const std::vector<std::string> want{"material",        "base_color_r",     "base_color_g",
+                                      "base_color_b",    "specular_color_r", "specular_color_g",
+                                      "specular_color_b"};
+  EXPECT_TRUE(rows[0].size() >= want.size() &&
+              std::equal(want.begin(), want.end(), rows[0].begin()));
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const auto& c = rows[i];
     if (c.size() < 7) continue;
     out[c[0]] = {{std::stod(c[1]), std::stod(c[2]), std::stod(c[3])},
                  {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}};
@@ -197,7 +165,7 @@ TEST(PublishedPresets, DatabasePagesNamedDirectlyMatchPhysicallyBasedInAcescg) {
   const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB +
                                    "' --space acescg --illuminant D60 presets --format csv" + args);
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto rows = read_csv_text(r.out);
+  const auto rows = test::csv_rows(r.out);
   ASSERT_GE(rows.size(), 1u);
   EXPECT_EQ(rows[0][3], "f0_r");
   EXPECT_EQ(rows[0][6], "f82_r");

@@ -10,6 +10,7 @@
 #include "color/lab.h"
 #include "color/ocio.h"
 #include "color/rgb_space.h"
+#include "csv_reader.h"
 #include "spectral/errors.h"
 #include "test_util.h"
 
@@ -166,16 +167,13 @@ colorspaces:
 constexpr double kSharmaTolerance = 1e-4;
 
 TEST(Ciede2000, SharmaWuDalalPairs) {
-  std::ifstream in(std::string(FL_SHARED_TESTDATA) + "/ciede2000_sharma2005.csv");
-  ASSERT_TRUE(in) << "missing shared test data";
-  std::string line;
+  const auto rows = test::csv_file_rows(
+      std::string(FL_SHARED_TESTDATA) + "/ciede2000_sharma2005.csv", {.skip_comments = true});
+  ASSERT_FALSE(rows.empty()) << "missing shared test data";
   int pairs = 0;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("pair", 0) == 0) continue;
-    std::stringstream ss(line);
-    std::string f;
-    std::vector<double> v;
-    while (std::getline(ss, f, ',')) v.push_back(std::stod(f));
+  for (const auto& row : rows) {
+    if (row[0] == "pair") continue;  // the header
+    const auto v = test::csv_numbers(row);
     ASSERT_EQ(v.size(), 8u);
     const Lab a{v[1], v[2], v[3]}, b{v[4], v[5], v[6]};
     EXPECT_NEAR(ciede2000(a, b), v[7], kSharmaTolerance) << "pair " << v[0];

@@ -13,33 +13,16 @@
 #include <vector>
 
 #include "color/lab.h"
+#include "csv_reader.h"
 #include "test_util.h"
 
 namespace fl {
 namespace {
 
-using Row = std::map<std::string, std::string>;
+using Row = test::CsvRecord;
 
 std::vector<Row> csv_rows(const std::string& text) {
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  auto split = [](const std::string& l) {
-    std::vector<std::string> v;
-    std::istringstream ls(l);
-    for (std::string c; std::getline(ls, c, ',');) v.push_back(c);
-    if (!l.empty() && l.back() == ',') v.emplace_back();
-    return v;
-  };
-  const auto header = split(line);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    const auto cells = split(line);
-    Row r;
-    for (size_t i = 0; i < header.size() && i < cells.size(); ++i) r[header[i]] = cells[i];
-    rows.push_back(r);
-  }
-  return rows;
+  return test::csv_records(text);
 }
 
 std::string run_ok(const std::string& args) {
@@ -93,9 +76,9 @@ std::vector<double> color_inputs(const std::string& doc, const std::string& inpu
   std::vector<double> v;
   const std::string key = "name=\"" + input + "\" type=\"color3\" value=\"";
   for (size_t p = doc.find(key); p != std::string::npos; p = doc.find(key, p + 1)) {
-    std::istringstream in(
-        doc.substr(p + key.size(), doc.find('"', p + key.size()) - p - key.size()));
-    for (std::string c; std::getline(in, c, ',');) v.push_back(std::stod(c));
+    const auto cells =
+        test::csv_cells(doc.substr(p + key.size(), doc.find('"', p + key.size()) - p - key.size()));
+    for (double x : test::csv_numbers(cells)) v.push_back(x);
   }
   return v;
 }

@@ -63,14 +63,17 @@ TEST(Registry, BatchMatchesScalarInDoubleAndFloat) {
   }
 }
 
-// Every corner of the fit box, at normal, intermediate and grazing incidence: finite values, and
-// for models whose first channel parameter is F0, exactly F0 at normal incidence.
+// Every corner of the fit box (each parameter at its lower or upper bound, all 2^n combinations),
+// at normal, intermediate and grazing incidence: finite values, and for models whose first channel
+// parameter is F0, exactly F0 at normal incidence. Every bound of every parameter is visited.
 TEST(Registry, FiniteAtTheCornersOfTheFitBox) {
   for (const auto& spec : fresnel::model_specs()) {
     const auto box = spec.bounds();
     const size_t n = box.size();
-    ASSERT_LE(n, 12u);
-    for (unsigned corner = 0; corner < (1u << n); corner += 1u + (n > 6 ? 7u : 0u)) {
+    ASSERT_LE(n, 12u);  // at most 4096 corners
+    std::vector<std::array<bool, 2>> met(n, {false, false});
+    for (unsigned corner = 0; corner < (1u << n); ++corner) {
+      for (size_t i = 0; i < n; ++i) met[i][(corner >> i) & 1u] = true;
       std::vector<double> p(n);
       for (size_t i = 0; i < n; ++i) p[i] = (corner >> i) & 1u ? box[i].hi : box[i].lo;
       for (double c : {0.0, 1e-7, 1.0 / 7.0, 0.5, 1.0 - 1e-9, 1.0}) {
@@ -91,6 +94,8 @@ TEST(Registry, FiniteAtTheCornersOfTheFitBox) {
         }
       }
     }
+    for (size_t i = 0; i < n; ++i)
+      EXPECT_TRUE(met[i][0] && met[i][1]) << spec.name << " parameter " << i;
   }
 }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "analysis/lut/lut.h"
+#include "csv_reader.h"
 #include "dfg_reference.h"
 #include "quadrature.h"
 #include "test_util.h"
@@ -175,16 +176,16 @@ TEST(LutFiles, SplitSumCsvCarriesItsFormulaAndReproducesTheIntegral) {
   const auto r =
       test::run_command(std::string("'") + FL_CLI + "' -q lut dfg --size 8 --out '" + csv + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  std::istringstream in(slurp(csv));
-  std::string line;
+  const std::string text = slurp(csv);
   int comments = 0, rows = 0;
-  while (std::getline(in, line) && line.rfind("# ", 0) == 0) ++comments;
+  for (const auto& row : test::csv_rows(text)) comments += row[0].rfind("# ", 0) == 0;
   EXPECT_EQ(comments, 3);  // axes, channels, shader
-  EXPECT_EQ(line, "nov,perceptual_roughness,alpha,dfg1,dfg2,dfg_f82");
-  while (std::getline(in, line)) {
-    std::vector<double> c;
-    std::istringstream ls(line);
-    for (std::string x; std::getline(ls, x, ',');) c.push_back(std::stod(x));
+  const auto table = test::csv_rows(text, {.skip_comments = true});
+  ASSERT_FALSE(table.empty());
+  EXPECT_EQ(table[0],
+            (test::CsvRow{"nov", "perceptual_roughness", "alpha", "dfg1", "dfg2", "dfg_f82"}));
+  for (size_t i = 1; i < table.size(); ++i) {
+    const auto c = test::csv_numbers(table[i]);
     ASSERT_EQ(c.size(), 6u);
     const auto ref = test::reference_moments(c[0], c[2]);
     for (double f0 : {0.04, 1.0})

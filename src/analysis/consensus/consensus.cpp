@@ -9,7 +9,7 @@
 
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
-#include "color/ciede2000_fast.h"
+#include "color/lab.h"
 #include "fresnel/exact.h"
 #include "spectral/errors.h"
 #include "spectral/pages.h"
@@ -120,7 +120,8 @@ ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::
   }
   if (spectral::is_glob(spec) || spec.find('/') != std::string::npos) return {spec, {spec}};
   const std::string want = lower(spec);
-  for (const auto& [page, e] : spectral::read_page_catalog(paths.database))
+  const auto catalog = spectral::page_catalog(paths);  // kept alive for the loop
+  for (const auto& [page, e] : catalog->entries())
     if (page.rfind("main/", 0) == 0 && (lower(e.book) == want || common_name(e.book_name) == want))
       return {"main/" + e.book, {"main/" + e.book + "/**"}};
   throw InputError(fmt::format(
@@ -256,8 +257,8 @@ ConsensusGroup summarize(const Context& ctx, const GroupPages& in, const Materia
   std::vector<double> used_f0, used_f82;
   for (const auto* s : in.pages) {
     PageDistance p{s,
-                   color::ciede2000_fast(ctx.rgb_to_lab(s->derived.f0), f0),
-                   color::ciede2000_fast(ctx.rgb_to_lab(s->derived.f82), f82),
+                   color::ciede2000<double>(ctx.rgb_to_lab(s->derived.f0), f0),
+                   color::ciede2000<double>(ctx.rgb_to_lab(s->derived.f82), f82),
                    used_for_consensus(*s),
                    false,
                    {}};

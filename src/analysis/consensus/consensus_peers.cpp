@@ -9,7 +9,7 @@
 #include "analysis/consensus/consensus.h"
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
-#include "color/ciede2000_fast.h"
+#include "color/lab.h"
 #include "spectral/errors.h"
 #include "spectral/text_file.h"
 
@@ -109,9 +109,9 @@ void add_peer_row(Table& t, const Context& ctx, const std::string& metal, const 
   }
   const auto c0 = ctx.rgb_to_lab(consensus->derived.f0);
   const auto c82 = ctx.rgb_to_lab(consensus->derived.f82);
-  const double pub_f0 = color::ciede2000_fast(ctx.rgb_to_lab(p.f0), c0);
+  const double pub_f0 = color::ciede2000<double>(ctx.rgb_to_lab(p.f0), c0);
   const double pub_f82 =
-      color::ciede2000_fast(ctx.rgb_to_lab(f82_from_tint(p.f0, p.f82_tint)), c82);
+      color::ciede2000<double>(ctx.rgb_to_lab(f82_from_tint(p.f0, p.f82_tint)), c82);
   // With one bulk page there is no spread: beyond the outlier floor counts as outside.
   const double f0_limit = g->used < 2 ? kOutlierMinDe00 : g->f0_max + kPublishedRoundingDe00;
   const double f82_limit = g->used < 2 ? kOutlierMinDe00 : g->f82_max + kPublishedRoundingDe00;
@@ -121,7 +121,7 @@ void add_peer_row(Table& t, const Context& ctx, const std::string& metal, const 
                                             : "outside";
   if (out) outside.push_back(metal);
   const double reproduced =
-      page ? color::ciede2000_fast(ctx.rgb_to_lab(p.f0), ctx.rgb_to_lab(page->page->derived.f0))
+      page ? color::ciede2000<double>(ctx.rgb_to_lab(p.f0), ctx.rgb_to_lab(page->page->derived.f0))
            : NAN;
   row.insert(
       row.end(),

@@ -9,7 +9,7 @@
 #include "analysis/consensus/consensus.h"
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
-#include "color/ciede2000_fast.h"
+#include "color/lab.h"
 #include "spectral/errors.h"
 #include "spectral/pages.h"
 #include "spectral/text_file.h"

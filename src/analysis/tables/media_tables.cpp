@@ -339,6 +339,100 @@ std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) 
                                  ctx.cos_thetas());
 }
 
+double max_channel(const std::vector<color::Rgb>& curve) {
+  double max_r = 0;
+  for (const auto& v : curve) max_r = std::max({max_r, v.r, v.g, v.b});
+  return max_r;
+}
+
+// One study's rows of the media table: every medium, and for a dielectric its own index. Returns
+// the own-index row's largest exact reflectance (0 for a metal).
+double add_media_rows(const Context& ctx, const MaterialStudy& s, Table& t) {
+  const auto& m = *s.material;
+  const color::Rgb f0_air = s.derived.f0;
+  for (const auto& md : media()) {
+    const auto truth = ground_truth_curve(ctx, m.ior, md.eta);
+    color::Rgb sym, metal;
+    for (int c = 0; c < 3; ++c) {
+      sym[c] = fresnel::f0_in_medium_symmetric(f0_air[c], md.eta);
+      metal[c] = fresnel::f0_in_medium_metal(f0_air[c], md.eta);
+    }
+    const double e_sym = curve_error(ctx, truth, schlick_curve(ctx, sym)).rms;
+    const double e_metal =
+        is_metal(s) ? curve_error(ctx, truth, schlick_curve(ctx, metal)).rms : std::nan("");
+    t.rows.push_back({m.material.name, std::string(spectral::to_string(m.material.material_class)),
+                      std::string(md.name), md.eta, e_sym, e_metal, max_channel(truth)});
+    add_coverage_cells(t.rows.back(), m);
+  }
+  if (is_metal(s)) return 0;
+  // In a medium of the material's own index the relative index is 1: the interface vanishes.
+  spectral::ComplexIorSpectrum relative = m.ior;
+  for (auto& v : relative.ior) v = {1.0, 0.0};
+  const auto truth = ground_truth_curve(ctx, relative, 1.0);
+  const double e_sym = curve_error(ctx, truth, schlick_curve(ctx, {0, 0, 0})).rms;
+  t.rows.push_back({m.material.name, std::string("dielectric"), std::string("own index"),
+                    std::nan(""), e_sym, std::nan(""), max_channel(truth)});
+  add_coverage_cells(t.rows.back(), m);
+  return max_channel(truth);
+}
+
+std::vector<std::string> media_notes(const std::vector<MaterialStudy>& studies) {
+  return {
+      "symmetric: √F0′ = (√F0 − √F0E)/(1 − √F0·√F0E) with √F0E = (η_E − 1)/(η_E + 1), per channel, "
+      "from the "
+      "F0 in air (docs/conventions.md, external media).",
+      "metal_variant: treats the metal as real index 1 with κ² = 4F0/(1 − F0): F0′ = ((1 − η_E)²(1 "
+      "− F0) + 4F0) / "
+      "((1 + η_E)²(1 − F0) + 4F0). The talk's own asymmetric variant could not be recovered from "
+      "the sources "
+      "available here; this one is derived and measured instead.",
+      "exact: the spectral Fresnel equations with the index relative to the medium, (n + iκ)/η_E "
+      "per "
+      "wavelength; exact_max_reflectance is the largest RGB channel over all angles.",
+      "own index: the medium has the material's own complex index, so the relative index is "
+      "exactly 1 at every "
+      "wavelength: no interface, no reflection; Schlick with F0′ = 0 still rises towards grazing.",
+      coverage_note(materials_of(studies))};
+}
+
+// One dielectric seen from inside: its row of the internal table.
+std::vector<Cell> internal_row(const Context& ctx, const MaterialStudy& s) {
+  const auto& m = *s.material;
+  // Seen from inside: the outside medium is the material, the far side has index 1.
+  spectral::ComplexIorSpectrum inverse = m.ior;
+  double n_min = 1e300;
+  for (auto& v : inverse.ior) {
+    n_min = std::min(n_min, v.real());
+    v = {1.0 / v.real(), 0.0};
+  }
+  std::vector<color::Rgb> truth, approx;
+  const color::Rgb f0 = s.derived.f0;
+  for (double c : ctx.cos_thetas()) {
+    truth.push_back(ground_truth_rgb(ctx, inverse, c, 1.0));
+    approx.push_back({fresnel::schlick_internal(c, f0.r), fresnel::schlick_internal(c, f0.g),
+                      fresnel::schlick_internal(c, f0.b)});
+  }
+  const auto e = curve_error(ctx, truth, approx);
+  const auto de = de2000_per_angle(ctx, truth, approx);
+  // Past the largest critical angle, asin(1/n) for the smallest n of any wavelength or channel,
+  // everything is totally reflected.
+  for (int ch = 0; ch < 3; ++ch) {
+    const double sq = std::sqrt(std::clamp(f0[ch], 0.0, 0.999999));
+    n_min = std::min(n_min, (1 + sq) / (1 - sq));
+  }
+  const double crit_cos = std::sqrt(1.0 - 1.0 / (n_min * n_min));
+  const double c_beyond = crit_cos * (1.0 - 1e-9);
+  const auto exact_c = ground_truth_rgb(ctx, inverse, c_beyond, 1.0);
+  const double schlick_c = std::min({fresnel::schlick_internal(c_beyond, f0.r),
+                                     fresnel::schlick_internal(c_beyond, f0.g),
+                                     fresnel::schlick_internal(c_beyond, f0.b)});
+  std::vector<Cell> row{
+      m.material.name, std::acos(crit_cos) * 180.0 / M_PI,          e.rms,    e.mean, e.max,
+      de.front(),      std::min({exact_c.r, exact_c.g, exact_c.b}), schlick_c};
+  add_coverage_cells(row, m);
+  return row;
+}
+
 }  // namespace
 
 Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
@@ -355,40 +449,7 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
                {"exact_max_reflectance", 6}};
   add_coverage_columns(t);
   double own_max = 0;
-  for (const auto& s : studies) {
-    const auto& m = *s.material;
-    const color::Rgb f0_air = s.derived.f0;
-    for (const auto& md : media()) {
-      const auto truth = ground_truth_curve(ctx, m.ior, md.eta);
-      double max_r = 0;
-      for (const auto& v : truth) max_r = std::max({max_r, v.r, v.g, v.b});
-      color::Rgb sym, metal;
-      for (int c = 0; c < 3; ++c) {
-        sym[c] = fresnel::f0_in_medium_symmetric(f0_air[c], md.eta);
-        metal[c] = fresnel::f0_in_medium_metal(f0_air[c], md.eta);
-      }
-      const double e_sym = curve_error(ctx, truth, schlick_curve(ctx, sym)).rms;
-      const double e_metal =
-          is_metal(s) ? curve_error(ctx, truth, schlick_curve(ctx, metal)).rms : std::nan("");
-      t.rows.push_back({m.material.name,
-                        std::string(spectral::to_string(m.material.material_class)),
-                        std::string(md.name), md.eta, e_sym, e_metal, max_r});
-      add_coverage_cells(t.rows.back(), m);
-    }
-    if (!is_metal(s)) {
-      // In a medium of the material's own index the relative index is 1: the interface vanishes.
-      spectral::ComplexIorSpectrum relative = m.ior;
-      for (auto& v : relative.ior) v = {1.0, 0.0};
-      const auto truth = ground_truth_curve(ctx, relative, 1.0);
-      double max_r = 0;
-      for (const auto& v : truth) max_r = std::max({max_r, v.r, v.g, v.b});
-      own_max = std::max(own_max, max_r);
-      const double e_sym = curve_error(ctx, truth, schlick_curve(ctx, {0, 0, 0})).rms;
-      t.rows.push_back({m.material.name, std::string("dielectric"), std::string("own index"),
-                        std::nan(""), e_sym, std::nan(""), max_r});
-      add_coverage_cells(t.rows.back(), m);
-    }
-  }
+  for (const auto& s : studies) own_max = std::max(own_max, add_media_rows(ctx, s, t));
   t.reading = fmt::format(
       "For dielectrics the symmetric F0 adjustment is exact at normal incidence and Schlick stays "
       "close; in a medium "
@@ -397,22 +458,7 @@ Table media_table(const Context& ctx, const std::vector<MaterialStudy>& studies)
       "grazing. For metals neither adjustment knows η and κ separately; compare both columns "
       "before trusting one.",
       own_max);
-  t.notes = {
-      "symmetric: √F0′ = (√F0 − √F0E)/(1 − √F0·√F0E) with √F0E = (η_E − 1)/(η_E + 1), per channel, "
-      "from the "
-      "F0 in air (docs/conventions.md, external media).",
-      "metal_variant: treats the metal as real index 1 with κ² = 4F0/(1 − F0): F0′ = ((1 − η_E)²(1 "
-      "− F0) + 4F0) / "
-      "((1 + η_E)²(1 − F0) + 4F0). The talk's own asymmetric variant could not be recovered from "
-      "the sources "
-      "available here; this one is derived and measured instead.",
-      "exact: the spectral Fresnel equations with the index relative to the medium, (n + iκ)/η_E "
-      "per "
-      "wavelength; exact_max_reflectance is the largest RGB channel over all angles.",
-      "own index: the medium has the material's own complex index, so the relative index is "
-      "exactly 1 at every "
-      "wavelength: no interface, no reflection; Schlick with F0′ = 0 still rises towards grazing.",
-      coverage_note(materials_of(studies))};
+  t.notes = media_notes(studies);
   return t;
 }
 
@@ -432,42 +478,10 @@ Table internal_table(const Context& ctx, const std::vector<MaterialStudy>& studi
                {"schlick_at_critical", 6}};
   add_coverage_columns(t);
   std::vector<const LoadedMaterial*> dielectrics;
-  const auto& cos = ctx.cos_thetas();
   for (const auto& s : studies) {
     if (is_metal(s)) continue;
-    const auto& m = *s.material;
-    // Seen from inside: the outside medium is the material, the far side has index 1.
-    spectral::ComplexIorSpectrum inverse = m.ior;
-    double n_min = 1e300;
-    for (auto& v : inverse.ior) {
-      n_min = std::min(n_min, v.real());
-      v = {1.0 / v.real(), 0.0};
-    }
-    std::vector<color::Rgb> truth, approx;
-    const color::Rgb f0 = s.derived.f0;
-    for (double c : cos) {
-      truth.push_back(ground_truth_rgb(ctx, inverse, c, 1.0));
-      approx.push_back({fresnel::schlick_internal(c, f0.r), fresnel::schlick_internal(c, f0.g),
-                        fresnel::schlick_internal(c, f0.b)});
-    }
-    const auto e = curve_error(ctx, truth, approx);
-    const auto de = de2000_per_angle(ctx, truth, approx);
-    // Past the largest critical angle, asin(1/n) for the smallest n of any wavelength or channel,
-    // everything is totally reflected.
-    for (int ch = 0; ch < 3; ++ch) {
-      const double sq = std::sqrt(std::clamp(f0[ch], 0.0, 0.999999));
-      n_min = std::min(n_min, (1 + sq) / (1 - sq));
-    }
-    const double crit_cos = std::sqrt(1.0 - 1.0 / (n_min * n_min));
-    const double c_beyond = crit_cos * (1.0 - 1e-9);
-    const auto exact_c = ground_truth_rgb(ctx, inverse, c_beyond, 1.0);
-    const double schlick_c = std::min({fresnel::schlick_internal(c_beyond, f0.r),
-                                       fresnel::schlick_internal(c_beyond, f0.g),
-                                       fresnel::schlick_internal(c_beyond, f0.b)});
-    t.rows.push_back({m.material.name, std::acos(crit_cos) * 180.0 / M_PI, e.rms, e.mean, e.max,
-                      de.front(), std::min({exact_c.r, exact_c.g, exact_c.b}), schlick_c});
-    add_coverage_cells(t.rows.back(), m);
-    dielectrics.push_back(&m);
+    t.rows.push_back(internal_row(ctx, s));
+    dielectrics.push_back(s.material);
   }
   t.reading =
       "Seen from inside, both curves start at F0 and end in total internal reflection; Schlick "

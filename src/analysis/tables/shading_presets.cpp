@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "color/ciede2000_fast.h"
+#include "color/lab.h"
 #include "fresnel/media.h"
 
 namespace fl::analysis {
@@ -66,7 +66,9 @@ OpenPbrParameters open_pbr_parameters(const ShadingPreset& p) {
 
 UnitRangeColor into_unit_range(const Context& ctx, const color::Rgb& v) {
   const color::Lab target = ctx.rgb_to_lab(v);
-  auto cost = [&](const color::Rgb& c) { return color::ciede2000_fast(target, ctx.rgb_to_lab(c)); };
+  auto cost = [&](const color::Rgb& c) {
+    return color::ciede2000<double>(target, ctx.rgb_to_lab(c));
+  };
   UnitRangeColor out;
   const double scale = std::max({v.r, v.g, v.b, 1.0});
   for (int c = 0; c < 3; ++c) out.value[c] = std::clamp(v[c] / scale, 0.0, 1.0);

@@ -8,7 +8,7 @@
 #include <map>
 
 #include "analysis/tables/tables.h"
-#include "color/ciede2000_fast.h"
+#include "color/lab.h"
 #include "fresnel/model_set.h"
 #include "util/median.h"
 
@@ -99,7 +99,7 @@ PairSpread pair_spread(const std::vector<PageColours>& g, color::Lab PageColours
   std::vector<double> all;
   for (size_t i = 0; i < g.size(); ++i)
     for (size_t j = i + 1; j < g.size(); ++j) {
-      const double de = color::ciede2000_fast(g[i].*colour, g[j].*colour);
+      const double de = color::ciede2000<double>(g[i].*colour, g[j].*colour);
       all.push_back(de);
       if (de > s.max) s.max = de, s.pair = page_of(g[i]) + " vs " + page_of(g[j]);
     }
@@ -243,7 +243,7 @@ void add_talk_row(Table& t, const Context& ctx, const LoadedMaterial& m,
   const bool within = talk >= lo->schlick_rms && talk <= hi->schlick_rms;
   row.insert(row.end(), {lo->schlick_rms, hi->schlick_rms, std::string(within ? "yes" : "no"),
                          page_of(*nearest), nearest->schlick_rms,
-                         color::ciede2000_fast(ctx.rgb_to_lab(truth.front()), nearest->f0)});
+                         color::ciede2000<double>(ctx.rgb_to_lab(truth.front()), nearest->f0)});
   if (miss)
     counts.sentences.push_back(miss_sentence(m.material.name, ours, talk, lo->schlick_rms,
                                              hi->schlick_rms, page_of(*lo), page_of(*hi),

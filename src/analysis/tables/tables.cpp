@@ -261,6 +261,32 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   return t;
 }
 
+namespace {
+
+// One model's derived (fitted = 0) or fitted row of the models table.
+std::vector<Cell> models_row(const MaterialStudy& s, const ModelResult& r, int fitted) {
+  const auto& spec = fresnel::model_spec(r.model);
+  const auto& e = fitted ? r.fitted_error : r.derived_error;
+  const bool clamps = fitted ? r.fitted_clamps : r.derived_clamps;
+  std::vector<Cell> row{s.material->material.name,
+                        std::string(spectral::to_string(s.material->material.material_class)),
+                        std::string(spec.name),
+                        std::string(fitted ? "fitted" : "derived"),
+                        e.rms,
+                        e.mean,
+                        e.max,
+                        e.rms_weighted,
+                        std::string(clamps ? "yes" : "no"),
+                        fitted ? static_cast<long long>(r.fitted.iterations) : 0LL,
+                        std::string(fitted ? r.fitted.termination : "-"),
+                        params_text(r.model, fitted ? r.fitted.parameters : r.derived)};
+  add_coverage_cells(row, *s.material);
+  row.push_back(fitted ? fit::fit_flags(r.fitted) : std::string());
+  return row;
+}
+
+}  // namespace
+
 Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
   t.name = "models";
@@ -273,40 +299,28 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
                {"fit_termination"}, {"values"}};
   add_coverage_columns(t);
   t.columns.push_back({"fit_flags"});
-  std::vector<double> med[2][2];  // [schlick, f82][metal] for the reading
+  std::vector<double> med[2];  // [schlick derived, f82 fitted] over metals, for the reading
   int clamped_rows = 0;
-  for (const auto& s : studies) {
-    for (const auto& r : s.models) {
-      const auto& spec = fresnel::model_spec(r.model);
+  for (const auto& s : studies)
+    for (const auto& r : s.models)
       for (int fitted = 0; fitted < 2; ++fitted) {
-        const auto& e = fitted ? r.fitted_error : r.derived_error;
-        const bool clamps = fitted ? r.fitted_clamps : r.derived_clamps;
-        clamped_rows += clamps;
-        t.rows.push_back({s.material->material.name,
-                          std::string(spectral::to_string(s.material->material.material_class)),
-                          std::string(spec.name), std::string(fitted ? "fitted" : "derived"), e.rms,
-                          e.mean, e.max, e.rms_weighted, std::string(clamps ? "yes" : "no"),
-                          fitted ? static_cast<long long>(r.fitted.iterations) : 0LL,
-                          std::string(fitted ? r.fitted.termination : "-"),
-                          params_text(r.model, fitted ? r.fitted.parameters : r.derived)});
-        add_coverage_cells(t.rows.back(), *s.material);
-        t.rows.back().push_back(fitted ? fit::fit_flags(r.fitted) : std::string());
+        clamped_rows += fitted ? r.fitted_clamps : r.derived_clamps;
+        t.rows.push_back(models_row(s, r, fitted));
         // The talk's comparison: Schlick as derived (spectral F0) against the fitted F82 model.
         const bool schlick_derived =
             r.model == fresnel::model_of<fresnel::models::Schlick> && !fitted;
         const bool f82_fitted = r.model == fresnel::model_of<fresnel::models::F82> && fitted;
-        if (is_metal(s) && (schlick_derived || f82_fitted)) med[f82_fitted][1].push_back(e.rms);
+        if (is_metal(s) && (schlick_derived || f82_fitted))
+          med[f82_fitted].push_back(fitted ? r.fitted_error.rms : r.derived_error.rms);
       }
-    }
-  }
-  const double m_schlick = median(med[0][1]), m_f82 = median(med[1][1]);
+  const double m_schlick = median(med[0]), m_f82 = median(med[1]);
   t.reading = fmt::format(
       "Over the {} metals the fitted F82 model's median RMS ΔE2000 is {:.3f} against Schlick's "
       "(spectral F0) {:.3f} "
       "({:.1f}× lower). "
       "Derived parameters come straight from the spectral procedure; fitted ones minimize each "
       "material's error.",
-      med[1][1].size(), m_f82, m_schlick, m_schlick / m_f82);
+      med[1].size(), m_f82, m_schlick, m_schlick / m_f82);
   t.notes = {setting_note(ctx),
              "rms_weighted_de00 weights each angle by sinθ·cosθ, the share of a sphere's image "
              "that sees it.",

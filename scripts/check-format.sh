@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Every C++ source file of the repository (src/, tests/, bench/) as clang-format (.clang-format)
+# writes it, and no function in src/ longer than 60 lines (scripts/check-function-length.py).
+#   scripts/check-format.sh        exit 1 naming every file clang-format would change
+set -euo pipefail
+cd "$(dirname "$0")/.."
+command -v clang-format >/dev/null || { echo "check-format: clang-format not found (Debian clang-format)" >&2; exit 2; }
+mapfile -t files < <(git ls-files '*.cpp' '*.h' '*.cc' '*.hpp')
+status=0
+clang-format --dry-run -Werror "${files[@]}" || status=1
+python3 scripts/check-function-length.py src || status=1
+if [ "$status" = 0 ]; then
+  echo "check-format: ${#files[@]} files formatted, no function in src/ over 60 lines"
+fi
+exit "$status"
