@@ -14,7 +14,6 @@ PACKAGES=(
   libopencolorio-dev
   libopenexr-dev libimath-dev
   libyaml-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev libhwy-dev
-  colord-data
   googletest libgtest-dev libgmock-dev libbenchmark-dev libxml2-utils
   liblcms2-dev libcairo2-dev fonts-dejavu-core libgif-dev
   clang libclang-rt-14-dev clang-format python3

@@ -10,6 +10,8 @@
 
 #include "analysis/pipeline/materials.h"
 #include "color/rgb_space.h"
+#include "draw/drawing.h"
+#include "fresnel_lab_version.h"
 #include "spectral/errors.h"
 
 namespace fl::cli {
@@ -96,16 +98,25 @@ int write_output(const GlobalOptions& g, const report::Output& out) {
   return 0;
 }
 
+spectral::DataFile given_or(const std::string& option, const spectral::DataFile& fallback) {
+  return option.empty() ? fallback : spectral::DataFile{option, option};
+}
+
 analysis::Context make_context(const GlobalOptions& g) {
+  const std::string& db = g.settings.paths.database;
+  if (db.empty())
+    throw InputError("no refractiveindex.info database given: use --db DIR or set $FRESNEL_LAB_DB");
   std::error_code ec;
-  if (!std::filesystem::is_directory(g.settings.paths.database + "/data", ec))
-    throw InputError(
-        g.settings.paths.database, 0,
-        "not a refractiveindex.info database (no data/ folder); set --db or FRESNEL_LAB_DB");
+  if (!std::filesystem::is_directory(db + "/data", ec))
+    throw InputError(db, 0, database_missing_message(g.locations));
   return analysis::Context(g.settings);
 }
 
 namespace {
+
+std::string version_text() {
+  return fmt::format("fresnel-lab {} (commit {})", FRESNEL_LAB_VERSION, FRESNEL_LAB_COMMIT);
+}
 
 // The first word that is neither an option nor an option's value, when it names no command.
 std::optional<std::string> unknown_command(int argc, char** argv) {
@@ -125,7 +136,7 @@ std::optional<std::string> unknown_command(int argc, char** argv) {
   return std::nullopt;
 }
 
-// The global options, into g (their defaults already set).
+// The options every command shares, into g (whose defaults are set).
 void add_global_options(CLI::App& app, GlobalOptions& g) {
   auto& s = g.settings;
   app.add_option(
@@ -174,12 +185,13 @@ int run(int argc, char** argv) {
       "CIEDE2000."};
   app.name("fresnel-lab");
   app.require_subcommand(1);
+  app.set_version_flag("--version", version_text(), "print the version and the git commit");
   GlobalOptions g;
   auto& s = g.settings;
-  const char* env_db = std::getenv("FRESNEL_LAB_DB");
-  s.paths.database = env_db && *env_db ? env_db : FRESNEL_LAB_DEFAULT_DB;
-  s.paths.materials = FRESNEL_LAB_DEFAULT_MATERIALS;
-  if (const char* env_ocio = std::getenv("OCIO"); env_ocio && *env_ocio) s.ocio_config = env_ocio;
+  g.locations = find_locations(std::filesystem::path(executable_path()).parent_path().string());
+  s.paths = default_paths(g.locations);
+  s.ocio_config = default_ocio_config();
+  report::use_label_font(label_font_file());
 
   add_global_options(app, g);
 

@@ -6,6 +6,7 @@
 
 #include "analysis/pipeline/context.h"
 #include "analysis/tables/media_tables.h"
+#include "cli/locations.h"
 #include "io/writer.h"
 
 namespace fl::cli {
@@ -15,7 +16,11 @@ struct GlobalOptions {
   bool quiet = false;            // no progress or warnings on stderr
   analysis::BlendOptions blend;  // `table blend` options
   double min_coverage = -1;      // --min-coverage (negative: not given)
+  Locations locations;           // where the tool's data were found (cli/locations.h)
 };
+
+// `option` (a file given on the command line, named by its path), else `fallback`.
+spectral::DataFile given_or(const std::string& option, const spectral::DataFile& fallback);
 
 using Runner = std::function<int()>;
 

@@ -28,10 +28,10 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--format", a->format, "json or md")->capture_default_str();
   sub->add_option(
       "--costs", a->costs,
-      "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
+      "model costs file (default $FRESNEL_LAB_COSTS or the tool's bench/model_costs.csv)");
   sub->add_option(
       "--gpu-costs", a->gpu_costs,
-      "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the committed bench/gpu_costs.csv)");
+      "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the tool's bench/gpu_costs.csv)");
   sub->add_flag("--shader", a->shader,
                 "print the scene-wide model's shader code instead of the plan");
   sub->add_option("--lang", a->lang, "with --shader: glsl or hlsl")->capture_default_str();
@@ -41,8 +41,9 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
         throw InputError(fmt::format("--format must be json or md, not '{}'", a->format));
       const auto lang = analysis::shader_language_from_name(a->lang);
       auto scene = analysis::read_scene(a->scene);
-      const analysis::PlanCosts costs{analysis::load_model_costs(a->costs),
-                                      analysis::load_gpu_costs(a->gpu_costs)};
+      const analysis::PlanCosts costs{
+          analysis::load_model_costs(given_or(a->costs, g.settings.paths.model_costs)),
+          analysis::load_gpu_costs(given_or(a->gpu_costs, g.settings.paths.gpu_costs))};
       GlobalOptions run = g;
       if (!scene.space.empty()) run.settings.space = scene.space;
       const auto ctx = [&] {

@@ -27,10 +27,10 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--format", a->format, "csv, md or json")->capture_default_str();
   sub->add_option(
       "--costs", a->costs,
-      "model costs file (default $FRESNEL_LAB_COSTS or the committed bench/model_costs.csv)");
+      "model costs file (default $FRESNEL_LAB_COSTS or the tool's bench/model_costs.csv)");
   sub->add_option(
       "--gpu-costs", a->gpu_costs,
-      "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the committed bench/gpu_costs.csv)");
+      "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the tool's bench/gpu_costs.csv)");
   sub->add_flag(
       "--measure", a->measure,
       "time the batched kernels now instead of reading the costs file (not reproducible)");
@@ -41,11 +41,12 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto f = report::format_from_name(a->format);
       if (!a->plot.empty()) report::file_type(a->plot);
       const auto costs =
-          a->measure ? analysis::measure_model_costs() : analysis::load_model_costs(a->costs);
+          a->measure ? analysis::measure_model_costs()
+                     : analysis::load_model_costs(given_or(a->costs, g.settings.paths.model_costs));
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, a->materials);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      const auto gpu = analysis::load_gpu_costs(a->gpu_costs);
+      const auto gpu = analysis::load_gpu_costs(given_or(a->gpu_costs, g.settings.paths.gpu_costs));
       const auto t = analysis::speed_table(ctx, in.studies(), costs, gpu);
       if (!a->plot.empty()) {
         report::write_speed_plot(a->plot, analysis::speed_rows(in.studies(), costs, gpu));

@@ -73,11 +73,17 @@ cairo_font_face_t* load_face(const std::string& path) {
   return face;
 }
 
-// One face for the whole process (Cairo's FreeType faces may be shared between threads).
+std::string& label_font_override() {
+  static std::string file;
+  return file;
+}
+
+// One face for the whole process (Cairo's FreeType faces may be shared between threads): a font
+// is a property of the installation, not of a run.
 cairo_font_face_t* label_face() {
   static cairo_font_face_t* const face = [] {
-    const char* env = std::getenv("FRESNEL_LAB_FONT");
-    return load_face(env && *env ? std::string(env) : dejavu_file());
+    const std::string& file = label_font_override();
+    return load_face(file.empty() ? dejavu_file() : file);
   }();
   return face;
 }
@@ -278,6 +284,10 @@ Image8 rasterize(const Drawing& d) {
                static_cast<std::uint8_t>(row[x])});
   }
   return img;
+}
+
+void use_label_font(const std::string& file) {
+  label_font_override() = file;
 }
 
 double text_width_px(const std::string& utf8, double size_px) {

@@ -2,7 +2,7 @@
 // Every figure is a Drawing: a list of shapes painted in order, in pixel coordinates (origin at the
 // top-left, y down). One renderer, Cairo, turns the same Drawing into PNG, SVG or PDF (Cairo stays
 // inside draw.cpp and png.cpp). Text is DejaVu Sans, found through fontconfig
-// (fonts-dejavu-core), or the TrueType file named by $FRESNEL_LAB_FONT.
+// (fonts-dejavu-core), or the TrueType file the command line names (use_label_font).
 #include <string>
 #include <variant>
 #include <vector>
@@ -81,6 +81,10 @@ std::string encode(const Drawing& d, FileType type);
 // The drawing's pixels as PNG output paints them (for frames of an animation, or a picture inside
 // another drawing).
 Image8 rasterize(const Drawing& d);
+
+// The label font's file instead of fontconfig's DejaVu Sans (empty: DejaVu Sans). Takes effect only
+// before anything is drawn: the command line calls it once at start.
+void use_label_font(const std::string& file);
 
 // The advance width of `utf8` in the label font as PNG output sets it (hinted metrics), for layout.
 double text_width_px(const std::string& utf8, double size_px);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "color/types.h"
+#include "fresnel/table_terms.h"
 
 namespace fl::fresnel {
 
@@ -63,14 +64,15 @@ struct PreIntegration {
 // and ∫Fc ρ cos with Fc = (1 − v·h)⁵; dfg_f82: ∫ μ(1 − μ)⁶ ρ cos (μ = v·h), the F82 term's
 // analogue. ltc_matrix: the four entries of M⁻¹; n_d, f_d, l_d: the lobe's norm, Schlick moment and
 // F82 moment (Hill's n_D, f_D and their F82 analogue).
+// The term channels are named in the term registry (table_terms.h).
 namespace lut_channel {
-inline constexpr const char* kDfgScale = "dfg1";
-inline constexpr const char* kDfgBias = "dfg2";
-inline constexpr const char* kDfgF82 = "dfg_f82";
+inline constexpr const char* kDfgScale = term_spec(Term::One).dfg_channel;
+inline constexpr const char* kDfgBias = term_spec(Term::Schlick).dfg_channel;
+inline constexpr const char* kDfgF82 = term_spec(Term::F82).dfg_channel;
 inline constexpr const char* kLtcMatrix = "ltc_matrix";
-inline constexpr const char* kLtcNorm = "n_d";
-inline constexpr const char* kLtcSchlick = "f_d";
-inline constexpr const char* kLtcF82 = "l_d";
+inline constexpr const char* kLtcNorm = term_spec(Term::One).ltc_channel;
+inline constexpr const char* kLtcSchlick = term_spec(Term::Schlick).ltc_channel;
+inline constexpr const char* kLtcF82 = term_spec(Term::F82).ltc_channel;
 // The lobe's Fresnel-free integral: dfg1 + dfg2 under IBL, n_d (with the matrix) under LTC.
 inline constexpr const char* kLobeIbl[] = {kDfgScale, kDfgBias};
 inline constexpr const char* kLobeArea[] = {kLtcMatrix, kLtcNorm};
@@ -84,12 +86,8 @@ inline constexpr PreIntegration kEvaluatedAtNdotV{kPunctualAtVdotH,
                                                   {lut_channel::kLobeIbl, false, "n·v"},
                                                   {lut_channel::kLobeArea, false, "n·v"}};
 
-// A pre-integrable model's Fresnel term per channel as a combination of the tables' terms:
-// F(μ) = a + b·(1 − μ)⁵ + c·μ(1 − μ)⁶, so that the lobe integrates to a·n_D + b·f_D + c·l_D
-// (under the split sum: a·(dfg1 + dfg2) + b·dfg2 + c·dfg_f82).
-struct TableTerms {
-  double a = 0, b = 0, c = 0;
-};
+// A pre-integrable model's Fresnel term per channel is TableTerms (table_terms.h): weights on the
+// tables' terms, F(μ) = Σ_t w_t·term_t(μ), so that the lobe integrates to Σ_t w_t·∫term_t ρ cos.
 
 // A model's shader code, written in GLSL; the emitter (analysis/shader) translates it to HLSL
 // by renaming types and intrinsics (vecN → floatN, mix → lerp), so it keeps to the subset both

@@ -104,7 +104,11 @@ DfgText dfg_text(DfgLayout layout, const analysis::LutGrid& g) {
 }
 
 std::vector<std::string> dfg_channel_names(DfgLayout layout) {
-  if (layout == DfgLayout::SplitSum) return {"dfg1", "dfg2", "dfg_f82"};
+  if (layout == DfgLayout::SplitSum) {
+    std::vector<std::string> names;
+    for (const auto& t : fresnel::kTermRegistry) names.push_back(t.dfg_channel);
+    return names;
+  }
   return {"dfg_fc", "dfg_norm", "dfg_sheen"};
 }
 
@@ -115,10 +119,11 @@ std::vector<double> dfg_values(DfgLayout layout, const analysis::DfgTable& t,
   v.reserve(t.cells.size() * 3);
   for (size_t k = 0; k < t.cells.size(); ++k) {
     const auto& c = t.cells[k];
+    using fresnel::Term;
     if (layout == DfgLayout::SplitSum)
-      v.insert(v.end(), {c.dfg1, c.dfg2, c.dfg_f82});
+      v.insert(v.end(), c.v.begin(), c.v.end());
     else
-      v.insert(v.end(), {c.dfg2, c.dfg1 + c.dfg2, sheen[k]});
+      v.insert(v.end(), {c[Term::Schlick], c[Term::One] + c[Term::Schlick], sheen[k]});
   }
   return v;
 }
@@ -205,12 +210,13 @@ std::string moments_csv(const analysis::MomentsTable& t) {
   const auto& g = t.grid;
   analysis::Table tab;
   tab.name = "ltc-moments";
-  tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha"), col("n_d"), col("f_d"),
-                 col("l_d")};
+  tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha")};
+  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.ltc_channel));
   for (int j = 0; j < g.size; ++j)
     for (int i = 0; i < g.size; ++i) {
       const auto& c = t.cells[g.index(i, j)];
-      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], c.n_d, c.f_d, c.l_d});
+      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j]});
+      tab.rows.back().insert(tab.rows.back().end(), c.v.begin(), c.v.end());
     }
   return to_csv(tab);
 }
@@ -223,8 +229,7 @@ ExrImage moments_texture(const analysis::MomentsTable& t) {
   for (int i = 0; i < g.size; ++i)
     for (int j = 0; j < g.size; ++j) {
       const auto& c = t.cells[g.index(i, j)];
-      img.pixels.insert(img.pixels.end(), {static_cast<float>(c.n_d), static_cast<float>(c.f_d),
-                                           static_cast<float>(c.l_d)});
+      for (double x : c.v) img.pixels.push_back(static_cast<float>(x));
     }
   return img;
 }
@@ -241,51 +246,32 @@ std::string ltc_csv(const analysis::LtcTable& t) {
   const int n = g.size;
   analysis::Table tab;
   tab.name = "ltc";
-  tab.columns = {col("nov"),
-                 col("perceptual_roughness"),
-                 col("alpha"),
-                 col("inv_m00"),
-                 col("inv_m20"),
-                 col("inv_m02"),
-                 col("inv_m22"),
-                 col("m11"),
-                 col("m22"),
-                 col("m13"),
-                 col("m31"),
-                 col("n_d"),
-                 col("f_d"),
-                 col("l_d"),
-                 col("sphere_z"),
-                 col("sphere_len"),
-                 col("sphere_form_factor"),
-                 col("heldout_error"),
-                 {"iterations", 0},
-                 {"termination"}};
+  tab.columns = {col("nov"),     col("perceptual_roughness"),
+                 col("alpha"),   col("inv_m00"),
+                 col("inv_m20"), col("inv_m02"),
+                 col("inv_m22"), col("m11"),
+                 col("m22"),     col("m13"),
+                 col("m31")};
+  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.ltc_channel));
+  tab.columns.insert(tab.columns.end(), {col("sphere_z"),
+                                         col("sphere_len"),
+                                         col("sphere_form_factor"),
+                                         col("heldout_error"),
+                                         {"iterations", 0},
+                                         {"termination"}});
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const int k = g.index(i, j);
       const auto& c = t.cells[k];
       const auto& m = t.moments[k];
-      tab.rows.push_back({g.nov[i],
-                          g.perceptual_roughness[j],
-                          g.alpha[j],
-                          c.inv_packed[0],
-                          c.inv_packed[1],
-                          c.inv_packed[2],
-                          c.inv_packed[3],
-                          c.params.m11,
-                          c.params.m22,
-                          c.params.m13,
-                          c.params.m31,
-                          m.n_d,
-                          m.f_d,
-                          m.l_d,
-                          2.0 * j / (n - 1) - 1.0,
-                          static_cast<double>(i) / (n - 1),
-                          sphere_at(t, i, j),
-                          c.fit_error,
-                          static_cast<long long>(c.fit.iterations),
-                          c.fit.termination});
+      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], c.inv_packed[0],
+                          c.inv_packed[1], c.inv_packed[2], c.inv_packed[3], c.params.m11,
+                          c.params.m22, c.params.m13, c.params.m31});
+      auto& row = tab.rows.back();
+      row.insert(row.end(), m.v.begin(), m.v.end());
+      row.insert(row.end(),
+                 {2.0 * j / (n - 1) - 1.0, static_cast<double>(i) / (n - 1), sphere_at(t, i, j),
+                  c.fit_error, static_cast<long long>(c.fit.iterations), c.fit.termination});
     }
   return to_csv(tab);
 }
@@ -307,9 +293,8 @@ std::pair<ExrImage, ExrImage> ltc_textures(const analysis::LtcTable& t) {
       const int k = g.index(i, j);
       for (double v : t.cells[k].inv_packed) tex1.pixels.push_back(static_cast<float>(v));
       const auto& m = t.moments[k];
-      tex2.pixels.insert(tex2.pixels.end(),
-                         {static_cast<float>(m.n_d), static_cast<float>(m.f_d),
-                          static_cast<float>(m.l_d), static_cast<float>(sphere_at(t, i, j))});
+      for (double x : m.v) tex2.pixels.push_back(static_cast<float>(x));
+      tex2.pixels.push_back(static_cast<float>(sphere_at(t, i, j)));
     }
   return {std::move(tex1), std::move(tex2)};
 }

@@ -5,125 +5,35 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdlib>
+#include <vector>
 
+#include "spectral/cie_tables.h"
 #include "spectral/errors.h"
 #include "spectral/text_file.h"
 
 namespace fl::spectral {
-
 namespace {
 
-// One data row of a CGATS file: `columns` finite numbers (any number when the format is not given).
-template <class Fields>
-std::vector<double> cgats_row(const std::string& path, int line, const Fields& fields,
-                              size_t columns) {
-  std::vector<double> row;
-  for (auto f : fields) {
-    double v;
-    if (!parse_finite(f, v))
-      throw InputError(path, line, fmt::format("'{}' is not a finite number", f));
-    row.push_back(v);
-  }
-  if (columns != 0 && row.size() != columns)
-    throw InputError(path, line, fmt::format("expected {} values, found {}", columns, row.size()));
-  return row;
+std::vector<double> wavelengths(double start, double step, int count) {
+  std::vector<double> out(count);
+  for (int i = 0; i < count; ++i) out[i] = start + step * i;
+  return out;
 }
 
-// The wavelengths of SPECTRAL_BANDS samples over [start, end], once the range and every data set
-// are checked against them.
-std::vector<double> cgats_wavelengths(const std::string& path, double start, double end,
-                                      double bands, const std::vector<std::vector<double>>& sets) {
-  if (bands < 2 || bands > 100000 || !(end > start) || bands != std::floor(bands))
-    throw InputError(path, 0, "SPECTRAL_BANDS / range are inconsistent");
-  if (!(start > 0.0))
-    throw InputError(path, 0, fmt::format("SPECTRAL_START_NM {:g} must be positive", start));
-  // Every spectrum read here is resampled onto 360-830 nm: a file that misses it is not usable.
-  if (end < 360.0 || start > 830.0)
-    throw InputError(
-        path, 0,
-        fmt::format("range {:g}-{:g} nm misses the visible range 360-830 nm entirely", start, end));
-  if (sets.empty()) throw InputError(path, 0, "no data");
-  const int n = static_cast<int>(bands);
-  for (const auto& s : sets)
-    if (static_cast<int>(s.size()) != n)
-      throw InputError(
-          path, 0, fmt::format("SPECTRAL_BANDS is {} but a data set has {} values", n, s.size()));
-  std::vector<double> lambda_nm;
-  for (int i = 0; i < n; ++i) lambda_nm.push_back(start + (end - start) * i / (n - 1));
-  return lambda_nm;
+Spectrum tabulated(const double* values, const SpectralGrid& grid) {
+  using namespace cie_tables;
+  return resample(wavelengths(kCmfStartNm, kCmfStepNm, kCmfCount),
+                  std::vector<double>(values, values + kCmfCount), grid);
 }
 
 }  // namespace
 
-CgatsSpectra read_cgats_spectra(const std::string& path) {
-  const std::string text = read_text_file(path);
-  const auto lines = split_lines(text);
-  double start = 0, end = 0, bands = 0;
-  bool have_start = false, have_end = false, have_bands = false, in_format = false, in_data = false;
-  CgatsSpectra out;
-  size_t columns = 0;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    const int line = static_cast<int>(i + 1);
-    const auto t = trim(lines[i]);
-    if (t.empty() || t[0] == '#') continue;
-    auto fields = split_fields(t, " \t");
-    const std::string key(fields[0]);
-    if (in_format) {
-      if (key == "END_DATA_FORMAT") {
-        in_format = false;
-        continue;
-      }
-      columns += fields.size();
-      continue;
-    }
-    if (in_data) {
-      if (key == "END_DATA") {
-        in_data = false;
-        continue;
-      }
-      out.sets.push_back(cgats_row(path, line, fields, columns));
-      continue;
-    }
-    auto number = [&](double& v, bool& have) {
-      if (fields.size() < 2 || !parse_finite(fields[1], v))
-        throw InputError(path, line, fmt::format("{} needs a number", key));
-      have = true;
-    };
-    if (key == "SPECTRAL_START_NM")
-      number(start, have_start);
-    else if (key == "SPECTRAL_END_NM")
-      number(end, have_end);
-    else if (key == "SPECTRAL_BANDS")
-      number(bands, have_bands);
-    else if (key == "BEGIN_DATA_FORMAT")
-      in_format = true;
-    else if (key == "BEGIN_DATA")
-      in_data = true;
-  }
-  if (!have_start || !have_end || !have_bands)
-    throw InputError(
-        path, 0, "not a spectral CGATS file (SPECTRAL_START_NM, SPECTRAL_END_NM, SPECTRAL_BANDS)");
-  if (in_data || in_format)
-    throw InputError(path, static_cast<int>(lines.size()), "truncated: missing END_DATA");
-  out.lambda_nm = cgats_wavelengths(path, start, end, bands, out.sets);
-  return out;
+Observer cie1931_2deg(const SpectralGrid& grid) {
+  return {tabulated(cie_tables::kXBar, grid), tabulated(cie_tables::kYBar, grid),
+          tabulated(cie_tables::kZBar, grid)};
 }
 
-std::string default_colord_dir() {
-  if (const char* env = std::getenv("FRESNEL_LAB_COLORD"); env && *env) return env;
-  return FRESNEL_LAB_COLORD_DIR;
-}
-
-Observer cie1931_2deg(const SpectralGrid& grid, const std::string& colord_dir) {
-  const std::string path = colord_dir + "/cmf/CIE1931-2deg-XYZ.cmf";
-  const auto c = read_cgats_spectra(path);
-  if (c.sets.size() != 3) throw InputError(path, 0, "expected 3 data sets (x̄, ȳ, z̄)");
-  return {resample(c.lambda_nm, c.sets[0], grid), resample(c.lambda_nm, c.sets[1], grid),
-          resample(c.lambda_nm, c.sets[2], grid)};
-}
-
-Spectrum daylight_spd(double cct, const SpectralGrid& grid, const std::string& colord_dir) {
+Spectrum daylight_spd(double cct, const SpectralGrid& grid, bool round_m) {
   if (!(cct >= 4000.0 && cct <= 25000.0))
     throw InputError(fmt::format("daylight CCT {} K is outside 4000-25000 K", cct));
   // CIE 15:2004 eq. 3.3/3.4: chromaticity of daylight from its CCT.
@@ -131,41 +41,50 @@ Spectrum daylight_spd(double cct, const SpectralGrid& grid, const std::string& c
   const double xd = t <= 7000.0 ? 0.244063 + 0.09911e3 / t + 2.9678e6 / t2 - 4.6070e9 / t3
                                 : 0.237040 + 0.24748e3 / t + 1.9018e6 / t2 - 2.0064e9 / t3;
   const double yd = -3.000 * xd * xd + 2.870 * xd - 0.275;
-  // CIE 15:2004 eq. 3.5: weights of the daylight basis vectors.
+  // CIE 15:2004 eq. 3.5: weights of the daylight components.
   const double m = 0.0241 + 0.2562 * xd - 0.7341 * yd;
-  const double m1 = (-1.3515 - 1.7703 * xd + 5.9114 * yd) / m;
-  const double m2 = (0.0300 - 31.4424 * xd + 30.0717 * yd) / m;
-  const std::string path = colord_dir + "/ref/CIE-1986-daylight-SPD.cmf";
-  const auto c = read_cgats_spectra(path);
-  if (c.sets.size() != 3) throw InputError(path, 0, "expected 3 data sets (S0, S1, S2)");
-  std::vector<double> s(c.lambda_nm.size());
-  for (size_t i = 0; i < s.size(); ++i) s[i] = c.sets[0][i] + m1 * c.sets[1][i] + m2 * c.sets[2][i];
-  return resample(c.lambda_nm, s, grid);
+  double m1 = (-1.3515 - 1.7703 * xd + 5.9114 * yd) / m;
+  double m2 = (0.0300 - 31.4424 * xd + 30.0717 * yd) / m;
+  if (round_m) {
+    m1 = std::round(m1 * 1000.0) / 1000.0;
+    m2 = std::round(m2 * 1000.0) / 1000.0;
+  }
+  using namespace cie_tables;
+  std::vector<double> s(kDaylightCount);
+  for (int i = 0; i < kDaylightCount; ++i) s[i] = kS0[i] + m1 * kS1[i] + m2 * kS2[i];
+  return resample(wavelengths(kDaylightStartNm, kDaylightStepNm, kDaylightCount), s, grid);
 }
 
-Spectrum illuminant_spd(const std::string& name_in, const SpectralGrid& grid,
-                        const std::string& colord_dir) {
+Spectrum illuminant_a(const SpectralGrid& grid) {
+  // CIE 15:2004 eq. 3.1, λ in nm: c2 / (T λ) with c2 = 1.435e7 nm·K and T = 2848 K, the
+  // temperature the CIE fixed with that c2 (2856 K on today's scale).
+  constexpr double kC2 = 1.435e7, kT = 2848.0;
+  const double at560 = std::expm1(kC2 / (kT * 560.0));
+  Spectrum s{grid, std::vector<double>(grid.count)};
+  for (int i = 0; i < grid.count; ++i) {
+    const double nm = grid.lambda_nm(i);
+    s.values[i] = 100.0 * std::pow(560.0 / nm, 5.0) * at560 / std::expm1(kC2 / (kT * nm));
+  }
+  return s;
+}
+
+Spectrum illuminant_spd(const std::string& name_in, const SpectralGrid& grid) {
   std::string name = name_in;
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return std::toupper(c); });
   // c2 = 1.4388e-2 m·K today; the D-series were defined with 1.4380e-2, hence the rescaling.
   constexpr double kC2Ratio = 1.4388 / 1.4380;
-  auto tabulated = [&](const char* file) {
-    const std::string path = colord_dir + "/illuminant/" + file;
-    const auto c = read_cgats_spectra(path);
-    return resample(c.lambda_nm, c.sets.at(0), grid);
-  };
-  if (name == "D65") return tabulated("CIE-D65.sp");
-  if (name == "D50") return tabulated("CIE-D50.sp");
-  if (name == "D55") return tabulated("CIE-D55.sp");
-  if (name == "A") return tabulated("CIE-A.sp");
+  if (name == "D50") return daylight_spd(5000.0 * kC2Ratio, grid, true);
+  if (name == "D55") return daylight_spd(5500.0 * kC2Ratio, grid, true);
+  if (name == "D65") return daylight_spd(6500.0 * kC2Ratio, grid, true);
+  if (name == "D75") return daylight_spd(7500.0 * kC2Ratio, grid, true);
+  if (name == "A") return illuminant_a(grid);
   if (name == "E") return Spectrum{grid, std::vector<double>(grid.count, 1.0)};
-  if (name == "D60") return daylight_spd(6000.0 * kC2Ratio, grid, colord_dir);
-  if (name == "D75") return daylight_spd(7500.0 * kC2Ratio, grid, colord_dir);
+  if (name == "D60") return daylight_spd(6000.0 * kC2Ratio, grid);
   if (name.size() >= 2 && name[0] == 'D') {
     double cct;
     if (parse_finite(std::string_view(name).substr(1), cct) && cct >= 4000 && cct <= 25000)
-      return daylight_spd(cct, grid, colord_dir);
+      return daylight_spd(cct, grid);
   }
   throw InputError(
       fmt::format("unknown illuminant '{}' (expected D50, D55, D60, D65, D75, A, E or Dnnnn with "

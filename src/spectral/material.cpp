@@ -170,7 +170,7 @@ void read_entry_data(const YamlNode& root, const std::string& path, const DataPa
   if (!page.empty()) {
     m.source = page;
     m.constants = read_refractiveindex_file(database_file(paths, page));
-    m.page_class = classify_page(page_entry(paths.database, page));
+    m.page_class = classify_page(page_catalog(paths)->find(page));
   } else if (!file.empty()) {
     const fs::path f =
         fs::path(file).is_absolute() ? fs::path(file) : fs::path(path).parent_path() / file;
@@ -339,6 +339,10 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
       spec, material_hint(spec, paths), paths.materials, paths.database));
 }
 
+std::shared_ptr<const PageCatalog> page_catalog(const DataPaths& paths) {
+  return paths.pages ? paths.pages : std::make_shared<const PageCatalog>(paths.database);
+}
+
 Material read_database_page(const std::string& page, const DataPaths& paths) {
   Material m;
   m.origin = Material::Origin::Page;
@@ -348,7 +352,8 @@ Material read_database_page(const std::string& page, const DataPaths& paths) {
   m.constants = read_refractiveindex_file(database_file(paths, page));
   m.reference = m.constants.reference;
   m.material_class = classify(m.constants);
-  const PageEntry* entry = page_entry(paths.database, page);
+  const auto pages = page_catalog(paths);
+  const PageEntry* entry = pages->find(page);
   if (entry) m.book_name = entry->book_name, m.section = entry->section;
   m.page_class = classify_page(entry);
   m.bulk_measurement = m.page_class.kind == PageKind::Bulk;

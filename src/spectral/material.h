@@ -1,5 +1,6 @@
 #pragma once
 // Materials: the catalog (one YAML per material under materials/), database pages and files.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,10 +32,22 @@ struct Material {
 };
 
 // Where inputs live.
+// A file the tool reads and how reports name it (`name`; empty: the path).
+struct DataFile {
+  std::string path, name;
+};
+
 struct DataPaths {
   std::string database;   // the folder holding data/
   std::string materials;  // the catalog folder
+  DataFile model_costs;   // bench/model_costs.csv (analysis/tables/speed.h)
+  DataFile gpu_costs;     // bench/gpu_costs.csv
+  // The database's page catalog, owned by the run (the analysis context sets it); without it a
+  // page read reads catalog-nk.yml for itself.
+  std::shared_ptr<const PageCatalog> pages;
 };
+// `paths.pages`, or a catalog of `paths.database` read for this one use.
+std::shared_ptr<const PageCatalog> page_catalog(const DataPaths& paths);
 
 // One catalog entry (materials/<key>.yml): its data from a database page (`source:
 // main/Au/nk/Johnson`), a file (`file: PATH`, relative to the entry's folder unless absolute; any

@@ -2,6 +2,7 @@
 // The database's pages: listing, globs over their paths, and where each sits in the database's own
 // catalog (catalog-nk.yml: book and page names).
 #include <map>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,12 +34,32 @@ struct PageEntry {
   std::string page_name;  // "Johnson and Christy 1972: n,k 0.188–1.94 µm"
   std::string section;    // the catalog divider above the page ("Experimental data: thin film")
 };
-// catalog-nk.yml's entries by page path; empty when the file is missing or unreadable (the catalog
-// only names things: pages are listed from data/ either way).
+// catalog-nk.yml's entries by page path; empty when the database has no catalog-nk.yml (the
+// catalog only names things: pages are listed from data/ either way). A catalog that cannot be
+// read (a directory, empty, binary, invalid YAML) is an InputError naming the file and line.
 std::map<std::string, PageEntry> read_page_catalog(const std::string& database);
-// read_page_catalog(database)'s entry for `page`, read once per database and kept (thread-safe);
-// nullptr when the catalog lacks the page.
-const PageEntry* page_entry(const std::string& database, const std::string& page);
+
+// One database's catalog-nk.yml, read on first use and kept: owned by whoever runs a command (the
+// analysis context), so nothing is cached for the process. Thread-safe. When reading fails, every
+// use throws that InputError (the file is read again: nothing is swallowed).
+class PageCatalog {
+ public:
+  explicit PageCatalog(std::string database) : database_(std::move(database)) {}
+  PageCatalog(const PageCatalog&) = delete;
+  PageCatalog& operator=(const PageCatalog&) = delete;
+
+  const std::string& database() const { return database_; }
+  // Every entry by page path.
+  const std::map<std::string, PageEntry>& entries() const;
+  // The entry for `page`; nullptr when the catalog lacks the page.
+  const PageEntry* find(const std::string& page) const;
+
+ private:
+  std::string database_;
+  mutable std::once_flag read_;
+  mutable std::map<std::string, PageEntry> entries_;
+};
+
 // What a page holds, from its catalog section and page name (classify_page).
 enum class PageKind {
   Bulk,           // a measurement of the bulk material (or a thick film), at room temperature

@@ -28,6 +28,7 @@ namespace fl::analysis {
 namespace {
 
 namespace ref = test::ggx_ref;
+using fresnel::Term;
 using test::gauss_legendre;
 using test::GaussRule;
 using test::integrate_panel;
@@ -74,7 +75,7 @@ LutOptions options(int samples, int threads = 0) {
 TEST(Lut, NormTendsToOneAtNormalIncidenceAsRoughnessVanishes) {
   double previous = 0;
   for (double roughness : {0.8, 0.5, 0.2, 0.05, 0.01}) {
-    const double n_d = integrate_moments(1.0, roughness * roughness).n_d;
+    const double n_d = integrate_moments(1.0, roughness * roughness)[Term::One];
     EXPECT_GT(n_d, previous) << roughness;
     previous = n_d;
   }
@@ -89,12 +90,12 @@ TEST(Lut, MirrorLimit) {
     const double m = 1 - nov, m5 = std::pow(m, 5);
     const auto dfg = integrate_dfg(nov, kAlpha);
     const auto mo = integrate_moments(nov, kAlpha);
-    EXPECT_NEAR(dfg.dfg1, 1 - m5, kMirrorTolerance) << nov;
-    EXPECT_NEAR(dfg.dfg2, m5, kMirrorTolerance) << nov;
-    EXPECT_NEAR(dfg.dfg_f82, nov * m5 * m, kMirrorTolerance) << nov;
-    EXPECT_NEAR(mo.n_d, 1.0, kMirrorTolerance) << nov;
-    EXPECT_NEAR(mo.f_d, m5, kMirrorTolerance) << nov;
-    EXPECT_NEAR(mo.l_d, nov * m5 * m, kMirrorTolerance) << nov;
+    EXPECT_NEAR(dfg[Term::One], 1 - m5, kMirrorTolerance) << nov;
+    EXPECT_NEAR(dfg[Term::Schlick], m5, kMirrorTolerance) << nov;
+    EXPECT_NEAR(dfg[Term::F82], nov * m5 * m, kMirrorTolerance) << nov;
+    EXPECT_NEAR(mo[Term::One], 1.0, kMirrorTolerance) << nov;
+    EXPECT_NEAR(mo[Term::Schlick], m5, kMirrorTolerance) << nov;
+    EXPECT_NEAR(mo[Term::F82], nov * m5 * m, kMirrorTolerance) << nov;
     // The lobe's mean direction is the mirror direction (sin θ_v, 0, cos θ_v) reflected: (−x, z).
     EXPECT_NEAR(mo.average_dir.x, -std::sqrt(1 - nov * nov), kMirrorTolerance) << nov;
     EXPECT_NEAR(mo.average_dir.z, nov, kMirrorTolerance) << nov;
@@ -108,18 +109,18 @@ TEST(Lut, EnergyBoundsInEveryCell) {
   constexpr int kSize = 8;
   const auto dfg = dfg_table(dfg_grid(kSize), options(2048));
   for (const auto& c : dfg.cells) {
-    EXPECT_GE(c.dfg1, 0.0);
-    EXPECT_GE(c.dfg2, 0.0);
-    EXPECT_LE(c.dfg1 + c.dfg2, 1.0);
+    EXPECT_GE(c[Term::One], 0.0);
+    EXPECT_GE(c[Term::Schlick], 0.0);
+    EXPECT_LE(c[Term::One] + c[Term::Schlick], 1.0);
   }
   const auto mom = moments_table(ltc_grid(kSize), options(2048));
   for (int i = 0; i < kSize; ++i)
     for (int j = 0; j < kSize; ++j) {
       const auto& c = mom.cells[mom.grid.index(i, j)];
-      EXPECT_GE(c.l_d, 0.0) << i << "," << j;
-      EXPECT_LE(c.l_d, c.f_d) << i << "," << j;
-      EXPECT_LE(c.f_d, c.n_d) << i << "," << j;
-      EXPECT_LE(c.n_d, 1.0) << i << "," << j;
+      EXPECT_GE(c[Term::F82], 0.0) << i << "," << j;
+      EXPECT_LE(c[Term::F82], c[Term::Schlick]) << i << "," << j;
+      EXPECT_LE(c[Term::Schlick], c[Term::One]) << i << "," << j;
+      EXPECT_LE(c[Term::One], 1.0) << i << "," << j;
     }
 }
 
@@ -128,8 +129,8 @@ TEST(Lut, ResultsDoNotDependOnThreads) {
   const auto a = moments_table(grid, options(512, 1));
   const auto b = moments_table(grid, options(512, 3));
   for (size_t k = 0; k < a.cells.size(); ++k) {
-    EXPECT_EQ(a.cells[k].n_d, b.cells[k].n_d);
-    EXPECT_EQ(a.cells[k].l_d, b.cells[k].l_d);
+    EXPECT_EQ(a.cells[k][Term::One], b.cells[k][Term::One]);
+    EXPECT_EQ(a.cells[k][Term::F82], b.cells[k][Term::F82]);
   }
 }
 
@@ -146,9 +147,9 @@ MaxDiff compare_dfg_with_quadrature(int size, int samples) {
     for (int i = 0; i < size; ++i) {
       const auto ref = reference_moments(dfg.grid.nov[i], dfg.grid.alpha[j]);
       const auto& c = dfg.cells[dfg.grid.index(i, j)];
-      m.dfg1 = std::max(m.dfg1, std::abs(c.dfg1 - ref.dfg1));
-      m.dfg2 = std::max(m.dfg2, std::abs(c.dfg2 - ref.dfg2));
-      m.dfg_f82 = std::max(m.dfg_f82, std::abs(c.dfg_f82 - ref.l_d));  // the F82 term's integral
+      m.dfg1 = std::max(m.dfg1, std::abs(c[Term::One] - ref.dfg1));
+      m.dfg2 = std::max(m.dfg2, std::abs(c[Term::Schlick] - ref.dfg2));
+      m.dfg_f82 = std::max(m.dfg_f82, std::abs(c[Term::F82] - ref.l_d));  // the F82 term's integral
     }
   return m;
 }
@@ -159,9 +160,9 @@ MaxDiff compare_with_quadrature(int size, int samples) {
     for (int i = 0; i < size; ++i) {
       const auto ref = reference_moments(mom.grid.nov[i], mom.grid.alpha[j]);
       const auto& c = mom.cells[mom.grid.index(i, j)];
-      m.n_d = std::max(m.n_d, std::abs(c.n_d - ref.n_d));
-      m.f_d = std::max(m.f_d, std::abs(c.f_d - ref.f_d));
-      m.l_d = std::max(m.l_d, std::abs(c.l_d - ref.l_d));
+      m.n_d = std::max(m.n_d, std::abs(c[Term::One] - ref.n_d));
+      m.f_d = std::max(m.f_d, std::abs(c[Term::Schlick] - ref.f_d));
+      m.l_d = std::max(m.l_d, std::abs(c[Term::F82] - ref.l_d));
     }
   return m;
 }
@@ -312,14 +313,14 @@ TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
       const double alpha = t.grid.alpha[j];
       const double ours = relative_l2(v, alpha, [&](const brdf::Vec3& w) {
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
-        return mo.n_d * fit::ltc_density(c.params, f.x, f.y, f.z);
+        return mo[Term::One] * fit::ltc_density(c.params, f.x, f.y, f.z);
       });
       const int lk = grid64.index(kLtcCodeStride * i, kLtcCodeStride * j);
       const double theirs = relative_l2(v, alpha, [&](const brdf::Vec3& w) {
         return lc.magnitude[lk] * ref::ltc_from_inverse(lc.m_inv[lk].m, w);
       });
       const double l3 = relative_l3(v, alpha, frame, [&](const brdf::Vec3& w) {
-        return mo.n_d * ref::ltc_from_inverse(c.m_inv.m, w);
+        return mo[Term::One] * ref::ltc_from_inverse(c.m_inv.m, w);
       });
       std::printf(
           "n.v %.3f alpha %.3f: relative L2 ours %.4f, ltc_code %.4f; relative L3 %.4f (held-out "

@@ -23,7 +23,6 @@ namespace {
 
 const std::string kBadDir = FL_TESTS_DIR "/bad_input";
 const std::string kGoodDir = FL_TESTS_DIR "/good_input";
-const std::string kColord = FL_COLORD_DIR;
 
 struct Case {
   std::string reader, file, command, fragment;
@@ -98,12 +97,6 @@ void install(const Case& c, const fs::path& dest) {
     fs::copy_file(src, dest);
 }
 
-void copy_colord(const fs::path& dest) {
-  fs::create_directories(dest);
-  for (const char* sub : {"cmf", "ref", "illuminant"})
-    fs::copy(fs::path(kColord) / sub, dest / sub, fs::copy_options::recursive);
-}
-
 size_t count_files(const fs::path& dir) {
   if (!fs::exists(dir)) return 0;
   size_t n = 0;
@@ -153,17 +146,6 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
     }
     args = "--db " + quote(kGoodDir + "/db") + " --materials " + quote(catalog) +
            " reproduce --out " + quote(out_dir);
-  } else if (c.command.rfind("colord:", 0) == 0) {
-    const std::string target = c.command.substr(7);
-    const fs::path colord = s.dir / "colord";
-    copy_colord(colord);
-    file = (colord / target).string();
-    install(c, file);
-    args = "--materials " + quote(kGoodDir + "/catalog_constant") + " ";
-    if (target.rfind("illuminant/CIE-", 0) == 0)
-      args += "--illuminant " + target.substr(15, target.size() - 15 - 3) + " ";
-    args += "reproduce --out " + quote(out_dir);
-    env = "FRESNEL_LAB_COLORD=" + quote(colord);
   } else if (c.command.rfind("ocio:", 0) == 0) {  // ocio:SPACE, the config's working space
     file = kBadDir + "/" + c.reader + "/" + c.file;
     args = "--materials " + quote(empty_catalog) + " --ocio-config " + quote(file) + " --space " +
@@ -203,7 +185,7 @@ TEST(BadInputCorpus, EveryCorpusEntryIsInTheManifestAndThereAreAtLeast30) {
     if (c.file != "<missing>") listed.insert(c.reader + "/" + c.file);
   std::set<std::string> present;
   for (const char* reader :
-       {"ri_yaml", "csv", "text", "sopra", "spd", "cgats", "catalog", "scene", "ocio", "env"})
+       {"ri_yaml", "csv", "text", "sopra", "spd", "catalog", "scene", "ocio", "env"})
     for (const auto& e : fs::directory_iterator(kBadDir + "/" + reader))
       present.insert(std::string(reader) + "/" + e.path().filename().string());
   EXPECT_EQ(listed, present);
@@ -347,30 +329,17 @@ TEST(GoodInput, CatalogEntriesWithBomAndCrlfLoad) {
   EXPECT_EQ(std::count(t.out.begin(), t.out.end(), '\n'), 3) << t.out;  // header + 2 materials
 }
 
-TEST(GoodInput, ColordFilesWithBomAndCrlfGiveTheSameCurve) {
-  Scratch s("good_colord");
-  const fs::path colord = s.dir / "colord";
-  copy_colord(colord);
-  for (const char* f :
-       {"cmf/CIE1931-2deg-XYZ.cmf", "ref/CIE-1986-daylight-SPD.cmf", "illuminant/CIE-D65.sp"}) {
-    std::string text = read_all(colord / f), crlf = "\xEF\xBB\xBF";
-    for (char ch : text) {
-      if (ch == '\n') crlf += '\r';
-      crlf += ch;
-    }
-    std::ofstream(colord / f, std::ios::binary | std::ios::trunc) << crlf;
-  }
-  const std::string material = quote(kGoodDir + "/nk_bom_crlf.csv");
-  for (const char* ill : {"D60", "D65"}) {
-    const Result plain = run_cli(s.dir, std::string("--illuminant ") + ill + " curve " + material,
-                                 "FRESNEL_LAB_COLORD=" + quote(kColord));
-    const Result converted =
-        run_cli(s.dir, std::string("--illuminant ") + ill + " curve " + material,
-                "FRESNEL_LAB_COLORD=" + quote(colord));
-    ASSERT_EQ(plain.status, 0) << plain.err;
-    EXPECT_EQ(converted.status, 0) << converted.err;
-    EXPECT_EQ(plain.out, converted.out) << ill;
-  }
+// The database's catalog-nk.yml names pages; a broken one stops the command (exit 2, the file and
+// line in libyaml's words) instead of leaving every page unnamed.
+TEST(BadInput, BrokenPageCatalogIsAnErrorNamingTheFile) {
+  Scratch s("bad_page_catalog");
+  const fs::path db = s.dir / "db";
+  fs::copy(kGoodDir + "/db", db, fs::copy_options::recursive);
+  std::ofstream(db / "catalog-nk.yml") << "- SHELF: main\n  content: [\n    - BOOK: Au\n";
+  const Result r = run_cli(s.dir, "--db " + quote(db) + " pages");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find((db / "catalog-nk.yml").string() + ":"), std::string::npos) << r.err;
 }
 
 }  // namespace

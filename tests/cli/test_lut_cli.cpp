@@ -70,8 +70,11 @@ TEST(LutCli, WritesTablesDeterministically) {
         std::find(dfg.channels.begin(), dfg.channels.end(), component) - dfg.channels.begin();
     ASSERT_LT(k, 3) << component;
     const std::string name = c.channel;
-    const double want = name == "dfg1" ? texel.dfg1 : name == "dfg2" ? texel.dfg2 : texel.dfg_f82;
-    EXPECT_EQ(dfg.pixels[k], static_cast<float>(want)) << name;
+    const auto term =
+        std::find_if(fresnel::kTermRegistry.begin(), fresnel::kTermRegistry.end(),
+                     [&](const fresnel::TermSpec& t) { return name == t.dfg_channel; });
+    ASSERT_NE(term, fresnel::kTermRegistry.end()) << name;
+    EXPECT_EQ(dfg.pixels[k], static_cast<float>(texel[term->term])) << name;
   }
 
   r = test::run_command(lut + "ltc-moments --size 4 --samples 256 --out '" + tmp.path() +

@@ -291,8 +291,54 @@ std::vector<std::vector<double>> probe_params(const ModelSpec& spec) {
   return {fresnel::example_params(spec.model), mid};
 }
 
-// A pre-integrated model's table terms are its formula: a + b(1 − μ)⁵ + cμ(1 − μ)⁶ against the
-// unclamped kernel at 65 angles; and every declaration has the code an engine needs for it.
+// Each table term from its formula (TermSpec::formula), independently of fresnel::term_kernel.
+double term_formula(fresnel::Term t, double mu) {
+  const std::string f = fresnel::term_spec(t).formula;
+  if (f == "1") return 1.0;
+  if (f == "(1 − μ)⁵") return std::pow(1 - mu, 5);
+  if (f == "μ(1 − μ)⁶") return mu * std::pow(1 - mu, 6);
+  ADD_FAILURE() << "no reference for the table term " << f;
+  return 0;
+}
+
+TEST(Registry, TableTermKernelsAreTheirFormulas) {
+  for (const auto& t : fresnel::kTermRegistry)
+    for (double mu : cosines(33)) {
+      const double m = 1 - mu, m5 = m * m * m * m * m;
+      EXPECT_NEAR(fresnel::term_kernel(t.term, mu, m, m5), term_formula(t.term, mu), 1e-15)
+          << t.formula;
+      const double less = t.dfg_less == t.term ? 0.0 : term_formula(t.dfg_less, mu);
+      EXPECT_NEAR(fresnel::dfg_kernel(t.term, mu, m, m5), term_formula(t.term, mu) - less, 1e-15)
+          << t.formula;
+    }
+}
+
+// A pre-integrated model reads the channels of every table term it weighs (at its example and
+// mid-box parameters): under IBL the term's DFG channel and the one it is stored less of, under
+// area lights its LTC moment.
+TEST(Registry, PreIntegratedModelsDeclareTheChannelsOfTheirTerms) {
+  auto declares = [](const fresnel::LightingSupport& s, const char* channel) {
+    return std::any_of(s.channels.begin(), s.channels.end(),
+                       [&](const char* c) { return std::string(c) == channel; });
+  };
+  for (const auto& spec : fresnel::model_specs()) {
+    const auto& pi = spec.pre_integration;
+    if (!pi.ibl.fresnel_pre_integrated) continue;
+    for (const auto& p : probe_params(spec))
+      for (int c = 0; c < 3; ++c) {
+        const auto w = spec.table_terms(p.data(), c);
+        for (const auto& t : fresnel::kTermRegistry) {
+          if (w[t.term] == 0.0) continue;
+          EXPECT_TRUE(declares(pi.ibl, t.dfg_channel)) << spec.name << " " << t.dfg_channel;
+          EXPECT_TRUE(declares(pi.ibl, fresnel::term_spec(t.dfg_less).dfg_channel)) << spec.name;
+          EXPECT_TRUE(declares(pi.area, t.ltc_channel)) << spec.name << " " << t.ltc_channel;
+        }
+      }
+  }
+}
+
+// A pre-integrated model's table terms are its formula: Σ_t w_t·term_t(μ) against the unclamped
+// kernel at 65 angles; and every declaration has the code an engine needs for it.
 TEST(Registry, TableTermsReproduceTheKernelAndShaderCodeMatchesTheDeclarations) {
   constexpr double kTermsTolerance = 1e-12;
   for (const auto& spec : fresnel::model_specs()) {
@@ -309,10 +355,10 @@ TEST(Registry, TableTermsReproduceTheKernelAndShaderCodeMatchesTheDeclarations) 
       for (double mu : cosines(65)) {
         const auto f = fresnel::evaluate_curve_unclamped(spec.model, p, {mu})[0];
         for (int c = 0; c < 3; ++c) {
-          const auto t = spec.table_terms(p.data(), c);
-          EXPECT_NEAR(t.a + t.b * std::pow(1 - mu, 5) + t.c * mu * std::pow(1 - mu, 6), f[c],
-                      kTermsTolerance)
-              << spec.name << " mu " << mu;
+          const auto w = spec.table_terms(p.data(), c);
+          double sum = 0;  // Σ_t w_t·term_t(μ), each term written here from its formula
+          for (const auto& t : fresnel::kTermRegistry) sum += w[t.term] * term_formula(t.term, mu);
+          EXPECT_NEAR(sum, f[c], kTermsTolerance) << spec.name << " mu " << mu;
         }
       }
     }

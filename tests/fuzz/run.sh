@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target seeded from the bad/good input corpus.
 #   tests/fuzz/run.sh TARGET SECONDS [BUILD_DIR]
-#   TARGET: ri_yaml | nk_csv | cgats | catalog | scene | ocio | exr_env
+#   TARGET: ri_yaml | nk_csv | catalog | scene | ocio | exr_env
 # Build first: CC=clang CXX=clang++ cmake -S . -B build-fuzz -DFRESNEL_LAB_FUZZ=ON -DFRESNEL_LAB_BENCH=OFF
 #              cmake --build build-fuzz --target fuzz_TARGET
 # The working corpus grows in $FUZZ_WORK/TARGET (default /tmp/fresnel-lab-fuzz); crashers land in
@@ -14,7 +14,6 @@ mkdir -p "$work" tests/fuzz/findings
 case $target in
   ri_yaml) seeds=(tests/bad_input/ri_yaml tests/good_input/ri_bom_crlf.yml tests/good_input/ri_bom.yml tests/good_input/ri_crlf_formula.yml tests/good_input/db) ;;
   nk_csv) seeds=(tests/bad_input/csv tests/good_input/nk_bom_crlf.csv tests/good_input/nk_cr_only.csv tests/good_input/nk_no_k.csv) ;;
-  cgats) seeds=(tests/bad_input/cgats) ;;
   catalog) seeds=(tests/bad_input/catalog tests/good_input/catalog materials) ;;
   scene) seeds=(tests/bad_input/scene examples) ;;
   ocio) seeds=(tests/bad_input/ocio tests/good_input/ocio) ;;
@@ -24,8 +23,6 @@ esac
 for s in "${seeds[@]}"; do
   if [ -d "$s" ]; then find "$s" -type f -exec cp -n {} "$work/" \; ; else cp -n "$s" "$work/"; fi
 done
-# Real colord spectra make good CGATS seeds (not copied into the repository).
-[ "$target" = cgats ] && [ -d /usr/share/colord ] && find /usr/share/colord/cmf /usr/share/colord/illuminant /usr/share/colord/ref -type f -exec cp -n {} "$work/" \;
 # Extra libFuzzer options (e.g. -jobs=1, -print_final_stats=1 is always on) from $FUZZ_ARGS.
 exec "$build/tests/fuzz/fuzz_$target" "$work" -dict="tests/fuzz/$target.dict" -max_total_time="$seconds" \
   ${FUZZ_ARGS:-} -max_len=8192 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \

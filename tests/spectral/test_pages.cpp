@@ -135,11 +135,23 @@ TEST(PageCatalog, EntriesFromShelvesBooksAndDividers) {
   EXPECT_EQ(brass.section, "Brass");
 }
 
-TEST(PageCatalog, MissingOrBrokenCatalogIsEmpty) {
+// A database without catalog-nk.yml names nothing; a broken one is an error naming the file and
+// the line, from read_page_catalog and from every use of a PageCatalog.
+TEST(PageCatalog, MissingCatalogIsEmptyBrokenCatalogIsAnError) {
   test::TempDir db;
   EXPECT_TRUE(read_page_catalog(db.path()).empty());
+  EXPECT_EQ(PageCatalog(db.path()).find("main/Au/nk/Johnson"), nullptr);
   db.file("catalog-nk.yml", "- SHELF: main\n  content: [\n    - BOOK: Au\n");
-  EXPECT_TRUE(read_page_catalog(db.path()).empty());
+  const std::string file = db.path() + "/catalog-nk.yml:";
+  try {
+    read_page_catalog(db.path());
+    ADD_FAILURE() << "a broken catalog was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(file, 0), 0u) << e.what();
+  }
+  const PageCatalog catalog(db.path());
+  EXPECT_THROW(catalog.find("main/Au/nk/Johnson"), InputError);
+  EXPECT_THROW(catalog.entries(), InputError);  // not swallowed on a second use either
 }
 
 }  // namespace

@@ -25,9 +25,7 @@ struct Wavelengths {
 
 // Every `step_nm` from 360 nm, weighted by x̄ + ȳ + z̄ (CIE 1931 2°), normalized to sum 1.
 Wavelengths construction_wavelengths(const Context& ctx, double step_nm) {
-  const auto& s = ctx.settings();
-  const auto observer = spectral::cie1931_2deg(
-      ctx.grid(), s.colord_dir.empty() ? spectral::default_colord_dir() : s.colord_dir);
+  const auto observer = spectral::cie1931_2deg(ctx.grid());
   Wavelengths w;
   double sum = 0;
   for (int i = 0; i < ctx.grid().count; ++i) {

@@ -120,7 +120,8 @@ ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::
   }
   if (spectral::is_glob(spec) || spec.find('/') != std::string::npos) return {spec, {spec}};
   const std::string want = lower(spec);
-  for (const auto& [page, e] : spectral::read_page_catalog(paths.database))
+  const auto catalog = spectral::page_catalog(paths);  // kept alive for the loop
+  for (const auto& [page, e] : catalog->entries())
     if (page.rfind("main/", 0) == 0 && (lower(e.book) == want || common_name(e.book_name) == want))
       return {"main/" + e.book, {"main/" + e.book + "/**"}};
   throw InputError(fmt::format(

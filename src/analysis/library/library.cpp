@@ -48,16 +48,16 @@ Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
   add_coverage_columns(t);
   t.columns.insert(t.columns.end(), {{"reference"}, {"status"}});
   std::map<std::string, std::vector<Cell>> rows;  // sorted by page
-  const auto& db = ctx.settings().paths.database;
+  const auto& pages = *ctx.settings().paths.pages;
   for (const auto& m : set.materials) {
-    auto row = page_row(m.material.source, spectral::page_entry(db, m.material.source));
+    auto row = page_row(m.material.source, pages.find(m.material.source));
     row.push_back(std::string(spectral::to_string(m.material.material_class)));
     add_coverage_cells(row, m);
     row.insert(row.end(), {m.material.reference, std::string("ok")});
     rows[m.material.source] = std::move(row);
   }
   for (const auto& s : set.skipped) {
-    auto row = page_row(s.spec, spectral::page_entry(db, s.spec));
+    auto row = page_row(s.spec, pages.find(s.spec));
     row.insert(row.end(), {std::string(), std::nan(""), std::nan(""), std::nan(""), std::string(),
                            std::string(), s.reason});
     rows[s.spec] = std::move(row);

@@ -205,7 +205,7 @@ std::vector<JudgedPoint> midpoints(const LtcTable& table,
     out.push_back(p);
   });
   parallel_for(out.size(), [&](size_t k) {
-    out[k].n_d = integrate_moments(out[k].nov, out[k].alpha, moment_samples).n_d;
+    out[k].n_d = integrate_moments(out[k].nov, out[k].alpha, moment_samples)[fresnel::Term::One];
   });
   return out;
 }
@@ -230,7 +230,7 @@ LtcComparison compare_ltc_tables(const LtcTable& table, const LtcReferenceTable&
     reference_entries[k] = ltc_texture_entries(reference.m_inv[k]);
     cells[k] = {g.nov[i],
                 g.alpha[j],
-                table.moments[k].n_d,
+                table.moments[k][fresnel::Term::One],
                 i == n - 1,
                 fit::ltc_lobe(table.cells[k].m),
                 fit::ltc_lobe(fit::inverse(reference.m_inv[k])),

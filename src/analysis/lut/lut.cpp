@@ -110,14 +110,11 @@ DfgTexel integrate_dfg(double nov, double alpha, const std::vector<brdf::DiskPoi
   for_each_lobe_sample(nov, alpha, points, [&](const LobeSample& s) {
     const double m = 1.0 - s.voh;
     const double fc = pow5(m);
-    t.dfg1 += (1.0 - fc) * s.weight;
-    t.dfg2 += fc * s.weight;
-    t.dfg_f82 += s.voh * fc * m * s.weight;
+    for (const auto& term : fresnel::kTermRegistry)
+      t[term.term] += fresnel::dfg_kernel(term.term, s.voh, m, fc) * s.weight;
   });
   const double samples = static_cast<double>(points.size());
-  t.dfg1 /= samples;
-  t.dfg2 /= samples;
-  t.dfg_f82 /= samples;
+  for (double& c : t.v) c /= samples;
   return t;
 }
 DfgTexel integrate_dfg(double nov, double alpha, int samples) {
@@ -148,7 +145,7 @@ namespace {
 // The terms of integrate_moments' sums for a block of samples, as columns; 0 for a direction below
 // the horizon, which adds nothing to a sum.
 struct MomentTerms {
-  double n_d[kLobeBlock], f_d[kLobeBlock], l_d[kLobeBlock], dir_x[kLobeBlock], dir_z[kLobeBlock];
+  double term[fresnel::kTermCount][kLobeBlock], dir_x[kLobeBlock], dir_z[kLobeBlock];
 };
 FL_VECTOR_CLONES void moment_terms(const LobeSampleBlock& b, size_t count, MomentTerms& t) {
   for (size_t k = 0; k < count; ++k) {
@@ -156,9 +153,9 @@ FL_VECTOR_CLONES void moment_terms(const LobeSampleBlock& b, size_t count, Momen
     const double m1 = 1.0 - voh;
     const double m5 = pow5(m1);
     const bool above = !(w <= 0.0);
-    t.n_d[k] = above ? w : 0.0;
-    t.f_d[k] = above ? m5 * w : 0.0;
-    t.l_d[k] = above ? voh * m5 * m1 * w : 0.0;
+    for (size_t i = 0; i < fresnel::kTermCount; ++i)
+      t.term[i][k] =
+          above ? fresnel::term_kernel(fresnel::kTermRegistry[i].term, voh, m1, m5) * w : 0.0;
     t.dir_x[k] = above ? b.lx[k] * w : 0.0;
     t.dir_z[k] = above ? b.lz[k] * w : 0.0;
   }
@@ -173,14 +170,12 @@ GgxMoments integrate_moments(double nov, double alpha, const std::vector<brdf::D
   for_each_lobe_block(nov, alpha, points, [&](const LobeSampleBlock& b, size_t count) {
     moment_terms(b, count, t);
     for (size_t k = 0; k < count; ++k) {
-      m.n_d += t.n_d[k], m.f_d += t.f_d[k], m.l_d += t.l_d[k];
+      for (size_t i = 0; i < fresnel::kTermCount; ++i) m.v[i] += t.term[i][k];
       dir.x += t.dir_x[k], dir.z += t.dir_z[k];
     }
   });
   const double samples = static_cast<double>(points.size());
-  m.n_d /= samples;
-  m.f_d /= samples;
-  m.l_d /= samples;
+  for (double& x : m.v) x /= samples;
   // The lobe of an isotropic BRDF is symmetric about the xz-plane: the mean direction has y = 0.
   m.average_dir =
       (dir.x * dir.x + dir.z * dir.z > 0.0) ? brdf::normalize(dir) : brdf::Vec3{0, 0, 1};
@@ -228,8 +223,8 @@ LtcCell fit_table_cell(const LutGrid& g, const GgxMoments& mo, int i, int j,
   const bool isotropic = i == 0;
   const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
   const double near_equal_margin = i == g.size - 1 ? kLtcGrazingNearEqualMargin : 0.0;
-  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo.n_d, dir, starts, isotropic, fitter,
-                                   points, near_equal_margin);
+  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo[fresnel::Term::One], dir, starts,
+                                   isotropic, fitter, points, near_equal_margin);
   LtcCell c;
   c.fit = r.fit;
   c.params = r.params;

@@ -17,6 +17,7 @@
 #include "analysis/pipeline/context.h"
 #include "brdf/ggx.h"
 #include "fit/ltc_fit.h"
+#include "fresnel/table_terms.h"
 
 namespace fl::analysis {
 
@@ -57,14 +58,13 @@ double ltc_alpha_at(double roughness);
 // dl, the bias dfg2 = ∫ Fc ρ cos dl, and the F82 term dfg_f82 = ∫ μ(1 − μ)⁶ ρ cos dl (μ = v·h), so
 // that Schlick integrates to F0·dfg1 + dfg2 and Hoffman's F82 model to F0·dfg1 + dfg2 − a·dfg_f82.
 // Filament's multiscatter table holds dfg2 and dfg1 + dfg2 (= ∫ ρ cos).
-struct DfgTexel {
-  double dfg1 = 0, dfg2 = 0, dfg_f82 = 0;
-};
+// The channels per term (fresnel::kTermRegistry: dfg1, dfg2, dfg_f82): texel[Term::One] = dfg1.
+struct DfgTexel : fresnel::TermValues {};
 // Hill's LTC moments and the F82 moment: n_D = ∫ ρ cos, f_D = ∫ (1 − v·h)⁵ ρ cos,
 // l_D = ∫ (v·h)(1 − v·h)⁶ ρ cos, so that Hoffman's F82 model integrates to R0 n_D + (1 − R0) f_D −
 // a l_D. average_dir is the lobe's mean direction ∫ l ρ cos / ‖∫ l ρ cos‖ (the LTC frame's Z).
-struct GgxMoments {
-  double n_d = 0, f_d = 0, l_d = 0;
+// The moments per term (fresnel::kTermRegistry: n_d, f_d, l_d): moments[Term::One] = n_D.
+struct GgxMoments : fresnel::TermValues {
   brdf::Vec3 average_dir{0, 0, 1};
 };
 

@@ -6,24 +6,28 @@
 
 namespace fl::analysis {
 
+namespace {
+
+// Each table term's channel and component in the DFG or the ltc_2 texture.
+std::vector<LutChannelLocation> term_channels(bool dfg) {
+  std::vector<LutChannelLocation> out;
+  for (const auto& t : fresnel::kTermRegistry)
+    out.push_back(dfg ? LutChannelLocation{t.dfg_channel, t.dfg_component}
+                      : LutChannelLocation{t.ltc_channel, t.ltc_component});
+  return out;
+}
+
+}  // namespace
+
 const std::vector<LutTexture>& lut_textures() {
-  namespace ch = fresnel::lut_channel;
   static const std::vector<LutTexture> textures{
-      {"dfg",
-       "ibl",
-       "dfg.exr",
-       "fresnel-lab lut dfg --out dfg.exr",
-       {{ch::kDfgScale, "r"}, {ch::kDfgBias, "g"}, {ch::kDfgF82, "b"}}},
+      {"dfg", "ibl", "dfg.exr", "fresnel-lab lut dfg --out dfg.exr", term_channels(true)},
       {"ltc_1",
        "area",
        "ltc_1.exr",
        "fresnel-lab lut ltc --out ltc.exr",
-       {{ch::kLtcMatrix, "rgba"}}},
-      {"ltc_2",
-       "area",
-       "ltc_2.exr",
-       "fresnel-lab lut ltc --out ltc.exr",
-       {{ch::kLtcNorm, "r"}, {ch::kLtcSchlick, "g"}, {ch::kLtcF82, "b"}}},
+       {{fresnel::lut_channel::kLtcMatrix, "rgba"}}},
+      {"ltc_2", "area", "ltc_2.exr", "fresnel-lab lut ltc --out ltc.exr", term_channels(false)},
   };
   return textures;
 }

@@ -92,11 +92,13 @@ double as_stored(double v) {
 }
 
 // Texels as the engine tables store them.
-DfgTexel as_stored(const DfgTexel& t) {
-  return {as_stored(t.dfg1), as_stored(t.dfg2), as_stored(t.dfg_f82)};
+DfgTexel as_stored(DfgTexel t) {
+  for (double& c : t.v) c = as_stored(c);
+  return t;
 }
-GgxMoments as_stored(const GgxMoments& m) {
-  return {as_stored(m.n_d), as_stored(m.f_d), as_stored(m.l_d), m.average_dir};
+GgxMoments as_stored(GgxMoments m) {
+  for (double& c : m.v) c = as_stored(c);
+  return m;
 }
 
 // Texel coordinates of a point: DFG texel centres (i + ½)/N over n·v and roughness; LTC endpoints
@@ -157,15 +159,11 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
         });
         for_texels(dfg_read(p), [&](int i, int j, double w) {
           const auto& c = dfg.at(i, j);
-          p.dfg.dfg1 += w * c.dfg1;
-          p.dfg.dfg2 += w * c.dfg2;
-          p.dfg.dfg_f82 += w * c.dfg_f82;
+          for (size_t t = 0; t < fresnel::kTermCount; ++t) p.dfg.v[t] += w * c.v[t];
         });
         for_texels(ltc_read(p), [&](int i, int j, double w) {
           const auto& c = ltc.at(i, j);
-          p.ltc.n_d += w * c.n_d;
-          p.ltc.f_d += w * c.f_d;
-          p.ltc.l_d += w * c.l_d;
+          for (size_t t = 0; t < fresnel::kTermCount; ++t) p.ltc.v[t] += w * c.v[t];
         });
       },
       threads);
@@ -199,16 +197,16 @@ color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting l
   if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
   const auto& spec = fresnel::model_spec(m);
   const bool ibl = lighting == Lighting::Ibl;
-  // The tables' three terms: the lobe's norm, its Schlick moment and its F82 moment.
-  const double n = ibl ? p.dfg.dfg1 + p.dfg.dfg2 : p.ltc.n_d;
-  const double f = ibl ? p.dfg.dfg2 : p.ltc.f_d;
-  const double l = ibl ? p.dfg.dfg_f82 : p.ltc.l_d;
+  // The lobe's integral of each of the tables' terms (the norm is the term 1's).
+  const fresnel::TermValues lobe =
+      ibl ? fresnel::dfg_term_integrals(p.dfg) : static_cast<const fresnel::TermValues&>(p.ltc);
   if (!lighting_support(m, lighting).fresnel_pre_integrated)
-    return n * spec.evaluate(p.nov, params.data(), false);
+    return lobe[fresnel::Term::One] * spec.evaluate(p.nov, params.data(), false);
   color::Rgb out{};
   for (int c = 0; c < 3; ++c) {
-    const auto t = spec.table_terms(params.data(), c);
-    out[c] = t.a * n + t.b * f + t.c * l;
+    const auto w = spec.table_terms(params.data(), c);
+    out[c] = w.v[0] * lobe.v[0];
+    for (size_t t = 1; t < fresnel::kTermCount; ++t) out[c] += w.v[t] * lobe.v[t];
   }
   return out;
 }

@@ -35,8 +35,7 @@ const Settings& validated(const Settings& s) {
 // A config space's white named by --ocio-white: ACES (x = 0.32168, y = 0.33767, the white of the
 // D60 illuminant's ACES use), or an illuminant's own white from its spectrum and the observer.
 std::optional<color::SpaceWhite> space_white(const Settings& s, const spectral::SpectralGrid& grid,
-                                             const spectral::Observer& observer,
-                                             const std::string& colord) {
+                                             const spectral::Observer& observer) {
   if (s.ocio_white.empty()) return std::nullopt;
   if (s.ocio_config.empty())
     throw InputError("--ocio-white applies to the spaces of an --ocio-config only");
@@ -44,7 +43,7 @@ std::optional<color::SpaceWhite> space_white(const Settings& s, const spectral::
   if (s.ocio_white == "ACES")
     return color::SpaceWhite{color::xyz_from_xy({0.32168, 0.33767}), "D60", source};
   const color::Xyz w =
-      sum_xyz(color::xyz_weights(observer, spectral::illuminant_spd(s.ocio_white, grid, colord)));
+      sum_xyz(color::xyz_weights(observer, spectral::illuminant_spd(s.ocio_white, grid)));
   return color::SpaceWhite{{w.X / w.Y, 1.0, w.Z / w.Y}, s.ocio_white, source};
 }
 
@@ -55,11 +54,13 @@ Context::Context(const Settings& s)
       grid_(spectral::SpectralGrid::visible(s.step_nm)),
       spaces_(s.ocio_config.empty() ? color::SpaceLibrary::builtin()
                                     : color::SpaceLibrary::from_config(s.ocio_config, s.ocio_xyz)) {
-  const std::string colord = s.colord_dir.empty() ? spectral::default_colord_dir() : s.colord_dir;
-  const auto observer = spectral::cie1931_2deg(grid_, colord);
-  space_ = spaces_.space(s.space, space_white(s, grid_, observer, colord));
+  // The run's page catalog: one per database, shared with the settings' copies.
+  if (!settings_.paths.pages || settings_.paths.pages->database() != settings_.paths.database)
+    settings_.paths.pages = std::make_shared<const spectral::PageCatalog>(settings_.paths.database);
+  const auto observer = spectral::cie1931_2deg(grid_);
+  space_ = spaces_.space(s.space, space_white(s, grid_, observer));
   if (settings_.illuminant.empty()) settings_.illuminant = space_.reference_illuminant;
-  const auto illuminant = spectral::illuminant_spd(settings_.illuminant, grid_, colord);
+  const auto illuminant = spectral::illuminant_spd(settings_.illuminant, grid_);
   const auto xyz_w = color::xyz_weights(observer, illuminant);
   illuminant_white_ = sum_xyz(xyz_w);
   const color::Mat3 m =

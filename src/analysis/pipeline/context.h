@@ -19,7 +19,6 @@ struct Settings {
   int angles = 91;
   double step_nm = 5.0;
   double eta_outside = 1.0;  // real index of the medium the surface is seen from
-  std::string colord_dir;    // empty: spectral::default_colord_dir()
   std::string ocio_config;   // empty: built-in spaces
   std::string ocio_xyz;      // the config's CIE XYZ D65 space (empty: role / default name)
   std::string

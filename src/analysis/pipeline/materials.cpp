@@ -85,7 +85,7 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
   // busy).
   if (std::any_of(requests.begin(), requests.end(),
                   [](const auto& r) { return !r.pattern.empty(); }))
-    spectral::page_entry(ctx.settings().paths.database, "");
+    ctx.settings().paths.pages->entries();
   std::vector<Slot> slots(requests.size());
   ProgressCounter done(progress, set.requested);
   // Every request is loaded; the first error in request order is the one reported.

@@ -70,6 +70,14 @@ std::string punctual_function(const ModelSpec& s) {
       s.label, s.name, param_list(s, true), s.shader.body);
 }
 
+// The lobe's Fresnel-free integral (the table term 1's) in the texel's channel names.
+std::string lobe_integral(bool ibl) {
+  const auto& one = fresnel::term_spec(fresnel::Term::One);
+  if (!ibl) return one.ltc_channel;
+  if (one.dfg_less == fresnel::Term::One) return one.dfg_channel;
+  return fmt::format("({} + {})", one.dfg_channel, fresnel::term_spec(one.dfg_less).dfg_channel);
+}
+
 // fresnel_NAME_dfg / _ltc: the texel's channels as named floats, then the unit's combination
 // (pre-integrated) or the model at n·v times the lobe's Fresnel-free integral.
 std::string table_function(const ModelSpec& s, Lighting l) {
@@ -87,7 +95,7 @@ std::string table_function(const ModelSpec& s, Lighting l) {
     body += ibl ? s.shader.dfg_body : s.shader.ltc_body;
   } else {
     body += fmt::format("  return fresnel_{}(nov, {}) * {};\n", s.name, param_list(s, false),
-                        ibl ? "(dfg1 + dfg2)" : "n_d");
+                        lobe_integral(ibl));
   }
   const std::string what =
       support.fresnel_pre_integrated

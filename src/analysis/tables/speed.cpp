@@ -152,20 +152,19 @@ GpuCosts read_gpu_costs(const std::string& path) {
   return out;
 }
 
-GpuCosts load_gpu_costs(const std::string& path) {
-  if (!path.empty()) return read_gpu_costs(path);
-  if (const char* env = std::getenv("FRESNEL_LAB_GPU_COSTS"); env && *env)
-    return read_gpu_costs(env);
-  auto costs = read_gpu_costs(FRESNEL_LAB_DEFAULT_GPU_COSTS);
-  costs.source = "bench/gpu_costs.csv";
+GpuCosts load_gpu_costs(const spectral::DataFile& file) {
+  if (file.path.empty())
+    throw InputError("no GPU costs file (bench/gpu_costs.csv) was found; give --gpu-costs");
+  auto costs = read_gpu_costs(file.path);
+  costs.source = file.name.empty() ? file.path : file.name;
   return costs;
 }
 
-ModelCosts load_model_costs(const std::string& path) {
-  if (!path.empty()) return read_model_costs(path);
-  if (const char* env = std::getenv("FRESNEL_LAB_COSTS"); env && *env) return read_model_costs(env);
-  auto costs = read_model_costs(FRESNEL_LAB_DEFAULT_COSTS);
-  costs.source = "bench/model_costs.csv";  // the committed file, named the same on every machine
+ModelCosts load_model_costs(const spectral::DataFile& file) {
+  if (file.path.empty())
+    throw InputError("no model costs file (bench/model_costs.csv) was found; give --costs");
+  auto costs = read_model_costs(file.path);
+  costs.source = file.name.empty() ? file.path : file.name;
   return costs;
 }
 

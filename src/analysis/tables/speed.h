@@ -38,8 +38,9 @@ struct ModelCosts {
 // columns are model,ns_per_eval_float_batched, then at most one row per model (a model without
 // one is unmeasured). InputError (file:line) for anything else.
 ModelCosts read_model_costs(const std::string& path);
-// `path`, else $FRESNEL_LAB_COSTS, else the repository's bench/model_costs.csv.
-ModelCosts load_model_costs(const std::string& path = "");
+// read_model_costs(file.path), its source named file.name (the path when empty). The command line
+// resolves which file (--costs, $FRESNEL_LAB_COSTS, the tool's bench/model_costs.csv).
+ModelCosts load_model_costs(const spectral::DataFile& file);
 
 // Times every model's batched float evaluation (4096 angles) now, on this machine: the least
 // time per evaluation over `repeats` runs of at least `min_ms` each. Not deterministic.
@@ -62,8 +63,9 @@ struct GpuCosts {
 // model,lighting,instructions,arithmetic,extended,texture, at most one row per model × lighting
 // (a pair without one is unmeasured). InputError (file:line) for anything else.
 GpuCosts read_gpu_costs(const std::string& path);
-// `path`, else $FRESNEL_LAB_GPU_COSTS, else the repository's bench/gpu_costs.csv.
-GpuCosts load_gpu_costs(const std::string& path = "");
+// read_gpu_costs(file.path), its source named file.name (the path when empty); resolved like
+// load_model_costs (--gpu-costs, $FRESNEL_LAB_GPU_COSTS, the tool's bench/gpu_costs.csv).
+GpuCosts load_gpu_costs(const spectral::DataFile& file);
 
 // One (model, parameter set) candidate with its error statistics over the studied materials.
 struct SpeedRow {

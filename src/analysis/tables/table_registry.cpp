@@ -85,7 +85,9 @@ const std::vector<TableSpec>& table_specs() {
        "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, "
        "Pareto front",
        [](TableInputs& in) {
-         return speed_table(in.ctx, in.studies(), load_model_costs(), load_gpu_costs());
+         const auto& paths = in.ctx.settings().paths;
+         return speed_table(in.ctx, in.studies(), load_model_costs(paths.model_costs),
+                            load_gpu_costs(paths.gpu_costs));
        }},
   };
   return specs;

@@ -79,7 +79,11 @@ struct F82 {
     return hoffman_f82_unclamped(cos_theta, p[0], p[1]);
   }
   static TableTerms table_terms(const double* p, const double*) {
-    return {p[0], 1.0 - p[0], -f82_coefficient(p[0], p[1])};
+    TableTerms w;
+    w[Term::One] = p[0];
+    w[Term::Schlick] = 1.0 - p[0];
+    w[Term::F82] = -f82_coefficient(p[0], p[1]);
+    return w;
   }
   // Schlick's 1/21, minus a·2∫μ²(1 − μ)⁶ dμ = a·2·B(3, 7) = a/126 (the formula, unclamped).
   static double average(const double* p, const double*) {

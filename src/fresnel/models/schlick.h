@@ -47,7 +47,13 @@ struct Schlick {
   static T channel(T cos_theta, const T* p, const T*) {
     return schlick(cos_theta, p[0]);
   }
-  static TableTerms table_terms(const double* p, const double*) { return {p[0], 1.0 - p[0], 0.0}; }
+  // F0·1 + (1 − F0)·(1 − μ)⁵.
+  static TableTerms table_terms(const double* p, const double*) {
+    TableTerms w;
+    w[Term::One] = p[0];
+    w[Term::Schlick] = 1.0 - p[0];
+    return w;
+  }
   // 2∫(1 − μ)⁵μ dμ = 2·B(2, 6) = 1/21.
   static double average(const double* p, const double*) { return p[0] + (1.0 - p[0]) / 21.0; }
   // The spectral F0.
