@@ -39,11 +39,6 @@ MaterialClass classify(const OpticalConstants& oc) {
 
 namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 std::string join(const std::vector<std::string>& names) {
   std::string out;
   for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
@@ -120,18 +115,18 @@ std::vector<std::string> catalog_files(const std::string& folder) {
 void require_unique_names(const std::vector<std::string>& files, const std::vector<Material>& ms) {
   std::map<std::string, size_t> keys, names;
   for (size_t i = 0; i < ms.size(); ++i) {
-    if (const auto [it, added] = keys.emplace(lower(ms[i].key), i); !added)
+    if (const auto [it, added] = keys.emplace(ascii_lower(ms[i].key), i); !added)
       throw InputError(files[i], 0,
                        fmt::format("catalog key '{}' is also the key of {} (keys are compared "
                                    "ignoring case)",
                                    ms[i].key, files[it->second]));
     for (const auto& alias : ms[i].aliases)
-      if (const auto [it, added] = names.emplace(lower(alias), i); !added)
+      if (const auto [it, added] = names.emplace(ascii_lower(alias), i); !added)
         throw InputError(files[i], 0,
                          fmt::format("alias '{}' already names {} (names and aliases are compared "
                                      "ignoring case)",
                                      alias, files[it->second]));
-    if (const auto [it, added] = names.emplace(lower(ms[i].name), i); !added) {
+    if (const auto [it, added] = names.emplace(ascii_lower(ms[i].name), i); !added) {
       const auto line = [](const std::string& f) { return read_yaml_file(f)["name"].line() + 1; };
       throw InputError(files[i], line(files[i]),
                        fmt::format("name '{}' is already the name of {}:{} (names are compared "
@@ -277,11 +272,11 @@ std::string material_hint(const std::string& spec, const DataPaths& paths) {
 std::optional<Material> find_in_catalog(const std::string& spec, const DataPaths& paths) {
   std::error_code ec;
   if (!fs::is_directory(paths.materials, ec)) return std::nullopt;
-  const std::string want = lower(spec);
+  const std::string want = ascii_lower(spec);
   std::vector<std::string> named;
   for (const auto& [file, names] : catalog_names(paths.materials))
     if (std::any_of(names.begin(), names.end(),
-                    [&](const std::string& n) { return lower(n) == want; }))
+                    [&](const std::string& n) { return ascii_lower(n) == want; }))
       named.push_back(file);
   if (named.size() > 1) {
     std::vector<Material> ms;
@@ -298,10 +293,11 @@ Material read_material_file(const std::string& spec, const DataPaths& paths) {
   m.origin = Material::Origin::File;
   m.key = spec;
   m.name = fs::path(spec).stem().string();
-  if (lower(fs::path(spec).extension().string()) == ".spd")  // NAME.eta.spd or NAME.k.spd: NAME
+  if (ascii_lower(fs::path(spec).extension().string()) ==
+      ".spd")  // NAME.eta.spd or NAME.k.spd: NAME
     m.name = fs::path(m.name).stem().string();
   m.source = spec;
-  const auto ext = lower(fs::path(spec).extension().string());
+  const auto ext = ascii_lower(fs::path(spec).extension().string());
   if (ext == ".yml" || ext == ".yaml") {
     // A catalog entry has 'class'; a database file has 'DATA'.
     const YamlNode root = read_yaml_file(spec);
@@ -327,7 +323,7 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
                                : spec;
   if (page.find('/') != std::string::npos && fs::exists(database_file(paths, page), ec))
     return read_database_page(page, paths);
-  if (const auto ext = lower(fs::path(spec).extension().string());
+  if (const auto ext = ascii_lower(fs::path(spec).extension().string());
       ext == ".csv" || ext == ".yml" || ext == ".yaml" || ext == ".txt" || ext == ".tsv" ||
       ext == ".nk" || ext == ".spd")
     throw InputError(

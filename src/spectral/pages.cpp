@@ -8,6 +8,7 @@
 
 #include "spectral/errors.h"
 #include "spectral/yaml_file.h"
+#include "util/suggest.h"
 
 namespace fl::spectral {
 namespace fs = std::filesystem;
@@ -155,11 +156,6 @@ const char* to_string(PageKind kind) {
 
 namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 bool has_any(const std::string& s, std::initializer_list<const char*> words) {
   for (const char* w : words)
     if (s.find(w) != std::string::npos) return true;
@@ -195,7 +191,7 @@ PageClass classify_page(const PageEntry* entry) {
   static const std::regex pressure_re("\\d ?(GPa|MPa|kbar)(?![A-Za-z])");
   const std::string year = first_match(entry->page_name, year_re, 1);
   c.year = year.empty() ? 0 : std::stoi(year);
-  const std::string both = lower(entry->section + " | " + entry->page_name);
+  const std::string both = ascii_lower(entry->section + " | " + entry->page_name);
   const std::string thickness = first_match(entry->page_name, thickness_re, 1);
   if (has_any(both, {"dft", "ab initio", "first-principles", "calculation", "computed"})) {
     c.kind = PageKind::Computed;

@@ -18,6 +18,11 @@ std::string folded_name(std::string_view s) {
 
 }  // namespace
 
+std::string ascii_lower(std::string s) {
+  for (char& c : s) c = fold(c);
+  return s;
+}
+
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   // Wagner–Fischer with the adjacent-transposition case (Damerau 1964), three rows of the table.
   const std::size_t n = b.size();

@@ -26,6 +26,9 @@ std::optional<std::string> closest_match(std::string_view name,
 // error message.
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates);
 
+// `s` with ASCII letters in lower case (names compare this way; other bytes, UTF-8 included, stay).
+std::string ascii_lower(std::string s);
+
 // A name a user may type for one thing: its canonical spelling and the other spellings accepted
 // for it ("aluminium" for "aluminum", "lin_srgb" for "lin_rec709").
 struct NameChoice {

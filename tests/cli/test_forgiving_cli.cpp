@@ -112,6 +112,29 @@ TEST(ForgivingCli, LowCoverageRefusedUnlessLowered) {
   EXPECT_EQ(run_command(cli() + " -q --min-coverage 0 presets main/Au/nk/Ordal").status, 0);
 }
 
+// Every material of a document has a name of its own: a page named twice is kept once, and two
+// files with one name are told apart, with a warning.
+TEST(ForgivingCli, DocumentNamesAreUnique) {
+  test::TempDir tmp;
+  const std::string a = tmp.file("a/Cu.csv", "lambda_nm,n,k\n350,0.3,3\n850,0.3,5\n");
+  const std::string b = tmp.file("b/Cu.csv", "lambda_nm,n,k\n350,0.4,3\n850,0.4,5\n");
+  const auto r =
+      run_command(cli() + " --space lin_rec709 presets 'main/Au/nk/J*' main/Au/nk/Johnson '" + a +
+                  "' '" + b + "' --format gltf");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("skipped main/Au/nk/Johnson: named more than once: kept once"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("another material is already named 'Cu': this one is 'Cu (2)'"),
+            std::string::npos)
+      << r.err;
+  std::vector<std::string> names;
+  for (std::size_t at = r.out.find("\"name\": \""); at != std::string::npos;
+       at = r.out.find("\"name\": \"", at + 1))
+    names.push_back(r.out.substr(at + 9, r.out.find('"', at + 9) - at - 9));
+  EXPECT_EQ(names, (std::vector<std::string>{"main/Au/nk/Johnson", "Cu", "Cu (2)"}));
+}
+
 TEST(NameChoice, MatchesIgnoringCaseAndSeparatorsAndSuggestsTheCanonicalName) {
   const std::vector<NameChoice> choices{{"lin_rec709", {"lin_srgb"}}, {"acescg", {}}};
   EXPECT_EQ(match_name("LIN-SRGB", choices), "lin_rec709");

@@ -15,6 +15,7 @@
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
 #include "util/median.h"
+#include "util/suggest.h"
 
 namespace fl::analysis {
 
@@ -95,16 +96,11 @@ spectral::ComplexIorSpectrum consensus_ior(
 
 namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
 // "Au (Gold)" → "gold".
 std::string common_name(const std::string& book_name) {
   const auto open = book_name.find('('), close = book_name.rfind(')');
   if (open == std::string::npos || close == std::string::npos || close < open) return {};
-  return lower(book_name.substr(open + 1, close - open - 1));
+  return ascii_lower(book_name.substr(open + 1, close - open - 1));
 }
 
 }  // namespace
@@ -119,10 +115,11 @@ ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::
     return r;
   }
   if (spectral::is_glob(spec) || spec.find('/') != std::string::npos) return {spec, {spec}};
-  const std::string want = lower(spec);
+  const std::string want = ascii_lower(spec);
   const auto catalog = spectral::page_catalog(paths);  // kept alive for the loop
   for (const auto& [page, e] : catalog->entries())
-    if (page.rfind("main/", 0) == 0 && (lower(e.book) == want || common_name(e.book_name) == want))
+    if (page.rfind("main/", 0) == 0 &&
+        (ascii_lower(e.book) == want || common_name(e.book_name) == want))
       return {"main/" + e.book, {"main/" + e.book + "/**"}};
   throw InputError(fmt::format(
       "--consensus '{}': no book of the main shelf has that symbol or name in {}/catalog-nk.yml",

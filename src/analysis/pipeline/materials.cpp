@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <set>
 
 #include "spectral/errors.h"
 #include "spectral/pages.h"
 #include "util/parallel.h"
+#include "util/suggest.h"
 
 namespace fl::analysis {
 namespace {
@@ -64,6 +66,37 @@ void add(MaterialSet& set, LoadedMaterial m, const std::string& spec, const Load
     set.skipped.push_back({spec, why});
 }
 
+// Every material of a document gets a name of its own: the same page or file named twice (a glob
+// and an explicit name) is kept once; two different materials with one name or key (Cu.csv in two
+// folders) are told apart by a numbered suffix on the later one, " (2)" and "_2", with a warning.
+void make_names_unique(MaterialSet& set) {
+  std::vector<LoadedMaterial> kept;
+  std::set<std::string> sources, names, keys;
+  for (auto& m : set.materials) {
+    auto& mat = m.material;
+    if (!sources.insert(mat.source).second) {
+      set.skipped.push_back({mat.key, "named more than once: kept once"});
+      continue;
+    }
+    const std::string first_name = mat.name;
+    for (int n = 2; names.count(ascii_lower(mat.name)); ++n)
+      mat.name = fmt::format("{} ({})", first_name, n);
+    const std::string first_key = mat.key;
+    for (int n = 2; keys.count(ascii_lower(mat.key)); ++n)
+      mat.key = fmt::format("{}_{}", first_key, n);
+    if (mat.name != first_name || mat.key != first_key)
+      m.warnings.push_back(
+          fmt::format("{}: another material is already named '{}': this one is "
+                      "'{}' here",
+                      mat.source, mat.name != first_name ? first_name : first_key,
+                      mat.name != first_name ? mat.name : mat.key));
+    names.insert(ascii_lower(mat.name));
+    keys.insert(ascii_lower(mat.key));
+    kept.push_back(std::move(m));
+  }
+  set.materials = std::move(kept);
+}
+
 }  // namespace
 
 MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& specs,
@@ -103,6 +136,7 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
     else
       set.skipped.push_back({requests[i].spec, slots[i].reason});
   }
+  make_names_unique(set);
   return set;
 }
 
