@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "analysis/pipeline/materials.h"
+#include "color/rgb_space.h"
 #include "draw/drawing.h"
 #include "fresnel_lab_version.h"
 #include "spectral/errors.h"
@@ -33,7 +34,7 @@ std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g,
                                                 const analysis::Context& ctx,
                                                 const std::vector<std::string>& specs) {
   analysis::LoadPolicy policy;
-  policy.min_coverage = std::max(0.0, g.min_coverage);
+  policy.min_coverage = g.min_coverage >= 0 ? g.min_coverage : analysis::kDefaultMinCoverage;
   auto set = analysis::load_materials(ctx, specs, policy);
   print_warnings(g, set.materials);
   for (const auto& s : set.skipped) progress(g, fmt::format("skipped {}: {}", s.spec, s.reason));
@@ -72,6 +73,23 @@ std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const st
     last->second = t;
     fmt::print(stderr, "{}{}/{} ({:.0f} s)\n", what, done, total, t);
   };
+}
+
+void require_output_folder(const std::string& path) {
+  const auto folder = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+    throw InputError(path, 0, "the folder " + folder.string() + " does not exist");
+}
+
+void emit(const GlobalOptions& g, const std::string& out, const std::string& text) {
+  if (out.empty()) {
+    fmt::print("{}", text);
+    return;
+  }
+  require_output_folder(out);
+  report::write_file_atomic(out, text);
+  progress(g, "wrote " + out);
 }
 
 int write_output(const GlobalOptions& g, const report::Output& out) {
@@ -154,8 +172,8 @@ void add_global_options(CLI::App& app, GlobalOptions& g) {
   app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
   app.add_option("--min-coverage", g.min_coverage,
                  "refuse (one material) or skip (several) materials whose data covers less than "
-                 "this share of the "
-                 "visible range, weighted by the illuminant x ybar (0-1; default 0, library 0.99)")
+                 "this share of the visible range, weighted by the illuminant x ybar (0-1; default "
+                 "0.99: a material measured over part of the visible is mostly extrapolation)")
       ->check(CLI::Range(0.0, 1.0));
 }
 
@@ -177,6 +195,9 @@ int run(int argc, char** argv) {
 
   add_global_options(app, g);
 
+  // Global options are accepted after the command as well as before it: a subcommand passes the
+  // options it does not know to the program (CLI11's fallthrough, inherited by every subcommand).
+  app.fallthrough();
   Runner selected;
   for (const auto& c : commands()) c.add(app, g, selected);
   try {
@@ -193,6 +214,9 @@ int run(int argc, char** argv) {
     return 2;
   }
   if (!selected) throw InputError("no command given (see --help)");
+  // A built-in space under any of its accepted names is known by its canonical one from here on.
+  if (s.ocio_config.empty())
+    if (const auto canonical = color::builtin_space_name(s.space)) s.space = *canonical;
   return selected();
 }
 

@@ -57,6 +57,12 @@ std::function<void(int, int)> study_progress(const GlobalOptions& g, const std::
 // every tenth of the work (and at least every `seconds`), with the elapsed time.
 std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const std::string& what,
                                                 double seconds = 30);
+// `text` on standard output when `out` is empty, else written to the file `out` atomically
+// (complete or not at all; InputError when its folder does not exist).
+void emit(const GlobalOptions& g, const std::string& out, const std::string& text);
+// InputError unless the folder that would hold the output file `path` exists (outputs never
+// create folders a typo named).
+void require_output_folder(const std::string& path);
 // Writes out.files (all or nothing), then prints out.messages; returns exit status 0.
 int write_output(const GlobalOptions& g, const report::Output& out);
 

@@ -37,7 +37,7 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
     selected = [&g, a] {
       const auto t0 = std::chrono::steady_clock::now();
       analysis::LoadPolicy policy;
-      policy.min_coverage = g.min_coverage >= 0 ? g.min_coverage : analysis::kLibraryMinCoverage;
+      policy.min_coverage = g.min_coverage >= 0 ? g.min_coverage : analysis::kDefaultMinCoverage;
       const std::vector<std::string> globs =
           a->globs.empty() ? std::vector<std::string>{"**"} : a->globs;
       const auto ctx = make_context(g);

@@ -113,26 +113,28 @@ std::vector<analysis::ConsensusRequest> requests_of(const GlobalOptions& g,
 }  // namespace
 
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
-                      const std::string& format, bool openpbr, const std::string& shader_name) {
+                      const std::string& format, bool openpbr, const std::string& shader_name,
+                      const std::string& out) {
   const bool document = format == "mtlx" || format == "gltf";
-  if (!document) report::format_from_name(format);  // validate before the work
   const auto shader = report::materialx_shader_from_name(!shader_name.empty() ? shader_name
                                                          : openpbr            ? "open_pbr_surface"
                                                                    : "generalized_schlick");
+  if (!out.empty()) require_output_folder(out);
   const auto requests = requests_of(g, specs);
   const auto ctx = make_context(g);
   analysis::StudyOptions options = analysis::presets_study_options(openpbr || document);
   const auto c =
       analysis::consensus_for(ctx, requests, options, periodic_progress(g, "consensus: reading "));
   if (document) {
-    fmt::print("{}", format == "mtlx" ? report::presets_materialx(ctx, c.set.studies, shader)
-                                      : report::presets_gltf(ctx, c.set.studies));
+    emit(g, out,
+         format == "mtlx" ? report::presets_materialx(ctx, c.set.studies, shader)
+                          : report::presets_gltf(ctx, c.set.studies));
     return 0;
   }
   auto t = openpbr ? analysis::openpbr_table(ctx, c.set.studies)
                    : analysis::presets_table(ctx, c.set.studies);
   analysis::add_uncertainty_columns(t, c.set);
-  fmt::print("{}", report::render(t, report::format_from_name(format)));
+  emit(g, out, report::render(t, report::format_from_name(format)));
   return 0;
 }
 

@@ -24,7 +24,8 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected);    //
 
 // `presets --consensus`: cli/cmd_library.cpp.
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
-                      const std::string& format, bool openpbr, const std::string& shader);
+                      const std::string& format, bool openpbr, const std::string& shader,
+                      const std::string& out);
 void add_consensus_command(CLI::App& app, GlobalOptions& g, Runner& selected);
 
 namespace {
@@ -96,11 +97,48 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
   });
 }
 
+// Refuses, before any work, a format no preset document has and options the format ignores.
+void check_preset_options(std::string& format, bool openpbr, const std::string& shader) {
+  format = report::preset_format_name(format);
+  if (openpbr && format == "gltf")
+    throw InputError(
+        "presets: --openpbr does not apply to --format gltf (glTF materials are "
+        "metallic-roughness; use mtlx, csv, md or json)");
+  if (!shader.empty() && format != "mtlx")
+    throw InputError("presets: --shader applies to --format mtlx only, not " + format);
+}
+
+// The presets of `specs` as text in `format` (a preset_format_name).
+std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& specs,
+                             const std::string& format, bool openpbr, const std::string& shader) {
+  const auto mtlx_shader = report::materialx_shader_from_name(!shader.empty() ? shader
+                                                              : openpbr       ? "open_pbr_surface"
+                                                                        : "generalized_schlick");
+  const auto ctx = make_context(g);
+  const auto ms = load_many(g, ctx, specs);
+  if (format == "mtlx" || format == "gltf") {
+    // Documents use the derived parameters only: no fits.
+    analysis::StudyOptions derived_only;
+    derived_only.fit = false;
+    const auto studies =
+        analysis::study_materials(ctx, ms, derived_only, study_progress(g, "deriving: "));
+    if (format == "mtlx" && !report::materialx_space(ctx).note.empty())
+      progress(g, "presets: " + report::materialx_space(ctx).note);
+    return format == "mtlx" ? report::presets_materialx(ctx, studies, mtlx_shader)
+                            : report::presets_gltf(ctx, studies);
+  }
+  const auto studies = analysis::study_materials(ctx, ms, analysis::presets_study_options(openpbr),
+                                                 study_progress(g, "fitting: "));
+  const auto t =
+      openpbr ? analysis::openpbr_table(ctx, studies) : analysis::presets_table(ctx, studies);
+  return report::render(t, report::format_from_name(format));
+}
+
 void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub =
       app.add_subcommand("presets", "F0, F82, g, eta, kappa per material in the working space");
   struct Args {
-    std::string format = "csv", shader;
+    std::string format = "csv", shader, out;
     bool openpbr = false;
     std::vector<std::string> materials, consensus;
   };
@@ -110,46 +148,28 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--format", a->format,
                   "csv, md, json, mtlx (a MaterialX document) or gltf (glTF 2.0 materials)")
       ->capture_default_str();
-  sub->add_flag("--openpbr", a->openpbr, "the OpenPBR Surface form (with mtlx: open_pbr_surface)");
+  sub->add_flag("--openpbr", a->openpbr,
+                "the OpenPBR Surface form (csv, md, json; with mtlx: open_pbr_surface)");
   sub->add_option("--shader", a->shader,
-                  "mtlx: generalized_schlick (default), open_pbr_surface or standard_surface");
+                  "mtlx only: generalized_schlick (default), open_pbr_surface or standard_surface");
+  sub->add_option("--out", a->out,
+                  "write to FILE (atomically: complete or not at all) instead of standard output");
   sub->add_option("--consensus", a->consensus,
                   "consensus presets instead, with their uncertainty: an element ('Au', 'gold'), a "
                   "page glob, or NAME=GLOB[,GLOB...] (repeatable; docs/consensus.md)");
   sub->callback([&g, &selected, a] {
+    check_preset_options(a->format, a->openpbr, a->shader);
     if (!a->consensus.empty()) {
       if (!a->materials.empty())
         throw InputError("presets: name MATERIALS or --consensus, not both");
       selected = [&g, a] {
-        return consensus_presets(g, a->consensus, a->format, a->openpbr, a->shader);
+        return consensus_presets(g, a->consensus, a->format, a->openpbr, a->shader, a->out);
       };
       return;
     }
+    if (!a->out.empty()) require_output_folder(a->out);
     selected = [&g, a] {
-      const bool document = a->format == "mtlx" || a->format == "gltf";
-      if (!document) report::format_from_name(a->format);  // validate before the work
-      const auto shader = report::materialx_shader_from_name(!a->shader.empty() ? a->shader
-                                                             : a->openpbr       ? "open_pbr_surface"
-                                                                          : "generalized_schlick");
-      const auto ctx = make_context(g);
-      const auto ms = load_many(g, ctx, a->materials);
-      if (document) {
-        // Documents use the derived parameters only: no fits.
-        analysis::StudyOptions derived_only;
-        derived_only.fit = false;
-        const auto studies =
-            analysis::study_materials(ctx, ms, derived_only, study_progress(g, "deriving: "));
-        fmt::print("{}", a->format == "mtlx" ? report::presets_materialx(ctx, studies, shader)
-                                             : report::presets_gltf(ctx, studies));
-        if (a->format == "mtlx" && !report::materialx_space(ctx).note.empty())
-          progress(g, "presets: " + report::materialx_space(ctx).note);
-        return 0;
-      }
-      const auto studies = analysis::study_materials(
-          ctx, ms, analysis::presets_study_options(a->openpbr), study_progress(g, "fitting: "));
-      const auto t = a->openpbr ? analysis::openpbr_table(ctx, studies)
-                                : analysis::presets_table(ctx, studies);
-      fmt::print("{}", report::render(t, report::format_from_name(a->format)));
+      emit(g, a->out, preset_documents(g, a->materials, a->format, a->openpbr, a->shader));
       return 0;
     };
   });

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "spectral/errors.h"
+#include "util/suggest.h"
 
 namespace fl::color {
 
@@ -33,13 +35,39 @@ double chromaticity_distance(const SpaceChromaticities& a, const SpaceChromatici
   return d;
 }
 
+// The built-in spaces and the other names people give them: OpenColorIO 2.1's built-in config
+// ("ACES - ACEScg", "Linear Rec.709 (sRGB)", ...) and common shorthands.
+const std::vector<NameChoice>& builtin_space_choices() {
+  static const std::vector<NameChoice> choices{
+      {"acescg", {"ACES - ACEScg", "ap1", "lin_ap1"}},
+      {"lin_rec709",
+       {"lin_srgb", "srgb_linear", "linear_srgb", "Linear Rec.709 (sRGB)", "lin_bt709",
+        "rec709_linear", "linear_rec709"}},
+      {"aces2065-1", {"ACES - ACES2065-1", "ap0", "lin_ap0"}},
+      {"lin_rec2020", {"Linear Rec.2020", "lin_bt2020", "rec2020_linear", "linear_rec2020"}},
+      {"lin_p3d65", {"Linear P3-D65", "lin_p3", "lin_displayp3", "linear_p3d65"}}};
+  return choices;
+}
+
 const std::vector<std::string>& builtin_space_names() {
-  static const std::vector<std::string> names{"acescg", "lin_rec709", "aces2065-1", "lin_rec2020",
-                                              "lin_p3d65"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto& c : builtin_space_choices()) out.push_back(c.name);
+    return out;
+  }();
   return names;
 }
 
-RgbSpace builtin_space(const std::string& name) {
+std::optional<std::string> builtin_space_name(const std::string& typed) {
+  return match_name(typed, builtin_space_choices());
+}
+
+RgbSpace builtin_space(const std::string& typed) {
+  const auto canonical = builtin_space_name(typed);
+  if (!canonical)
+    throw InputError(unknown_name_message("colour space", typed, builtin_space_choices()) +
+                     "; or give --ocio-config and a space of that config");
+  const std::string& name = *canonical;
   // Primaries: ACES S-2014-004 (AP1), S-2008-001 (AP0), ITU-R BT.709, BT.2020, SMPTE EG 432-1.
   const Chromaticity aces_white{0.32168, 0.33767}, d65{0.3127, 0.3290};
   auto make = [&](const char* desc, Chromaticity r, Chromaticity g, Chromaticity b,
@@ -68,10 +96,7 @@ RgbSpace builtin_space(const std::string& name) {
   if (name == "lin_p3d65")
     return make("linear Display P3 (P3 primaries, D65)", {0.680, 0.320}, {0.265, 0.690},
                 {0.150, 0.060}, d65);
-  throw InputError(
-      fmt::format("unknown colour space '{}' (expected one of: {}; or a space of an OCIO config "
-                  "with --ocio-config)",
-                  name, fmt::join(builtin_space_names(), ", ")));
+  throw std::logic_error("builtin_space: " + name + " has no primaries");
 }
 
 }  // namespace fl::color

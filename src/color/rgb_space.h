@@ -1,5 +1,6 @@
 #pragma once
 // Linear RGB working spaces: primaries, white, and their XYZ matrices.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,8 +36,12 @@ SpaceChromaticities chromaticities_of(const RgbSpace& space);
 // Largest difference in x or y between two sets of chromaticities.
 double chromaticity_distance(const SpaceChromaticities& a, const SpaceChromaticities& b);
 
-// acescg, lin_rec709, aces2065-1, lin_rec2020, lin_p3d65. Throws InputError for others.
+// acescg, lin_rec709, aces2065-1, lin_rec2020, lin_p3d65 (or an alias builtin_space_name
+// accepts). Throws InputError for others.
 RgbSpace builtin_space(const std::string& name);
 const std::vector<std::string>& builtin_space_names();
+// The built-in space `typed` names, ignoring case and accepting the usual aliases ("lin_srgb",
+// "ACES - ACEScg"); nullopt when it names none.
+std::optional<std::string> builtin_space_name(const std::string& typed);
 
 }  // namespace fl::color

@@ -8,14 +8,32 @@
 
 #include "documents/json.h"
 #include "spectral/errors.h"
+#include "util/suggest.h"
 
 namespace fl::report {
 
+namespace {
+const std::vector<NameChoice>& table_format_choices() {
+  static const std::vector<NameChoice> choices{{"csv", {}}, {"md", {"markdown"}}, {"json", {}}};
+  return choices;
+}
+const std::vector<NameChoice>& preset_format_choices() {
+  static const std::vector<NameChoice> choices{
+      {"csv", {}}, {"md", {"markdown"}}, {"json", {}}, {"mtlx", {"materialx"}}, {"gltf", {}}};
+  return choices;
+}
+}  // namespace
+
 Format format_from_name(const std::string& name) {
-  if (name == "csv") return Format::Csv;
-  if (name == "md" || name == "markdown") return Format::Markdown;
-  if (name == "json") return Format::Json;
-  throw InputError(fmt::format("unknown format '{}' (expected csv, md or json)", name));
+  const auto match = match_name(name, table_format_choices());
+  if (!match) throw InputError(unknown_name_message("format", name, table_format_choices()));
+  return *match == "csv" ? Format::Csv : *match == "md" ? Format::Markdown : Format::Json;
+}
+
+std::string preset_format_name(const std::string& name) {
+  const auto match = match_name(name, preset_format_choices());
+  if (!match) throw InputError(unknown_name_message("format", name, preset_format_choices()));
+  return *match;
 }
 
 const char* extension(Format f) {

@@ -6,6 +6,7 @@
 
 #include "fresnel/model_set.h"
 #include "spectral/errors.h"
+#include "util/suggest.h"
 
 namespace fl::fresnel {
 namespace {
@@ -140,12 +141,17 @@ const ModelSpec& model_spec(Model m) {
 }
 
 const ModelSpec& model_from_name(const std::string& name) {
-  std::string known;
+  // Names match ignoring case and '-' versus '_'; British spelling accepted.
+  std::vector<NameChoice> choices;
   for (const auto& s : model_specs()) {
-    if (name == s.name) return s;
-    known += (known.empty() ? "" : ", ") + std::string(s.name);
+    choices.push_back({s.name, {}});
+    if (std::string(s.name) == "generalized_schlick")
+      choices.back().aliases = {"generalised_schlick"};
   }
-  throw InputError(fmt::format("unknown model '{}' (expected one of: {})", name, known));
+  if (const auto match = match_name(name, choices))
+    for (const auto& s : model_specs())
+      if (*match == s.name) return s;
+  throw InputError(unknown_name_message("model", name, choices));
 }
 
 std::vector<color::Rgb> evaluate_curve(Model m, const std::vector<double>& params,

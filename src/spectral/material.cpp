@@ -82,8 +82,23 @@ void require_known_keys(const YamlNode& map, const std::vector<std::string>& kno
 
 // The keys a catalog entry may have; any other is an InputError at its line, suggesting the nearest
 // of these when one is close (a misspelt optional key would otherwise be silently ignored).
-const std::vector<std::string> kEntryKeys{
-    "name", "class", "reference", "order", "talk_schlick_rms_de00", "source", "file", "constant"};
+const std::vector<std::string> kEntryKeys{"name",      "class", "aliases",
+                                          "reference", "order", "talk_schlick_rms_de00",
+                                          "source",    "file",  "constant"};
+
+// An entry's `aliases`: a list of names (or one name), each a non-empty string.
+std::vector<std::string> entry_aliases(const YamlNode& root, const std::string& path) {
+  const YamlNode& n = root["aliases"];
+  if (!n) return {};
+  if (n.is_scalar()) return {n.scalar()};
+  std::vector<std::string> out;
+  if (n.is_sequence())
+    for (const auto& item : n.items())
+      if (item.is_scalar() && !item.scalar().empty()) out.push_back(item.scalar());
+  if (!n.is_sequence() || out.size() != n.items().size())
+    throw InputError(path, n.line() + 1, "field 'aliases' must be a list of names");
+  return out;
+}
 
 }  // namespace
 
@@ -110,6 +125,12 @@ void require_unique_names(const std::vector<std::string>& files, const std::vect
                        fmt::format("catalog key '{}' is also the key of {} (keys are compared "
                                    "ignoring case)",
                                    ms[i].key, files[it->second]));
+    for (const auto& alias : ms[i].aliases)
+      if (const auto [it, added] = names.emplace(lower(alias), i); !added)
+        throw InputError(files[i], 0,
+                         fmt::format("alias '{}' already names {} (names and aliases are compared "
+                                     "ignoring case)",
+                                     alias, files[it->second]));
     if (const auto [it, added] = names.emplace(lower(ms[i].name), i); !added) {
       const auto line = [](const std::string& f) { return read_yaml_file(f)["name"].line() + 1; };
       throw InputError(files[i], line(files[i]),
@@ -182,6 +203,7 @@ Material read_catalog_entry(const std::string& path, const DataPaths& paths) {
   Material m;
   m.key = fs::path(path).stem().string();
   m.name = scalar(root, "name", path, true);
+  m.aliases = entry_aliases(root, path);
   const std::string cls = scalar(root, "class", path, true);
   if (cls == "metal")
     m.material_class = MaterialClass::Metal;
@@ -209,33 +231,65 @@ std::vector<Material> read_catalog(const DataPaths& paths) {
 
 namespace {
 
-// The catalog entry whose key or display name is `spec` (ignoring case), if any.
+// The names that select each catalog entry: its key (file stem), `name` and `aliases`. A file that
+// cannot be read as YAML is selected by its key only; the entry that matches is then read with
+// every error it has.
+std::vector<std::pair<std::string, std::vector<std::string>>> catalog_names(
+    const std::string& folder) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> out;
+  for (const auto& f : catalog_files(folder)) {
+    std::vector<std::string> names{fs::path(f).stem().string()};
+    try {
+      const YamlNode root = read_yaml_file(f);
+      if (root.is_map() && root["name"] && root["name"].is_scalar())
+        names.push_back(root["name"].scalar());
+      if (root.is_map()) {
+        const auto aliases = entry_aliases(root, f);
+        names.insert(names.end(), aliases.begin(), aliases.end());
+      }
+    } catch (const YamlError&) {
+    } catch (const InputError&) {
+    }
+    out.emplace_back(f, std::move(names));
+  }
+  return out;
+}
+
+// " (did you mean 'X'?)" for an unknown material: the nearest catalog name, or for a page path the
+// nearest page on the same shelf and book ("main/Au/nk/Johnston", "main/Au/Johnson").
+std::string material_hint(const std::string& spec, const DataPaths& paths) {
+  std::vector<std::string> candidates;
+  std::error_code ec;
+  if (spec.find('/') == std::string::npos) {
+    if (fs::is_directory(paths.materials, ec))
+      for (const auto& [file, names] : catalog_names(paths.materials))
+        candidates.insert(candidates.end(), names.begin(), names.end());
+  } else {
+    const auto first = spec.find('/'), second = spec.find('/', first + 1);
+    const std::string book = spec.substr(0, second);
+    if (fs::is_directory(paths.database + "/data/" + book, ec))
+      candidates = list_pages(paths.database, book);
+  }
+  return did_you_mean(spec, candidates);
+}
+
+// The catalog entry whose key, display name or alias is `spec` (ignoring case), if any.
 std::optional<Material> find_in_catalog(const std::string& spec, const DataPaths& paths) {
   std::error_code ec;
   if (!fs::is_directory(paths.materials, ec)) return std::nullopt;
   const std::string want = lower(spec);
-  const std::vector<std::string> files = catalog_files(paths.materials);
-  for (const auto& f : files)
-    if (lower(fs::path(f).stem().string()) == want) return read_catalog_entry(f, paths);
   std::vector<std::string> named;
-  for (const auto& f : files) {
-    // A file that cannot be read as YAML names nothing here; the entry that matches is then read
-    // with every error it has.
-    try {
-      const YamlNode root = read_yaml_file(f);
-      if (root.is_map() && root["name"] && lower(root["name"].as_string()) == want)
-        named.push_back(f);
-    } catch (const YamlError&) {
-    } catch (const InputError&) {
-    }
-  }
+  for (const auto& [file, names] : catalog_names(paths.materials))
+    if (std::any_of(names.begin(), names.end(),
+                    [&](const std::string& n) { return lower(n) == want; }))
+      named.push_back(file);
   if (named.size() > 1) {
     std::vector<Material> ms;
     for (const auto& f : named) ms.push_back(read_catalog_entry(f, paths));
     require_unique_names(named, ms);
   }
-  if (!named.empty()) return read_catalog_entry(named.front(), paths);
-  return std::nullopt;
+  if (named.empty()) return std::nullopt;
+  return read_catalog_entry(named.front(), paths);
 }
 
 // A material file: a catalog entry, a refractiveindex.info page or a table of optical constants.
@@ -262,7 +316,7 @@ Material read_material_file(const std::string& spec, const DataPaths& paths) {
 
 Material resolve_material(const std::string& spec, const DataPaths& paths) {
   if (spec.empty()) throw InputError("empty material name");
-  // A catalog key or display name.
+  // A catalog key, display name or alias.
   if (auto m = find_in_catalog(spec, paths)) return *std::move(m);
   // A file path.
   std::error_code ec;
@@ -281,8 +335,8 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
         fmt::format("no such file (nor a catalog name in {} or a database page under {}/data)",
                     paths.materials, paths.database));
   throw InputError(fmt::format(
-      "unknown material '{}': not a catalog name in {}, a file, or a database page under {}/data",
-      spec, paths.materials, paths.database));
+      "unknown material '{}'{}: not a catalog name in {}, a file, or a database page under {}/data",
+      spec, material_hint(spec, paths), paths.materials, paths.database));
 }
 
 std::shared_ptr<const PageCatalog> page_catalog(const DataPaths& paths) {

@@ -17,6 +17,7 @@ struct Material {
   Origin origin = Origin::Catalog;
   std::string key;   // catalog file stem ("gold"), or the argument it was loaded from
   std::string name;  // display name ("Gold")
+  std::vector<std::string> aliases;  // other names that select a catalog entry ("Au", "aluminium")
   MaterialClass material_class = MaterialClass::Metal;
   std::string source;     // database page, file path or "constant n=…"
   std::string reference;  // citation of the data

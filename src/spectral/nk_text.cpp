@@ -418,14 +418,38 @@ OpticalConstants read_spd_pair(const std::string& path, const UsedRange& used) {
   return oc;
 }
 
+namespace {
+
+// A user's table of n without k whose n drops below 1 in the visible (380-780 nm) is a metal's or
+// a semiconductor's n with its k left behind: no lossless material has a phase index below 1
+// there, and read as one it would be a "dielectric" of F0 ≈ 0.16. InputError naming what is
+// missing.
+void require_k_where_n_below_one(const OpticalConstants& oc, bool spd_pair) {
+  for (const auto& b : oc.blocks)
+    if (b.kind != DispersionBlock::Kind::TabulatedN) return;
+  for (const auto& b : oc.blocks)
+    for (std::size_t i = 0; i < b.lambda_nm.size(); ++i)
+      if (b.lambda_nm[i] >= 380 && b.lambda_nm[i] <= 780 && b.n[i] < 1)
+        throw InputError(
+            oc.file, b.line,
+            fmt::format("n is {:g} at {:g} nm and there is no k: no lossless material has n below "
+                        "1 in the visible, so this is an absorbing material's n without its k ({})",
+                        b.n[i], b.lambda_nm[i],
+                        spd_pair ? "add NAME.k.spd beside NAME.eta.spd"
+                                 : "add a k column: wavelength, n, k"));
+}
+
+}  // namespace
+
 OpticalConstants read_optical_file(const std::string& path, const UsedRange& used) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".yml" || ext == ".yaml") return read_refractiveindex_file(path, used);
   if (ext == ".nk") return read_sopra_nk(path, used);
-  if (ext == ".spd") return read_spd_pair(path, used);
-  return read_nk_table(path, used);
+  OpticalConstants oc = ext == ".spd" ? read_spd_pair(path, used) : read_nk_table(path, used);
+  require_k_where_n_below_one(oc, ext == ".spd");
+  return oc;
 }
 
 }  // namespace fl::spectral

@@ -9,6 +9,13 @@ char fold(char c) {
   return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
 }
 
+// The spelling names are compared in: ASCII lower case, '-' and ' ' as '_'.
+std::string folded_name(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = c == '-' || c == ' ' ? '_' : fold(c);
+  return out;
+}
+
 }  // namespace
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
@@ -48,6 +55,41 @@ std::optional<std::string> closest_match(std::string_view name,
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates) {
   const auto match = closest_match(name, candidates);
   return match ? " (did you mean '" + *match + "'?)" : std::string();
+}
+
+std::optional<std::string> match_name(std::string_view typed,
+                                      const std::vector<NameChoice>& choices) {
+  const std::string want = folded_name(typed);
+  for (const auto& c : choices) {
+    if (folded_name(c.name) == want) return c.name;
+    for (const auto& a : c.aliases)
+      if (folded_name(a) == want) return c.name;
+  }
+  return std::nullopt;
+}
+
+std::string unknown_name_message(std::string_view what, std::string_view typed,
+                                 const std::vector<NameChoice>& choices) {
+  std::vector<std::string> spellings, names;
+  std::vector<const std::string*> stands_for;
+  for (const auto& c : choices) {
+    names.push_back(c.name);
+    spellings.push_back(folded_name(c.name));
+    stands_for.push_back(&c.name);
+    for (const auto& a : c.aliases) {
+      spellings.push_back(folded_name(a));
+      stands_for.push_back(&c.name);
+    }
+  }
+  std::string message = "unknown " + std::string(what) + " '" + std::string(typed) + "'";
+  if (const auto close = closest_match(folded_name(typed), spellings)) {
+    const auto at = std::find(spellings.begin(), spellings.end(), *close) - spellings.begin();
+    message += ": did you mean '" + *stands_for[static_cast<std::size_t>(at)] + "'?";
+  }
+  message += " (expected ";
+  for (std::size_t i = 0; i < names.size(); ++i)
+    message += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return message + ")";
 }
 
 }  // namespace fl

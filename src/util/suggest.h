@@ -26,4 +26,21 @@ std::optional<std::string> closest_match(std::string_view name,
 // error message.
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates);
 
+// A name a user may type for one thing: its canonical spelling and the other spellings accepted
+// for it ("aluminium" for "aluminum", "lin_srgb" for "lin_rec709").
+struct NameChoice {
+  std::string name;
+  std::vector<std::string> aliases;
+};
+
+// The canonical name `typed` stands for: equal to a choice's name or one of its aliases, ignoring
+// ASCII case and treating '-', '_' and ' ' as one character; nullopt when none is.
+std::optional<std::string> match_name(std::string_view typed,
+                                      const std::vector<NameChoice>& choices);
+
+// "unknown WHAT 'TYPED' (expected a, b or c)", with ": did you mean 'X'?" after the name when a
+// name or alias is close (an alias that is close suggests the name it stands for).
+std::string unknown_name_message(std::string_view what, std::string_view typed,
+                                 const std::vector<NameChoice>& choices);
+
 }  // namespace fl

@@ -89,7 +89,8 @@ TEST(MaterialsCli, GlobsExpandToSortedPagesAndAGlobMatchingNothingIsAnError) {
 
 // main/Au/nk/Ordal measures 667 nm and up: its gold is held grey below. Every output says so.
 TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesOneAndSkipsMany) {
-  const auto r = run_command(cli() + " -q presets main/Au/nk/Ordal main/Au/nk/Johnson");
+  const auto r =
+      run_command(cli() + " -q --min-coverage 0 presets main/Au/nk/Ordal main/Au/nk/Johnson");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = csv_records(r.out);
   ASSERT_EQ(rows.size(), 2u);
@@ -97,9 +98,10 @@ TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesOneAndSkipsMany) {
   EXPECT_EQ(rows[0].at("extrapolated"), "yes");
   EXPECT_EQ(rows[1].at("coverage"), "1.0000");
   EXPECT_EQ(rows[1].at("extrapolated"), "no");
-  const auto json = run_command(cli() + " -q presets main/Au/nk/Ordal --format json");
+  const auto json =
+      run_command(cli() + " -q --min-coverage 0 presets main/Au/nk/Ordal --format json");
   EXPECT_NE(json.out.find("\"extrapolated\": \"yes\""), std::string::npos) << json.out;
-  const auto md = run_command(cli() + " -q curve main/Au/nk/Ordal --format md");
+  const auto md = run_command(cli() + " -q --min-coverage 0 curve main/Au/nk/Ordal --format md");
   EXPECT_NE(md.out.find("main/Au/nk/Ordal: extrapolated, n and k data does not cover 360-665 nm"),
             std::string::npos);
 

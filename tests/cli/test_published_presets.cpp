@@ -62,8 +62,8 @@ std::map<std::string, Preset> run_presets(const std::string& options) {
              "name: " + pages[i][0] + "\nclass: metal\norder: " + std::to_string(i) +
                  "\nsource: \"" + pages[i][1] + "\"\n");
   const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB +
-                                   "' --materials '" + dir.path() + "/catalog' " + options +
-                                   " presets --openpbr --format csv");
+                                   "' --materials '" + dir.path() + "/catalog' --min-coverage 0 " +
+                                   options + " presets --openpbr --format csv");
   EXPECT_EQ(r.status, 0) << r.err;
   std::map<std::string, Preset> out;
   const auto rows = test::csv_rows(r.out);
@@ -162,8 +162,9 @@ TEST(PublishedPresets, DatabasePagesNamedDirectlyMatchPhysicallyBasedInAcescg) {
     metal_of[pages[i][1]] = pages[i][0];
     args += " '" + pages[i][1] + "'";
   }
-  const auto r = test::run_command(std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB +
-                                   "' --space acescg --illuminant D60 presets --format csv" + args);
+  const auto r = test::run_command(
+      std::string("'") + FL_CLI + "' -q --db '" + FL_DEFAULT_DB +
+      "' --space acescg --illuminant D60 --min-coverage 0 presets --format csv" + args);
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = test::csv_rows(r.out);
   ASSERT_GE(rows.size(), 1u);

@@ -192,7 +192,8 @@ std::vector<std::string> doc_attributes(const std::string& mtlx) {
 TEST(Exports, ProvenanceStatesSourceCoverageAndExtrapolation) {
   test::TempDir tmp;
   const std::string full = tmp.file("full.csv", "lambda_nm,n\n350,1.52\n600,1.51\n850,1.50\n");
-  const std::string args = "--space lin_rec709 presets main/Au/nk/Chen '" + full + "' --format ";
+  const std::string args =
+      "--space lin_rec709 --min-coverage 0 presets main/Au/nk/Chen '" + full + "' --format ";
   const auto table = csv_rows(run_ok(args + "csv"));
   const auto mtlx = run_ok(args + "mtlx");
   const auto gltf = nlohmann::json::parse(run_ok(args + "gltf"));

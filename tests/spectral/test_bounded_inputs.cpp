@@ -109,10 +109,11 @@ TEST(StrictCatalog, UnknownKeysNameTheLineAndTheNearestKnownKey) {
   EXPECT_EQ(input_error([&] { read_catalog_entry(typo, paths); }),
             typo + ":4: unknown key 'refrence' in a catalog entry (did you mean 'reference'?)");
   const std::string far = tmp.file("far.yml", "name: T\nclass: dielectric\ncolour: red\n");
-  EXPECT_EQ(input_error([&] { read_catalog_entry(far, paths); }),
-            far +
-                ":3: unknown key 'colour' in a catalog entry (expected name, class, reference, "
-                "order, talk_schlick_rms_de00, source, file, constant)");
+  EXPECT_EQ(
+      input_error([&] { read_catalog_entry(far, paths); }),
+      far +
+          ":3: unknown key 'colour' in a catalog entry (expected name, class, aliases, reference, "
+          "order, talk_schlick_rms_de00, source, file, constant)");
   const std::string inner =
       tmp.file("inner.yml", "name: T\nclass: dielectric\nconstant:\n  n: 1.5\n  kappa: 0\n");
   EXPECT_EQ(input_error([&] { read_catalog_entry(inner, paths); }),

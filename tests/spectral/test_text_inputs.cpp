@@ -47,9 +47,14 @@ TEST(TextInputs, TablesWithAnyReasonableHeader) {
 
 TEST(TextInputs, KIsOptionalForDielectrics) {
   test::TempDir tmp;
-  expect_reference_data(
-      read_optical_file(tmp.file("n.csv", "wavelength_nm,n\n400,0.5\n500,0.6\n700,0.8\n")),
-      "n only", false);
+  const auto oc =
+      read_optical_file(tmp.file("n.csv", "wavelength_nm,n\n400,1.5\n500,1.6\n700,1.8\n"));
+  ASSERT_EQ(oc.blocks.size(), 1u);
+  EXPECT_EQ(oc.blocks[0].kind, DispersionBlock::Kind::TabulatedN);
+  EXPECT_EQ(oc.blocks[0].n, (std::vector<double>{1.5, 1.6, 1.8}));
+  // n below 1 in the visible without k is an absorbing material's n whose k column was dropped.
+  EXPECT_THROW(read_optical_file(tmp.file("m.csv", "wavelength_nm,n\n400,0.5\n500,0.6\n700,0.8\n")),
+               InputError);
 }
 
 // refractiveindex.info's "CSV" download: n rows under `wl,n`, then k rows under `wl,k`, in µm.
@@ -115,8 +120,19 @@ TEST(TextInputs, SpdPairs) {
   const auto k = tmp.file("Au.k.spd", "400 2.0 500 2.5\n700 3.5\n");
   expect_reference_data(read_optical_file(k), "k.spd");
   expect_reference_data(read_optical_file(tmp.path() + "/Au.eta.spd"), "eta.spd");
-  expect_reference_data(read_optical_file(tmp.file("Glass.eta.spd", "400 0.5\n500 0.6\n700 0.8\n")),
-                        "no k", false);
+  // A lone NAME.eta.spd is a lossless material's n (k = 0)...
+  const auto glass = read_optical_file(tmp.file("Glass.eta.spd", "400 1.5\n500 1.6\n700 1.8\n"));
+  ASSERT_EQ(glass.blocks.size(), 1u);
+  EXPECT_EQ(glass.blocks[0].kind, DispersionBlock::Kind::TabulatedN);
+  EXPECT_EQ(glass.blocks[0].n, (std::vector<double>{1.5, 1.6, 1.8}));
+  // ...unless n falls below 1 in the visible: a metal's n whose k file is missing.
+  try {
+    read_optical_file(tmp.file("Metal.eta.spd", "400 0.5\n500 0.6\n700 0.8\n"));
+    ADD_FAILURE() << "a lone .eta.spd with n < 1 was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("n is 0.5 at 400 nm and there is no k"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -27,10 +27,19 @@ std::vector<Cell> page_row(const std::string& page, const spectral::PageEntry* e
 
 }  // namespace
 
+namespace {
+// The listing shows every page, whatever it covers: coverage is one of its columns.
+LoadPolicy every_page() {
+  LoadPolicy p;
+  p.min_coverage = 0;
+  return p;
+}
+}  // namespace
+
 Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
                   const std::function<void(int, int)>& progress) {
-  const auto set =
-      load_materials(ctx, globs.empty() ? std::vector<std::string>{"**"} : globs, {}, progress);
+  const auto set = load_materials(ctx, globs.empty() ? std::vector<std::string>{"**"} : globs,
+                                  every_page(), progress);
   Table t;
   t.name = "pages";
   t.title = "Database pages";

@@ -21,12 +21,11 @@ Table pages_table(const Context& ctx, const std::vector<std::string>& globs,
                   const std::function<void(int, int)>& progress = {});
 
 // A library covers "a visible range": at least this share (Coverage::both), by default.
-constexpr double kLibraryMinCoverage = 0.99;
 
 struct LibraryOptions {
   std::vector<std::string> globs{"**"};
   std::optional<spectral::MaterialClass> only = spectral::MaterialClass::Metal;
-  double min_coverage = kLibraryMinCoverage;
+  double min_coverage = kDefaultMinCoverage;
   bool strict = false;  // a page that cannot be read is an error instead of a skip
 };
 

@@ -10,10 +10,14 @@
 
 namespace fl::analysis {
 
+// The share of the visible range (weighted by the illuminant × ȳ) a material's data must cover
+// by default: below it, most of what a preset or table shows would be extrapolated.
+constexpr double kDefaultMinCoverage = 0.99;
+
 struct LoadPolicy {
   // Coverage::both below this: an InputError for a single named material, skipped (with the
   // reason) when there are several.
-  double min_coverage = 0.0;
+  double min_coverage = kDefaultMinCoverage;
   // A page matched by a glob that cannot be read is skipped with its reason unless strict. A
   // material named on its own is always an error when it cannot be read.
   bool strict = false;

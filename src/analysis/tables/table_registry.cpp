@@ -8,6 +8,7 @@
 #include "analysis/tables/tables.h"
 #include "spectral/errors.h"
 #include "util/parallel.h"
+#include "util/suggest.h"
 
 namespace fl::analysis {
 
@@ -93,12 +94,12 @@ const std::vector<TableSpec>& table_specs() {
 }
 
 const TableSpec& find_table(const std::string& name) {
-  std::string known;
-  for (const auto& t : table_specs()) {
-    if (name == t.name) return t;
-    known += (known.empty() ? "" : ", ") + std::string(t.name);
-  }
-  throw InputError(fmt::format("unknown table '{}' (expected one of: {})", name, known));
+  std::vector<NameChoice> choices;
+  for (const auto& t : table_specs()) choices.push_back({t.name, {}});
+  if (const auto match = match_name(name, choices))
+    for (const auto& t : table_specs())
+      if (*match == t.name) return t;
+  throw InputError(unknown_name_message("table", name, choices));
 }
 
 }  // namespace fl::analysis
