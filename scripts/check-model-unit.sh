@@ -40,8 +40,10 @@ printf 'node_modules\nbuild/\n' >> .git/info/exclude
 # the model's name and its helpers model → model_copy, so both files can be included together.
 type=$(awk '/^namespace models/ { m = 1 } m && /^struct [A-Za-z0-9_]+ \{/ { print $2; exit }' "$unit")
 [ -n "$type" ] || { echo "check-model-unit: no unit struct in $unit" >&2; exit 2; }
-# One pass per name, prefixes first, so that no name is renamed twice.
-sed -E -e "s/\\b${model}(_|\\b)/${copy}\\1/g" -e "s/\\b(k?)${type}([A-Z]|\\b)/\\1${type}Copy\\2/g" \
+# One pass per name, prefixes and whole words together, so that no name is renamed twice; names
+# qualified by another scope (Term::Schlick, a table term) are kept.
+sed -E -e "s/::${type}\\b/::@KEEP@/g" -e "s/\\b${model}(_|\\b)/${copy}\\1/g" \
+  -e "s/\\b(k?)${type}([A-Z]|\\b)/\\1${type}Copy\\2/g" -e "s/::@KEEP@/::${type}/g" \
   "$unit" > "src/fresnel/models/$copy.h"
 # One entry in the registry (and its include).
 sed -i "s|#include \"fresnel/models/$model.h\"|&\n#include \"fresnel/models/$copy.h\"|" \
