@@ -42,6 +42,9 @@ void add_pages_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
 
 namespace {
 
+// The file that marks a folder `library` wrote, so a rerun may replace it.
+constexpr const char* kLibraryMarker = ".fresnel-lab-library";
+
 std::optional<spectral::MaterialClass> class_option(const std::string& name) {
   if (name == "metal") return spectral::MaterialClass::Metal;
   if (name == "dielectric") return spectral::MaterialClass::Dielectric;
@@ -65,13 +68,16 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto a = std::make_shared<Args>();
   sub->add_option("GLOB", a->globs,
                   "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
-  sub->add_option("--out", a->out, "output folder (created if missing)")->required();
+  sub->add_option("--out", a->out,
+                  "output folder, replaced as a whole (new, empty, or one `library` wrote)")
+      ->required();
   sub->add_option("--class", a->cls, "metal (conductors, from the data), dielectric or all")
       ->capture_default_str();
   sub->add_flag("--strict", a->strict,
                 "fail on the first page that cannot be read instead of skipping it");
   sub->add_flag("--no-gallery", a->no_gallery, "skip gallery.md and its strips/");
   sub->callback([&g, &selected, a] {
+    report::require_replaceable_folder(a->out, kLibraryMarker);
     selected = [&g, a] {
       analysis::LibraryOptions o;
       o.only = class_option(a->cls);
@@ -87,9 +93,8 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       command += " library";
       for (const auto& glob : o.globs) command += " '" + glob + "'";
       command += " --class " + a->cls + (a->strict ? " --strict" : "");
-      auto files = report::library_files(ctx, lib, !a->no_gallery, command);
-      for (auto& f : files) f.first = a->out + "/" + f.first;
-      report::write_files_atomic(files);
+      const auto files = report::library_files(ctx, lib, !a->no_gallery, command);
+      report::replace_folder_atomic(a->out, files, kLibraryMarker);
       progress(
           g,
           fmt::format(

@@ -63,6 +63,46 @@ void write_file_atomic(const std::string& path, const std::string& content) {
   write_files_atomic({{path, content}});
 }
 
+void require_replaceable_folder(const std::string& folder, const std::string& marker) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(folder, ec)) return;
+  if (!fs::is_directory(folder, ec)) throw InputError(folder, 0, "exists and is not a folder");
+  if (fs::exists(fs::path(folder) / marker, ec) || fs::is_empty(folder, ec)) return;
+  throw InputError(folder, 0,
+                   fmt::format("not empty and not a folder Fresnel Lab wrote (no {}): choose a new "
+                               "or empty folder, nothing of it is replaced",
+                               marker));
+}
+
+void replace_folder_atomic(const std::string& folder, const Files& files,
+                           const std::string& marker) {
+  namespace fs = std::filesystem;
+  require_replaceable_folder(folder, marker);
+  const fs::path target = fs::path(folder).lexically_normal();
+  const std::string suffix = fmt::format(".{}", static_cast<long>(::getpid()));
+  const fs::path fresh = target.string() + ".new" + suffix, old = target.string() + ".old" + suffix;
+  std::error_code ec;
+  fs::remove_all(fresh, ec);
+  try {
+    Files inside{{(fresh / marker).string(), ""}};
+    for (const auto& [path, bytes] : files) inside.emplace_back((fresh / path).string(), bytes);
+    write_files_atomic(inside);
+  } catch (...) {
+    fs::remove_all(fresh, ec);
+    throw;
+  }
+  const bool had_old = fs::exists(target, ec);
+  if (had_old) fs::rename(target, old);
+  fs::rename(fresh, target, ec);
+  if (ec) {
+    if (had_old) fs::rename(old, target);
+    throw std::runtime_error(
+        fmt::format("{}: cannot move the finished folder into place: {}", folder, ec.message()));
+  }
+  if (had_old) fs::remove_all(old, ec);
+}
+
 std::string file_list(const Files& files) {
   std::string out;
   for (size_t i = 0; i < files.size(); ++i)

@@ -16,6 +16,15 @@ using Files = std::vector<std::pair<std::string, std::string>>;
 void write_files_atomic(const Files& path_and_content);
 void write_file_atomic(const std::string& path, const std::string& content);  // one file
 
+// A folder of outputs replaced as a whole: `files` (paths relative to `folder`) plus an empty
+// `marker` file are written to a new folder beside it, which then takes the place of `folder`, so
+// a rerun leaves no stale file of the previous one and a failure leaves the previous one intact.
+// An existing `folder` must be empty or hold `marker` (a folder this writer made): anything else
+// is an InputError, checked by require_replaceable_folder before the work.
+void replace_folder_atomic(const std::string& folder, const Files& files,
+                           const std::string& marker);
+void require_replaceable_folder(const std::string& folder, const std::string& marker);
+
 // What a command produces: its files, and the lines to show on stderr once they are written.
 struct Output {
   Files files;

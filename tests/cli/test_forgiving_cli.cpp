@@ -135,6 +135,29 @@ TEST(ForgivingCli, DocumentNamesAreUnique) {
   EXPECT_EQ(names, (std::vector<std::string>{"main/Au/nk/Johnson", "Cu", "Cu (2)"}));
 }
 
+// library --out replaces its folder as a whole: no stale file of an earlier run survives, and a
+// folder it did not write is refused before any work.
+TEST(ForgivingCli, LibraryReplacesItsFolderAndRefusesAForeignOne) {
+  test::TempDir tmp;
+  const std::string out = tmp.path() + "/lib";
+  ASSERT_EQ(run_command(cli() + " -q library 'main/Au/nk/Johnson' --no-gallery --out '" + out + "'")
+                .status,
+            0);
+  tmp.file("lib/stale.csv", "old\n");
+  ASSERT_EQ(run_command(cli() + " -q library 'main/Ag/nk/Johnson' --no-gallery --out '" + out + "'")
+                .status,
+            0);
+  EXPECT_FALSE(std::filesystem::exists(out + "/stale.csv"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/library.csv"));
+  const std::string foreign = tmp.file("mine/notes.txt", "keep me\n");
+  const auto r =
+      run_command(cli() + " library 'main/Ag/nk/Johnson' --out '" + tmp.path() + "/mine'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("not empty and not a folder Fresnel Lab wrote"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(foreign));
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/mine/library.csv"));
+}
+
 TEST(NameChoice, MatchesIgnoringCaseAndSeparatorsAndSuggestsTheCanonicalName) {
   const std::vector<NameChoice> choices{{"lin_rec709", {"lin_srgb"}}, {"acescg", {}}};
   EXPECT_EQ(match_name("LIN-SRGB", choices), "lin_rec709");
