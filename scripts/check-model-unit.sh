@@ -11,7 +11,10 @@
 # Environment: FL_CHECK_DIR (scratch folder, default /tmp/fresnel-lab-check-model-unit; a fixed
 # path, so that ccache hits on the next run; kept when a step fails), FL_CHECK_KEEP=1 keeps it
 # always, FL_CHECK_JOBS
-# (default 2). Exit status: 0 when every step passes, 1 otherwise.
+# (default 2), FL_CHECK_SANITIZE=1 builds the copy with ASan + UBSan and runs its whole suite
+# through the copy's scripts/test-sanitize.sh (every target), then the commands with the sanitized
+# binary: CI's sanitizer pass and this check in one build. Exit status: 0 when every step passes,
+# 1 otherwise.
 set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"
 model="${1:-schlick}"
@@ -116,17 +119,32 @@ lut() {
     shows "$out/lut-accuracy.md" "$copy"
 }
 suite() { ctest --test-dir build -j"$jobs" --output-on-failure; }
+sanitize="${FL_CHECK_SANITIZE:-0}"
+if [ "$sanitize" = 1 ]; then
+  # The commands below run the sanitized binary: leaks in system libraries as test-sanitize.sh
+  # suppresses them.
+  export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
+  export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$repo/scripts/lsan.supp:print_suppressions=0}"
+  export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+fi
 
 echo "steps (logs in $scratch/NAME.log):"
-step build build
+if [ "$sanitize" = 1 ]; then
+  step asan-suite scripts/test-sanitize.sh build
+  grep -E "tests passed|tests failed" "$scratch/asan-suite.log" | sed 's/^/  ctest: /' || true
+else
+  step build build
+fi
 if [ "$failures" = 0 ]; then
   step reproduce reproduce
   step table-speed speed
   step plan plan
   step shader shader
   step lut lut
-  step ctest suite
-  grep -E "tests passed|tests failed" "$scratch/ctest.log" | sed 's/^/  ctest: /' || true
+  if [ "$sanitize" != 1 ]; then
+    step ctest suite
+    grep -E "tests passed|tests failed" "$scratch/ctest.log" | sed 's/^/  ctest: /' || true
+  fi
 fi
 [ "$touched" = 2 ] || { echo "files touched: $touched, expected 2"; failures=$((failures + 1)); }
 echo "check-model-unit: $([ "$failures" = 0 ] && echo PASS || echo "FAIL ($failures)"), $(($(date +%s) - start)) s"

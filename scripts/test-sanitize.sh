@@ -3,9 +3,11 @@
 # (FRESNEL_LAB_SANITIZE=ON, build-asan/). Any report fails the run: UBSan does not recover
 # (-fno-sanitize-recover=undefined), ASan and LeakSanitizer exit non-zero, and the CLI tests see
 # the sanitized fresnel-lab's stderr and exit status.
+#   scripts/test-sanitize.sh [BUILD_DIR]    default build-asan
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
+build="${1:-build-asan}"
 # Leak suppressions: scripts/lsan.supp (third-party libraries only; each entry says why).
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:check_initialization_order=1:strict_init_order=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
@@ -17,8 +19,8 @@ export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/scripts/lsan.supp:print_s
 # both sides agree.
 # Debug information is line tables only (-g1): reports still name file and line, and the build
 # takes a third less time than with full debug information.
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRESNEL_LAB_SANITIZE=ON \
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRESNEL_LAB_SANITIZE=ON \
   -DCMAKE_CXX_FLAGS="-DEIGEN_MALLOC_ALREADY_ALIGNED=1" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
-cmake --build build-asan -j"$(nproc)"
-ctest --test-dir build-asan --output-on-failure -j"$(nproc)" --timeout 900
+cmake --build "$build" -j"$(nproc)"
+ctest --test-dir "$build" --output-on-failure -j"$(nproc)" --timeout 900
 echo "test-sanitize: ASan + UBSan suite passed in $(( $(date +%s) - start )) s" >&2
