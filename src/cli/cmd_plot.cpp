@@ -98,6 +98,7 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->callback([&g, &selected, r] {
     selected = [&g, r] {
       report::check_render_request(*r);
+      r->settings.progress = periodic_progress(g, "render: rows ");
       const auto ctx = make_context(g);
       return write_output(g, report::render_outputs(ctx, load_many(g, ctx, r->materials), *r));
     };

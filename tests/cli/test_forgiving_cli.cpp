@@ -158,6 +158,20 @@ TEST(ForgivingCli, LibraryReplacesItsFolderAndRefusesAForeignOne) {
   EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/mine/library.csv"));
 }
 
+// render reports its progress on stderr (a line per tenth of the rows when stderr is a file);
+// -q silences it.
+TEST(ForgivingCli, RenderReportsProgressUnlessQuiet) {
+  test::TempDir tmp;
+  const std::string args = " render gold --size 41 --samples 2 --out '" + tmp.path() + "/g.exr'";
+  const auto r = run_command(cli() + args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("render: rows 41/41"), std::string::npos) << r.err;
+  EXPECT_GE(std::count(r.err.begin(), r.err.end(), '\n'), 10) << r.err;
+  const auto quiet = run_command(cli() + " -q" + args);
+  ASSERT_EQ(quiet.status, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+}
+
 TEST(NameChoice, MatchesIgnoringCaseAndSeparatorsAndSuggestsTheCanonicalName) {
   const std::vector<NameChoice> choices{{"lin_rec709", {"lin_srgb"}}, {"acescg", {}}};
   EXPECT_EQ(match_name("LIN-SRGB", choices), "lin_rec709");

@@ -212,6 +212,7 @@ std::vector<SphereImage> render_with(const S& light, const std::vector<const Fre
   }
   const double scale = 2.0 * kHalfFrame / s.size_px;  // scene units per pixel
   const auto drawn = light_samples(light, s.samples);
+  ProgressCounter rows_done(s.progress, s.size_px);
   parallel_for(
       static_cast<size_t>(s.size_px),
       [&](size_t row) {
@@ -229,6 +230,7 @@ std::vector<SphereImage> render_with(const S& light, const std::vector<const Fre
             images[i].alpha[k] = static_cast<float>(cover);
           }
         }
+        rows_done.add(1);
       },
       s.threads);
   return images;

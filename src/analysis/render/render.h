@@ -129,6 +129,9 @@ struct RenderSettings {
   double roughness = 0.25;  // perceptual; α = roughness²
   int samples = 64;         // per strategy and shading point
   int threads = 0;          // 0: hardware concurrency
+  // (rows done, rows in all) after each finished row of pixels, from any thread, one call at a
+  // time; empty: no report.
+  std::function<void(int, int)> progress;
 };
 
 // Premultiplied linear RGB plus coverage; pixels at the silhouette average 4×4 sub-samples.
