@@ -28,13 +28,20 @@ std::string scalar_text(const std::string& path, const YamlNode& n, const std::s
   return n.scalar();
 }
 
-// A roughness or a list of them, each in (0, 1].
-std::vector<double> roughness_list(const std::string& path, const YamlNode& v, int line) {
+// The nodes of a value written as one scalar or as a list: the scalar itself, or the list's items
+// (empty for a map or an empty list).
+std::vector<const YamlNode*> scalar_or_items(const YamlNode& v) {
   std::vector<const YamlNode*> items;
   if (v.is_scalar())
     items.push_back(&v);
   else if (v.is_sequence())
     for (const auto& x : v.items()) items.push_back(&x);
+  return items;
+}
+
+// A roughness or a list of them, each in (0, 1].
+std::vector<double> roughness_list(const std::string& path, const YamlNode& v, int line) {
+  const std::vector<const YamlNode*> items = scalar_or_items(v);
   if (items.empty())
     throw InputError(path, line, "'roughness' must be a number or a list of numbers in (0, 1]");
   std::vector<double> out;
@@ -75,11 +82,7 @@ SceneFileMaterial scene_material(const std::string& path, const YamlNode& m) {
 
 // The scene's 'lighting': one of punctual, ibl, area or a list of them.
 void read_lighting(const std::string& path, const YamlNode& v, int line, SceneFile& s) {
-  std::vector<const YamlNode*> items;
-  if (v.is_scalar())
-    items.push_back(&v);
-  else if (v.is_sequence())
-    for (const auto& x : v.items()) items.push_back(&x);
+  const std::vector<const YamlNode*> items = scalar_or_items(v);
   if (items.empty())
     throw InputError(path, line, "'lighting' must list any of punctual, ibl, area");
   for (const YamlNode* x : items) {
