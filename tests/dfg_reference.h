@@ -17,7 +17,9 @@ struct Reference {
 // dl = 4 (v·h) dω_h, so f (n·l) dl = D G₂ (v·h)/(n·v) dω_h. n·l > 0 ⇔ cos φ > c(θ) =
 // −(cos θ_v / sin θ_v) cot 2θ, which is −1 at θ₁ = (π/2 − θ_v)/2 and +1 at θ₂ = (π/2 + θ_v)/2;
 // the φ-range is integrated exactly (Gauss–Legendre panels, no sampling).
-inline Reference reference_moments(double nov, double alpha) {
+// The lobe integrals of up to four functions of v·h at once: terms(voh) gives their values.
+template <class Terms>
+Values reference_lobe_integrals(double nov, double alpha, Terms terms) {
   constexpr double kPi = std::numbers::pi;
   static const GaussRule g_theta = gauss_legendre(16), g_phi = gauss_legendre(32);
   const double theta_v = std::acos(nov), sin_v = std::sin(theta_v);
@@ -38,12 +40,18 @@ inline Reference reference_moments(double nov, double alpha) {
       const double nol = 2 * voh * ct - nov;
       if (nol <= 0 || voh <= 0) return Values{};
       const double w = d * ggx_ref::g2(nov, nol, alpha) * voh / nov;
-      const double m = 1 - voh, m5 = m * m * m * m * m;
-      return {w, w * m5, w * voh * m5 * m, w * (1 - m5)};
+      return w * terms(voh);
     };
     return (2 * st) * integrate_panel<Values>(f_phi, 0, phi_max, g_phi);
   };
-  const Values v = integrate_theta<Values>(f_theta, theta2, alpha, {theta1}, g_theta);
+  return integrate_theta<Values>(f_theta, theta2, alpha, {theta1}, g_theta);
+}
+
+inline Reference reference_moments(double nov, double alpha) {
+  const Values v = reference_lobe_integrals(nov, alpha, [](double voh) -> Values {
+    const double m = 1 - voh, m5 = m * m * m * m * m;
+    return {1.0, m5, voh * m5 * m, 1 - m5};
+  });
   return {v[0], v[1], v[2], v[3], v[1]};
 }
 

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/app.h"
+#include "fresnel/table_terms.h"
 #include "jobs/lut_files.h"
 
 namespace fl::cli {
@@ -29,7 +30,7 @@ analysis::LutProgress progress_printer(const GlobalOptions& g, const std::string
 using LutRun = report::Output (*)(const report::LutRequest&, const analysis::LutProgress&);
 
 CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, const char* name,
-                             const char* help, const char* out_help, LutRun run,
+                             const std::string& help, const char* out_help, LutRun run,
                              std::shared_ptr<report::LutRequest> r) {
   auto* sub = lut.add_subcommand(name, help);
   sub->add_option("--size", r->size, "cells per axis (N×N; default 64)");
@@ -44,6 +45,15 @@ CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, 
   return sub;
 }
 
+// "dfg1, dfg2, dfg_f82, ..." or the LTC moments "n_d, f_d, l_d, ...": the table terms' channels.
+std::string term_channels(bool dfg) {
+  std::string s;
+  for (const auto& t : fresnel::kTermRegistry)
+    s += fmt::format("{}{} (∫{} ρ cos)", s.empty() ? "" : ", ", dfg ? t.dfg_channel : t.ltc_channel,
+                     t.formula);
+  return s;
+}
+
 }  // namespace
 
 void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
@@ -51,30 +61,32 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
       app.add_subcommand("lut", "pre-integrated GGX lookup tables: dfg | ltc-moments | ltc");
   lut->require_subcommand(1);
   auto dfg = std::make_shared<report::LutRequest>();
-  add_lut_subcommand(
-      *lut, g, selected, "dfg",
-      "the split-sum DFG table over (n·v, perceptual roughness): dfg1 = ∫(1−Fc)ρ cos, dfg2 = ∫Fc ρ "
-      "cos, "
-      "dfg_f82 = ∫μ(1−μ)^6 ρ cos; or Filament's multiscatter layout",
-      "output file: .exr (RGB), .csv, .h (C++ header) or, with --layout filament, .inc (Filament's "
-      "dfg.inc)",
-      report::dfg_lut, dfg)
+  add_lut_subcommand(*lut, g, selected, "dfg",
+                     "the split-sum DFG table over (n·v, perceptual roughness), one channel per "
+                     "table term: " +
+                         term_channels(true) +
+                         ", dfg1 stored less dfg2 (the split sum's scale); or Filament's "
+                         "multiscatter layout",
+                     "output file: .exr (RGB per texture: FILE.exr, FILE_2.exr, ...), .csv, .h "
+                     "(C++ header) or, with --layout filament, .inc (Filament's dfg.inc)",
+                     report::dfg_lut, dfg)
       ->add_option("--layout", dfg->layout,
-                   "split-sum (R = dfg1, G = dfg2, B = dfg_f82) or filament (Filament's "
+                   "split-sum (every table term) or filament (Filament's "
                    "multiscatter table: R = ∫Fc ρ "
                    "cos, G = ∫ρ cos, B = sheen; half-float RGB header, 128×128 by default)")
       ->capture_default_str();
   add_lut_subcommand(*lut, g, selected, "ltc-moments",
-                     "LTC moments on the LTC grid: n_D = ∫ρ cos, f_D = ∫(1−v·h)^5 ρ cos, l_D = "
-                     "∫(v·h)(1−v·h)^6 ρ cos",
-                     "output file: .exr (RGB = n_D, f_D, l_D) or .csv", report::moments_lut,
-                     std::make_shared<report::LutRequest>());
+                     "LTC moments on the LTC grid, one per table term: " + term_channels(false),
+                     "output file: .exr (RGB per texture: FILE.exr = n_d, f_d, l_d; FILE_3.exr, "
+                     "...) or .csv",
+                     report::moments_lut, std::make_shared<report::LutRequest>());
   add_lut_subcommand(
       *lut, g, selected, "ltc",
-      "fit the LTC matrix of every cell with Ceres (Heitz et al. 2016) and write the two LTC "
+      "fit the LTC matrix of every cell with Ceres (Heitz et al. 2016) and write the LTC "
       "textures",
-      "output: FILE.exr writes FILE_1.exr (inverse matrix), FILE_2.exr (n_D, f_D, l_D, sphere form "
-      "factor) and FILE.csv; FILE.csv writes the CSV only",
+      "output: FILE.exr writes FILE_1.exr (inverse matrix), FILE_2.exr (n_d, f_d, l_d, sphere form "
+      "factor), FILE_3.exr, ... (the other table terms' moments) and FILE.csv; FILE.csv writes the "
+      "CSV only",
       report::ltc_lut, std::make_shared<report::LutRequest>());
 }
 

@@ -96,6 +96,11 @@ struct ShaderHelper {
   const char* name;    // the function it defines, emitted once per program
   const char* source;  // the complete GLSL function
 };
+// A pre-integrated model's weight on one table term, as a GLSL vec3 expression of its parameters.
+struct TermWeight {
+  Term term;
+  const char* glsl;
+};
 struct ShaderCode {
   // Functions the bodies call (fresnel/exact_shader.h, or the unit's own).
   std::span<const ShaderHelper* const> helpers;
@@ -107,6 +112,11 @@ struct ShaderCode {
   // integral, with the same parameters in scope.
   const char* dfg_body = nullptr;
   const char* ltc_body = nullptr;
+  // Pre-integrated models may instead give their weights on the table terms: the emitter then
+  // writes the three bodies from the terms' registry entries (table_terms.h), F = Σ_t w_t·term_t
+  // at v·h and Σ_t w_t·(the term's channel) from the tables; body, dfg_body and ltc_body are
+  // left empty.
+  std::span<const TermWeight> term_weights = {};
 };
 
 // A model's handle: its position in the registry. Compare, copy, and look up its spec.

@@ -4,6 +4,7 @@
 // below, and every generic test runs over this list.
 #include <type_traits>
 
+#include "fresnel/models/basis.h"
 #include "fresnel/models/cook_torrance.h"
 #include "fresnel/models/f82.h"
 #include "fresnel/models/fresnel_rgb.h"
@@ -21,7 +22,8 @@ struct ModelList {
 };
 
 using Registry = ModelList<models::Schlick, models::GeneralizedSchlick, models::CookTorrance,
-                           models::Lazanyi, models::F82, models::Gulbrandsen, models::FresnelRgb>;
+                           models::Lazanyi, models::F82, models::Gulbrandsen, models::FresnelRgb,
+                           models::Basis<3>, models::Basis<4>, models::Basis<5>>;
 
 namespace detail {
 template <class... Units>

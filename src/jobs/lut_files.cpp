@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
+#include "analysis/lut/lut_layout.h"
 #include "documents/table_formats.h"
+#include "fresnel/table_terms.h"
 #include "io/exr.h"
 #include "spectral/errors.h"
 
@@ -71,23 +74,73 @@ Output one_file(const std::string& what, const std::string& path, std::string by
   return o;
 }
 
+// ----- the table terms' textures
+
+// The table terms a texture holds (analysis::term_texture_names), in registry order.
+std::vector<const fresnel::TermSpec*> texture_terms(bool dfg, const std::string& texture) {
+  std::vector<const fresnel::TermSpec*> out;
+  for (const auto& t : fresnel::kTermRegistry)
+    if (texture == (dfg ? t.dfg_texture : t.ltc_texture)) out.push_back(&t);
+  return out;
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// The EXR channels of a texture's terms: their components, upper case.
+std::vector<std::string> exr_channels(bool dfg, const std::string& texture) {
+  std::vector<std::string> out;
+  for (const auto* t : texture_terms(dfg, texture))
+    out.push_back(upper(dfg ? t->dfg_component : t->ltc_component));
+  return out;
+}
+
+// Where texture number k (0, 1, ...) of a table goes when the table is written to `out`: out
+// itself for the first, else STEM + the texture's suffix (dfg_2 → STEM_2.exr).
+std::string texture_path(const std::string& out, const std::string& texture, size_t k) {
+  if (k == 0) return out;
+  const std::filesystem::path p(out);
+  return ((p.parent_path() / p.stem()).string() + texture.substr(texture.find('_'))) + ".exr";
+}
+
 // ----- dfg
 
 // What a DFG file says about itself: its axes, channels and the shader code that reads it.
 struct DfgText {
   std::string axes, channels, shader;
 };
-DfgText dfg_text(DfgLayout layout, const analysis::LutGrid& g) {
+
+// "R = dfg1 = integral (1 - Fc) rho cos, ..." for one split-sum texture.
+std::string dfg_channel_text(const std::string& texture) {
+  std::string s;
+  for (const auto* t : texture_terms(true, texture))
+    s += fmt::format("{}{} = {} = integral {}rho cos", s.empty() ? "" : ", ",
+                     upper(t->dfg_component), t->dfg_channel, t->dfg_integrand);
+  return s +
+         ", with Fc = (1 - mu)^5, mu = v.h, rho cos the GGX lobe with height-correlated Smith "
+         "masking";
+}
+
+// How a shader reads a split-sum texture after the first: a model weighing term t by w_t adds
+// w_t times the term's channel.
+std::string dfg_extra_shader_text(const std::string& texture) {
+  return fmt::format(
+      "vec3 {0} = textureLod({0}_lut, vec2(NoV, perceptualRoughness), 0.0).rgb; a model weighing "
+      "a term by w adds w * its channel",
+      texture);
+}
+
+DfgText dfg_text(DfgLayout layout, const analysis::LutGrid& g, const std::string& texture) {
   const std::string axes = fmt::format(
       "x = n.v, y = perceptual roughness (alpha = roughness^2), {}; rows from smooth "
       "to rough (the first row is texture v = 0, GL order)",
       g.convention);
+  if (layout == DfgLayout::SplitSum && texture != "dfg")
+    return {axes, dfg_channel_text(texture), dfg_extra_shader_text(texture)};
   if (layout == DfgLayout::SplitSum)
-    return {axes,
-            "R = dfg1 = integral (1 - Fc) rho cos, G = dfg2 = integral Fc rho cos, B = dfg_f82 = "
-            "integral mu (1 - mu)^6 rho "
-            "cos, with Fc = (1 - mu)^5, mu = v.h, rho cos the GGX lobe with height-correlated "
-            "Smith masking",
+    return {axes, dfg_channel_text(texture),
             "vec3 dfg = textureLod(dfgLut, vec2(NoV, perceptualRoughness), 0.0).rgb; Schlick: E = "
             "f0 * dfg.r + dfg.g; "
             "Hoffman's F82 model: E = f0 * dfg.r + dfg.g - a * dfg.b, a = (823543/46656) (f0 - "
@@ -103,27 +156,25 @@ DfgText dfg_text(DfgLayout layout, const analysis::LutGrid& g) {
           "sheenDFG = dfg.z"};
 }
 
-std::vector<std::string> dfg_channel_names(DfgLayout layout) {
-  if (layout == DfgLayout::SplitSum) {
-    std::vector<std::string> names;
-    for (const auto& t : fresnel::kTermRegistry) names.push_back(t.dfg_channel);
-    return names;
-  }
-  return {"dfg_fc", "dfg_norm", "dfg_sheen"};
+// The texture values of one split-sum texture, its channels per texel in file order
+// (roughness-major, like the cells).
+std::vector<double> dfg_values(const analysis::DfgTable& t, const std::string& texture) {
+  const auto terms = texture_terms(true, texture);
+  std::vector<double> v;
+  v.reserve(t.cells.size() * terms.size());
+  for (const auto& c : t.cells)
+    for (const auto* term : terms) v.push_back(c[term->term]);
+  return v;
 }
 
-// Three values per texel in file order (roughness-major, like the cells).
-std::vector<double> dfg_values(DfgLayout layout, const analysis::DfgTable& t,
-                               const std::vector<double>& sheen) {
+// Filament's layout: three values per texel.
+std::vector<double> filament_values(const analysis::DfgTable& t, const std::vector<double>& sheen) {
+  using fresnel::Term;
   std::vector<double> v;
   v.reserve(t.cells.size() * 3);
   for (size_t k = 0; k < t.cells.size(); ++k) {
     const auto& c = t.cells[k];
-    using fresnel::Term;
-    if (layout == DfgLayout::SplitSum)
-      v.insert(v.end(), c.v.begin(), c.v.end());
-    else
-      v.insert(v.end(), {c[Term::Schlick], c[Term::One] + c[Term::Schlick], sheen[k]});
+    v.insert(v.end(), {c[Term::Schlick], c[Term::One] + c[Term::Schlick], sheen[k]});
   }
   return v;
 }
@@ -133,23 +184,42 @@ std::string comment_lines(const DfgText& d, const char* prefix) {
                      d.shader);
 }
 
-std::string dfg_csv(DfgLayout layout, const analysis::DfgTable& t,
-                    const std::vector<double>& values) {
+// The split-sum CSV: every term's channel, its texture's description per texture.
+std::string split_sum_csv(const analysis::DfgTable& t) {
   const auto& g = t.grid;
   analysis::Table tab;
   tab.name = "dfg";
   tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha")};
-  for (const auto& name : dfg_channel_names(layout)) tab.columns.push_back(col(name.c_str()));
+  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.dfg_channel));
+  for (int j = 0; j < g.size; ++j)
+    for (int i = 0; i < g.size; ++i) {
+      const auto& c = t.cells[g.index(i, j)];
+      tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j]});
+      tab.rows.back().insert(tab.rows.back().end(), c.v.begin(), c.v.end());
+    }
+  std::string head;
+  for (const auto& name : analysis::term_texture_names(true))
+    head += comment_lines(dfg_text(DfgLayout::SplitSum, g, name), "# ");
+  return head + to_csv(tab);
+}
+
+std::string filament_csv(const analysis::DfgTable& t, const std::vector<double>& values) {
+  const auto& g = t.grid;
+  analysis::Table tab;
+  tab.name = "dfg";
+  tab.columns = {col("nov"),      col("perceptual_roughness"),
+                 col("alpha"),    col("dfg_fc"),
+                 col("dfg_norm"), col("dfg_sheen")};
   for (int j = 0; j < g.size; ++j)
     for (int i = 0; i < g.size; ++i) {
       const size_t k = static_cast<size_t>(g.index(i, j)) * 3;
       tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], values[k], values[k + 1],
                           values[k + 2]});
     }
-  return comment_lines(dfg_text(layout, g), "# ") + to_csv(tab);
+  return comment_lines(dfg_text(DfgLayout::Filament, g, "dfg"), "# ") + to_csv(tab);
 }
 
-ExrImage dfg_texture(DfgLayout layout, const analysis::DfgTable& t,
+ExrImage dfg_texture(DfgLayout layout, const analysis::DfgTable& t, const std::string& name,
                      const std::vector<double>& values) {
   const auto& g = t.grid;
   const Axes axes{"nov",
@@ -158,23 +228,30 @@ ExrImage dfg_texture(DfgLayout layout, const analysis::DfgTable& t,
                   kRoughnessAxis,
                   g.perceptual_roughness.front(),
                   g.perceptual_roughness.back()};
-  const DfgText text = dfg_text(layout, g);
-  auto img = texture(layout == DfgLayout::SplitSum ? "dfg" : "dfg_filament", g.size,
-                     {"R", "G", "B"}, axes, g.convention, text.channels);
+  const DfgText text = dfg_text(layout, g, name);
+  const bool split = layout == DfgLayout::SplitSum;
+  auto img = texture(split ? name : "dfg_filament", g.size,
+                     split ? exr_channels(true, name) : std::vector<std::string>{"R", "G", "B"},
+                     axes, g.convention, text.channels);
   img.string_attributes.emplace_back("fresnelLab:shader", text.shader);
   for (double v : values) img.pixels.push_back(static_cast<float>(v));
   return img;
 }
 
-// The C++ array body: `per_line` texels per line, each value printed by `value`.
+// The C++ array body: `per_line` texels of `channels` values per line, each printed by `value`.
 template <class Print>
-std::string array_body(size_t texels, int per_line, Print value) {
+std::string array_body(size_t texels, int per_line, int channels, Print value) {
   std::string s;
   for (size_t k = 0; k < texels; ++k) {
     if (k % per_line == 0) s += k ? "\n   " : "   ";
-    for (int c = 0; c < 3; ++c) s += " " + value(3 * k + c) + ",";
+    for (int c = 0; c < channels; ++c) s += " " + value(channels * k + c) + ",";
   }
   return s + "\n";
+}
+
+std::string half_array(const std::vector<float>& values) {
+  return array_body(values.size() / 3, 4, 3,
+                    [&](size_t k) { return fmt::format("0x{:04x}", half_bits(values[k])); });
 }
 
 std::string filament_inc(const analysis::DfgTable& t, const std::vector<float>& values) {
@@ -182,9 +259,8 @@ std::string filament_inc(const analysis::DfgTable& t, const std::vector<float>& 
       "// generated by `fresnel-lab lut dfg --layout filament --size {}`: Filament's DFG LUT as "
       "an RGB16F texture, in GL order (half-float bit patterns, 3 per texel)\n",
       t.grid.size);
-  s += comment_lines(dfg_text(DfgLayout::Filament, t.grid), "// ");
-  return s + array_body(values.size() / 3, 4,
-                        [&](size_t k) { return fmt::format("0x{:04x}", half_bits(values[k])); });
+  s += comment_lines(dfg_text(DfgLayout::Filament, t.grid, "dfg"), "// ");
+  return s + half_array(values);
 }
 
 std::string filament_header(const analysis::DfgTable& t, const std::vector<float>& values) {
@@ -193,15 +269,26 @@ std::string filament_header(const analysis::DfgTable& t, const std::vector<float
       "// Generated by `fresnel-lab lut dfg --layout filament --size {}`: Filament's DFG LUT, "
       "RGB16F, GL order; texel (j * size + i) * 3, half-float bit patterns.\n",
       n);
-  s += comment_lines(dfg_text(DfgLayout::Filament, t.grid), "// ");
+  s += comment_lines(dfg_text(DfgLayout::Filament, t.grid, "dfg"), "// ");
   s += fmt::format(
       "#pragma once\n\n#include <cstdint>\n\nnamespace fresnel_lab {{\n\nconstexpr int kDfgLutSize "
       "= {0};\n"
       "constexpr std::uint16_t kDfgLut[{0} * {0} * 3] = {{\n",
       n);
-  s += array_body(values.size() / 3, 4,
-                  [&](size_t k) { return fmt::format("0x{:04x}", half_bits(values[k])); });
-  return s + "};\n\n}  // namespace fresnel_lab\n";
+  return s + half_array(values) + "};\n\n}  // namespace fresnel_lab\n";
+}
+
+// The C++ array of one split-sum texture: kDfgLut for dfg, kDfgLut2 for dfg_2, ...
+std::string dfg_array(const analysis::DfgTable& t, const std::string& texture) {
+  const auto values = dfg_values(t, texture);
+  const int channels = static_cast<int>(texture_terms(true, texture).size());
+  std::string suffix = texture.substr(std::string("dfg").size());
+  suffix.erase(std::remove(suffix.begin(), suffix.end(), '_'), suffix.end());
+  std::string s = fmt::format("constexpr float kDfgLut{1}[{0} * {0} * {2}] = {{\n", t.grid.size,
+                              suffix, channels);
+  s += array_body(values.size() / channels, static_cast<int>(t.grid.size), channels,
+                  [&](size_t k) { return fmt::format("{:.9e}f", static_cast<float>(values[k])); });
+  return s + "};\n";
 }
 
 // ----- ltc-moments
@@ -221,15 +308,24 @@ std::string moments_csv(const analysis::MomentsTable& t) {
   return to_csv(tab);
 }
 
-ExrImage moments_texture(const analysis::MomentsTable& t) {
+// "R = n_D = integral rho cos, ..." for the moments of one LTC texture.
+std::string moments_channel_text(const std::string& texture) {
+  std::string s;
+  for (const auto* t : texture_terms(false, texture))
+    s += fmt::format("{}{} = {} = integral {}rho cos", s.empty() ? "" : ", ",
+                     upper(t->ltc_component), t->ltc_symbol, t->ltc_integrand);
+  return s;
+}
+
+ExrImage moments_texture(const analysis::MomentsTable& t, const std::string& name) {
   const auto& g = t.grid;
-  auto img = texture("ltc-moments", g.size, {"R", "G", "B"}, kLtcAxes, g.convention,
-                     "R = n_D = integral rho cos, G = f_D = integral (1 - <v,h>)^5 rho cos, "
-                     "B = l_D = integral <v,h> (1 - <v,h>)^6 rho cos");
+  auto img = texture("ltc-moments", g.size, exr_channels(false, name), kLtcAxes, g.convention,
+                     moments_channel_text(name));
+  const auto terms = texture_terms(false, name);
   for (int i = 0; i < g.size; ++i)
     for (int j = 0; j < g.size; ++j) {
       const auto& c = t.cells[g.index(i, j)];
-      for (double x : c.v) img.pixels.push_back(static_cast<float>(x));
+      for (const auto* term : terms) img.pixels.push_back(static_cast<float>(c[term->term]));
     }
   return img;
 }
@@ -276,27 +372,53 @@ std::string ltc_csv(const analysis::LtcTable& t) {
   return to_csv(tab);
 }
 
-// ltc_1 (the normalized inverse matrix) and ltc_2 (the moments and the sphere form factor).
-std::pair<ExrImage, ExrImage> ltc_textures(const analysis::LtcTable& t) {
+// ltc_2's description: its terms' moments and the sphere form factor in A.
+std::string ltc_2_text() {
+  std::string s;
+  for (const auto* t : texture_terms(false, "ltc_2"))
+    s += fmt::format("{}{} = {}{}", s.empty() ? "" : ", ", upper(t->ltc_component), t->ltc_symbol,
+                     t->ltc_note);
+  return s +
+         ", A = horizon-clipped sphere form factor (its own axes: x → z = 2x - 1, y → length of "
+         "the vector form factor)";
+}
+
+// The textures beside the matrix: ltc_2 (its terms' moments and the sphere form factor) and the
+// other terms' textures (ltc_3, ...), in analysis::term_texture_names order.
+std::vector<ExrImage> moment_textures(const analysis::LtcTable& t) {
+  const auto& g = t.grid;
+  std::vector<ExrImage> out;
+  for (const auto& name : analysis::term_texture_names(false)) {
+    const bool second = name == "ltc_2";
+    auto channels = exr_channels(false, name);
+    if (second) channels.push_back("A");
+    out.push_back(texture(name, g.size, channels, kLtcAxes, g.convention,
+                          second ? ltc_2_text() : moments_channel_text(name)));
+    const auto terms = texture_terms(false, name);
+    for (int i = 0; i < g.size; ++i)
+      for (int j = 0; j < g.size; ++j) {
+        const int k = g.index(i, j);
+        for (const auto* term : terms)
+          out.back().pixels.push_back(static_cast<float>(t.moments[k][term->term]));
+        if (second) out.back().pixels.push_back(static_cast<float>(sphere_at(t, i, j)));
+      }
+  }
+  return out;
+}
+
+// ltc_1: the normalized inverse matrix.
+ExrImage matrix_texture(const analysis::LtcTable& t) {
   const auto& g = t.grid;
   auto tex1 = texture(
       "ltc_1", g.size, {"R", "G", "B", "A"}, kLtcAxes, g.convention,
       "inverse LTC matrix M^-1 normalized by M^-1[1][1], row-major indices: R = M^-1[0][0], "
       "G = M^-1[2][0], B = M^-1[0][2], A = M^-1[2][2]; shader: mat3(vec3(R, 0, G), vec3(0, 1, 0), "
       "vec3(B, 0, A))");
-  auto tex2 =
-      texture("ltc_2", g.size, {"R", "G", "B", "A"}, kLtcAxes, g.convention,
-              "R = n_D, G = f_D, B = l_D (the F82 moment), A = horizon-clipped sphere form factor "
-              "(its own axes: x → z = 2x - 1, y → length of the vector form factor)");
   for (int i = 0; i < g.size; ++i)
-    for (int j = 0; j < g.size; ++j) {
-      const int k = g.index(i, j);
-      for (double v : t.cells[k].inv_packed) tex1.pixels.push_back(static_cast<float>(v));
-      const auto& m = t.moments[k];
-      for (double x : m.v) tex2.pixels.push_back(static_cast<float>(x));
-      tex2.pixels.push_back(static_cast<float>(sphere_at(t, i, j)));
-    }
-  return {std::move(tex1), std::move(tex2)};
+    for (int j = 0; j < g.size; ++j)
+      for (double v : t.cells[g.index(i, j)].inv_packed)
+        tex1.pixels.push_back(static_cast<float>(v));
+  return tex1;
 }
 
 std::string ltc_fit_message(const analysis::LtcTable& t) {
@@ -319,25 +441,35 @@ DfgLayout dfg_layout_from_name(const std::string& name) {
 
 std::string dfg_header(const analysis::DfgTable& t) {
   const auto& g = t.grid;
+  const auto textures = analysis::term_texture_names(true);
   std::string s = fmt::format(
       "// Generated by `fresnel-lab lut dfg --size {}`: the split-sum DFG table; texel (j * size + "
       "i) * 3.\n",
       g.size);
-  s += comment_lines(dfg_text(DfgLayout::SplitSum, g), "// ");
-  s += fmt::format(
-      "#pragma once\n\nnamespace fresnel_lab {{\n\nconstexpr int kDfgLutSize = {0};\n"
-      "constexpr float kDfgLut[{0} * {0} * 3] = {{\n",
-      g.size);
-  const auto values = dfg_values(DfgLayout::SplitSum, t, {});
-  s += array_body(values.size() / 3, static_cast<int>(g.size),
-                  [&](size_t k) { return fmt::format("{:.9e}f", static_cast<float>(values[k])); });
-  return s + "};\n\n}  // namespace fresnel_lab\n";
+  for (const auto& name : textures)
+    s += comment_lines(dfg_text(DfgLayout::SplitSum, g, name), "// ");
+  s += fmt::format("#pragma once\n\nnamespace fresnel_lab {{\n\nconstexpr int kDfgLutSize = {};\n",
+                   g.size);
+  for (size_t k = 0; k < textures.size(); ++k) s += (k ? "\n" : "") + dfg_array(t, textures[k]);
+  return s + "\n}  // namespace fresnel_lab\n";
 }
 
 std::vector<float> filament_dfg_values(const analysis::DfgTable& t,
                                        const std::vector<double>& sheen) {
-  const auto v = dfg_values(DfgLayout::Filament, t, sheen);
+  const auto v = filament_values(t, sheen);
   return std::vector<float>(v.begin(), v.end());
+}
+
+// The split-sum textures: out.exr, then STEM_2.exr, ...
+Output split_sum_exr(const std::string& out, const analysis::DfgTable& t) {
+  Output o;
+  const auto textures = analysis::term_texture_names(true);
+  for (size_t k = 0; k < textures.size(); ++k)
+    o.files.emplace_back(
+        texture_path(out, textures[k], k),
+        encode_exr(dfg_texture(DfgLayout::SplitSum, t, textures[k], dfg_values(t, textures[k]))));
+  o.messages.push_back("lut dfg (split-sum): wrote " + file_list(o.files));
+  return o;
 }
 
 Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress) {
@@ -350,20 +482,22 @@ Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress)
   const auto grid = analysis::dfg_grid(r.size);
   const auto opts = lut_options(r, progress);
   const auto t = analysis::dfg_table(grid, opts);
-  const auto sheen =
-      layout == DfgLayout::Filament ? analysis::sheen_dfg_table(grid, opts) : std::vector<double>{};
-  const auto values = dfg_values(layout, t, sheen);
+  if (layout == DfgLayout::SplitSum && ext == ".exr") return split_sum_exr(r.out, t);
   std::string bytes;
-  if (ext == ".csv")
-    bytes = dfg_csv(layout, t, values);
-  else if (ext == ".exr")
-    bytes = encode_exr(dfg_texture(layout, t, values));
-  else if (layout == DfgLayout::SplitSum)
-    bytes = dfg_header(t);
-  else if (ext == ".inc")
-    bytes = filament_inc(t, filament_dfg_values(t, sheen));
-  else
-    bytes = filament_header(t, filament_dfg_values(t, sheen));
+  if (layout == DfgLayout::SplitSum) {
+    bytes = ext == ".csv" ? split_sum_csv(t) : dfg_header(t);
+  } else {
+    const auto sheen = analysis::sheen_dfg_table(grid, opts);
+    const auto values = filament_values(t, sheen);
+    if (ext == ".csv")
+      bytes = filament_csv(t, values);
+    else if (ext == ".exr")
+      bytes = encode_exr(dfg_texture(layout, t, "dfg", values));
+    else if (ext == ".inc")
+      bytes = filament_inc(t, filament_dfg_values(t, sheen));
+    else
+      bytes = filament_header(t, filament_dfg_values(t, sheen));
+  }
   return one_file(fmt::format("lut dfg ({})", r.layout), r.out, bytes);
 }
 
@@ -371,8 +505,14 @@ Output moments_lut(const LutRequest& request, const analysis::LutProgress& progr
   const LutRequest r = sized(request, kDefaultSize);
   const std::string ext = output_extension(r.out, {".exr", ".csv"});
   const auto t = analysis::moments_table(analysis::ltc_grid(r.size), lut_options(r, progress));
-  return one_file("lut ltc-moments", r.out,
-                  ext == ".csv" ? moments_csv(t) : encode_exr(moments_texture(t)));
+  if (ext == ".csv") return one_file("lut ltc-moments", r.out, moments_csv(t));
+  Output o;
+  const auto textures = analysis::term_texture_names(false);
+  for (size_t k = 0; k < textures.size(); ++k)
+    o.files.emplace_back(texture_path(r.out, textures[k], k),
+                         encode_exr(moments_texture(t, textures[k])));
+  o.messages.push_back("lut ltc-moments: wrote " + file_list(o.files));
+  return o;
 }
 
 Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress) {
@@ -385,10 +525,13 @@ Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress)
   } else {
     const auto stem =
         (std::filesystem::path(r.out).parent_path() / std::filesystem::path(r.out).stem()).string();
-    const auto [tex1, tex2] = ltc_textures(t);
-    o.files = {{stem + "_1.exr", encode_exr(tex1)},
-               {stem + "_2.exr", encode_exr(tex2)},
-               {stem + ".csv", ltc_csv(t)}};
+    o.files.emplace_back(stem + "_1.exr", encode_exr(matrix_texture(t)));
+    const auto names = analysis::term_texture_names(false);
+    const auto images = moment_textures(t);
+    for (size_t k = 0; k < names.size(); ++k)
+      o.files.emplace_back(stem + names[k].substr(names[k].find('_')) + ".exr",
+                           encode_exr(images[k]));
+    o.files.emplace_back(stem + ".csv", ltc_csv(t));
     o.messages.push_back("lut ltc: wrote " + file_list(o.files));
   }
   o.messages.push_back(ltc_fit_message(t));

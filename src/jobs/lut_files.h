@@ -9,10 +9,11 @@
 
 namespace fl::report {
 
-// The layouts of `lut dfg`. split-sum: R = dfg1 (scale), G = dfg2 (bias), B = dfg_f82, read as
-// E = F0·R + G (Schlick), E = F0·R + G − a·B (Hoffman's F82). filament: Filament's multiscatter
-// table as its shaders read it, R = dfg2 = ∫ Fc ρ cos, G = dfg1 + dfg2 = ∫ ρ cos, B = the sheen
-// albedo; E = mix(dfg.xxx, dfg.yyy, F0), energy compensation 1 + F0 (1/dfg.y − 1).
+// The layouts of `lut dfg`. split-sum: one channel per table term (fresnel::kTermRegistry) in its
+// texture: dfg (R = dfg1 (scale), G = dfg2 (bias), B = dfg_f82, read as E = F0·R + G (Schlick),
+// E = F0·R + G − a·B (Hoffman's F82)) and dfg_2 (the basis terms b2..b4). filament: Filament's
+// multiscatter table as its shaders read it, R = dfg2 = ∫ Fc ρ cos, G = dfg1 + dfg2 = ∫ ρ cos, B =
+// the sheen albedo; E = mix(dfg.xxx, dfg.yyy, F0), energy compensation 1 + F0 (1/dfg.y − 1).
 enum class DfgLayout { SplitSum, Filament };
 DfgLayout dfg_layout_from_name(
     const std::string& name);  // split-sum | filament (InputError otherwise)
@@ -29,19 +30,21 @@ struct LutRequest {
 
 // Each checks the request first (InputError for a size, sample count, thread count or output type
 // out of range), then computes the table.
-// DFG in `request.layout`: out.exr (RGB), out.csv, out.h (a C++ header: float for split-sum,
-// half-float bit patterns for Filament) or, Filament only, out.inc (Filament's dfg.inc form: the
-// array's initializer list). Rows run from smooth to rough (GL order: the first row is texture
-// v = 0), texels within a row from n·v = 0 to 1, at texel centres; uv = (n·v, perceptual
+// DFG in `request.layout`: out.exr (RGB; split-sum: the dfg texture, and each further texture of
+// the table terms in STEM_2.exr, ...), out.csv (every channel), out.h (a C++ header: float for
+// split-sum, half-float bit patterns for Filament) or, Filament only, out.inc (Filament's dfg.inc
+// form: the array's initializer list). Rows run from smooth to rough (GL order: the first row is
+// texture v = 0), texels within a row from n·v = 0 to 1, at texel centres; uv = (n·v, perceptual
 // roughness).
 Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
-// LTC moments: out.exr (RGB = n_D, f_D, l_D) or out.csv.
+// LTC moments: out.exr (RGB = n_D, f_D, l_D) and STEM_3.exr (the basis moments), or out.csv.
 Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // LTC fit: out.exr gives FILE_1.exr (the inverse matrix), FILE_2.exr (n_D, f_D, l_D, sphere form
-// factor) and FILE.csv; out.csv gives the CSV only.
+// factor), FILE_3.exr (the basis moments) and FILE.csv; out.csv gives the CSV only.
 Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 
-// The C++ header of a split-sum DFG table: constexpr float kDfgLut[size * size * 3].
+// The C++ header of a split-sum DFG table: constexpr float kDfgLut[size * size * 3] (the dfg
+// texture), kDfgLut2 (dfg_2), ...
 std::string dfg_header(const analysis::DfgTable& table);
 // Filament's layout as texel values, 3 per texel in file order (the half floats are these rounded).
 std::vector<float> filament_dfg_values(const analysis::DfgTable& table,

@@ -92,8 +92,11 @@ std::string glsl_program(const std::string& code, const std::vector<std::string>
       "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 1) buffer Outputs { "
       "vec3 rgb[" +
       std::to_string(calls.size()) + "]; } o;\n" +
-      (with_texture ? "layout(binding = 2) uniform sampler2D lut;\n" : "") + code +
-      "\nvoid main() {\n";
+      (with_texture
+           ? "layout(binding = 2) uniform sampler2D lut;\nlayout(binding = 3) uniform sampler2D "
+             "lut_2;\n"
+           : "") +
+      code + "\nvoid main() {\n";
   for (size_t k = 0; k < calls.size(); ++k)
     out += "  o.rgb[" + std::to_string(k) + "] = " + calls[k] + ";\n";
   return out + "}\n";
@@ -110,13 +113,14 @@ TEST(Shader, EveryModelLightingAndLanguageCompilesAndValidates) {
       for (bool hlsl : {false, true}) {
         const auto code =
             shader_code(spec.model, {l}, hlsl ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl);
-        const std::string lookup = l == Lighting::Punctual ? ""
-                                   : hlsl                  ? "lut, lut_sampler, 0.4, "
-                                                           : "lut, 0.4, ";
+        std::string lookup;  // a texture per table the entry point samples, then the sampler
+        for (size_t k = 0; k < shader_textures(spec.model, l).size(); ++k)
+          lookup += k ? "lut_2, " : "lut, ";
+        if (l != Lighting::Punctual) lookup += hlsl ? "lut_sampler, 0.4, " : "0.4, ";
         const std::string call = fn + "(" + lookup + "0.6" + argument_literals(spec, p, hlsl) + ")";
         const std::string program =
             hlsl ? "RWStructuredBuffer<float3> o : register(u1);\nTexture2D<float4> lut : "
-                   "register(t2);\n"
+                   "register(t2);\nTexture2D<float4> lut_2 : register(t4);\n"
                    "SamplerState lut_sampler : register(s3);\n" +
                        code + "\n[numthreads(1, 1, 1)] void main() { o[0] = " + call + "; }\n"
                  : glsl_program(code, {call}, l != Lighting::Punctual);
@@ -167,14 +171,29 @@ std::string literal(double x) {
   return s.str();
 }
 
+// The texels the table function of model m reads under IBL or area lights, as vec3 literals
+// holding the table terms' values at their components: "vec3(0.61, 0.12, 0.037), ".
+std::string texel_literals(fresnel::Model m, Lighting l, const fresnel::TermValues& v) {
+  std::string out;
+  for (const auto& name : shader_textures(m, l)) {
+    double rgb[3] = {};
+    for (const auto& t : fresnel::kTermRegistry)
+      if (name == (l == Lighting::Ibl ? t.dfg_texture : t.ltc_texture))
+        rgb[std::string("rgb").find((l == Lighting::Ibl ? t.dfg_component : t.ltc_component)[0])] =
+            v[t.term];
+    out += "vec3(" + literal(rgb[0]) + ", " + literal(rgb[1]) + ", " + literal(rgb[2]) + "), ";
+  }
+  return out;
+}
+
 // Per model, one program with the model at four angles and the two table combinations from texels
 // given as constants; against the C++ kernel and the rendered-error engine.
 TEST(Shader, GlslComputesWhatTheKernelsCompute) {
   ASSERT_TRUE(have_tools());
   ShadingPoint point;
   point.nov = 0.35;
-  point.dfg = {0.61, 0.12, 0.037};
-  point.ltc = {0.73, 0.12, 0.037, {0, 0, 1}};
+  point.dfg.v = {0.61, 0.12, 0.037, 0.05, -0.03, 0.02};
+  point.ltc.v = {0.73, 0.12, 0.037, 0.06, -0.025, 0.015};
   double worst = 0;
   for (const auto& spec : fresnel::model_specs()) {
     const auto p = fresnel::example_params(spec.model);
@@ -186,9 +205,11 @@ TEST(Shader, GlslComputesWhatTheKernelsCompute) {
       calls.push_back(fn + "(" + literal(c) + args + ")");
       want.push_back(spec.evaluate(c, p.data(), false));
     }
-    calls.push_back(fn + "_dfg(vec3(0.61, 0.12, 0.037), 0.35" + args + ")");
+    calls.push_back(fn + "_dfg(" + texel_literals(spec.model, Lighting::Ibl, point.dfg) + "0.35" +
+                    args + ")");
     want.push_back(engine_shading(spec.model, p, Lighting::Ibl, point));
-    calls.push_back(fn + "_ltc(vec3(0.73, 0.12, 0.037), 0.35" + args + ")");
+    calls.push_back(fn + "_ltc(" + texel_literals(spec.model, Lighting::Area, point.ltc) + "0.35" +
+                    args + ")");
     want.push_back(engine_shading(spec.model, p, Lighting::Area, point));
     const auto code = shader_code(spec.model, {Lighting::Punctual, Lighting::Ibl, Lighting::Area},
                                   ShaderLanguage::Glsl);
@@ -239,7 +260,7 @@ void main() {
 // Schlick counted by hand from its formula, F0 + (1 − F0)·m⁵ with m = 1 − cos θ: 1 − cos θ, m², m⁴,
 // m⁵, 1 − F0, (1 − F0)·m⁵ and the sum are 7 arithmetic instructions and nothing else; under IBL,
 // F0·dfg1 + dfg2 is a VectorTimesScalar and an FAdd after one table sample. The tool's emitted
-// shader and the committed costs file must both show these counts; every committed row reads one
+// shader and the committed costs file must both show these counts; every committed row reads a
 // table sample exactly under ibl and area and none under punctual light, and its parts add up to no
 // more than its total.
 TEST(Shader, GpuCostsAgreeWithHandCountsAndAreConsistent) {
@@ -261,7 +282,10 @@ TEST(Shader, GpuCostsAgreeWithHandCountsAndAreConsistent) {
     const std::string what = r.at("model") + " " + r.at("lighting");
     const int total = std::stoi(r.at("instructions")), arithmetic = std::stoi(r.at("arithmetic")),
               extended = std::stoi(r.at("extended")), texture = std::stoi(r.at("texture"));
-    EXPECT_EQ(texture, r.at("lighting") == "punctual" ? 0 : 1) << what;
+    const auto model = fresnel::model_from_name(r.at("model")).model;
+    EXPECT_EQ(texture,
+              static_cast<int>(shader_textures(model, lighting_from_name(r.at("lighting"))).size()))
+        << what;
     EXPECT_LE(arithmetic + extended + texture, total) << what;
     EXPECT_GE(arithmetic, 1) << what;
     if (r.at("model") != "schlick") continue;

@@ -34,12 +34,17 @@ TEST(LutCli, WritesTablesDeterministically) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
   const auto csv = slurp(tmp.path() + "/a.csv");
-  // Three comment lines (axes, channels, shader formula), the header, 16 rows.
+  // Three comment lines (axes, channels, shader formula) per texture, the header, 16 rows.
+  std::string dfg_header = "nov,perceptual_roughness,alpha", ltc_header = dfg_header;
+  for (const auto& t : fresnel::kTermRegistry) {
+    dfg_header += std::string(",") + t.dfg_channel;
+    ltc_header += std::string(",") + t.ltc_channel;
+  }
   const auto header = csv.find("\nnov,");
   ASSERT_NE(header, std::string::npos);
-  EXPECT_EQ(csv.substr(header + 1, csv.find('\n', header + 1) - header - 1),
-            "nov,perceptual_roughness,alpha,dfg1,dfg2,dfg_f82");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 20);
+  EXPECT_EQ(csv.substr(header + 1, csv.find('\n', header + 1) - header - 1), dfg_header);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'),
+            3 * static_cast<long>(analysis::term_texture_names(true).size()) + 17);
   r = test::run_command(lut + "dfg --size 4 --samples 256 --threads 1 --out '" + tmp.path() +
                         "/b.csv'");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -55,33 +60,36 @@ TEST(LutCli, WritesTablesDeterministically) {
   EXPECT_NE(slurp(tmp.path() + "/f.h").find("constexpr std::uint16_t kDfgLut[4 * 4 * 3]"),
             std::string::npos);
 
-  // The DFG texture holds each channel where the layout (analysis/lut/lut_layout.h) says, which the
-  // shaders and plans read: texel (0, 0) against the integrator at the first grid point.
+  // The DFG textures hold each channel where the layout (analysis/lut/lut_layout.h) says, which
+  // the shaders and plans read: texel (0, 0) against the integrator at the first grid point.
   r = test::run_command(lut + "dfg --size 4 --samples 256 --out '" + tmp.path() + "/dfg.exr'");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto dfg = report::read_exr(tmp.path() + "/dfg.exr");
-  ASSERT_EQ(dfg.channels.size(), 3u);
   const auto grid = analysis::dfg_grid(4);
   const auto texel = analysis::integrate_dfg(grid.nov[0], grid.alpha[0], 256);
-  for (const auto& c : analysis::lut_textures()[0].channels) {
-    std::string component = c.components;
-    component[0] = static_cast<char>(std::toupper(component[0]));
-    const auto k =
-        std::find(dfg.channels.begin(), dfg.channels.end(), component) - dfg.channels.begin();
-    ASSERT_LT(k, 3) << component;
-    const std::string name = c.channel;
-    const auto term =
-        std::find_if(fresnel::kTermRegistry.begin(), fresnel::kTermRegistry.end(),
-                     [&](const fresnel::TermSpec& t) { return name == t.dfg_channel; });
-    ASSERT_NE(term, fresnel::kTermRegistry.end()) << name;
-    EXPECT_EQ(dfg.pixels[k], static_cast<float>(texel[term->term])) << name;
+  for (const auto& tex : analysis::lut_textures()) {
+    if (std::string(tex.lighting) != "ibl") continue;
+    const auto dfg = report::read_exr(tmp.path() + "/" + tex.file);
+    ASSERT_EQ(dfg.channels.size(), 3u);
+    for (const auto& c : tex.channels) {
+      std::string component = c.components;
+      component[0] = static_cast<char>(std::toupper(component[0]));
+      const auto k =
+          std::find(dfg.channels.begin(), dfg.channels.end(), component) - dfg.channels.begin();
+      ASSERT_LT(k, 3) << component;
+      const std::string name = c.channel;
+      const auto term =
+          std::find_if(fresnel::kTermRegistry.begin(), fresnel::kTermRegistry.end(),
+                       [&](const fresnel::TermSpec& t) { return name == t.dfg_channel; });
+      ASSERT_NE(term, fresnel::kTermRegistry.end()) << name;
+      EXPECT_EQ(dfg.pixels[k], static_cast<float>(texel[term->term])) << name;
+    }
   }
 
   r = test::run_command(lut + "ltc-moments --size 4 --samples 256 --out '" + tmp.path() +
                         "/m.csv'");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto m = slurp(tmp.path() + "/m.csv");
-  EXPECT_EQ(m.substr(0, m.find('\n')), "nov,perceptual_roughness,alpha,n_d,f_d,l_d");
+  EXPECT_EQ(m.substr(0, m.find('\n')), ltc_header);
 
   r = test::run_command(lut + "ltc --size 4 --samples 256 --out '" + tmp.path() + "/ltc.exr'");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -90,6 +98,7 @@ TEST(LutCli, WritesTablesDeterministically) {
   EXPECT_EQ(t1.width, 4);
   EXPECT_EQ(t1.channels.size(), 4u);
   EXPECT_EQ(t2.channels.size(), 4u);
+  EXPECT_EQ(report::read_exr(tmp.path() + "/ltc_3.exr").channels.size(), 3u);  // b2..b4
   EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/ltc.csv"));
 }
 
@@ -123,7 +132,8 @@ TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
   std::getline(in, line);
   EXPECT_EQ(line,
             "material,model,parameters,curve_rms_de00,ibl,ibl_rms_de00,ibl_max_de00,area,area_rms_"
-            "de00,area_max_de00");
+            "de00,area_max_de00,ibl_hoffman_rms_de00,area_hoffman_rms_de00,ibl_basis5_rms_de00,"
+            "area_basis5_rms_de00");
   std::map<std::string, std::array<double, 2>> schlick, f82;  // "material/parameters" → (ibl, area)
   std::set<std::string> metals, models;
   while (std::getline(in, line)) {
@@ -131,7 +141,7 @@ TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
     std::string cell;
     std::vector<std::string> cells;
     while (std::getline(row, cell, ',')) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 10u) << line;
+    ASSERT_EQ(cells.size(), 14u) << line;
     metals.insert(cells[0]);
     models.insert(cells[1]);
     const std::array<double, 2> e{std::stod(cells[5]), std::stod(cells[8])};

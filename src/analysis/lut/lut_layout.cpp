@@ -1,6 +1,7 @@
 #include "analysis/lut/lut_layout.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "fresnel/model.h"
 
@@ -8,27 +9,65 @@ namespace fl::analysis {
 
 namespace {
 
-// Each table term's channel and component in the DFG or the ltc_2 texture.
-std::vector<LutChannelLocation> term_channels(bool dfg) {
+// The texture names the table terms live in, in registry order: dfg, dfg_2, ... or ltc_2, ltc_3.
+std::vector<const char*> term_textures(bool dfg) {
+  std::vector<const char*> out;
+  for (const auto& t : fresnel::kTermRegistry) {
+    const char* name = dfg ? t.dfg_texture : t.ltc_texture;
+    bool seen = false;
+    for (const char* n : out) seen = seen || std::string(n) == name;
+    if (!seen) out.push_back(name);
+  }
+  return out;
+}
+
+// The table terms' channels and components in one DFG or LTC texture.
+std::vector<LutChannelLocation> term_channels(bool dfg, const std::string& texture) {
   std::vector<LutChannelLocation> out;
   for (const auto& t : fresnel::kTermRegistry)
-    out.push_back(dfg ? LutChannelLocation{t.dfg_channel, t.dfg_component}
-                      : LutChannelLocation{t.ltc_channel, t.ltc_component});
+    if (texture == (dfg ? t.dfg_texture : t.ltc_texture))
+      out.push_back(dfg ? LutChannelLocation{t.dfg_channel, t.dfg_component}
+                        : LutChannelLocation{t.ltc_channel, t.ltc_component});
+  return out;
+}
+
+std::vector<LutTexture> make_textures() {
+  std::vector<LutTexture> out;
+  for (const char* name : term_textures(true))
+    out.push_back({name, "ibl", lut_texture_file(name), "fresnel-lab lut dfg --out dfg.exr",
+                   term_channels(true, name)});
+  out.push_back({"ltc_1",
+                 "area",
+                 "ltc_1.exr",
+                 "fresnel-lab lut ltc --out ltc.exr",
+                 {{fresnel::lut_channel::kLtcMatrix, "rgba"}}});
+  for (const char* name : term_textures(false))
+    out.push_back({name, "area", lut_texture_file(name), "fresnel-lab lut ltc --out ltc.exr",
+                   term_channels(false, name)});
   return out;
 }
 
 }  // namespace
 
+const char* lut_texture_file(const std::string& texture) {
+  static const std::vector<std::string> files = [] {
+    std::vector<std::string> f;
+    for (bool dfg : {true, false})
+      for (const char* n : term_textures(dfg)) f.push_back(std::string(n) + ".exr");
+    return f;
+  }();
+  for (const auto& f : files)
+    if (f == texture + ".exr") return f.c_str();
+  throw std::logic_error("no lookup table texture " + texture);
+}
+
+std::vector<std::string> term_texture_names(bool dfg) {
+  const auto names = term_textures(dfg);
+  return {names.begin(), names.end()};
+}
+
 const std::vector<LutTexture>& lut_textures() {
-  static const std::vector<LutTexture> textures{
-      {"dfg", "ibl", "dfg.exr", "fresnel-lab lut dfg --out dfg.exr", term_channels(true)},
-      {"ltc_1",
-       "area",
-       "ltc_1.exr",
-       "fresnel-lab lut ltc --out ltc.exr",
-       {{fresnel::lut_channel::kLtcMatrix, "rgba"}}},
-      {"ltc_2", "area", "ltc_2.exr", "fresnel-lab lut ltc --out ltc.exr", term_channels(false)},
-  };
+  static const std::vector<LutTexture> textures = make_textures();
   return textures;
 }
 

@@ -12,7 +12,7 @@ struct LutChannelLocation {
       components;  // texture components holding it: "r", "g", "b", "a", or "rgba" (the LTC matrix)
 };
 struct LutTexture {
-  const char* name;      // dfg | ltc_1 | ltc_2
+  const char* name;      // dfg, dfg_2, ... | ltc_1 | ltc_2, ltc_3, ...
   const char* lighting;  // ibl | area
   const char* file;      // what `command` writes
   const char* command;
@@ -24,6 +24,11 @@ struct LutTexture {
 // (Heitz's convention: endpoints over (roughness, √(1 − n·v)); shaders sample
 // uv = (roughness, √(1 − n·v))·(N − 1)/N + ½/N).
 const std::vector<LutTexture>& lut_textures();
+// The textures holding the table terms (fresnel::kTermRegistry), in registry order: the DFG
+// textures (dfg, dfg_2, ...) or the LTC ones beside the matrix (ltc_2, ltc_3, ...).
+std::vector<std::string> term_texture_names(bool dfg);
+// The file a texture is written to by the command that writes its table: NAME.exr.
+const char* lut_texture_file(const std::string& texture);
 // The texture holding a channel, and its components there.
 struct LutLookup {
   const LutTexture* texture = nullptr;

@@ -192,22 +192,48 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
   return out;
 }
 
+namespace {
+
+// The lobe's integral of each of the tables' terms at a point (the norm is the term 1's).
+fresnel::TermValues lobe_integrals(bool ibl, const ShadingPoint& p) {
+  return ibl ? fresnel::dfg_term_integrals(p.dfg) : static_cast<const fresnel::TermValues&>(p.ltc);
+}
+
+}  // namespace
+
+color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weights,
+                                Lighting lighting, const ShadingPoint& p) {
+  if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
+  const auto lobe = lobe_integrals(lighting == Lighting::Ibl, p);
+  color::Rgb out{};
+  for (int c = 0; c < 3; ++c) {
+    const auto& w = weights[c];
+    out[c] = w.v[0] * lobe.v[0];
+    for (size_t t = 1; t < fresnel::kTermCount; ++t) out[c] += w.v[t] * lobe.v[t];
+  }
+  return out;
+}
+
 color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
                           const ShadingPoint& p) {
   if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
   const auto& spec = fresnel::model_spec(m);
-  const bool ibl = lighting == Lighting::Ibl;
-  // The lobe's integral of each of the tables' terms (the norm is the term 1's).
-  const fresnel::TermValues lobe =
-      ibl ? fresnel::dfg_term_integrals(p.dfg) : static_cast<const fresnel::TermValues&>(p.ltc);
   if (!lighting_support(m, lighting).fresnel_pre_integrated)
-    return lobe[fresnel::Term::One] * spec.evaluate(p.nov, params.data(), false);
-  color::Rgb out{};
-  for (int c = 0; c < 3; ++c) {
-    const auto w = spec.table_terms(params.data(), c);
-    out[c] = w.v[0] * lobe.v[0];
-    for (size_t t = 1; t < fresnel::kTermCount; ++t) out[c] += w.v[t] * lobe.v[t];
-  }
+    return lobe_integrals(lighting == Lighting::Ibl, p)[fresnel::Term::One] *
+           spec.evaluate(p.nov, params.data(), false);
+  std::array<fresnel::TableTerms, 3> w;
+  for (int c = 0; c < 3; ++c) w[c] = spec.table_terms(params.data(), c);
+  return engine_shading_terms(w, lighting, p);
+}
+
+std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<color::Rgb>& truth,
+                                        const std::array<fresnel::TableTerms, 3>& weights,
+                                        Lighting lighting,
+                                        const std::vector<ShadingPoint>& points) {
+  std::vector<double> out;
+  for (size_t k = 0; k < points.size(); ++k)
+    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine_shading_terms(
+                                                                 weights, lighting, points[k]))));
   return out;
 }
 

@@ -57,6 +57,16 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
 color::Rgb engine_shading(fresnel::Model m, const std::vector<double>& params, Lighting lighting,
                           const ShadingPoint& p);
 
+// What the engine computes at one point from each channel's weights on the tables' terms (a model's
+// own, or a curve projected on the terms: fresnel/projection.h): Σ_t w_t·(the lobe's integral of
+// term t) read from the tables.
+color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weights,
+                                Lighting lighting, const ShadingPoint& p);
+// ΔE2000 between truth and the engine's shading from table-term weights at every point.
+std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<color::Rgb>& truth,
+                                        const std::array<fresnel::TableTerms, 3>& weights,
+                                        Lighting lighting, const std::vector<ShadingPoint>& points);
+
 // ΔE2000 between truth and engine at every point.
 std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth,
                                   fresnel::Model m, const std::vector<double>& params,

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 
@@ -63,11 +64,68 @@ std::string param_list(const ModelSpec& s, bool typed) {
   return out;
 }
 
+// A float literal GLSL and HLSL read as float: nine significant digits, always with a point or
+// an exponent.
+std::string float_literal(double x) {
+  std::string s = fmt::format("{:.9g}", x);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+// float NAME(float mu): a table term (its registry entry's body, or its polynomial in
+// x = 2μ − 1 by Horner's rule).
+std::string term_function(const fresnel::TermSpec& t) {
+  std::string body;
+  if (t.glsl_body) {
+    body = t.glsl_body;
+  } else {
+    body = "  float x = 2.0 * mu - 1.0;\n  float p = " +
+           float_literal(t.polynomial[fresnel::kBasisPolyDegree]) + ";\n";
+    for (int i = fresnel::kBasisPolyDegree; i-- > 0;)
+      body += "  p = p * x + " + float_literal(t.polynomial[i]) + ";\n";
+    body += "  return p;\n";
+  }
+  return fmt::format("// The table term {} at mu = v·h.\nfloat {}(float mu) {{\n{}}}\n", t.formula,
+                     t.glsl_name, body);
+}
+
+// The weight of a term times what stands for the term: "w * x", or x alone for the term 1.
+std::string weighted(const fresnel::TermWeight& w, const std::string& term) {
+  std::string weight = w.glsl;
+  if (weight.find_first_of("+-") != std::string::npos) weight = "(" + weight + ")";
+  return term.empty() ? weight : weight + " * " + term;
+}
+
+// The bodies a unit with term weights leaves to the emitter: at v·h, from a DFG texel (the term's
+// channel, plus the channel it is stored less of), from the LTC moments.
+enum class BodyKind { Punctual, Dfg, Ltc };
+std::string term_body(const ModelSpec& s, BodyKind kind) {
+  std::string sum;
+  for (const auto& w : s.shader.term_weights) {
+    const auto& t = fresnel::term_spec(w.term);
+    std::string term;
+    if (kind == BodyKind::Punctual)
+      term = t.glsl_name ? fmt::format("{}(cos_theta)", t.glsl_name) : "";
+    else if (kind == BodyKind::Ltc)
+      term = t.ltc_channel;
+    else if (t.dfg_less == t.term)
+      term = t.dfg_channel;
+    else
+      term = fmt::format("({} + {})", t.dfg_channel, fresnel::term_spec(t.dfg_less).dfg_channel);
+    sum += (sum.empty() ? "" : " + ") + weighted(w, term);
+  }
+  return "  return " + sum + ";\n";
+}
+
+std::string punctual_body(const ModelSpec& s) {
+  return s.shader.term_weights.empty() ? s.shader.body : term_body(s, BodyKind::Punctual);
+}
+
 std::string punctual_function(const ModelSpec& s) {
   return fmt::format(
       "// {}, at cos_theta = v·h for a punctual light.\nvec3 fresnel_{}(float cos_theta, {}) "
       "{{\n{}}}\n",
-      s.label, s.name, param_list(s, true), s.shader.body);
+      s.label, s.name, param_list(s, true), punctual_body(s));
 }
 
 // The lobe's Fresnel-free integral (the table term 1's) in the texel's channel names.
@@ -78,40 +136,72 @@ std::string lobe_integral(bool ibl) {
   return fmt::format("({} + {})", one.dfg_channel, fresnel::term_spec(one.dfg_less).dfg_channel);
 }
 
-// fresnel_NAME_dfg / _ltc: the texel's channels as named floats, then the unit's combination
+// The textures a lighting's entry point samples: those holding its single-component channels (the
+// LTC matrix is read by the polygon integral), in lut_textures() order.
+std::vector<const LutTexture*> sampled_textures(const ModelSpec& s, Lighting l) {
+  const auto& support = l == Lighting::Ibl ? s.pre_integration.ibl : s.pre_integration.area;
+  std::vector<const LutTexture*> out;
+  for (const auto& t : lut_textures()) {
+    if (t.lighting != std::string(lighting_name(l))) continue;
+    bool used = false;
+    for (const char* ch : support.channels)
+      for (const auto& c : t.channels)
+        used = used || (std::string(c.channel) == ch && std::string(c.components).size() == 1);
+    if (used) out.push_back(&t);
+  }
+  return out;
+}
+
+// A texture's texel in the table function (the first: dfg or moments) and its sampler (dfg_lut,
+// dfg_2_lut; ltc_2, ltc_3).
+std::string texel_name(const LutTexture& t, size_t k, bool ibl) {
+  if (k == 0) return ibl ? "dfg" : "moments";
+  return t.name;
+}
+std::string sampler_name(const LutTexture& t, bool ibl) {
+  return ibl ? std::string(t.name) + "_lut" : t.name;
+}
+
+// fresnel_NAME_dfg / _ltc: the texels' channels as named floats, then the unit's combination
 // (pre-integrated) or the model at n·v times the lobe's Fresnel-free integral.
 std::string table_function(const ModelSpec& s, Lighting l) {
   const bool ibl = l == Lighting::Ibl;
   const auto& support = ibl ? s.pre_integration.ibl : s.pre_integration.area;
-  const std::string texel = ibl ? "dfg" : "moments";
-  std::string body;
+  const auto textures = sampled_textures(s, l);
+  std::string body, texels;
   for (const char* ch : support.channels) {
     const auto where = find_lut_channel(lighting_name(l), ch);
     if (std::string(where.components).size() != 1)
       continue;  // the LTC matrix: read by the polygon integral
-    body += fmt::format("  float {} = {}.{};\n", ch, texel, where.components);
+    const size_t k = std::find(textures.begin(), textures.end(), where.texture) - textures.begin();
+    body += fmt::format("  float {} = {}.{};\n", ch, texel_name(*where.texture, k, ibl),
+                        where.components);
   }
-  if (support.fresnel_pre_integrated) {
-    body += ibl ? s.shader.dfg_body : s.shader.ltc_body;
-  } else {
+  for (size_t k = 0; k < textures.size(); ++k)
+    texels += fmt::format("vec3 {}, ", texel_name(*textures[k], k, ibl));
+  if (!support.fresnel_pre_integrated)
     body += fmt::format("  return fresnel_{}(nov, {}) * {};\n", s.name, param_list(s, false),
                         lobe_integral(ibl));
-  }
+  else if (!s.shader.term_weights.empty())
+    body += term_body(s, ibl ? BodyKind::Dfg : BodyKind::Ltc);
+  else
+    body += ibl ? s.shader.dfg_body : s.shader.ltc_body;
   const std::string what =
       support.fresnel_pre_integrated
           ? "the Fresnel term pre-integrated in the table"
           : fmt::format("approximation: the model at {} times the lobe's Fresnel-free integral",
                         support.evaluated_at);
-  return fmt::format(
-      "// {} from one {} texel ({}).\nvec3 fresnel_{}_{}(vec3 {}, float nov, {}) {{\n{}}}\n",
-      s.label, ibl ? "DFG" : "ltc_2", what, s.name, ibl ? "dfg" : "ltc", texel, param_list(s, true),
-      body);
+  return fmt::format("// {} from {} ({}).\nvec3 fresnel_{}_{}({}float nov, {}) {{\n{}}}\n", s.label,
+                     textures.size() > 1 ? "a texel of each of its textures"
+                     : ibl               ? "one DFG texel"
+                                         : "one ltc_2 texel",
+                     what, s.name, ibl ? "dfg" : "ltc", texels, param_list(s, true), body);
 }
 
-// The texture read: GLSL sampler2D / HLSL Texture2D + SamplerState, at the table's uv convention.
+// The texture reads: GLSL sampler2D / HLSL Texture2D + SamplerState, at the table's uv convention.
 std::string lookup_function(const ModelSpec& s, Lighting l, ShaderLanguage lang) {
   const bool ibl = l == Lighting::Ibl;
-  const char* tex = ibl ? "dfg_lut" : "ltc_2";
+  const auto textures = sampled_textures(s, l);
   const std::string uv =
       ibl ? "vec2(nov, perceptual_roughness)"
           : fmt::format(
@@ -127,21 +217,24 @@ std::string lookup_function(const ModelSpec& s, Lighting l, ShaderLanguage lang)
                                         "// (endpoints over perceptual roughness and √(1 − n·v)), "
                                         "bilinear, clamp to edge.\n",
                                         kEngineLutSize);
-  const std::string args = param_list(s, false);
-  if (lang == ShaderLanguage::Glsl)
-    return fmt::format(
-        "{}vec3 {}(sampler2D {}, float nov, float perceptual_roughness, {}) {{\n"
-        "  vec3 texel = textureLod({}, {}, 0.0).rgb;\n  return fresnel_{}_{}(texel, nov, "
-        "{});\n}}\n",
-        comment, shader_function_name(s.model, l), tex, param_list(s, true), tex, uv, s.name,
-        ibl ? "dfg" : "ltc", args);
+  const bool glsl = lang == ShaderLanguage::Glsl;
+  std::string samplers, reads, texels;
+  for (size_t k = 0; k < textures.size(); ++k) {
+    const std::string tex = sampler_name(*textures[k], ibl),
+                      texel = k ? fmt::format("texel_{}", k + 1) : "texel";
+    samplers += fmt::format(fmt::runtime(glsl ? "sampler2D {}, " : "Texture2D<float4> {}, "), tex);
+    reads += fmt::format(fmt::runtime(glsl ? "  vec3 {} = textureLod({}, {}, 0.0).rgb;\n"
+                                           : "  float3 {} = {}.SampleLevel(lut_sampler, {}, "
+                                             "0.0).rgb;\n"),
+                         texel, tex, translate(uv, lang));
+    texels += texel + ", ";
+  }
   return fmt::format(
-      "{}float3 {}(Texture2D<float4> {}, SamplerState lut_sampler, float nov, float "
-      "perceptual_roughness, "
-      "{}) {{\n  float3 texel = {}.SampleLevel(lut_sampler, {}, 0.0).rgb;\n"
-      "  return fresnel_{}_{}(texel, nov, {});\n}}\n",
-      comment, shader_function_name(s.model, l), tex, translate(param_list(s, true), lang), tex,
-      translate(uv, lang), s.name, ibl ? "dfg" : "ltc", args);
+      "{}{} {}({}{}float nov, float perceptual_roughness, {}) {{\n{}  return fresnel_{}_{}({}nov, "
+      "{});\n}}\n",
+      comment, glsl ? "vec3" : "float3", shader_function_name(s.model, l), samplers,
+      glsl ? "" : "SamplerState lut_sampler, ", translate(param_list(s, true), lang), reads, s.name,
+      ibl ? "dfg" : "ltc", texels, param_list(s, false));
 }
 
 }  // namespace
@@ -157,6 +250,11 @@ std::string shader_code(Model m, const std::vector<Lighting>& lightings, ShaderL
   std::set<std::string> emitted;
   for (const auto* h : s.shader.helpers)
     if (emitted.insert(h->name).second) glsl += "\n" + std::string(h->source);
+  for (const auto& w : s.shader.term_weights) {
+    const auto& t = fresnel::term_spec(w.term);
+    if (needs_model && t.glsl_name && emitted.insert(t.glsl_name).second)
+      glsl += "\n" + term_function(t);
+  }
   if (needs_model) glsl += "\n" + punctual_function(s);
   std::string out = translate(glsl, lang);
   for (Lighting l : lightings) {
@@ -174,11 +272,24 @@ std::string shader_text(const ShaderRequest& r) {
   return r.harness ? shader_cost_harness(model, lighting) : shader_code(model, {lighting}, lang);
 }
 
+std::vector<std::string> shader_textures(Model m, Lighting l) {
+  std::vector<std::string> out;
+  if (l == Lighting::Punctual) return out;
+  for (const auto* t : sampled_textures(fresnel::model_spec(m), l)) out.push_back(t->name);
+  return out;
+}
+
 std::string shader_cost_harness(Model m, Lighting l) {
   const auto& s = fresnel::model_spec(m);
   std::string members = "  float cos_theta;\n  float perceptual_roughness;\n";
-  std::string args =
-      l == Lighting::Punctual ? "u.cos_theta" : "lut, u.cos_theta, u.perceptual_roughness";
+  std::string samplers, args = l == Lighting::Punctual ? "u.cos_theta" : "";
+  const auto textures = shader_textures(m, l);
+  for (size_t k = 0; k < textures.size(); ++k) {
+    const std::string name = k ? fmt::format("lut_{}", k + 1) : "lut";
+    samplers += fmt::format("layout(binding = {}) uniform sampler2D {};\n", k + 2, name);
+    args += name + ", ";
+  }
+  if (l != Lighting::Punctual) args += "u.cos_theta, u.perceptual_roughness";
   for (const auto& p : s.channel_params) {
     members += fmt::format("  vec3 {};\n", p.name);
     args += fmt::format(", u.{}", p.name);
@@ -192,8 +303,8 @@ std::string shader_cost_harness(Model m, Lighting l) {
       "{{\n{}}} u;\n"
       "layout(std430, binding = 1) buffer Outputs {{ vec3 rgb; }} o;\n{}\n{}\n"
       "void main() {{ o.rgb = {}({}); }}\n",
-      members, l == Lighting::Punctual ? "" : "layout(binding = 2) uniform sampler2D lut;\n",
-      shader_code(m, {l}, ShaderLanguage::Glsl), shader_function_name(m, l), args);
+      members, samplers, shader_code(m, {l}, ShaderLanguage::Glsl), shader_function_name(m, l),
+      args);
 }
 
 }  // namespace fl::analysis

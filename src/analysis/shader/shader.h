@@ -5,12 +5,17 @@
 //
 // Functions, per model NAME, with its per-channel parameters as vec3 and shared ones as float:
 //   punctual  vec3 fresnel_NAME(float cos_theta, ...)      the model at a light's v·h
-//   ibl       vec3 fresnel_NAME_dfg(vec3 dfg, float nov, ...) from a DFG texel (r, g, b)
-//             vec3 fresnel_NAME_ibl(DFG texture, float nov, float perceptual_roughness, ...)
+//   ibl       vec3 fresnel_NAME_dfg(vec3 dfg, [vec3 dfg_2,] float nov, ...) from a DFG texel
+//             (r, g, b) and, for a model using the basis terms, a dfg_2 texel
+//             vec3 fresnel_NAME_ibl(DFG texture(s), float nov, float perceptual_roughness, ...)
 //                 the split-sum factor that multiplies the prefiltered environment
-//   area      vec3 fresnel_NAME_ltc(vec3 moments, float nov, ...) from an ltc_2 texel (r, g, b)
-//             vec3 fresnel_NAME_area(ltc_2 texture, float nov, float perceptual_roughness, ...)
-//                 the Fresnel-weighted norm that multiplies the LTC polygon integral
+//   area      vec3 fresnel_NAME_ltc(vec3 moments, [vec3 ltc_3,] float nov, ...) from an ltc_2
+//             texel (r, g, b) and, for the basis terms, an ltc_3 texel
+//             vec3 fresnel_NAME_area(ltc_2 [, ltc_3] texture, float nov, float
+//             perceptual_roughness, ...) the Fresnel-weighted norm that multiplies the LTC
+//             polygon integral
+// The textures an entry point samples are those holding the channels its model declares
+// (shader_textures), in the order of analysis::lut_textures().
 #include <string>
 #include <vector>
 
@@ -30,6 +35,9 @@ std::string shader_function_name(fresnel::Model m, Lighting l);
 // model's function where a lighting evaluates it, and each lighting's entry point.
 std::string shader_code(fresnel::Model m, const std::vector<Lighting>& lightings,
                         ShaderLanguage lang);
+
+// The textures fresnel_NAME_ibl / _area samples, in argument order (none for punctual lights).
+std::vector<std::string> shader_textures(fresnel::Model m, Lighting l);
 
 // A GLSL compute shader around shader_code(m, {l}) for measuring its cost: the entry point's
 // inputs come from a uniform block, its result goes to a storage buffer, so an optimizer can

@@ -1,0 +1,138 @@
+#pragma once
+// The basis models basis3, basis4, basis5: per channel, the coefficients of the first K terms of
+// the Fresnel basis {1, (1 − μ)⁵, b2, b3, b4} (fresnel/basis.h, docs/basis.md), every term a
+// table term, so that IBL and area lights pre-integrate them exactly.
+#include <array>
+#include <span>
+#include <vector>
+
+#include "fresnel/basis.h"
+#include "fresnel/derive.h"
+#include "fresnel/ground_truth.h"
+#include "fresnel/model.h"
+#include "fresnel/unit.h"
+
+namespace fl::fresnel {
+
+// Term k of the basis as a table term.
+inline constexpr Term kBasisTableTerm[kBasisTerms] = {Term::One, Term::Schlick, Term::B2, Term::B3,
+                                                      Term::B4};
+
+// F = Σ_k c_k·b_k(μ), the formula itself (no clamp: the tables integrate it as it is).
+template <class T>
+T basis_curve(T cos_theta, const T* c, int terms) {
+  T f = c[0];
+  for (int k = 1; k < terms; ++k) f = f + c[k] * basis_term(k, cos_theta);
+  return f;
+}
+
+// The least-squares coefficients of the ground-truth RGB curve, per channel (the curve computed
+// from the spectrum at the input's angles, or 91 angles uniform in θ, when it is not given).
+inline std::vector<double> basis_projection(const DeriveInput& in, int terms) {
+  std::vector<double> mu(in.cos_thetas.begin(), in.cos_thetas.end());
+  std::vector<color::Rgb> truth(in.truth.begin(), in.truth.end());
+  if (mu.empty())
+    for (int j = 0; j <= 90; ++j) mu.push_back(std::cos(j * 3.14159265358979323846 / 180.0));
+  if (truth.size() != mu.size()) {
+    const std::vector<color::Rgb> weights(in.rgb_weights.begin(), in.rgb_weights.end());
+    truth.clear();
+    for (double c : mu)
+      truth.push_back(spectral_reflectance_rgb(weights, in.ior, c, in.eta_outside));
+  }
+  std::vector<double> p;
+  for (int ch = 0; ch < 3; ++ch) {
+    std::vector<double> f;
+    for (const auto& rgb : truth) f.push_back(rgb[ch]);
+    const auto c = basis_coefficients(mu, f, terms);
+    p.insert(p.end(), c.begin(), c.begin() + terms);
+  }
+  return p;
+}
+
+namespace models {
+
+// The coefficients c0..c4 (c0 of 1, c1 of (1 − μ)⁵, c2.. of b2..).
+inline constexpr ParamSpec kBasisParams[kBasisTerms] = {
+    {"c0", "weight of 1", ParamKind::Coefficient, {-0.5, 1.5}, {-kUnbounded, kUnbounded}},
+    {"c1", "weight of (1 - mu)^5", ParamKind::Coefficient, {-0.5, 1.5}, {-kUnbounded, kUnbounded}},
+    {"c2", "weight of b2", ParamKind::Coefficient, {-1.0, 1.0}, {-kUnbounded, kUnbounded}},
+    {"c3", "weight of b3", ParamKind::Coefficient, {-1.0, 1.0}, {-kUnbounded, kUnbounded}},
+    {"c4", "weight of b4", ParamKind::Coefficient, {-1.0, 1.0}, {-kUnbounded, kUnbounded}},
+};
+inline constexpr TermWeight kBasisWeights[kBasisTerms] = {
+    {Term::One, "c0"}, {Term::Schlick, "c1"}, {Term::B2, "c2"}, {Term::B3, "c3"}, {Term::B4, "c4"}};
+// The channels of the basis terms: dfg1 and dfg2 hold 1 and (1 − μ)⁵, then one per data term.
+inline constexpr const char* kBasisIbl[] = {
+    lut_channel::kDfgScale, lut_channel::kDfgBias, term_spec(Term::B2).dfg_channel,
+    term_spec(Term::B3).dfg_channel, term_spec(Term::B4).dfg_channel};
+inline constexpr const char* kBasisArea[] = {
+    lut_channel::kLtcMatrix,         lut_channel::kLtcNorm,
+    lut_channel::kLtcSchlick,        term_spec(Term::B2).ltc_channel,
+    term_spec(Term::B3).ltc_channel, term_spec(Term::B4).ltc_channel};
+inline constexpr const char* kBasisNames[] = {"", "", "basis2", "basis3", "basis4", "basis5"};
+inline constexpr const char* kBasisLabels[] = {"",
+                                               "",
+                                               "Fresnel basis, 2 terms",
+                                               "Fresnel basis, 3 terms (c0..c2)",
+                                               "Fresnel basis, 4 terms (c0..c3)",
+                                               "Fresnel basis, 5 terms (c0..c4)"};
+// Gold-like coefficients per channel (for benchmarks and examples).
+inline constexpr double kBasisExample[3][kBasisTerms] = {{0.93, 0.06, 0.02, -0.01, 0.004},
+                                                         {0.68, 0.30, 0.03, -0.02, 0.003},
+                                                         {0.30, 0.62, 0.05, -0.02, 0.002}};
+
+template <int K>
+constexpr std::array<ParamSpec, K> basis_params() {
+  std::array<ParamSpec, K> a{};
+  for (int k = 0; k < K; ++k) a[k] = kBasisParams[k];
+  return a;
+}
+
+template <int K>
+struct Basis {
+  static_assert(K >= 2 && K <= kBasisTerms, "the basis has 2 to kBasisTerms terms");
+  static constexpr const char* kName = kBasisNames[K];
+  static constexpr const char* kLabel = kBasisLabels[K];
+  static constexpr std::array<ParamSpec, K> kChannelParams = basis_params<K>();
+  static constexpr std::array<ParamSpec, 0> kSharedParams{};
+  static constexpr bool kCanLeaveUnitRange = true;
+  static constexpr UnitFeatures kFeatures{
+      .closed_form_average = true, .table_terms = true, .identifiable = true};
+
+  // Every term is a table term: F = c0·(dfg1 + dfg2) + c1·dfg2 + Σ c_k·dfg_bk under IBL, and
+  // c0·n_d + c1·f_d + Σ c_k·bk_d under area lights; the emitter writes the shader bodies from
+  // the weights.
+  static constexpr PreIntegration kPreIntegration{
+      kPunctualAtVdotH,
+      {std::span<const char* const>(kBasisIbl).first(K), true, ""},
+      {std::span<const char* const>(kBasisArea).first(K + 1), true, ""}};
+  static constexpr ShaderCode kShader{
+      {}, "", nullptr, nullptr, std::span<const TermWeight>(kBasisWeights).first(K)};
+
+  template <class T>
+  static T channel(T cos_theta, const T* p, const T*) {
+    return basis_curve(cos_theta, p, K);
+  }
+  static TableTerms table_terms(const double* p, const double*) {
+    TableTerms w;
+    for (int k = 0; k < K; ++k) w[kBasisTableTerm[k]] = p[k];
+    return w;
+  }
+  // Each term's hemispherical average 2∫b μ dμ: 1, 1/21 and kBasisAverage.
+  static double average(const double* p, const double*) {
+    double a = p[0] + p[1] / 21.0;
+    for (int k = 2; k < K; ++k) a += p[k] * kBasisAverage[k - 2];
+    return a;
+  }
+  // The projection of the ground-truth curve on the first K terms, per channel.
+  static std::vector<double> derive(const DeriveInput& in) { return basis_projection(in, K); }
+  static std::vector<std::vector<double>> extra_starts(const DeriveInput&) { return {}; }
+  static std::vector<double> example() {
+    std::vector<double> p;
+    for (const auto& ch : kBasisExample) p.insert(p.end(), ch, ch + K);
+    return p;
+  }
+};
+
+}  // namespace models
+}  // namespace fl::fresnel
