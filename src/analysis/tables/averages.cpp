@@ -58,7 +58,7 @@ std::string median_differences(const Table& t) {
   }
   std::string out;
   for (const auto& name : order)
-    out += fmt::format("{}{} {:.4f} / {:.4f}", out.empty() ? "" : ", ", name, median(by[0][name]),
+    out += fmt::format("{}{} {:.5f} / {:.5f}", out.empty() ? "" : ", ", name, median(by[0][name]),
                        median(by[1][name]));
   return out;
 }
