@@ -57,8 +57,8 @@ std::string term_channels(bool dfg) {
 }  // namespace
 
 void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* lut =
-      app.add_subcommand("lut", "pre-integrated GGX lookup tables: dfg | ltc-moments | ltc");
+  auto* lut = app.add_subcommand(
+      "lut", "pre-integrated GGX lookup tables: dfg | ltc-moments | ltc | energy");
   lut->require_subcommand(1);
   auto dfg = std::make_shared<report::LutRequest>();
   add_lut_subcommand(*lut, g, selected, "dfg",
@@ -88,6 +88,11 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "factor), FILE_3.exr, ... (the other table terms' moments) and FILE.csv; FILE.csv writes the "
       "CSV only",
       report::ltc_lut, std::make_shared<report::LutRequest>());
+  add_lut_subcommand(*lut, g, selected, "energy",
+                     "Kulla-Conty energy compensation on the DFG grid: E(n·v, roughness) = ∫ρ cos "
+                     "and E_avg(roughness) = 2∫E(μ)μ dμ",
+                     "output file: .exr (R = E, G = E_avg), .csv or .h (C++ header)",
+                     report::energy_lut, std::make_shared<report::LutRequest>());
 }
 
 }  // namespace fl::cli
