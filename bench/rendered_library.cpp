@@ -80,5 +80,20 @@ int main(int argc, char** argv) {
                    v.size(), quantile(v, 0.5), quantile(v, 0.9), quantile(v, 0.99),
                    quantile(v, 1.0));
       }
+  // Pages where a basis model renders worse than F82 derived (index 1 in `names`).
+  for (size_t m = 2; m < names.size(); ++m)
+    for (int l = 0; l < 2; ++l) {
+      int worse = 0;
+      std::string worst;
+      double gap = 0;
+      for (size_t i = 0; i < studies.size(); ++i) {
+        const double d = rms[i][m][l] - rms[i][1][l];
+        if (d <= 0) continue;
+        ++worse;
+        if (d > gap) gap = d, worst = studies[i].material->material.name;
+      }
+      fmt::print("{} {}: worse than f82 on {} pages{}\n", names[m], l ? "area" : "ibl", worse,
+                 worse ? fmt::format(" (largest gap {:.3f}: {})", gap, worst) : "");
+    }
   return 0;
 }

@@ -360,6 +360,22 @@ void add_f_avg(std::vector<Cell>& row, const fresnel::DerivedParameters& d) {
   for (int c = 0; c < 3; ++c) row.push_back(f_avg[c]);
 }
 
+// The basis4 model's coefficients c0..c3 per channel (its derived set: the projection of the
+// ground truth on the basis), named like the model's parameters: basis4_c0_r, ...
+constexpr fresnel::Model kPresetBasis = fresnel::model_of<fresnel::models::Basis<4>>;
+void add_basis_columns(Table& t) {
+  for (const auto& name : fresnel::model_spec(kPresetBasis).param_names())
+    t.columns.push_back({fmt::format("{}_{}", fresnel::model_spec(kPresetBasis).name, name), 6});
+}
+void add_basis(std::vector<Cell>& row, const MaterialStudy& s) {
+  for (double c : s.result(kPresetBasis).derived) row.push_back(c);
+}
+constexpr const char* kBasisNote =
+    "basis4_c*: the basis4 model's coefficients per channel on the Fresnel basis {1, (1 − μ)⁵, b2, "
+    "b3} (docs/basis.md), F = c0 + c1·(1 − μ)⁵ + c2·b2(μ) + c3·b3(μ): the least-squares "
+    "projection of the ground truth, pre-integrated through the dfg/dfg_2 and ltc_2/ltc_3 "
+    "tables.";
+
 }  // namespace
 
 std::string page_kind_text(const spectral::Material& m) {
@@ -379,6 +395,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   for (const char* q : {"f0", "f82", "g", "eta", "kappa"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
   add_f_avg_columns(t);
+  add_basis_columns(t);
   t.columns.push_back({"out_of_range"});
   add_coverage_columns(t);
   t.columns.insert(t.columns.end(), {{"fit_flags"}, {"page_kind"}});
@@ -396,6 +413,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c]);
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c + 1]);
     add_f_avg(row, d);
+    add_basis(row, s);
     NamedValues unit;
     add_channels(unit, "f0", d.f0);
     add_channels(unit, "f82", d.f82);
@@ -416,6 +434,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       "g: Gulbrandsen's edge tint from (F0, Refl. η), unclamped.",
       "eta, kappa: RGB η, κ fitted with Ceres to minimize the RMS ΔE2000 against ground truth.",
       kF82AverageNote,
+      kBasisNote,
       out_of_range_note(flagged),
       "fit_flags: of the eta, kappa fit (see the models table's notes).",
       "page_kind: a database page's kind from the catalog (bulk, thin film, nanostructure, model, "
