@@ -4,8 +4,8 @@
 // F_avg = 2∫₀¹ F(μ) μ dμ per channel, μ = cos θ.
 #include <vector>
 
-#include "color/types.h"
-#include "fresnel/model.h"
+#include "color/values.h"
+#include "fresnel/model_spec.h"
 
 namespace fl::fresnel {
 

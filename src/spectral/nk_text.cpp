@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <optional>
 
-#include "spectral/errors.h"
 #include "spectral/ri_database.h"
 #include "spectral/tabulated.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

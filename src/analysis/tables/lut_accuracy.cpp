@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 #include "util/median.h"
 #include "util/parallel.h"
 
