@@ -47,8 +47,8 @@ CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, 
 }  // namespace
 
 void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* lut =
-      app.add_subcommand("lut", "pre-integrated GGX lookup tables: dfg | ltc-moments | ltc");
+  auto* lut = app.add_subcommand(
+      "lut", "pre-integrated GGX lookup tables: dfg | ltc-moments | ltc | energy");
   lut->require_subcommand(1);
   auto dfg = std::make_shared<report::LutRequest>();
   add_lut_subcommand(
@@ -76,6 +76,11 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "output: FILE.exr writes FILE_1.exr (inverse matrix), FILE_2.exr (n_D, f_D, l_D, sphere form "
       "factor) and FILE.csv; FILE.csv writes the CSV only",
       report::ltc_lut, std::make_shared<report::LutRequest>());
+  add_lut_subcommand(*lut, g, selected, "energy",
+                     "Kulla-Conty energy compensation on the DFG grid: E(n·v, roughness) = ∫ρ cos "
+                     "and E_avg(roughness) = 2∫E(μ)μ dμ",
+                     "output file: .exr (R = E, G = E_avg), .csv or .h (C++ header)",
+                     report::energy_lut, std::make_shared<report::LutRequest>());
 }
 
 }  // namespace fl::cli

@@ -11,8 +11,8 @@ namespace {
 
 constexpr int kNodes = 20;
 // Panels uniform in s with μ = 1 − (1 − s)², which smooths the (1 − μ)^p endpoint behaviour of
-// the exponent models at μ = 1 (p down to 0.5); 32 panels of 20 nodes.
-constexpr int kPanels = 32;
+// the exponent models at μ = 1 (p down to 0.5); 32 panels of 20 nodes for the models' kernels.
+constexpr int kModelPanels = 32;
 
 struct Rule {
   std::array<double, kNodes> x{}, w{};
@@ -44,21 +44,25 @@ Rule gauss_legendre_rule() {
 
 }  // namespace
 
-color::Rgb hemispherical_average_quadrature(Model m, const std::vector<double>& params) {
+color::Rgb hemispherical_average_of(const std::function<color::Rgb(double)>& f, int panels) {
   static const Rule rule = gauss_legendre_rule();
-  const auto& spec = model_spec(m);
   color::Rgb sum{};
-  for (int panel = 0; panel < kPanels; ++panel) {
-    const double s0 = static_cast<double>(panel) / kPanels, half = 0.5 / kPanels;
+  for (int panel = 0; panel < panels; ++panel) {
+    const double s0 = static_cast<double>(panel) / panels, half = 0.5 / panels;
     for (int k = 0; k < kNodes; ++k) {
       const double s = s0 + half * (rule.x[k] + 1.0);
       const double mu = 1.0 - (1.0 - s) * (1.0 - s);
       const double dmu_ds = 2.0 * (1.0 - s);
-      const auto f = spec.evaluate(mu, params.data(), false);
-      sum = sum + (2.0 * mu * dmu_ds * half * rule.w[k]) * f;
+      sum = sum + (2.0 * mu * dmu_ds * half * rule.w[k]) * f(mu);
     }
   }
   return sum;
+}
+
+color::Rgb hemispherical_average_quadrature(Model m, const std::vector<double>& params) {
+  const auto& spec = model_spec(m);
+  return hemispherical_average_of(
+      [&](double mu) { return spec.evaluate(mu, params.data(), false); }, kModelPanels);
 }
 
 bool average_in_closed_form(Model m, const std::vector<double>& params) {

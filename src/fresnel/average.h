@@ -2,6 +2,7 @@
 // The hemispherical average of a Fresnel model, for Kulla–Conty multiple-scattering energy
 // compensation (Kulla & Conty 2017, "Revisiting Physically Based Shading at Imageworks"):
 // F_avg = 2∫₀¹ F(μ) μ dμ per channel, μ = cos θ.
+#include <functional>
 #include <vector>
 
 #include "color/values.h"
@@ -14,6 +15,9 @@ namespace fl::fresnel {
 color::Rgb hemispherical_average(Model m, const std::vector<double>& params);
 // Gauss–Legendre on panels of the kernel itself (accurate to ~1e-12 for the registry's models).
 color::Rgb hemispherical_average_quadrature(Model m, const std::vector<double>& params);
+// 2∫₀¹ f(μ) μ dμ per channel of any curve, by the same rule on `panels` panels (32 for the models'
+// kernels; a smooth curve such as the spectral ground truth needs far fewer).
+color::Rgb hemispherical_average_of(const std::function<color::Rgb(double)>& f, int panels = 32);
 // Whether hemispherical_average uses the unit's closed form for these parameters.
 bool average_in_closed_form(Model m, const std::vector<double>& params);
 

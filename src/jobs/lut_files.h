@@ -40,6 +40,9 @@ Output moments_lut(const LutRequest& request, const analysis::LutProgress& progr
 // LTC fit: out.exr gives FILE_1.exr (the inverse matrix), FILE_2.exr (n_D, f_D, l_D, sphere form
 // factor) and FILE.csv; out.csv gives the CSV only.
 Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
+// Kulla–Conty's tables (analysis/lut/energy.h) on the DFG grid: out.exr (R = E(n·v, roughness),
+// G = E_avg(roughness)), out.csv or out.h (kEnergyLut and kEnergyAverage).
+Output energy_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 
 // The C++ header of a split-sum DFG table: constexpr float kDfgLut[size * size * 3].
 std::string dfg_header(const analysis::DfgTable& table);

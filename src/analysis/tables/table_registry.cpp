@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis/lut/lut.h"
+#include "analysis/tables/averages.h"
 #include "analysis/tables/lut_accuracy.h"
 #include "analysis/tables/speed.h"
 #include "analysis/tables/tables.h"
@@ -48,6 +49,10 @@ const std::vector<TableSpec>& table_specs() {
        [](TableInputs& in) { return methods_table(in.ctx, in.studies()); }},
       {"models", "every Fresnel model with derived and fitted parameters, every catalog material",
        [](TableInputs& in) { return models_table(in.ctx, in.studies()); }},
+      {"averages",
+       "hemispherical averages F_avg of every model, derived and fitted, against the ground truth "
+       "(Kulla–Conty)",
+       [](TableInputs& in) { return averages_table(in.ctx, in.studies()); }},
       {"blend",
        "parameter blending of Gulbrandsen (F0, g) against blending its results, every pair of "
        "metals",
