@@ -15,7 +15,7 @@
 #include "analysis/library/library.h"
 #include "analysis/lut/rendered.h"
 #include "analysis/tables/lut_accuracy.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 #include "util/parallel.h"
 
 using namespace fl;

@@ -14,7 +14,8 @@ ln -s "$shared" "$work/shared"
 for d in examples tests materials; do ln -s "$root/$d" "$work/repo/$d"; done
 mkdir "$work/bin"
 ln -s "$cli" "$work/bin/fresnel-lab"
-mapfile -t examples < <(sed -n 's/^  *\(fresnel-lab .*\)$/\1/p' "$root/README.md")
+# Lines starting with `fresnel-lab` inside ```sh blocks.
+mapfile -t examples < <(awk '/^ *```sh/ {sh = 1; next} /^ *```/ {sh = 0} sh && /^ *fresnel-lab / {sub(/^ */, ""); print}' "$root/README.md")
 [ "${#examples[@]}" -gt 0 ] || { echo "check-readme-examples: no example found in README.md" >&2; exit 1; }
 failed=0
 cd "$work/repo"

@@ -11,7 +11,7 @@
 #include "documents/table_formats.h"
 #include "fresnel/table_terms.h"
 #include "io/exr.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {

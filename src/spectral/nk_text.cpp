@@ -8,10 +8,10 @@
 #include <fstream>
 #include <optional>
 
-#include "spectral/errors.h"
 #include "spectral/ri_database.h"
 #include "spectral/tabulated.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {
@@ -286,12 +286,14 @@ double row_lambda_nm(const Section& s, const std::string& file, int line, double
   return lambda_nm;
 }
 
+// A field with both '.' and ',' ("1.234,5", "400,0.5,2.0") holds a thousands separator or
+// columns split by ',' where the header splits them otherwise: the message says both.
 std::string not_a_number(const std::string& column, const std::string& field) {
-  const bool grouped = field.find('.') != std::string::npos && field.find(',') != std::string::npos;
+  const bool both = field.find('.') != std::string::npos && field.find(',') != std::string::npos;
   return fmt::format("column '{}': '{}' is not a finite number{}", column, field,
-                     grouped ? " (a number with both '.' and ',' has a thousands separator, "
-                               "which is not read: write it without one)"
-                             : "");
+                     both ? " (with both '.' and ',' it holds a thousands separator, which is not "
+                            "read, or columns separated by ',' unlike the header's)"
+                          : "");
 }
 
 void add_table_row(Section& s, DecimalMark& dm, const std::string& file, int line,

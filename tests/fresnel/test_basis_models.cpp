@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "fresnel/exact.h"
-#include "fresnel/model_set.h"
 #include "fresnel/projection.h"
+#include "fresnel/registered_models.h"
 #include "fresnel/registry.h"
 #include "quadrature.h"
 

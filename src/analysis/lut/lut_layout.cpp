@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 
 namespace fl::analysis {
 

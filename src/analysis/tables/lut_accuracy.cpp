@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "fresnel/model_set.h"
 #include "fresnel/projection.h"
+#include "fresnel/registered_models.h"
 #include "util/median.h"
 #include "util/parallel.h"
 

@@ -9,7 +9,7 @@
 #include "fresnel/basis.h"
 #include "fresnel/derive.h"
 #include "fresnel/ground_truth.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 #include "fresnel/unit.h"
 
 namespace fl::fresnel {
