@@ -28,7 +28,8 @@ void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMa
 const char* const kMaterialsHelp =
     "catalog names (gold), database pages (main/Au/nk/Johnson), page globs ('main/*/nk/*', '**') "
     "or files "
-    "(refractiveindex.info .yml, CSV/text tables, SOPRA .nk, NAME.eta.spd + NAME.k.spd)";
+    "(refractiveindex.info .yml, CSV/text tables, SOPRA .nk, WVASE .mat, NAME.eta.spd + "
+    "NAME.k.spd)";
 
 std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g,
                                                 const analysis::Context& ctx,

@@ -325,7 +325,7 @@ Material resolve_material(const std::string& spec, const DataPaths& paths) {
     return read_database_page(page, paths);
   if (const auto ext = ascii_lower(fs::path(spec).extension().string());
       ext == ".csv" || ext == ".yml" || ext == ".yaml" || ext == ".txt" || ext == ".tsv" ||
-      ext == ".nk" || ext == ".spd")
+      ext == ".nk" || ext == ".mat" || ext == ".dat" || ext == ".spd")
     throw InputError(
         spec, 0,
         fmt::format("no such file (nor a catalog name in {} or a database page under {}/data)",

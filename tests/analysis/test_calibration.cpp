@@ -12,9 +12,10 @@
 namespace fl::analysis {
 namespace {
 
-// What the README's "Calibration" section states, measured on this catalog: 27 of 28 within ±0.10
-// ΔE2000, the largest difference 0.122 (gold), Spearman rank correlation 0.983 over metals and
-// 0.965 over dielectrics. The README prints three decimals: kReadmeDecimals is half its last digit.
+// What docs/conventions.md's "Calibration" section states, measured on this catalog: 27 of 28
+// within ±0.10 ΔE2000, the largest difference 0.122 (gold), Spearman rank correlation 0.983 over
+// metals and 0.965 over dielectrics. The text prints three decimals: kReadmeDecimals is half its
+// last digit.
 constexpr double kCloseDe = 0.10;
 constexpr int kReadmeClose = 27;
 constexpr double kReadmeWorst = 0.122;

@@ -184,8 +184,8 @@ TEST(BadInputCorpus, EveryCorpusEntryIsInTheManifestAndThereAreAtLeast30) {
   for (const auto& c : load_manifest())
     if (c.file != "<missing>") listed.insert(c.reader + "/" + c.file);
   std::set<std::string> present;
-  for (const char* reader :
-       {"ri_yaml", "csv", "text", "sopra", "spd", "catalog", "scene", "ocio", "env"})
+  for (const char* reader : {"ri_yaml", "csv", "text", "sopra", "spd", "wvase", "decimal_comma",
+                             "energy", "catalog", "scene", "ocio", "env"})
     for (const auto& e : fs::directory_iterator(kBadDir + "/" + reader))
       present.insert(std::string(reader) + "/" + e.path().filename().string());
   EXPECT_EQ(listed, present);
@@ -313,6 +313,24 @@ TEST(GoodInput, CsvWithBomCrlfOrCrOnlyIsAccepted) {
   std::ofstream(lf, std::ios::binary) << text;
   EXPECT_EQ(without_material(run_cli(s.dir, "curve " + quote(lf)).out),
             without_material(run_cli(s.dir, "curve " + quote(kGoodDir + "/nk_cr_only.csv")).out));
+}
+
+// The same rows as a plain CSV, a WVASE .mat and a semicolon table with decimal commas give the
+// same curve; photon energies in eV are read.
+TEST(GoodInput, WvaseMatDecimalCommasAndEnergiesAreAccepted) {
+  Scratch s("good_formats");
+  const Result plain = run_cli(s.dir, "curve " + quote(kGoodDir + "/nk_gold_like.csv"));
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_GT(std::count(plain.out.begin(), plain.out.end(), '\n'), 90);
+  for (const char* f : {"wvase_gold_like.mat", "nk_gold_like_decimal_comma.csv"}) {
+    const Result r = run_cli(s.dir, "curve " + quote(kGoodDir + "/" + f));
+    ASSERT_EQ(r.status, 0) << f << ": " << r.err;
+    EXPECT_EQ(without_material(r.out), without_material(plain.out)) << f;
+  }
+  const Result ev = run_cli(s.dir, "curve " + quote(kGoodDir + "/nk_energy_ev.csv"));
+  ASSERT_EQ(ev.status, 0) << ev.err;
+  EXPECT_GT(std::count(ev.out.begin(), ev.out.end(), '\n'), 90);
+  EXPECT_EQ(ev.out.find("nan"), std::string::npos);
 }
 
 TEST(GoodInput, CatalogEntriesWithBomAndCrlfLoad) {

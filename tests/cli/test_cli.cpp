@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -31,7 +32,7 @@ std::vector<std::string> listed_subcommands(const std::string& help) {
 
 // Every command the CLI registers, found from the help pages themselves (the top level's and, for
 // commands with their own subcommands, theirs): each prints its usage and exits 0.
-TEST(Cli, HelpForEveryCommand) {
+std::vector<std::string> registered_commands() {
   std::vector<std::string> pending{""}, visited;
   while (!pending.empty()) {
     const std::string cmd = pending.back();
@@ -43,12 +44,35 @@ TEST(Cli, HelpForEveryCommand) {
     for (const auto& sub : listed_subcommands(r.out))
       pending.push_back(cmd.empty() ? sub : cmd + " " + sub);
   }
-  // The README's command list, by name: each is registered (and so was visited above).
+  return visited;
+}
+
+TEST(Cli, HelpForEveryCommand) {
+  const auto visited = registered_commands();
+  // The README's tour, by name: each is registered (and so was visited above).
   for (const char* cmd : {"materials",  "curve",       "presets",         "table",   "reproduce",
                           "lut",        "lut dfg",     "lut ltc-moments", "lut ltc", "plot",
                           "plot strip", "plot curves", "render",          "speed",   "plan",
                           "pages",      "library",     "consensus",       "shader",  "basis"})
     EXPECT_NE(std::find(visited.begin(), visited.end(), cmd), visited.end()) << cmd;
+}
+
+// The README tours every command with an example: a line `fresnel-lab COMMAND ...` for every
+// command without subcommands of its own (`lut dfg`, not `lut`).
+TEST(Cli, ReadmeHasAnExampleOfEveryCommand) {
+  std::ifstream in(std::string(FL_SOURCE_DIR) + "/README.md");
+  const std::string readme{std::istreambuf_iterator<char>(in), {}};
+  ASSERT_FALSE(readme.empty());
+  const auto visited = registered_commands();
+  for (const auto& cmd : visited) {
+    if (cmd.empty()) continue;
+    const bool parent = std::any_of(visited.begin(), visited.end(), [&](const std::string& c) {
+      return c.rfind(cmd + " ", 0) == 0;
+    });
+    if (!parent)
+      EXPECT_NE(readme.find("fresnel-lab " + cmd + " "), std::string::npos)
+          << "README.md has no example of '" << cmd << "'";
+  }
 }
 
 TEST(Cli, UsageErrorsExitTwo) {

@@ -135,5 +135,133 @@ TEST(TextInputs, SpdPairs) {
   }
 }
 
+// Photon energies: λ = hc / E with hc = 1239.841984 eV·nm (CODATA 2018). Rows listed by increasing
+// energy are read in increasing wavelength: 3.5, 2.5, 1.5 eV are 354.24, 495.94, 826.56 nm.
+constexpr double kHc = 1239.841984;
+
+void expect_energy_data(const OpticalConstants& oc, const std::string& what) {
+  ASSERT_EQ(oc.blocks.size(), 1u) << what;
+  const auto& b = oc.blocks[0];
+  EXPECT_EQ(b.n, (std::vector<double>{1.20, 0.40, 0.30})) << what;
+  EXPECT_EQ(b.k, (std::vector<double>{2.0, 3.0, 4.0})) << what;
+  EXPECT_NEAR(b.min_nm, kHc / 3.5, 1e-9) << what;
+  EXPECT_NEAR(b.max_nm, kHc / 1.5, 1e-9) << what;
+  // Linear in wavelength between the 2.5 and 1.5 eV rows: halfway, n = 0.35 and k = 3.5.
+  const double mid = (kHc / 2.5 + kHc / 1.5) / 2;
+  const auto s = sample_ior(oc, SpectralGrid{mid, 1.0, 1}, what).ior.ior[0];
+  EXPECT_NEAR(s.real(), 0.35, kExact) << what;
+  EXPECT_NEAR(s.imag(), 3.5, kExact) << what;
+}
+
+TEST(TextInputs, EnergyColumnsInElectronVolts) {
+  test::TempDir tmp;
+  const std::pair<const char*, const char*> cases[] = {
+      {"a.csv", "Energy (eV),n,k\n1.5,0.30,4.0\n2.5,0.40,3.0\n3.5,1.20,2.0\n"},
+      {"b.txt", "eV n k\n3.5 1.20 2.0\n2.5 0.40 3.0\n1.5 0.30 4.0\n"},  // decreasing energies
+      {"c.tsv", "Photon energy [eV]\tn\tk\n1.5\t0.30\t4.0\n2.5\t0.40\t3.0\n3.5\t1.20\t2.0\n"},
+      {"d.csv", "n,k,E_eV\n0.30,4.0,1.5\n0.40,3.0,2.5\n1.20,2.0,3.5\n"},
+  };
+  for (const auto& [name, text] : cases)
+    expect_energy_data(read_optical_file(tmp.file(name, text)), name);
+  // An energy column must say eV; zero is no photon energy.
+  EXPECT_NE(
+      error_of(tmp.file("e.csv", "energy,n,k\n1.5,0.3,4\n")).find("column 'energy' names no unit"),
+      std::string::npos);
+  EXPECT_NE(error_of(tmp.file("f.csv", "eV,n,k\n0,0.3,4\n2.5,0.4,3\n"))
+                .find("photon energy 0 eV must be positive"),
+            std::string::npos);
+}
+
+// Spreadsheets in locales with a decimal comma: semicolons between columns, "0,5" for 0.5; also
+// a decimal comma between tabs or spaces, or inside a quoted CSV field.
+TEST(TextInputs, DecimalCommas) {
+  test::TempDir tmp;
+  const std::pair<const char*, const char*> cases[] = {
+      {"a.csv", "Wavelength (nm);n;k\n400;0,5;2,0\n500;0,6;2,5\n700;0,8;3,5\n"},
+      {"b.csv", "wl_um;n;k\n0,4;0,5;2\n0,5;0,6;2,5\n0,7;0,8;3,5\n"},
+      {"c.tsv", "lambda_nm\tn\tk\n400\t0,5\t2,0\n500\t0,6\t2,5\n700\t0,8\t3,5\n"},
+      {"d.txt", "lambda_nm n k\n400 0,5 2,0\n500 0,6 2,5\n700 0,8 3,5\n"},
+      {"e.csv",
+       "\"lambda_nm\",\"n\",\"k\"\n\"400\",\"0,5\",\"2,0\"\n500,\"0,6\",\"2,5\"\n700,\"0,8\",\"3,"
+       "5\"\n"},
+      {"f.csv",
+       "wavelength_nm;n;k\n400;0.5;2.0\n500;0.6;2.5\n700;0.8;3.5\n"},  // points, semicolons
+      {"g.csv", "eV;n;k\n1,5;0,30;4\n2,5;0,40;3\n3,5;1,20;2\n"},
+  };
+  for (const auto& [name, text] : cases) {
+    const auto oc = read_optical_file(tmp.file(name, text));
+    if (std::string(name) == "g.csv")
+      expect_energy_data(oc, name);
+    else
+      expect_reference_data(oc, name);
+  }
+  // One file, one decimal mark: "1,234" beside "0.5" could be a thousands separator.
+  const auto mixed =
+      tmp.file("m.csv", "wavelength_nm;n;k\n400;0,5;2,0\n500;0.6;2.5\n700;0,8;3,5\n");
+  EXPECT_NE(
+      error_of(mixed).find(mixed + ":3: '0.6' has a decimal point but line 2 has a decimal comma"),
+      std::string::npos)
+      << error_of(mixed);
+  // Decimal commas in a comma-separated file split every value in two.
+  const auto split = tmp.file("s.csv", "wavelength_nm,n,k\n400,0,5,2,0\n500,0,6,2,5\n");
+  EXPECT_NE(error_of(split).find("expected 3 columns, found 5 (with decimal commas, separate the "
+                                 "columns with ';' or tabs)"),
+            std::string::npos)
+      << error_of(split);
+}
+
+// J.A. Woollam WVASE material files: name, unit, type, then rows.
+TEST(TextInputs, WvaseMatFiles) {
+  test::TempDir tmp;
+  expect_reference_data(
+      read_optical_file(
+          tmp.file("nm.mat", "Au (test)\nnm\nNK\n400 0.5 2.0\n500\t0.6\t2.5\n700 0.8 3.5\n")),
+      "nm");
+  expect_reference_data(read_optical_file(tmp.file(
+                            "um.mat", "Au\n  um\nnk\n0.4 0.5 2.0\n0.5 0.6 2.5\n0.7 0.8 3.5\n")),
+                        "um");
+  expect_reference_data(
+      read_optical_file(tmp.file("a.mat", "Au\nA\nNK\n4000 0.5 2.0\n5000 0.6 2.5\n7000 0.8 3.5\n")),
+      "angstrom");
+  expect_energy_data(read_optical_file(tmp.file(
+                         "ev.mat", "Au\neV\nNK\n1.5 0.30 4.0\n2.5 0.40 3.0\n3.5 1.20 2.0\n")),
+                     "eV");
+  // A row count in place of the type (CompleteEASE's variant) is checked.
+  expect_reference_data(read_optical_file(tmp.file(
+                            "count.mat", "Au\nnm\n3\n400 0.5 2.0\n500 0.6 2.5\n700 0.8 3.5\n")),
+                        "count");
+  EXPECT_NE(error_of(tmp.file("count2.mat", "Au\nnm\n4\n400 0.5 2.0\n700 0.8 3.5\n"))
+                .find(":3: the header's row count is 4, but 2 rows follow"),
+            std::string::npos);
+  // E1E2: ε = (n + ik)², so n = 0.5, k = 2 is ε = -3.75 + 2i; 0.6 + 2.5i is -5.89 + 3i;
+  // 0.8 + 3.5i is -11.61 + 5.6i; a lossless 1.5 is 2.25 + 0i.
+  expect_reference_data(
+      read_optical_file(
+          tmp.file("e.mat", "Au\nnm\nE1E2\n400 -3.75 2.0\n500 -5.89 3.0\n700 -11.61 5.6\n")),
+      "E1E2");
+  const auto glass =
+      read_optical_file(tmp.file("g.mat", "BK7\nnm\nE1E2\n400 2.25 0\n500 2.25 0\n700 2.25 0\n"));
+  EXPECT_EQ(glass.blocks[0].n, (std::vector<double>{1.5, 1.5, 1.5}));
+  EXPECT_EQ(glass.blocks[0].k, (std::vector<double>{0.0, 0.0, 0.0}));
+  // A MATLAB .mat shares the extension.
+  std::string matlab = "MATLAB 5.0 MAT-file, Platform: GLNXA64";
+  matlab += std::string("\0\x01\x02", 3);
+  EXPECT_NE(error_of(tmp.file("m.mat", matlab))
+                .find(":1: a MATLAB .mat file (binary), not a J.A. Woollam WVASE material file"),
+            std::string::npos);
+}
+
+// SOPRA's count is of intervals: a file listing as many pairs as the count says is one short.
+TEST(TextInputs, SopraCountOfIntervalsIsExplained) {
+  test::TempDir tmp;
+  const auto e = error_of(tmp.file("p.nk", "4 400 700 3\n0.5 2.0\n0.6 2.5\n0.8 3.5\n"));
+  EXPECT_NE(
+      e.find(":4: expected 8 values (4 n, k pairs), found 6: the first line's count 3 is of "
+             "intervals between FIRST and LAST, so the file holds 3 + 1 points (for 3 points, "
+             "write 2)"),
+      std::string::npos)
+      << e;
+}
+
 }  // namespace
 }  // namespace fl::spectral
