@@ -4,7 +4,7 @@
 #include <exception>
 
 #include "cli/app.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 int main(int argc, char** argv) {
   try {

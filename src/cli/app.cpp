@@ -12,7 +12,7 @@
 #include "color/rgb_space.h"
 #include "draw/drawing.h"
 #include "fresnel_lab_version.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::cli {
 

@@ -8,7 +8,7 @@
 #include "analysis/library/library.h"
 #include "cli/app.h"
 #include "jobs/basis_files.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::cli {
 

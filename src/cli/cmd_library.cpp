@@ -12,7 +12,7 @@
 #include "documents/materialx.h"
 #include "documents/table_formats.h"
 #include "jobs/library_files.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::cli {
 

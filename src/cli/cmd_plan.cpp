@@ -7,7 +7,7 @@
 #include "analysis/plan/plan.h"
 #include "cli/app.h"
 #include "documents/plan_report.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::cli {
 

@@ -8,7 +8,7 @@
 #include "documents/table_formats.h"
 #include "io/writer.h"
 #include "jobs/reproduce.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::cli {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "color/lab.h"
-#include "color/types.h"
+#include "color/values.h"
 
 namespace fl::color {
 

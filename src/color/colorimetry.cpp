@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::color {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "color/types.h"
+#include "color/matrix.h"
 #include "spectral/cie.h"
 
 namespace fl::color {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "color/autodiff.h"
-#include "color/types.h"
+#include "color/matrix.h"
 
 namespace fl::color {
 

@@ -1,7 +1,7 @@
+#include "color/matrix.h"
+
 #include <cmath>
 #include <stdexcept>
-
-#include "color/types.h"
 
 namespace fl::color {
 

@@ -8,8 +8,8 @@
 
 #include "color/colorimetry.h"
 #include "color/ocio_checks.h"
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 

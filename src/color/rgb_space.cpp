@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "spectral/errors.h"
+#include "util/errors.h"
 #include "util/suggest.h"
 
 namespace fl::color {

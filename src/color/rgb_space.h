@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "color/types.h"
+#include "color/matrix.h"
 
 namespace fl::color {
 

@@ -9,7 +9,7 @@
 #include "analysis/tables/shading_presets.h"
 #include "analysis/tables/tables.h"
 #include "documents/json.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {

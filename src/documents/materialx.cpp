@@ -7,7 +7,7 @@
 
 #include "analysis/tables/shading_presets.h"
 #include "analysis/tables/tables.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 

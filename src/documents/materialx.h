@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "analysis/study/study.h"
-#include "color/types.h"
+#include "color/matrix.h"
 
 namespace fl::report {
 

@@ -4,7 +4,7 @@
 
 #include "documents/json.h"
 #include "documents/table_formats.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 
 namespace fl::report {
 namespace {

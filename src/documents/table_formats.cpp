@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "documents/json.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 #include "util/suggest.h"
 
 namespace fl::report {

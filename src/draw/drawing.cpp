@@ -17,7 +17,7 @@
 #include <stdexcept>
 
 #include "io/writer.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {

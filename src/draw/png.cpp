@@ -7,7 +7,7 @@
 
 #include "draw/drawing.h"
 #include "io/writer.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "color/lab.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 
 namespace fl::fit {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 
 namespace fl::fresnel {
 namespace {

@@ -5,8 +5,8 @@
 #include <functional>
 #include <vector>
 
-#include "color/types.h"
-#include "fresnel/model.h"
+#include "color/values.h"
+#include "fresnel/model_spec.h"
 
 namespace fl::fresnel {
 

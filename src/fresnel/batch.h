@@ -5,7 +5,7 @@
 // one angle (three channels).
 #include <cstddef>
 
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 
 namespace fl::fresnel {
 

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "color/matrix.h"
 #include "fresnel/ground_truth.h"
 
 namespace fl::fresnel {

@@ -1,7 +1,7 @@
 #pragma once
 // The exact conductor Fresnel equations as a shader helper (GLSL, translated to HLSL by the
 // emitter) for the units whose kernel calls fresnel_conductor (exact.h).
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 
 namespace fl::fresnel {
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <vector>
 
-#include "color/types.h"
+#include "color/values.h"
 #include "spectral/spectrum.h"
 
 namespace fl::fresnel {

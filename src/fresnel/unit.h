@@ -2,7 +2,7 @@
 // The closed model unit: what every entry of the registry must declare, checked at compile time.
 // A unit (models/NAME.h) is a struct with
 //   kName, kLabel                      const char*: command-line name, label for people
-//   kChannelParams, kSharedParams      std::array<ParamSpec, N> (model.h's parameter layout)
+//   kChannelParams, kSharedParams      std::array<ParamSpec, N> (model_spec.h's parameter layout)
 //   kCanLeaveUnitRange                 bool
 //   kPreIntegration                    PreIntegration: how an engine shades it per lighting
 //   kShader                            ShaderCode
@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "fresnel/derive.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 
 namespace fl::fresnel {
 

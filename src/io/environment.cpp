@@ -4,7 +4,7 @@
 
 #include "io/environment_image.h"
 #include "io/exr.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {

@@ -17,8 +17,8 @@
 #include <cstring>
 
 #include "io/writer.h"
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace fl::report {
 

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 

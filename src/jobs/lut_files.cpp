@@ -8,7 +8,7 @@
 #include "analysis/lut/energy.h"
 #include "documents/table_formats.h"
 #include "io/exr.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {

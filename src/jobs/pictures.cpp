@@ -9,7 +9,7 @@
 #include "draw/drawing.h"
 #include "draw/figures.h"
 #include "draw/png.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 
 namespace fl::report {

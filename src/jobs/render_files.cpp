@@ -15,7 +15,7 @@
 #include "io/exr.h"
 #include "io/gif.h"
 #include "jobs/pictures.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "spectral/cie_tables.h"
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

@@ -8,11 +8,11 @@
 #include <map>
 #include <optional>
 
-#include "spectral/errors.h"
 #include "spectral/nk_text.h"
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 #include "util/suggest.h"
 

@@ -8,10 +8,10 @@
 #include <fstream>
 #include <optional>
 
-#include "spectral/errors.h"
 #include "spectral/ri_database.h"
 #include "spectral/tabulated.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

@@ -6,8 +6,8 @@
 #include <optional>
 #include <regex>
 
-#include "spectral/errors.h"
 #include "spectral/yaml_file.h"
+#include "util/errors.h"
 #include "util/suggest.h"
 
 namespace fl::spectral {

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "spectral/errors.h"
 #include "spectral/tabulated.h"
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

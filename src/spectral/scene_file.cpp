@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
+#include "util/errors.h"
 #include "util/suggest.h"
 
 namespace fl::spectral {

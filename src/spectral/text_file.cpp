@@ -13,7 +13,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 

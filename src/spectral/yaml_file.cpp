@@ -6,8 +6,8 @@
 #include <map>
 #include <new>
 
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "analysis/tables/averages.h"
-#include "fresnel/models.h"
+#include "fresnel/registry.h"
 
 namespace fl::analysis {
 namespace {

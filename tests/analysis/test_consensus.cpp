@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "analysis/consensus/consensus.h"
-#include "spectral/errors.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "analysis/render/render.h"
 #include "quadrature.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl {
 namespace {

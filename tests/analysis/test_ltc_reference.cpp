@@ -12,9 +12,9 @@
 
 #include "analysis/lut/ltc_reference.h"
 #include "analysis/lut/lut.h"
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "analysis/tables/media_tables.h"
 #include "analysis/tables/tables.h"
-#include "fresnel/models.h"
-#include "spectral/errors.h"
+#include "fresnel/media.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 namespace {

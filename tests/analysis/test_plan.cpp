@@ -14,9 +14,9 @@
 
 #include "analysis/plan/plan.h"
 #include "analysis/tables/speed.h"
-#include "fresnel/model_set.h"
-#include "spectral/errors.h"
+#include "fresnel/registered_models.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include "analysis/lut/rendered_fit.h"
 #include "analysis/pipeline/materials.h"
 #include "analysis/tables/lut_accuracy.h"
-#include "fresnel/models.h"
-#include "spectral/errors.h"
+#include "fresnel/registry.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 namespace {

@@ -19,9 +19,9 @@
 #include "analysis/lut/rendered.h"
 #include "analysis/shader/shader.h"
 #include "csv_reader.h"
-#include "fresnel/model_set.h"
-#include "spectral/errors.h"
+#include "fresnel/registered_models.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 namespace {

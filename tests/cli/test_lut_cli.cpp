@@ -15,7 +15,7 @@
 
 #include "analysis/lut/lut.h"
 #include "analysis/lut/lut_layout.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 #include "io/exr.h"
 #include "test_util.h"
 

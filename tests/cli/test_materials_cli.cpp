@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "csv_reader.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 #include "test_util.h"
 
 namespace fl {

@@ -11,8 +11,8 @@
 #include "color/ocio.h"
 #include "color/rgb_space.h"
 #include "csv_reader.h"
-#include "spectral/errors.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::color {
 namespace {

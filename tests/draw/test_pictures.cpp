@@ -15,8 +15,8 @@
 #include "draw/png.h"
 #include "draw/speed_plot.h"
 #include "io/exr.h"
-#include "spectral/errors.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl {
 namespace {

@@ -9,7 +9,7 @@
 #include "analysis/tables/tables.h"
 #include "fit/fit.h"
 #include "fresnel/derive.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 
 namespace fl {
 namespace {

@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "fresnel/average.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 #include "quadrature.h"
 
 namespace fl {

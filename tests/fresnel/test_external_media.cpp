@@ -1,9 +1,9 @@
-// F0 re-expressed for an external medium of real index η_E (fresnel/models.h).
+// F0 re-expressed for an external medium of real index η_E (fresnel/media.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "fresnel/models.h"
+#include "fresnel/media.h"
 
 namespace fl::fresnel {
 namespace {

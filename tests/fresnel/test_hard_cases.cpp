@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "fresnel/exact.h"
-#include "fresnel/models.h"
+#include "fresnel/media.h"
+#include "fresnel/registry.h"
 
 namespace {
 

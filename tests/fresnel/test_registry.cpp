@@ -17,7 +17,7 @@
 #include "fresnel/batch.h"
 #include "fresnel/derive.h"
 #include "fresnel/exact.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 
 namespace fl {
 namespace {

@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "fuzz_common.h"
-#include "spectral/errors.h"
 #include "spectral/material.h"
+#include "util/errors.h"
 
 namespace {
 

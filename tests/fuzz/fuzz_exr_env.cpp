@@ -5,7 +5,7 @@
 #include "fuzz_common.h"
 #include "io/environment_image.h"
 #include "io/exr.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string path = fl::fuzz::temp_path(".exr");

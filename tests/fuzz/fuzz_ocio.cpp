@@ -6,7 +6,7 @@
 
 #include "color/ocio.h"
 #include "fuzz_common.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace {
 

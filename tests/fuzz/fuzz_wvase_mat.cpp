@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "fuzz_common.h"
-#include "spectral/errors.h"
 #include "spectral/nk_text.h"
 #include "spectral/ri_database.h"
+#include "util/errors.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string path = fl::fuzz::temp_path(".mat");

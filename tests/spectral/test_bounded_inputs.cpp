@@ -9,11 +9,11 @@
 #include <filesystem>
 #include <string>
 
-#include "spectral/errors.h"
 #include "spectral/material.h"
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

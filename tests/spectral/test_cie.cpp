@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "spectral/cie.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

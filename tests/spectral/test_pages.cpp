@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "spectral/errors.h"
 #include "spectral/material.h"
 #include "spectral/pages.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <string>
 
-#include "spectral/errors.h"
 #include "spectral/ri_database.h"
 #include "spectral/tabulated.h"
 #include "spectral/text_file.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

@@ -3,11 +3,11 @@
 
 #include <cmath>
 
-#include "spectral/errors.h"
 #include "spectral/material.h"
 #include "spectral/nk_text.h"
 #include "spectral/ri_database.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

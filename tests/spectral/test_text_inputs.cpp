@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "spectral/errors.h"
 #include "spectral/nk_text.h"
 #include "spectral/ri_database.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <string>
 
-#include "spectral/errors.h"
 #include "spectral/material.h"
 #include "spectral/yaml_file.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::spectral {
 namespace {

@@ -11,9 +11,9 @@
 #include "analysis/tables/tables.h"
 #include "color/lab.h"
 #include "fresnel/exact.h"
-#include "spectral/errors.h"
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 #include "util/median.h"
 #include "util/suggest.h"
 

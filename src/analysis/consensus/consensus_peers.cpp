@@ -10,8 +10,8 @@
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
 #include "color/lab.h"
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 

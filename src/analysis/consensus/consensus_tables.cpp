@@ -10,9 +10,9 @@
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
 #include "color/lab.h"
-#include "spectral/errors.h"
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 #include "util/median.h"
 
 namespace fl::analysis {

@@ -7,7 +7,7 @@
 
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <functional>
 
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {

@@ -8,9 +8,9 @@
 
 #include "brdf/sheen.h"
 #include "color/lab.h"
-#include "fresnel/models.h"
-#include "spectral/errors.h"
+#include "fresnel/table_terms.h"
 #include "util/codegen.h"
+#include "util/errors.h"
 #include "util/median.h"
 #include "util/parallel.h"
 

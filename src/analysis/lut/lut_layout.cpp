@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 
 namespace fl::analysis {
 

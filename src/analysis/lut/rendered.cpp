@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "color/lab.h"
-#include "fresnel/model_set.h"
-#include "spectral/errors.h"
+#include "fresnel/registered_models.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {

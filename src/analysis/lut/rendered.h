@@ -15,7 +15,7 @@
 
 #include "analysis/lut/lut.h"
 #include "analysis/pipeline/context.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 
 namespace fl::analysis {
 

@@ -6,7 +6,7 @@
 
 #include "color/ciede2000_batch.h"
 #include "fresnel/ground_truth.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {

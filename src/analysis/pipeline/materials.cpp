@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <set>
 
-#include "spectral/errors.h"
 #include "spectral/pages.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 #include "util/suggest.h"
 

@@ -7,9 +7,9 @@
 #include <set>
 
 #include "fresnel/average.h"
-#include "fresnel/model_set.h"
-#include "spectral/errors.h"
+#include "fresnel/registered_models.h"
 #include "spectral/scene_file.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 

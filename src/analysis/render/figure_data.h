@@ -11,13 +11,13 @@
 
 #include "analysis/pipeline/context.h"
 #include "analysis/render/render.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 
 namespace fl::analysis {
 
 struct FigureModel {
   fresnel::Model model;
-  std::vector<double> params;  // flat parameter vector (model_set.h)
+  std::vector<double> params;  // flat parameter vector (registered_models.h)
 };
 
 struct FigureRequest {

@@ -10,7 +10,7 @@
 #include "analysis/tables/tables.h"
 #include "color/lab.h"
 #include "fresnel/ground_truth.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {

@@ -28,8 +28,8 @@
 
 #include "analysis/pipeline/context.h"
 #include "brdf/ggx.h"
-#include "color/types.h"
-#include "fresnel/model_set.h"
+#include "color/values.h"
+#include "fresnel/registered_models.h"
 
 namespace fl::analysis {
 

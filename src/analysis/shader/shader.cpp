@@ -6,8 +6,8 @@
 #include <set>
 
 #include "analysis/lut/lut_layout.h"
-#include "fresnel/model_set.h"
-#include "spectral/errors.h"
+#include "fresnel/registered_models.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 

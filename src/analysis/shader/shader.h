@@ -1,7 +1,7 @@
 #pragma once
-// Shader code for a Fresnel model: the model's own function (from its unit's GLSL, fresnel/model.h
-// ShaderCode) and, for pre-integrated lighting, the lookup of the tables in the layout `lut` writes
-// (analysis/lut/lut_layout.h), in GLSL or HLSL.
+// Shader code for a Fresnel model: the model's own function (from its unit's GLSL,
+// fresnel/model_spec.h ShaderCode) and, for pre-integrated lighting, the lookup of the tables in
+// the layout `lut` writes (analysis/lut/lut_layout.h), in GLSL or HLSL.
 //
 // Functions, per model NAME, with its per-channel parameters as vec3 and shared ones as float:
 //   punctual  vec3 fresnel_NAME(float cos_theta, ...)      the model at a light's v·h
@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "analysis/lut/rendered.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 
 namespace fl::analysis {
 

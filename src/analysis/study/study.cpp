@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "fresnel/registry.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 #include "util/suggest.h"
 

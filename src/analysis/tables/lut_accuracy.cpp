@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "analysis/lut/rendered_fit.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 #include "util/median.h"
 #include "util/parallel.h"
 

@@ -9,8 +9,8 @@
 #include "color/ciede2000_batch.h"
 #include "fresnel/exact.h"
 #include "fresnel/media.h"
-#include "fresnel/model_set.h"
-#include "spectral/errors.h"
+#include "fresnel/registered_models.h"
+#include "util/errors.h"
 
 namespace fl::analysis {
 

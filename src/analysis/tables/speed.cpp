@@ -10,8 +10,8 @@
 #include <thread>
 
 #include "fresnel/batch.h"
-#include "spectral/errors.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 #include "util/median.h"
 
 namespace fl::analysis {

@@ -13,7 +13,7 @@
 #include "analysis/lut/rendered.h"
 #include "analysis/study/study.h"
 #include "analysis/tables/table.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 
 namespace fl::analysis {
 

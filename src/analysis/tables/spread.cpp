@@ -9,7 +9,7 @@
 
 #include "analysis/tables/tables.h"
 #include "color/lab.h"
-#include "fresnel/model_set.h"
+#include "fresnel/registered_models.h"
 #include "util/median.h"
 
 namespace fl::analysis {

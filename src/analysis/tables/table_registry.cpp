@@ -7,7 +7,7 @@
 #include "analysis/tables/lut_accuracy.h"
 #include "analysis/tables/speed.h"
 #include "analysis/tables/tables.h"
-#include "spectral/errors.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 #include "util/suggest.h"
 

@@ -7,8 +7,8 @@
 #include "analysis/tables/lut_accuracy.h"
 #include "analysis/tables/shading_presets.h"
 #include "fresnel/average.h"
-#include "fresnel/model_set.h"
-#include "spectral/errors.h"
+#include "fresnel/registered_models.h"
+#include "util/errors.h"
 #include "util/median.h"
 
 namespace fl::analysis {

@@ -6,7 +6,7 @@
 #include "fresnel/derive.h"
 #include "fresnel/exact.h"
 #include "fresnel/exact_shader.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 #include "fresnel/unit.h"
 
 namespace fl::fresnel {
@@ -66,7 +66,7 @@ struct CookTorrance {
   static T channel(T cos_theta, const T* p, const T* shared) {
     return cook_torrance(cos_theta, p[0], shared[0], shared[1]);
   }
-  // The channel split at the angle (prepare_channel, model.h).
+  // The channel split at the angle (prepare_channel, model_spec.h).
   template <class T>
   static CookTorranceShape<T> prepare(const T* p, const T* shared) {
     return cook_torrance_shape(p[0], shared[0], shared[1]);

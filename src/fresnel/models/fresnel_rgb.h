@@ -7,7 +7,7 @@
 #include "fresnel/derive.h"
 #include "fresnel/exact.h"
 #include "fresnel/exact_shader.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 #include "fresnel/models/gulbrandsen.h"
 #include "fresnel/unit.h"
 

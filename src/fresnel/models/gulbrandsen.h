@@ -8,7 +8,7 @@
 #include "fresnel/derive.h"
 #include "fresnel/exact.h"
 #include "fresnel/exact_shader.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 #include "fresnel/unit.h"
 
 namespace fl::fresnel {
@@ -113,7 +113,7 @@ struct Gulbrandsen {
   static T channel(T cos_theta, const T* p, const T*) {
     return gulbrandsen(cos_theta, p[0], p[1]);
   }
-  // The channel split at the angle (prepare_channel, model.h).
+  // The channel split at the angle (prepare_channel, model_spec.h).
   template <class T>
   static GulbrandsenIndex<T> prepare(const T* p, const T*) {
     return gulbrandsen_index(p[0], p[1]);

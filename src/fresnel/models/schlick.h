@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "fresnel/derive.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 #include "fresnel/unit.h"
 
 namespace fl::fresnel {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "color/types.h"
+#include "color/values.h"
 #include "fresnel/table_terms.h"
 
 namespace fl::fresnel {

@@ -1,11 +1,11 @@
-#include "fresnel/registry.h"
+#include "fresnel/registered_models.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
-#include "fresnel/model_set.h"
-#include "spectral/errors.h"
+#include "fresnel/registry.h"
+#include "util/errors.h"
 #include "util/suggest.h"
 
 namespace fl::fresnel {
@@ -103,30 +103,6 @@ std::vector<color::Rgb> curve(Model m, const std::vector<double>& params,
 }
 
 }  // namespace
-
-std::vector<std::string> ModelSpec::param_names() const {
-  std::vector<std::string> out;
-  for (const char* c : {"r", "g", "b"})
-    for (const auto& p : channel_params) out.push_back(std::string(p.name) + "_" + c);
-  for (const auto& p : shared_params) out.push_back(p.name);
-  return out;
-}
-
-std::vector<ParamRange> ModelSpec::bounds() const {
-  std::vector<ParamRange> out;
-  for (int c = 0; c < 3; ++c)
-    for (const auto& p : channel_params) out.push_back(p.fit);
-  for (const auto& p : shared_params) out.push_back(p.fit);
-  return out;
-}
-
-std::vector<ParamRange> ModelSpec::domain() const {
-  std::vector<ParamRange> out;
-  for (int c = 0; c < 3; ++c)
-    for (const auto& p : channel_params) out.push_back(p.domain);
-  for (const auto& p : shared_params) out.push_back(p.domain);
-  return out;
-}
 
 const std::vector<ModelSpec>& model_specs() {
   static const std::vector<ModelSpec> specs = make_specs(Registry{});

@@ -1,12 +1,12 @@
 #pragma once
 // The registry's models seen through their handles: specs, names, and generic evaluation,
-// derivation, fit starts and domain checks over the flat parameter layout (model.h).
+// derivation, fit starts and domain checks over the flat parameter layout (model_spec.h).
 #include <string>
 #include <vector>
 
-#include "color/types.h"
+#include "color/values.h"
 #include "fresnel/derive.h"
-#include "fresnel/model.h"
+#include "fresnel/model_spec.h"
 #include "fresnel/registry.h"
 
 namespace fl::fresnel {
