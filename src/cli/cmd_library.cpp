@@ -8,8 +8,7 @@
 #include "analysis/library/library.h"
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
-#include "documents/gltf.h"
-#include "documents/materialx.h"
+#include "documents/preset_formats.h"
 #include "documents/table_formats.h"
 #include "jobs/library_files.h"
 #include "util/errors.h"
@@ -59,7 +58,7 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
                                  "presets of every database page matching globs (default: every "
                                  "conductor page covering the visible range): "
                                  "every model derived and fitted, quality flags, CSV/MD/JSON, "
-                                 "MaterialX, spread table, gallery");
+                                 "MaterialX, glTF, spread table, gallery");
   struct Args {
     std::vector<std::string> globs;
     std::string out, cls = "metal";
@@ -118,28 +117,21 @@ std::vector<analysis::ConsensusRequest> requests_of(const GlobalOptions& g,
 }  // namespace
 
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
-                      const std::string& format, bool openpbr, const std::string& shader_name,
-                      const std::string& out) {
-  const bool document = format == "mtlx" || format == "gltf";
-  const auto shader = report::materialx_shader_from_name(!shader_name.empty() ? shader_name
-                                                         : openpbr            ? "open_pbr_surface"
-                                                                   : "generalized_schlick");
+                      const report::PresetFormat& format, bool openpbr, const std::string& out) {
+  const bool document = format.kind != report::PresetKind::Table;
   if (!out.empty()) require_output_folder(out);
   const auto requests = requests_of(g, specs);
   const auto ctx = make_context(g);
   analysis::StudyOptions options = analysis::presets_study_options(openpbr || document);
   const auto c =
       analysis::consensus_for(ctx, requests, options, periodic_progress(g, "consensus: reading "));
-  if (document) {
-    emit(g, out,
-         format == "mtlx" ? report::presets_materialx(ctx, c.set.studies, shader)
-                          : report::presets_gltf(ctx, c.set.studies));
-    return 0;
+  analysis::Table t;
+  if (!document) {
+    t = openpbr ? analysis::openpbr_table(ctx, c.set.studies)
+                : analysis::presets_table(ctx, c.set.studies);
+    analysis::add_uncertainty_columns(t, c.set);
   }
-  auto t = openpbr ? analysis::openpbr_table(ctx, c.set.studies)
-                   : analysis::presets_table(ctx, c.set.studies);
-  analysis::add_uncertainty_columns(t, c.set);
-  emit(g, out, report::render(t, report::format_from_name(format)));
+  emit(g, out, report::preset_document(format, {ctx, c.set.studies, t}));
   return 0;
 }
 

@@ -3,8 +3,8 @@
 #include "analysis/tables/table_registry.h"
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
-#include "documents/gltf.h"
 #include "documents/materialx.h"
+#include "documents/preset_formats.h"
 #include "documents/table_formats.h"
 #include "io/writer.h"
 #include "jobs/reproduce.h"
@@ -24,8 +24,7 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected);    //
 
 // `presets --consensus`: cli/cmd_library.cpp.
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
-                      const std::string& format, bool openpbr, const std::string& shader,
-                      const std::string& out);
+                      const report::PresetFormat& format, bool openpbr, const std::string& out);
 void add_consensus_command(CLI::App& app, GlobalOptions& g, Runner& selected);
 
 namespace {
@@ -99,41 +98,26 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
   });
 }
 
-// Refuses, before any work, a format no preset document has and options the format ignores.
-void check_preset_options(std::string& format, bool openpbr, const std::string& shader) {
-  format = report::preset_format_name(format);
-  if (openpbr && format == "gltf")
-    throw InputError(
-        "presets: --openpbr does not apply to --format gltf (glTF materials are "
-        "metallic-roughness; use mtlx, csv, md or json)");
-  if (!shader.empty() && format != "mtlx")
-    throw InputError("presets: --shader applies to --format mtlx only, not " + format);
-}
-
-// The presets of `specs` as text in `format` (a preset_format_name).
+// The presets of `specs` in `format` (documents/preset_formats.h).
 std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& specs,
-                             const std::string& format, bool openpbr, const std::string& shader) {
-  const auto mtlx_shader = report::materialx_shader_from_name(!shader.empty() ? shader
-                                                              : openpbr       ? "open_pbr_surface"
-                                                                        : "generalized_schlick");
+                             const report::PresetFormat& format, bool openpbr) {
   const auto ctx = make_context(g);
   const auto ms = load_many(g, ctx, specs);
-  if (format == "mtlx" || format == "gltf") {
+  if (format.kind != report::PresetKind::Table) {
     // Documents use the derived parameters only: no fits.
     analysis::StudyOptions derived_only;
     derived_only.fit = false;
     const auto studies =
         analysis::study_materials(ctx, ms, derived_only, study_progress(g, "deriving: "));
-    if (format == "mtlx" && !report::materialx_space(ctx).note.empty())
+    if (format.kind == report::PresetKind::MaterialX && !report::materialx_space(ctx).note.empty())
       progress(g, "presets: " + report::materialx_space(ctx).note);
-    return format == "mtlx" ? report::presets_materialx(ctx, studies, mtlx_shader)
-                            : report::presets_gltf(ctx, studies);
+    return report::preset_document(format, {ctx, studies, analysis::Table{}});
   }
   const auto studies = analysis::study_materials(ctx, ms, analysis::presets_study_options(openpbr),
                                                  study_progress(g, "fitting: "));
   const auto t =
       openpbr ? analysis::openpbr_table(ctx, studies) : analysis::presets_table(ctx, studies);
-  return report::render(t, report::format_from_name(format));
+  return report::preset_document(format, {ctx, studies, t});
 }
 
 void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
@@ -160,18 +144,18 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "consensus presets instead, with their uncertainty: an element ('Au', 'gold'), a "
                   "page glob, or NAME=GLOB[,GLOB...] (repeatable; docs/consensus.md)");
   sub->callback([&g, &selected, a] {
-    check_preset_options(a->format, a->openpbr, a->shader);
+    const auto* format = &report::preset_format(a->format, a->openpbr, a->shader);
     if (!a->consensus.empty()) {
       if (!a->materials.empty())
         throw InputError("presets: name MATERIALS or --consensus, not both");
-      selected = [&g, a] {
-        return consensus_presets(g, a->consensus, a->format, a->openpbr, a->shader, a->out);
+      selected = [&g, a, format] {
+        return consensus_presets(g, a->consensus, *format, a->openpbr, a->out);
       };
       return;
     }
     if (!a->out.empty()) require_output_folder(a->out);
-    selected = [&g, a] {
-      emit(g, a->out, preset_documents(g, a->materials, a->format, a->openpbr, a->shader));
+    selected = [&g, a, format] {
+      emit(g, a->out, preset_documents(g, a->materials, *format, a->openpbr));
       return 0;
     };
   });

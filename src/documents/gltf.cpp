@@ -8,8 +8,8 @@
 
 #include "analysis/tables/shading_presets.h"
 #include "analysis/tables/tables.h"
+#include "color/matrix.h"
 #include "documents/json.h"
-#include "util/errors.h"
 
 namespace fl::report {
 namespace {
@@ -20,6 +20,22 @@ constexpr const char* kCoveragePolicy =
     "null without k data); and extrapolated: true when the nearest measured value is held "
     "somewhere, with the held range in uncovered (a colour computed there is not measured).";
 
+// glTF's colours are linear Rec.709: values in any other working space are converted.
+struct GltfSpace {
+  bool converted = false;
+  color::Mat3 from_working, to_working;
+  std::string note;
+};
+GltfSpace gltf_space(const analysis::Context& ctx) {
+  if (ctx.space().builtin_equivalent == "lin_rec709") return {};
+  const std::string& space = ctx.settings().space;
+  const color::Mat3 m = ctx.spaces().conversion_to_builtin(space, "lin_rec709");
+  return {true, m, m.inverse(),
+          fmt::format("glTF's colours are linear Rec.709: converted from {} with OpenColorIO's "
+                      "matrix; ΔE2000 is measured in {}",
+                      space, space)};
+}
+
 Json rgb_array(const color::Rgb& v) {
   return Json::array({v.r, v.g, v.b});
 }
@@ -29,36 +45,39 @@ struct StoredColor {
   color::Rgb value;
   Json extras = Json::object();
 };
-StoredColor stored_color(const analysis::Context& ctx, const std::string& name,
-                         const color::Rgb& v) {
+StoredColor stored_color(const analysis::Context& ctx, const GltfSpace& space,
+                         const std::string& name, const color::Rgb& v) {
   analysis::NamedValues named;
   analysis::add_channels(named, name, v);
   const std::string flags = analysis::out_of_range_list(named);
   if (flags.empty()) return {v, Json::object()};
-  const auto unit = analysis::into_unit_range(ctx, v);
+  const auto unit =
+      analysis::into_unit_range(ctx, v, space.converted ? &space.to_working : nullptr);
   return {unit.value,
           Json{{name, rgb_array(v)}, {"out_of_range", flags}, {"de00_stored", unit.de00}}};
 }
 
-Json dielectric(const analysis::ShadingPreset& p, Json& extras, std::set<std::string>& used) {
+Json dielectric(const analysis::ShadingPreset& p, const color::Rgb& f0, Json& extras,
+                std::set<std::string>& used) {
   Json pbr{{"baseColorFactor", p.clear ? Json::array({1, 1, 1, 1}) : Json::array({0, 0, 0, 1})},
            {"metallicFactor", 0}};
   Json ext{{"KHR_materials_ior", {{"ior", p.ior}}}};
   const double s = (p.ior - 1) / (p.ior + 1), f0_of_ior = s * s;
   color::Rgb tint;
-  for (int c = 0; c < 3; ++c) tint[c] = p.f0[c] / f0_of_ior;
+  for (int c = 0; c < 3; ++c) tint[c] = f0[c] / f0_of_ior;
   if (std::max({std::abs(tint.r - 1), std::abs(tint.g - 1), std::abs(tint.b - 1)}) >
       kSpecularColorMin)
     ext["KHR_materials_specular"] = {{"specularColorFactor", rgb_array(tint)}};
   if (p.clear) ext["KHR_materials_transmission"] = {{"transmissionFactor", 1}};
   for (auto it = ext.begin(); it != ext.end(); ++it) used.insert(it.key());
-  extras["f0"] = rgb_array(p.f0);
+  extras["f0"] = rgb_array(f0);
   return Json{{"pbrMetallicRoughness", std::move(pbr)}, {"extensions", std::move(ext)}};
 }
 
-Json material(const analysis::Context& ctx, const analysis::MaterialStudy& s,
-              std::set<std::string>& used) {
+Json material(const analysis::Context& ctx, const GltfSpace& space,
+              const analysis::MaterialStudy& s, std::set<std::string>& used) {
   const auto p = analysis::shading_preset(ctx, s);
+  const color::Rgb f0 = space.converted ? color::transform_rgb(space.from_working, p.f0) : p.f0;
   const auto& c = s.material->coverage;
   Json extras{{"source", s.material->material.source},
               {"coverage", c.both},
@@ -68,13 +87,13 @@ Json material(const analysis::Context& ctx, const analysis::MaterialStudy& s,
   if (c.extrapolated) extras["uncovered"] = c.uncovered;
   Json m{{"name", s.material->material.name}};
   if (p.metal) {
-    auto base = stored_color(ctx, "f0", p.f0);
+    auto base = stored_color(ctx, space, "f0", f0);
     Json color = rgb_array(base.value);
     color.push_back(1);
     m["pbrMetallicRoughness"] = {{"baseColorFactor", std::move(color)}, {"metallicFactor", 1}};
     extras.update(base.extras);
   } else {
-    m.update(dielectric(p, extras, used));
+    m.update(dielectric(p, f0, extras, used));
   }
   m["extras"] = {{"fresnelLab", std::move(extras)}};
   return m;
@@ -84,13 +103,10 @@ Json material(const analysis::Context& ctx, const analysis::MaterialStudy& s,
 
 std::string presets_gltf(const analysis::Context& ctx,
                          const std::vector<analysis::MaterialStudy>& studies) {
-  if (ctx.space().builtin_equivalent != "lin_rec709")
-    throw InputError(fmt::format(
-        "glTF materials are linear Rec.709 (sRGB primaries, D65), not {}: use --space lin_rec709",
-        ctx.settings().space));
+  const GltfSpace space = gltf_space(ctx);
   std::set<std::string> used;
   Json materials = Json::array();
-  for (const auto& s : studies) materials.push_back(material(ctx, s, used));
+  for (const auto& s : studies) materials.push_back(material(ctx, space, s, used));
   const std::string policy = fmt::format(
       "Colours outside [0, 1] by more than {:g} cannot be stored: the colour of [0, 1]^3 nearest "
       "in ΔE2000 is, and the "
@@ -106,6 +122,7 @@ std::string presets_gltf(const analysis::Context& ctx,
                 {{"setting", analysis::setting_note(ctx)},
                  {"coverage_policy", kCoveragePolicy},
                  {"out_of_range_policy", policy}}}}}}}};
+  if (space.converted) doc["asset"]["extras"]["fresnelLab"]["colour_space"] = space.note;
   if (!used.empty())
     doc["extensionsUsed"] = Json(std::vector<std::string>(used.begin(), used.end()));
   doc["materials"] = std::move(materials);

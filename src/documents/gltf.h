@@ -7,8 +7,9 @@
 
 namespace fl::report {
 
-// glTF's colours are linear Rec.709 (sRGB primaries, D65), so the working space must be lin_rec709
-// (or an OCIO space equal to it); InputError otherwise. Metals: baseColorFactor = F0,
+// glTF's colours are linear Rec.709 (sRGB primaries, D65): colours in any other working space are
+// converted with OpenColorIO's matrix (asset.extras say so), and the ΔE2000 of a stored colour is
+// measured in the working space. Metals: baseColorFactor = F0,
 // metallicFactor 1. Dielectrics: metallicFactor 0, KHR_materials_ior with the index of
 // analysis::ShadingPreset, KHR_materials_specular's specularColorFactor = F0 / ((η − 1)/(η + 1))²
 // when that differs from white by more than kSpecularColorMin in a channel, and

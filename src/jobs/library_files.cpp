@@ -8,7 +8,7 @@
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
 #include "documents/html.h"
-#include "documents/materialx.h"
+#include "documents/preset_formats.h"
 #include "documents/table_formats.h"
 #include "draw/png.h"
 #include "jobs/pictures.h"
@@ -136,8 +136,10 @@ std::string readme(const analysis::Context& ctx, const analysis::Library& lib,
       "[library.json](library.json): one row "
       "per page (presets, every model's RMS ΔE2000, flags)\n- [models.csv](models.csv): "
       "every model's derived and fitted parameters and errors per page\n- "
-      "[library.mtlx](library.mtlx), [library_openpbr.mtlx](library_openpbr.mtlx): MaterialX "
-      "(generalized_schlick_bsdf; open_pbr_surface)\n"
+      "[library.mtlx](library.mtlx), [library_openpbr.mtlx](library_openpbr.mtlx), "
+      "[library_standard_surface.mtlx](library_standard_surface.mtlx): MaterialX "
+      "(generalized_schlick_bsdf; open_pbr_surface; standard_surface)\n- "
+      "[library.gltf](library.gltf): glTF 2.0 materials\n"
       "- [skipped.csv](skipped.csv): every page left out, with its reason\n- "
       "[spread.md](spread.md), "
       "[spread.csv](spread.csv): the spread between pages of the same metal\n"
@@ -213,15 +215,10 @@ Files library_files(const analysis::Context& ctx, const analysis::Library& lib, 
                     const std::string& command) {
   Files files;
   const auto t = analysis::library_table(ctx, lib.rows, &lib.consensus);
-  for (const auto f : {Format::Csv, Format::Markdown, Format::Json})
-    files.emplace_back(std::string("library.") + extension(f), render(t, f));
+  for (auto& f : preset_files("library", {ctx, lib.rows, t})) files.push_back(std::move(f));
   auto models = analysis::models_table(ctx, lib.rows);
   models.name = "library_models";
   files.emplace_back("models.csv", to_csv(models));
-  files.emplace_back("library.mtlx",
-                     presets_materialx(ctx, lib.rows, MaterialxShader::GeneralizedSchlick));
-  files.emplace_back("library_openpbr.mtlx",
-                     presets_materialx(ctx, lib.rows, MaterialxShader::OpenPbrSurface));
   files.emplace_back("skipped.csv", to_csv(analysis::skipped_table(lib.set.skipped)));
   const auto spread = analysis::spread_table(ctx, lib.studies);
   files.emplace_back("spread.csv", to_csv(spread));

@@ -1,5 +1,6 @@
 #pragma once
-// The files of `library`: the preset library of database pages as tables, MaterialX and a gallery.
+// The files of `library`: the preset library of database pages in every preset format, and a
+// gallery.
 #include <string>
 #include <vector>
 
@@ -8,9 +9,10 @@
 
 namespace fl::report {
 
-// Paths relative to the output folder: library.csv / .md / .json (one row per page), models.csv
-// (every model, derived and fitted, per page), library.mtlx and library_openpbr.mtlx (MaterialX:
-// generalized_schlick_bsdf, open_pbr_surface), skipped.csv (every page left out, with its reason),
+// Paths relative to the output folder: library.csv / .md / .json (one row per page) and every other
+// preset format of documents/preset_formats.h (library.mtlx, library_openpbr.mtlx,
+// library_standard_surface.mtlx, library.gltf), models.csv (every model, derived and fitted, per
+// page), skipped.csv (every page left out, with its reason),
 // spread.csv / .md (the spread between pages of the same metal), index.html (the gallery and those
 // tables, searchable and sortable), gallery.md with strips/PAGE.png (the ground truth's colour over
 // 0-90° per page, with its flags) when `gallery` is set, and README.md (what went in, what came

@@ -7,7 +7,7 @@
 
 #include "analysis/tables/tables.h"
 #include "documents/html.h"
-#include "documents/materialx.h"
+#include "documents/preset_formats.h"
 #include "documents/table_formats.h"
 #include "jobs/pictures.h"
 #include "util/parallel.h"
@@ -83,23 +83,22 @@ std::string report_page(const analysis::Context& ctx,
   return html_report(page);
 }
 
-// The presets as JSON and three MaterialX documents, with their row of the index.
+// The presets in every other format of the registry (documents/preset_formats.h: JSON, three
+// MaterialX documents, glTF), with their row of the index; the table loop wrote the CSV and
+// Markdown.
 void add_documents(const analysis::Context& ctx,
                    const std::vector<analysis::MaterialStudy>& studies,
                    const analysis::Table& presets, Files& files, std::string& index) {
-  files.emplace_back("presets.json", to_json(presets));
-  files.emplace_back("presets.mtlx",
-                     presets_materialx(ctx, studies, MaterialxShader::GeneralizedSchlick));
-  files.emplace_back("presets_openpbr.mtlx",
-                     presets_materialx(ctx, studies, MaterialxShader::OpenPbrSurface));
-  files.emplace_back("presets_standard_surface.mtlx",
-                     presets_materialx(ctx, studies, MaterialxShader::StandardSurface));
+  std::string links;
+  for (auto& f : preset_files("presets", {ctx, studies, presets}, {"presets.csv", "presets.md"})) {
+    links += fmt::format("{}[{}]({})", links.empty() ? "" : ", ", f.first, f.first);
+    files.push_back(std::move(f));
+  }
   index +=
-      "| presets (JSON, MaterialX) | the presets as JSON, and MaterialX documents: one "
-      "generalized_schlick_bsdf, "
-      "open_pbr_surface or standard_surface per material | [presets.json](presets.json), "
-      "[presets.mtlx](presets.mtlx), [presets_openpbr.mtlx](presets_openpbr.mtlx), "
-      "[presets_standard_surface.mtlx](presets_standard_surface.mtlx) |\n";
+      "| presets (JSON, MaterialX, glTF) | the presets as JSON, MaterialX documents (one "
+      "generalized_schlick_bsdf, open_pbr_surface or standard_surface per material) and glTF 2.0 "
+      "materials | " +
+      links + " |\n";
 }
 
 // The figures and the sphere flips, with their row of the index; the flips for index.html.

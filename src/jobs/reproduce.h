@@ -8,10 +8,10 @@
 
 namespace fl::report {
 
-// Every table of table_specs() marked for reproduce as NAME.csv and NAME.md, presets.json,
-// presets.mtlx, the figures (reproduce_figures) when `figures` is set, and README.md indexing
-// them; paths relative to the output folder. `log` gets one progress line per table and one for the
-// figures.
+// Every table of table_specs() marked for reproduce as NAME.csv and NAME.md, the presets in every
+// other format of documents/preset_formats.h (presets.json, presets*.mtlx, presets.gltf), the
+// figures (reproduce_figures) when `figures` is set, and README.md indexing them; paths relative to
+// the output folder. `log` gets one progress line per table and one for the figures.
 Files reproduce_files(analysis::TableInputs& in, bool figures,
                       const std::function<void(const std::string&)>& log);
 

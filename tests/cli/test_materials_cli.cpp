@@ -224,8 +224,11 @@ TEST(MaterialsCli, LibraryListsEveryPageInOrSkippedWithItsReasonAndFlagsExtrapol
   EXPECT_EQ(skipped[0].at("reason_class"), "class dielectric");
   EXPECT_EQ(skipped[1].at("page"), "main/M/nk/Bad");
   EXPECT_NE(skipped[1].at("reason").find("Bad.yml:4: n = -1 is not physical"), std::string::npos);
-  for (const char* f : {"library.md", "library.json", "library.mtlx", "models.csv", "gallery.md",
-                        "README.md", "spread.md"})
+  for (const char* f : {"models.csv", "gallery.md", "README.md", "spread.md"})
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+  // Every preset format (documents/preset_formats.h), glTF and Standard Surface included.
+  for (const char* f : {"library.csv", "library.md", "library.json", "library.mtlx",
+                        "library_openpbr.mtlx", "library_standard_surface.mtlx", "library.gltf"})
     EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
   const auto gallery = test::run_command("cat '" + out + "/gallery.md'").out;
   EXPECT_NE(gallery.find("**Extrapolated**: n and k data does not cover 360-695 nm"),

@@ -235,11 +235,39 @@ TEST(Exports, ProvenanceStatesSourceCoverageAndExtrapolation) {
   EXPECT_TRUE(gltf.at("asset").at("extras").at("fresnelLab").contains("coverage_policy"));
 }
 
-TEST(Exports, GltfRefusesOtherSpaces) {
-  const auto r = test::run_command(test::cli() + " -q presets --format gltf");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--space lin_rec709"), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty());
+// Published ACES AP1 → linear Rec.709 matrix (ACES TB-2014-004, Bradford D60 → D65).
+constexpr double kAp1ToRec709[9] = {1.70505,  -0.62179, -0.08326, -0.13026, 1.14080,
+                                    -0.01055, -0.02400, -0.12897, 1.15297};
+
+// In ACEScg the glTF document converts the colours to linear Rec.709 and says so: a metal's F0 (its
+// stored colour, or the true value in its extras when that is outside [0, 1]) is the ACEScg
+// preset's F0 through the published matrix.
+TEST(Exports, GltfConvertsOtherSpaces) {
+  const auto doc = nlohmann::json::parse(run_ok("presets --format gltf"));
+  const auto presets = csv_rows(run_ok("presets --format csv"));
+  ASSERT_EQ(doc.at("materials").size(), presets.size());
+  EXPECT_NE(doc["asset"]["extras"]["fresnelLab"]
+                .at("colour_space")
+                .get<std::string>()
+                .find("converted from acescg"),
+            std::string::npos);
+  int metals = 0;
+  for (size_t i = 0; i < presets.size(); ++i) {
+    if (presets[i].at("class") != "metal") continue;
+    ++metals;
+    const auto& m = doc["materials"][i];
+    const auto& extras = m["extras"]["fresnelLab"];
+    const auto f0 = extras.contains("f0") ? rgb(extras["f0"])
+                                          : rgb(m["pbrMetallicRoughness"]["baseColorFactor"]);
+    const double acescg[3] = {std::stod(presets[i].at("f0_r")), std::stod(presets[i].at("f0_g")),
+                              std::stod(presets[i].at("f0_b"))};
+    for (int c = 0; c < 3; ++c) {
+      const double want = kAp1ToRec709[3 * c] * acescg[0] + kAp1ToRec709[3 * c + 1] * acescg[1] +
+                          kAp1ToRec709[3 * c + 2] * acescg[2];
+      EXPECT_NEAR(f0[c], want, 5e-4) << presets[i].at("material") << " channel " << c;
+    }
+  }
+  EXPECT_GT(metals, 0);
 }
 
 // The flag's tolerance: lossless dielectrics' g (0 analytically, quadrature noise up to 2e-5) is

@@ -4,7 +4,8 @@
 #   check_exports.sh KIND CLI DB MATERIALS OUT_DIR
 #   KIND: generalized_schlick | open_pbr_surface | standard_surface (MaterialX documents in every
 #   built-in space and two spaces of tests/good_input/ocio/studio.ocio, one of which MaterialX
-#   does not know) or gltf (glTF materials in linear Rec.709, built-in and through the config).
+#   does not know) or gltf (glTF materials in linear Rec.709, built-in and through the config, and
+#   converted from ACEScg). Each also checks the document `library` writes in that format.
 set -euo pipefail
 kind=$1 cli=$2 db=$3 materials=$4 out=$5
 here=$(cd "$(dirname "$0")" && pwd)
@@ -14,11 +15,20 @@ command -v node >/dev/null || { echo "check_exports: node not found (scripts/set
 rm -rf "$out"
 mkdir -p "$out"
 fl() { "$cli" -q --db "$db" --materials "$materials" "$@"; }
+# The library's documents: two gold pages, every preset format (documents/preset_formats.h).
+fl library 'main/Au/nk/J*' --no-gallery --out "$out/library"
 if [ "$kind" = gltf ]; then
   fl --space lin_rec709 presets --format gltf >"$out/presets.gltf"
   fl --ocio-config "$config" --space "Linear Rec.709 (sRGB)" presets --format gltf >"$out/presets_ocio.gltf"
+  fl presets --format gltf >"$out/presets_acescg.gltf"
+  cp "$out/library/library.gltf" "$out/library.gltf"
   exec node "$here/gltf.mjs" "$out"/*.gltf
 fi
+case "$kind" in
+  generalized_schlick) cp "$out/library/library.mtlx" "$out/$kind-library.mtlx" ;;
+  open_pbr_surface) cp "$out/library/library_openpbr.mtlx" "$out/$kind-library.mtlx" ;;
+  *) cp "$out/library/library_$kind.mtlx" "$out/$kind-library.mtlx" ;;
+esac
 for space in acescg lin_rec709 aces2065-1 lin_rec2020 lin_p3d65; do
   fl --space "$space" presets --format mtlx --shader "$kind" >"$out/$kind-$space.mtlx"
 done

@@ -64,11 +64,13 @@ OpenPbrParameters open_pbr_parameters(const ShadingPreset& p) {
   return o;
 }
 
-UnitRangeColor into_unit_range(const Context& ctx, const color::Rgb& v) {
-  const color::Lab target = ctx.rgb_to_lab(v);
-  auto cost = [&](const color::Rgb& c) {
-    return color::ciede2000<double>(target, ctx.rgb_to_lab(c));
+UnitRangeColor into_unit_range(const Context& ctx, const color::Rgb& v,
+                               const color::Mat3* to_working) {
+  auto lab = [&](const color::Rgb& c) {
+    return ctx.rgb_to_lab(to_working ? color::transform_rgb(*to_working, c) : c);
   };
+  const color::Lab target = lab(v);
+  auto cost = [&](const color::Rgb& c) { return color::ciede2000<double>(target, lab(c)); };
   UnitRangeColor out;
   const double scale = std::max({v.r, v.g, v.b, 1.0});
   for (int c = 0; c < 3; ++c) out.value[c] = std::clamp(v[c] / scale, 0.0, 1.0);

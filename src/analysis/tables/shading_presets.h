@@ -60,6 +60,9 @@ struct UnitRangeColor {
   color::Rgb value;
   double de00 = 0;
 };
-UnitRangeColor into_unit_range(const Context& ctx, const color::Rgb& v);
+// `to_working` given, v is in another RGB space (a document's) and the matrix takes it to the
+// working space, where the ΔE2000 is measured.
+UnitRangeColor into_unit_range(const Context& ctx, const color::Rgb& v,
+                               const color::Mat3* to_working = nullptr);
 
 }  // namespace fl::analysis
