@@ -18,7 +18,9 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
   sub->add_option("--models", r->models,
                   "comma-separated models, or all: " + analysis::model_names())
       ->capture_default_str();
-  sub->add_option("--params", r->params, "derived (from the spectral procedure) or fitted (Ceres)")
+  sub->add_option("--params", r->params,
+                  "derived (the spectral procedure), fitted (to the curve) or rendered (to the "
+                  "render under IBL and area lights)")
       ->capture_default_str();
   sub->add_option("--out", r->out,
                   std::string(out_help) +
@@ -66,7 +68,9 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
       sub->add_option("--compare", r->compare,
                       "comma-separated models (or all) rendered against the truth in one pass");
   sub->get_option("--model")->excludes(compare);
-  sub->add_option("--params", r->params, "derived or fitted model parameters")
+  sub->add_option(
+         "--params", r->params,
+         "derived, fitted (to the curve) or rendered (to the render under IBL and area lights)")
       ->capture_default_str();
   sub->add_option("--env", r->env,
                   "a latitude-longitude OpenEXR environment (default: the analytic sky)");

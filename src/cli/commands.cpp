@@ -52,13 +52,15 @@ void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("MATERIALS", *materials, kMaterialsHelp)->required();
   sub->add_option("--model", *model, "Fresnel model: " + analysis::model_names())
       ->capture_default_str();
-  sub->add_option("--params", *params, "derived (from the spectral procedure) or fitted (Ceres)")
+  sub->add_option("--params", *params,
+                  "derived (the spectral procedure), fitted (to the curve) or rendered (to the "
+                  "render under IBL and area lights)")
       ->capture_default_str();
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, materials, model, format, params] {
     selected = [&g, materials, model, format, params] {
       const auto f = report::format_from_name(*format);
-      analysis::wants_fitted(*params);
+      analysis::parameter_set_from_name(*params);
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, *materials);
       fmt::print("{}", report::render(analysis::curve_table(ctx, ms, *model, *params), f));

@@ -69,7 +69,7 @@ Json choice_json(const analysis::Scene& scene, const analysis::PlanChoice& m) {
   }
   return {{"material", m.material},
           {"model", fresnel::model_spec(m.model).name},
-          {"parameters", m.fitted ? "fitted" : "derived"},
+          {"parameters", analysis::parameter_set_name(m.set)},
           {"params", params_json(m)},
           {"roughness", m.roughness},
           {"rms_de00", errors},
@@ -185,7 +185,7 @@ std::string scene_markdown(const analysis::Plan& p) {
   s += table_header(p.scene, false);
   for (const auto& m : sc.materials)
     s += fmt::format("| {} | {} |{} {} | {} | {} | {} |\n", m.material,
-                     m.fitted ? "fitted" : "derived", lighting_cells(p.scene, m), error_name(m),
+                     analysis::parameter_set_name(m.set), lighting_cells(p.scene, m), error_name(m),
                      m.meets_budget ? "yes" : "**no**", f_avg_text(m.f_avg), params_text(m));
   s += "\nTables for this shader:\n\n" + luts_markdown(p.scene_luts);
   return s;
@@ -211,14 +211,16 @@ std::string plan_markdown(const analysis::Plan& p, const analysis::PlanCosts& co
     unserved += !m.meets_budget;
     s += fmt::format(
         "| {} | {} | {} |{} {} | {} | {} | {} |\n", m.material, fresnel::model_spec(m.model).name,
-        m.fitted ? "fitted" : "derived", lighting_cells(p.scene, m), error_name(m),
+        analysis::parameter_set_name(m.set), lighting_cells(p.scene, m), error_name(m),
         m.meets_budget ? "yes" : "**no** (best model shown)", f_avg_text(m.f_avg), params_text(m));
   }
   s += "\nTables for the per-material choices:\n\n" + luts_markdown(p.luts);
   s += fmt::format(
       "\nPer material the cheapest model (GPU instructions of its shader functions for the scene's "
       "lighting, from {}; "
-      "then CPU ns, from {}) whose error meets the budget, from derived and fitted parameter sets. "
+      "then CPU ns, from {}) whose error meets the budget, from derived, fitted (to the curve) and "
+      "rendered (fitted to the "
+      "render at the scene's roughness) parameter sets. "
       "Errors: the curve's "
       "RMS ΔE2000 under punctual lights; under ibl and area the RMS ΔE2000 over the roughness "
       "values × view angles "
@@ -248,7 +250,7 @@ std::string plan_shader(const analysis::Plan& p, analysis::ShaderLanguage lang) 
       sc.materials.size(), join(lighting_list(p.scene), ", "), fresnel::model_spec(sc.model).name,
       sc.failing.empty() ? "" : fmt::format(" (over budget: {})", join(sc.failing, ", ")));
   for (const auto& m : sc.materials)
-    s += fmt::format("//   {} ({}): {}\n", m.material, m.fitted ? "fitted" : "derived",
+    s += fmt::format("//   {} ({}): {}\n", m.material, analysis::parameter_set_name(m.set),
                      params_text(m));
   for (const auto& l : p.scene_luts)
     s += fmt::format("// table {} ({}): {} — {}\n", l.file, l.lighting, join(l.channels, ", "),

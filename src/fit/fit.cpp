@@ -141,7 +141,8 @@ std::vector<int> extinction_indices(Model m) {
   return out;
 }
 
-FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> params,
+// One bounded solve of `cost` (owned by the problem from here) from `params`.
+FitResult solve_cost(Model m, ceres::CostFunction* cost, std::vector<double> params,
                      const FitOptions& options) {
   const auto bounds = fresnel::model_spec(m).bounds();
   for (size_t i = 0; i < params.size(); ++i) {
@@ -152,7 +153,7 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
   const auto held = options.lossless ? extinction_indices(m) : std::vector<int>{};
   for (int i : held) params[i] = 0.0;
   ceres::Problem problem;
-  problem.AddResidualBlock(create_cost(m, &target), nullptr, params.data());
+  problem.AddResidualBlock(cost, nullptr, params.data());
   if (!held.empty())
     problem.SetManifold(params.data(),
                         new ceres::SubsetManifold(static_cast<int>(params.size()), held));
@@ -179,6 +180,36 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
   r.usable = summary.IsSolutionUsable() && std::isfinite(summary.final_cost);
   r.iteration_limit = summary.termination_type == ceres::NO_CONVERGENCE;
   return r;
+}
+
+FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> params,
+                     const FitOptions& options) {
+  return solve_cost(m, create_cost(m, &target), std::move(params), options);
+}
+
+// The residual function as Ceres sees it: central differences (ResidualFunction's contract).
+struct NumericResiduals {
+  const ResidualFunction* f;
+  bool operator()(double const* const* params, double* residuals) const {
+    return (*f)(params[0], residuals);
+  }
+};
+
+ceres::CostFunction* numeric_cost(const ResidualFunction& f, int params, int residuals) {
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<NumericResiduals, ceres::CENTRAL>(
+      new NumericResiduals{&f});
+  cost->AddParameterBlock(params);
+  cost->SetNumResiduals(residuals);
+  return cost;
+}
+
+// ½ Σ r² of a residual function at `params` (infinity where it fails or is not finite).
+double residual_cost(const ResidualFunction& f, int residuals, const std::vector<double>& params) {
+  std::vector<double> r(residuals);
+  if (!f(params.data(), r.data())) return std::numeric_limits<double>::infinity();
+  double cost = 0;
+  for (double x : r) cost += 0.5 * x * x;
+  return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
 
 // ½ Σ ΔE2000² at `params`, from the residuals the solves minimize (ciede2000_residuals_batch).
@@ -223,23 +254,27 @@ std::vector<std::string> pinned_parameters(Model m, const CurveTarget& target,
 }
 }  // namespace
 
-FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<double>> starts,
-                    const FitOptions& options) {
-  // Rank the starts by their cost (cheap), then solve from the best few.
+namespace {
+
+// Ranks the starts by cost(start) (cheap), solves from the best few with solve(start) and keeps the
+// lowest final cost; never worse than the best start.
+template <class Cost, class Solve>
+FitResult best_of_starts(Model m, std::vector<std::vector<double>> starts,
+                         const FitOptions& options, Cost cost, Solve solve) {
   std::vector<std::pair<double, size_t>> ranked;
   const auto held = options.lossless ? extinction_indices(m) : std::vector<int>{};
   for (size_t i = 0; i < starts.size(); ++i) {
     if (static_cast<int>(starts[i].size()) != fresnel::model_spec(m).param_count())
       throw std::invalid_argument("fit_model: wrong parameter count");
     for (int h : held) starts[i][h] = 0.0;
-    ranked.emplace_back(start_cost(m, target, starts[i]), i);
+    ranked.emplace_back(cost(starts[i]), i);
   }
   std::stable_sort(ranked.begin(), ranked.end());
   if (static_cast<int>(ranked.size()) > options.max_solves) ranked.resize(options.max_solves);
   FitResult best;
   bool have = false;
   for (const auto& [cost0, index] : ranked) {
-    FitResult r = solve_once(m, target, starts[index], options);
+    FitResult r = solve(starts[index]);
     if (r.usable && (!have || r.cost < best.cost)) {
       best = std::move(r);
       have = true;
@@ -257,9 +292,31 @@ FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<
     best.kept_start = have;
     best.iteration_limit = false;
   }
-  best.at_bound = pinned_parameters(m, target, best.parameters);
   best.starts = static_cast<int>(ranked.size());
   return best;
+}
+
+}  // namespace
+
+FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<double>> starts,
+                    const FitOptions& options) {
+  FitResult best = best_of_starts(
+      m, std::move(starts), options,
+      [&](const std::vector<double>& p) { return start_cost(m, target, p); },
+      [&](const std::vector<double>& p) { return solve_once(m, target, p, options); });
+  best.at_bound = pinned_parameters(m, target, best.parameters);
+  return best;
+}
+
+FitResult fit_model_residuals(Model m, int residual_count, const ResidualFunction& residuals,
+                              std::vector<std::vector<double>> starts, const FitOptions& options) {
+  const int n = fresnel::model_spec(m).param_count();
+  return best_of_starts(
+      m, std::move(starts), options,
+      [&](const std::vector<double>& p) { return residual_cost(residuals, residual_count, p); },
+      [&](const std::vector<double>& p) {
+        return solve_cost(m, numeric_cost(residuals, n, residual_count), p, options);
+      });
 }
 
 std::string fit_flags(const FitResult& r) {

@@ -54,7 +54,7 @@ std::vector<fresnel::Model> parse_models(const std::string& list) {
 
 void check_plot_request(const PlotRequest& r) {
   file_type(r.out);
-  analysis::wants_fitted(r.params);
+  analysis::parameter_set_from_name(r.params);
   parse_models(r.models);
 }
 

@@ -235,7 +235,7 @@ void check_render_request(const RenderRequest& r) {
   if (lower_extension(r.out) != ".exr")
     throw InputError(r.out, 0,
                      "the render output must be an .exr file (the PNGs are written beside it)");
-  analysis::wants_fitted(r.params);
+  analysis::parameter_set_from_name(r.params);
   const auto& rs = r.settings;
   if (!(rs.roughness >= 0.0 && rs.roughness <= 1.0))
     throw InputError(fmt::format("--roughness {} out of range (0 to 1)", rs.roughness));

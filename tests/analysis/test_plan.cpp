@@ -143,7 +143,7 @@ TEST(Plan, NdotVApproximationIsMeasuredNotHidden) {
   const auto points = fl::analysis::shading_points({0.8});
   const auto rendered = fl::analysis::rendered_candidates(ctx, studies[0], points);
   const auto rgb = std::find_if(rendered.begin(), rendered.end(), [](const auto& c) {
-    return c.model == model_of<models::FresnelRgb> && c.fitted;
+    return c.model == model_of<models::FresnelRgb> && c.set == fl::analysis::ParameterSet::Fitted;
   });
   ASSERT_NE(rgb, rendered.end());
   EXPECT_LT(rgb->punctual_rms, 0.05);  // the curve is the truth's
@@ -250,7 +250,7 @@ std::vector<fl::analysis::PlanChoice> hand_candidates(const std::string& name, d
       fl::analysis::PlanChoice c;
       c.material = name;
       c.model = spec.model;
-      c.fitted = fitted != 0;
+      c.set = fitted ? fl::analysis::ParameterSet::Fitted : fl::analysis::ParameterSet::Derived;
       c.params = {fitted ? 2.0 : 1.0};
       c.error = (fitted ? h.fitted : h.derived) + offset;
       if (hand_row(spec.model)) {
@@ -346,7 +346,7 @@ TEST(Plan, ChoiceOnAHandMadeTable) {
             false}}) {  // nothing qualifies: the most accurate
     const auto c = fl::analysis::choose_model(cands, w.budget);
     EXPECT_EQ(c.model, w.model) << "budget " << w.budget;
-    EXPECT_EQ(c.fitted, w.fitted) << "budget " << w.budget;
+    EXPECT_EQ(c.set == fl::analysis::ParameterSet::Fitted, w.fitted) << "budget " << w.budget;
     EXPECT_EQ(c.error, w.error) << "budget " << w.budget;
     EXPECT_EQ(c.meets_budget, w.meets) << "budget " << w.budget;
     EXPECT_EQ(c.params, std::vector<double>{w.fitted ? 2.0 : 1.0}) << "budget " << w.budget;
@@ -355,7 +355,7 @@ TEST(Plan, ChoiceOnAHandMadeTable) {
   const Model ct = model_of<models::CookTorrance>;
   const auto c = fl::analysis::choose_model(hand_candidates("hand-made", 0.0, &ct), 0.5);
   EXPECT_EQ(c.model, model_of<models::Gulbrandsen>);
-  EXPECT_FALSE(c.fitted);
+  EXPECT_EQ(c.set, fl::analysis::ParameterSet::Derived);
 }
 
 // A candidate whose cost is unmeasured ranks after every measured one: chosen only when no
@@ -369,7 +369,7 @@ TEST(Plan, UnmeasuredCostRanksLast) {
   unmeasure(model_of<models::Schlick>);
   auto c = fl::analysis::choose_model(cands, 2.5);  // schlick fitted (2.0) is no longer first
   EXPECT_EQ(c.model, model_of<models::F82>);
-  EXPECT_FALSE(c.fitted);
+  EXPECT_EQ(c.set, fl::analysis::ParameterSet::Derived);
   unmeasure(model_of<models::FresnelRgb>);
   c = fl::analysis::choose_model(cands, 0.07);  // only fresnel_rgb fitted (0.05) qualifies
   EXPECT_EQ(c.model, model_of<models::FresnelRgb>);
@@ -390,11 +390,12 @@ TEST(Plan, SceneWideChoiceOnAHandMadeTable) {
   EXPECT_TRUE(s.failing.empty());
   EXPECT_NEAR(s.max_error, 1.5, 1e-12);
   ASSERT_EQ(s.materials.size(), 3u);
-  EXPECT_FALSE(s.materials[0].fitted);  // 0.9 either way: derived first
+  EXPECT_EQ(s.materials[0].set,
+            fl::analysis::ParameterSet::Derived);  // 0.9 either way: derived first
   s = fl::analysis::choose_scene_model(cands, 1.0);
   EXPECT_EQ(s.model, model_of<models::FresnelRgb>);
   EXPECT_TRUE(s.failing.empty());
-  EXPECT_TRUE(s.materials[0].fitted);
+  EXPECT_EQ(s.materials[0].set, fl::analysis::ParameterSet::Fitted);
   s = fl::analysis::choose_scene_model(cands, 0.3);
   EXPECT_EQ(s.model, model_of<models::FresnelRgb>);
   EXPECT_EQ(s.failing, (std::vector<std::string>{"B", "C"}));

@@ -113,17 +113,18 @@ TEST(LutCli, BadInputExitsTwoAndWritesNothing) {
   }
 }
 
-// Every model × {ibl, area} for every metal; pre-integrated F82 is no worse than pre-integrated
-// Schlick for any metal, with either parameter set, under either lighting.
+// Every model × {ibl, area} for every material; pre-integrated F82 is no worse than pre-integrated
+// Schlick for any metal, with the derived or the curve-fitted sets, under either lighting.
 TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
   const auto r = test::run_command(test::cli() + " -q table lut-accuracy");
   ASSERT_EQ(r.status, 0) << r.err;
   std::istringstream in(r.out);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line,
-            "material,model,parameters,curve_rms_de00,ibl,ibl_rms_de00,ibl_max_de00,area,area_rms_"
-            "de00,area_max_de00");
+  EXPECT_EQ(
+      line,
+      "material,class,model,parameters,curve_rms_de00,ibl,ibl_rms_de00,ibl_max_de00,area,area_"
+      "rms_de00,area_max_de00");
   std::map<std::string, std::array<double, 2>> schlick, f82;  // "material/parameters" → (ibl, area)
   std::set<std::string> metals, models;
   while (std::getline(in, line)) {
@@ -131,15 +132,16 @@ TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
     std::string cell;
     std::vector<std::string> cells;
     while (std::getline(row, cell, ',')) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 10u) << line;
-    metals.insert(cells[0]);
-    models.insert(cells[1]);
-    const std::array<double, 2> e{std::stod(cells[5]), std::stod(cells[8])};
-    if (cells[1] == "schlick") schlick[cells[0] + "/" + cells[2]] = e;
-    if (cells[1] == "f82") f82[cells[0] + "/" + cells[2]] = e;
+    ASSERT_EQ(cells.size(), 11u) << line;
+    models.insert(cells[2]);
     const bool tables =
-        fresnel::model_from_name(cells[1]).pre_integration.ibl.fresnel_pre_integrated;
-    EXPECT_EQ(cells[4], tables ? "tables" : "F(n·v) × lobe") << line;
+        fresnel::model_from_name(cells[2]).pre_integration.ibl.fresnel_pre_integrated;
+    EXPECT_EQ(cells[5], tables ? "tables" : "F(n·v) × lobe") << line;
+    if (cells[1] != "metal" || cells[3] == "rendered") continue;
+    metals.insert(cells[0]);
+    const std::array<double, 2> e{std::stod(cells[6]), std::stod(cells[9])};
+    if (cells[2] == "schlick") schlick[cells[0] + "/" + cells[3]] = e;
+    if (cells[2] == "f82") f82[cells[0] + "/" + cells[3]] = e;
   }
   EXPECT_EQ(metals.size(), 14u);                            // the catalog's metals
   EXPECT_EQ(models.size(), fresnel::model_specs().size());  // every model

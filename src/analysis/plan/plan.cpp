@@ -113,7 +113,7 @@ std::vector<PlanChoice> plan_candidates(const Scene& scene,
     PlanChoice c;
     c.material = material;
     c.model = r.model;
-    c.fitted = r.fitted;
+    c.set = r.set;
     c.params = r.params;
     c.roughness = roughness;
     c.punctual_rms = r.punctual_rms;

@@ -1,8 +1,8 @@
 #pragma once
-// `plan SCENE.yaml`: for each material of a scene, the cheapest Fresnel model (derived or fitted
-// parameters) whose error as rendered under the scene's lighting meets the scene's budget; the
-// scene-wide choice (one shader: the cheapest single model meeting every material's budget); and
-// the lookup tables (texture channels) they need.
+// `plan SCENE.yaml`: for each material of a scene, the cheapest Fresnel model (derived, fitted or
+// rendered parameters) whose error as rendered under the scene's lighting meets the scene's budget;
+// the scene-wide choice (one shader: the cheapest single model meeting every material's budget);
+// and the lookup tables (texture channels) they need.
 //
 // Error as rendered (analysis/lut/rendered.h): under `ibl` and `area` the RMS ΔE2000 over the
 // material's roughness values × the shading view angles, of what the engine computes from the
@@ -65,7 +65,7 @@ struct PlanCosts {
 struct PlanChoice {
   std::string material;  // display name
   fresnel::Model model{};
-  bool fitted = false;
+  ParameterSet set = ParameterSet::Derived;
   std::vector<double> params;
   std::vector<double> roughness;
   double punctual_rms = 0, ibl_rms = 0, area_rms = 0;  // the scene's lightings only
@@ -89,7 +89,7 @@ std::vector<PlanChoice> plan_candidates(const Scene& scene,
 PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de00);
 
 // One shader for the scene: one model for every material, each material with its parameter set
-// (derived or fitted) of lower error.
+// (derived, fitted or rendered) of lowest error.
 struct SceneChoice {
   fresnel::Model model{};
   std::vector<PlanChoice> materials;    // meets_budget per material

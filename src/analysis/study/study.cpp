@@ -3,7 +3,9 @@
 #include <algorithm>
 
 #include "fresnel/registry.h"
+#include "util/errors.h"
 #include "util/parallel.h"
+#include "util/suggest.h"
 
 namespace fl::analysis {
 
@@ -13,6 +15,28 @@ const ModelResult& MaterialStudy::result(Model m) const {
   for (const auto& r : models)
     if (r.model == m) return r;
   throw std::logic_error("model not studied");
+}
+
+const char* parameter_set_name(ParameterSet s) {
+  switch (s) {
+    case ParameterSet::Derived:
+      return "derived";
+    case ParameterSet::Fitted:
+      return "fitted";
+    case ParameterSet::Rendered:
+      return "rendered";
+  }
+  return "";
+}
+
+ParameterSet parameter_set_from_name(const std::string& name) {
+  std::vector<NameChoice> choices;
+  for (const auto s : {ParameterSet::Derived, ParameterSet::Fitted, ParameterSet::Rendered})
+    choices.push_back({parameter_set_name(s), {}});
+  if (const auto match = match_name(name, choices))
+    for (const auto s : {ParameterSet::Derived, ParameterSet::Fitted, ParameterSet::Rendered})
+      if (*match == parameter_set_name(s)) return s;
+  throw InputError(unknown_name_message("parameter set", name, choices));
 }
 
 fit::CurveTarget curve_target(const Context& ctx, const std::vector<color::Rgb>& truth) {

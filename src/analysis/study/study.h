@@ -3,6 +3,7 @@
 // parameters, and every model's derived and fitted parameter sets with their errors.
 #include <algorithm>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "analysis/pipeline/context.h"
@@ -11,12 +12,20 @@
 
 namespace fl::analysis {
 
+// A model's parameter sets: derived by the spectral procedure, fitted to the curve (Ceres), or
+// fitted to the rendered result under IBL and area lights (analysis/lut/rendered_fit.h).
+enum class ParameterSet { Derived, Fitted, Rendered };
+const char* parameter_set_name(ParameterSet s);  // derived | fitted | rendered
+// InputError naming the choices (and the closest) for anything else.
+ParameterSet parameter_set_from_name(const std::string& name);
+
 struct ModelResult {
   fresnel::Model model;
   std::vector<double> derived;
   CurveError derived_error;
   fit::FitResult fitted;
   CurveError fitted_error;
+  fit::FitResult rendered;  // empty unless asked for (add_rendered_fits)
   bool derived_clamps = false,
        fitted_clamps = false;  // the kernel's output clamp changed the curve
 };

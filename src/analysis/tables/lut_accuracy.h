@@ -15,7 +15,7 @@ namespace fl::analysis {
 // lighting.
 struct RenderedCandidate {
   fresnel::Model model{};
-  bool fitted = false;
+  ParameterSet set = ParameterSet::Derived;
   std::vector<double> params;
   double punctual_rms = 0;
   ErrorStats ibl, area;
@@ -24,14 +24,20 @@ struct RenderedCandidate {
     return l == Lighting::Punctual ? punctual_rms : under(l).rms;
   }
 };
-// Every model's derived set, and its fitted set where the fit is usable, in registry order.
+// Every model's derived set, its fitted set where the fit is usable, and its set fitted to the
+// render at `points` (fit_rendered from the other two), in registry order.
 std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const MaterialStudy& study,
                                                    const std::vector<ShadingPoint>& points);
+// ModelResult::rendered of every studied model (of `models` only, when not empty): fit_rendered at
+// `points`, starting from the derived and curve-fitted sets.
+void add_rendered_fits(const Context& ctx, MaterialStudy& study,
+                       const std::vector<ShadingPoint>& points,
+                       const std::vector<fresnel::Model>& models = {});
 
 // The shading points lut-accuracy renders: the default roughness set × the view angles.
 std::vector<ShadingPoint> lut_accuracy_points();
-// `table lut-accuracy`: per metal, every model × {derived, fitted} under ibl and area, at
-// lut_accuracy_points().
+// `table lut-accuracy`: per material, every model × {derived, fitted, rendered} under ibl and area,
+// at lut_accuracy_points().
 Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
                          const std::vector<ShadingPoint>& points);
 

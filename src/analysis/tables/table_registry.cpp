@@ -83,8 +83,8 @@ const std::vector<TableSpec>& table_specs() {
          return talk_misses_table(in.ctx, in.materials, in.group_pages().studies);
        }},
       {"lut-accuracy",
-       "every model as rendered under IBL (DFG) and area lights (LTC moments) against brute-force "
-       "spectral integration, metals",
+       "every model (derived, fitted, fitted to the render) as rendered under IBL (DFG) and area "
+       "lights (LTC moments) against brute-force spectral integration",
        [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.studies(), in.lut_points()); }},
       {"speed",
        "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, "

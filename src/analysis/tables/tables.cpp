@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "analysis/tables/lut_accuracy.h"
 #include "analysis/tables/shading_presets.h"
 #include "fresnel/average.h"
 #include "fresnel/registered_models.h"
@@ -103,25 +104,30 @@ std::string model_names() {
   return s;
 }
 
-bool wants_fitted(const std::string& kind) {
-  if (kind != "derived" && kind != "fitted")
-    throw InputError(fmt::format("--params must be derived or fitted, not '{}'", kind));
-  return kind == "fitted";
-}
-
 MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one,
                         const std::string& kind, const std::vector<fresnel::Model>& models) {
+  const ParameterSet set = parameter_set_from_name(kind);
   StudyOptions o;
-  o.fit = wants_fitted(kind);
+  o.fit = set != ParameterSet::Derived;
   o.fitted_models = models;
   o.threads = 1;
-  return study_materials(ctx, one, o).front();
+  MaterialStudy st = study_materials(ctx, one, o).front();
+  if (set == ParameterSet::Rendered) add_rendered_fits(ctx, st, lut_accuracy_points(), models);
+  return st;
 }
 
 const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m,
                                         const std::string& kind) {
   const auto& r = st.result(m);
-  return wants_fitted(kind) ? r.fitted.parameters : r.derived;
+  switch (parameter_set_from_name(kind)) {
+    case ParameterSet::Fitted:
+      return r.fitted.parameters;
+    case ParameterSet::Rendered:
+      return r.rendered.parameters;
+    case ParameterSet::Derived:
+      break;
+  }
+  return r.derived;
 }
 
 namespace {
@@ -134,8 +140,11 @@ void add_curve_rows(Table& t, const Context& ctx, const LoadedMaterial& m,
   const auto& params = model_params(st, spec.model, parameters);
   const auto approx = fresnel::evaluate_curve(spec.model, params, ctx.cos_thetas());
   const auto de = de2000_per_angle(ctx, st.truth, approx);
-  const std::string flags =
-      wants_fitted(parameters) ? fit::fit_flags(st.result(spec.model).fitted) : "";
+  const ParameterSet set = parameter_set_from_name(parameters);
+  const auto& r = st.result(spec.model);
+  const std::string flags = set == ParameterSet::Fitted     ? fit::fit_flags(r.fitted)
+                            : set == ParameterSet::Rendered ? fit::fit_flags(r.rendered)
+                                                            : "";
   for (size_t i = 0; i < st.truth.size(); ++i) {
     t.rows.push_back({ctx.angles_deg()[i], st.truth[i].r, st.truth[i].g, st.truth[i].b, approx[i].r,
                       approx[i].g, approx[i].b, de[i], m.material.name});
@@ -157,7 +166,7 @@ void add_curve_rows(Table& t, const Context& ctx, const LoadedMaterial& m,
 Table curve_table(const Context& ctx, const std::vector<LoadedMaterial>& materials,
                   const std::string& model, const std::string& parameters) {
   const auto& spec = fresnel::model_from_name(model);
-  wants_fitted(parameters);
+  parameter_set_from_name(parameters);
   Table t;
   t.name = "curve";
   t.title = materials.size() == 1

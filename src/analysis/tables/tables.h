@@ -48,14 +48,13 @@ StudyOptions presets_study_options(bool openpbr);
 // "schlick, generalized_schlick, ...": every model's name, for option help.
 std::string model_names();
 
-// A parameter set's name, "derived" or "fitted" (InputError otherwise): whether it is the fitted
-// one.
-bool wants_fitted(const std::string& kind);
-// The study of one material, fitting only for `kind` "fitted", and then only `models` (empty: every
-// model). `one` holds the material and must outlive the study, which points into it.
+// The study of one material with the parameter set `kind` names (parameter_set_from_name): curve
+// fits for "fitted" and "rendered", and then only of `models` (empty: every model); rendered fits
+// (add_rendered_fits at lut_accuracy_points) for "rendered". `one` holds the material and must
+// outlive the study, which points into it.
 MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one,
                         const std::string& kind, const std::vector<fresnel::Model>& models = {});
-// A model's derived or fitted parameters (`kind`) from a study.
+// A model's derived, fitted or rendered parameters (`kind`) from a study.
 const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m,
                                         const std::string& kind);
 

@@ -1,0 +1,23 @@
+#pragma once
+// Parameters fitted to the rendered result rather than to the curve: what an engine computes from
+// the lookup tables (or from the model at n·v where no table holds it) under image-based and area
+// lights, against the brute-force spectral lobe integrals (rendered.h), over every shading point.
+#include <vector>
+
+#include "analysis/lut/rendered.h"
+#include "fit/fit.h"
+
+namespace fl::analysis {
+
+// The lightings a rendered fit matches, one parameter set for both (a material ships one).
+inline constexpr std::array<Lighting, 2> kRenderedFitLightings{Lighting::Ibl, Lighting::Area};
+
+// Minimizes ½ Σ ΔE2000² over kRenderedFitLightings × `points` (three residuals per point and
+// lighting whose squares sum to ΔE2000², color::ciede2000_residuals_batch) between `truth`
+// (lobe_truth at the points) and engine_shading, from `starts` (the derived and curve-fitted sets),
+// within the model's fit box.
+fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& truth,
+                            fresnel::Model m, const std::vector<ShadingPoint>& points,
+                            std::vector<std::vector<double>> starts, bool lossless);
+
+}  // namespace fl::analysis
