@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "analysis/ltc/ltc_table.h"
 #include "analysis/lut/energy.h"
 #include "analysis/lut/lut_layout.h"
 #include "documents/table_formats.h"
