@@ -14,8 +14,8 @@
 #include <map>
 #include <vector>
 
-#include "analysis/lut/lut.h"
-#include "fit/ltc_fit.h"
+#include "analysis/ltc/ltc_fit.h"
+#include "analysis/ltc/ltc_table.h"
 
 namespace {
 

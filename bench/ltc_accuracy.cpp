@@ -1,6 +1,6 @@
 // The 64 × 64 LTC fit (`lut ltc`) against ltc_code's published table (Heitz, Dupuy, Hill & Neubelt
 // 2016; fit/results/ltc.inc of Heitz & Hill's ltc_code), cell by cell on held-out error
-// (analysis/lut/ltc_reference.h), and the fit's wall and CPU time (medians of --runs runs, default
+// (analysis/ltc/ltc_reference.h), and the fit's wall and CPU time (medians of --runs runs, default
 // 5). Writes Markdown; scripts/ltc_accuracy.sh writes reports/ltc-vs-ltc_code.md with it.
 //   ltc_accuracy [--out FILE] [--runs N] [--reference ltc.inc]
 #include <fmt/format.h>
@@ -15,9 +15,9 @@
 #include <thread>
 #include <vector>
 
-#include "analysis/lut/ltc_reference.h"
+#include "analysis/ltc/ltc_comparison.h"
+#include "analysis/ltc/ltc_reference.h"
 #include "analysis/lut/lut.h"
-#include "analysis/tables/ltc_comparison.h"
 #include "documents/table_formats.h"
 #include "io/writer.h"
 #include "util/median.h"

@@ -1,6 +1,7 @@
 #pragma once
-// The GGX lobe and the LTC density written independently of src/ (brdf/ggx.h, fit/ltc_fit.h),
-// from the papers' own forms, for the tests' references. Only the vector type is shared.
+// The GGX lobe and the LTC density written independently of src/ (brdf/ggx.h,
+// analysis/ltc/ltc_fit.h), from the papers' own forms, for the tests' references. Only the vector
+// type is shared.
 #include <algorithm>
 #include <array>
 #include <cmath>

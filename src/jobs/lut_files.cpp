@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "analysis/ltc/ltc_table.h"
 #include "analysis/lut/energy.h"
 #include "documents/table_formats.h"
 #include "io/exr.h"

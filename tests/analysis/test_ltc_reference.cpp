@@ -1,4 +1,4 @@
-// The LTC table against ltc_code's published fit (analysis/lut/ltc_reference.h; Heitz, Dupuy, Hill
+// The LTC table against ltc_code's published fit (analysis/ltc/ltc_reference.h; Heitz, Dupuy, Hill
 // & Neubelt 2016, shared/testdata/ltc_code): the reader against values read off the file, and a fit
 // on every third cell of ltc_code's grid judged against it on held-out error, cell by cell and at
 // the midpoints where bilinear lookups mix neighbouring cells.
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/lut/ltc_reference.h"
+#include "analysis/ltc/ltc_reference.h"
 #include "analysis/lut/lut.h"
 #include "spectral/text_file.h"
 #include "test_util.h"

@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "analysis/lut/ltc_reference.h"
+#include "analysis/ltc/ltc_fit.h"
+#include "analysis/ltc/ltc_reference.h"
 #include "analysis/lut/lut.h"
 #include "brdf/ggx.h"
 #include "dfg_reference.h"
-#include "fit/ltc_fit.h"
 #include "ggx_reference.h"
 #include "quadrature.h"
 
@@ -202,7 +202,7 @@ TEST(Lut, DISABLED_FullTablesAgreeWithQuadrature) {
 
 // ---- ltc_code's published fit (Heitz, Dupuy, Hill & Neubelt 2016; shared/testdata/ltc_code).
 
-// fit/results/ltc.inc read by analysis/lut/ltc_reference.h (its reader is tested in
+// fit/results/ltc.inc read by analysis/ltc/ltc_reference.h (its reader is tested in
 // test_ltc_reference.cpp), in ltc_grid(64)'s cell order.
 const LtcReferenceTable& ltc_code() {
   static const LtcReferenceTable t =

@@ -1,7 +1,7 @@
-// Linearly transformed cosines (fit/ltc_fit.h): the density against its definition, the matrix and
-// its inverse, the sampler against the density, the held-out L3 error against quadrature, the fit's
-// analytic Jacobian against differences, the Ceres fit on a target it can represent exactly (a
-// known answer), and the held-out check of a cell's fit.
+// Linearly transformed cosines (analysis/ltc/ltc_fit.h): the density against its definition, the
+// matrix and its inverse, the sampler against the density, the held-out L3 error against
+// quadrature, the fit's analytic Jacobian against differences, the Ceres fit on a target it can
+// represent exactly (a known answer), and the held-out check of a cell's fit.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "fit/ltc_fit.h"
+#include "analysis/ltc/ltc_fit.h"
 #include "ggx_reference.h"
 #include "quadrature.h"
 

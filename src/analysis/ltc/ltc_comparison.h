@@ -1,9 +1,9 @@
 #pragma once
-// A fitted LTC table against ltc_code's published fit (analysis/lut/ltc_reference.h) as report
+// A fitted LTC table against ltc_code's published fit (analysis/ltc/ltc_reference.h) as report
 // tables.
 #include <vector>
 
-#include "analysis/lut/ltc_reference.h"
+#include "analysis/ltc/ltc_reference.h"
 #include "analysis/tables/table.h"
 
 namespace fl::analysis {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/lut/lut.h"
+#include "analysis/ltc/ltc_table.h"
 
 namespace fl::analysis {
 

@@ -1,4 +1,4 @@
-#include "analysis/tables/ltc_comparison.h"
+#include "analysis/ltc/ltc_comparison.h"
 
 #include <fmt/format.h>
 

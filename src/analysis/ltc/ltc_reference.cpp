@@ -1,4 +1,4 @@
-#include "analysis/lut/ltc_reference.h"
+#include "analysis/ltc/ltc_reference.h"
 
 #include <fmt/format.h>
 

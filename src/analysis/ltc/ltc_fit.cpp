@@ -1,4 +1,4 @@
-#include "fit/ltc_fit.h"
+#include "analysis/ltc/ltc_fit.h"
 
 #include <ceres/ceres.h>
 #include <fmt/format.h>
