@@ -187,26 +187,56 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
   return solve_cost(m, create_cost(m, &target), std::move(params), options);
 }
 
-// The residual function as Ceres sees it: central differences (ResidualFunction's contract).
-struct NumericResiduals {
-  const ResidualFunction* f;
-  bool operator()(double const* const* params, double* residuals) const {
-    return (*f)(params[0], residuals);
+// ½ Σ ΔE2000² between a ColourTarget's truth and its colours: the residuals and their derivatives
+// over RGB from one batch (color::ciede2000_residuals_batch), the colours' derivatives over the
+// parameters by central differences (ColourTarget's contract), joined by the chain rule.
+class ColourCost : public ceres::CostFunction {
+ public:
+  ColourCost(const ColourTarget* target, int params) : t_(target), n_(target->truth_lab.size()) {
+    mutable_parameter_block_sizes()->push_back(params);
+    set_num_residuals(static_cast<int>(3 * n_));
   }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const int np = parameter_block_sizes()[0];
+    std::vector<double> p(parameters[0], parameters[0] + np);
+    std::vector<color::Rgb> rgb(n_), up(n_), down(n_);
+    if (!t_->colours(p.data(), rgb.data())) return false;
+    std::vector<double> d_rgb(9 * n_);
+    color::ciede2000_residuals_batch(t_->to_lab, t_->truth_lab, rgb, std::span(residuals, 3 * n_),
+                                     d_rgb);
+    if (!jacobians || !jacobians[0]) return true;
+    for (int j = 0; j < np; ++j) {
+      // Step of 1e-6 relative (at least 1e-6): central differences' error is O(h²).
+      const double h = 1e-6 * std::max(1.0, std::abs(p[j])), pj = p[j];
+      p[j] = pj + h;
+      if (!t_->colours(p.data(), up.data())) return false;
+      p[j] = pj - h;
+      if (!t_->colours(p.data(), down.data())) return false;
+      p[j] = pj;
+      for (size_t i = 0; i < n_; ++i)
+        for (int q = 0; q < 3; ++q) {
+          double d = 0;
+          for (int c = 0; c < 3; ++c)
+            d += d_rgb[(3 * q + c) * n_ + i] * (up[i][c] - down[i][c]) / (2 * h);
+          jacobians[0][(3 * i + q) * np + j] = d;
+        }
+    }
+    return true;
+  }
+
+ private:
+  const ColourTarget* t_;
+  size_t n_;
 };
 
-ceres::CostFunction* numeric_cost(const ResidualFunction& f, int params, int residuals) {
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<NumericResiduals, ceres::CENTRAL>(
-      new NumericResiduals{&f});
-  cost->AddParameterBlock(params);
-  cost->SetNumResiduals(residuals);
-  return cost;
-}
-
-// ½ Σ r² of a residual function at `params` (infinity where it fails or is not finite).
-double residual_cost(const ResidualFunction& f, int residuals, const std::vector<double>& params) {
-  std::vector<double> r(residuals);
-  if (!f(params.data(), r.data())) return std::numeric_limits<double>::infinity();
+// ½ Σ ΔE2000² of a ColourTarget at `params` (infinity where it fails or is not finite).
+double colour_cost(const ColourTarget& t, const std::vector<double>& params) {
+  const size_t n = t.truth_lab.size();
+  std::vector<color::Rgb> rgb(n);
+  if (!t.colours(params.data(), rgb.data())) return std::numeric_limits<double>::infinity();
+  std::vector<double> r(3 * n), d_rgb(9 * n);
+  color::ciede2000_residuals_batch(t.to_lab, t.truth_lab, rgb, r, d_rgb);
   double cost = 0;
   for (double x : r) cost += 0.5 * x * x;
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
@@ -308,14 +338,14 @@ FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<
   return best;
 }
 
-FitResult fit_model_residuals(Model m, int residual_count, const ResidualFunction& residuals,
-                              std::vector<std::vector<double>> starts, const FitOptions& options) {
+FitResult fit_model_colours(Model m, const ColourTarget& target,
+                            std::vector<std::vector<double>> starts, const FitOptions& options) {
   const int n = fresnel::model_spec(m).param_count();
   return best_of_starts(
       m, std::move(starts), options,
-      [&](const std::vector<double>& p) { return residual_cost(residuals, residual_count, p); },
+      [&](const std::vector<double>& p) { return colour_cost(target, p); },
       [&](const std::vector<double>& p) {
-        return solve_cost(m, numeric_cost(residuals, n, residual_count), p, options);
+        return solve_cost(m, new ColourCost(&target, n), p, options);
       });
 }
 

@@ -51,16 +51,20 @@ struct FitOptions {
 FitResult fit_model(fresnel::Model model, const CurveTarget& target,
                     std::vector<std::vector<double>> starts, const FitOptions& options = {});
 
-// Residuals r(params) of a least-squares problem: fills `residuals` and returns true, or false
-// where it cannot be evaluated. Differentiated by central differences, so it must be smooth in the
-// parameters and pure (called from one thread per fit).
-using ResidualFunction = std::function<bool(const double* params, double* residuals)>;
-// fit_model for any cost ½ Σ r² over the model's parameters, within its fit box (the same starts,
-// ranking and never-worse-than-the-best-start rule; no at_bound check).
-FitResult fit_model_residuals(fresnel::Model model, int residual_count,
-                              const ResidualFunction& residuals,
-                              std::vector<std::vector<double>> starts,
-                              const FitOptions& options = {});
+// Colours that depend on a model's parameters (rendered shading, say) and the truth they should
+// match: `colours(params, out)` fills truth_lab.size() RGB values and returns true, or false where
+// it cannot be evaluated. Differentiated by central differences, so it must be smooth in the
+// parameters and pure; the ΔE2000 residuals' derivatives over RGB are exact.
+struct ColourTarget {
+  std::vector<color::Lab> truth_lab;
+  color::LabConverter to_lab;
+  std::function<bool(const double* params, color::Rgb* out)> colours;
+};
+// fit_model for ½ Σ ΔE2000² between the target's truth and its colours, within the model's fit box
+// (the same starts, ranking and never-worse-than-the-best-start rule; no at_bound check).
+FitResult fit_model_colours(fresnel::Model model, const ColourTarget& target,
+                            std::vector<std::vector<double>> starts,
+                            const FitOptions& options = {});
 
 // The largest k (over the grid) of a material whose fits hold κ at 0: below it k changes a
 // reflectance by k²/(n − 1)² < 4e-6 relative at n = 1.5, nothing a colour difference can see.

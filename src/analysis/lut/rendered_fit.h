@@ -12,8 +12,8 @@ namespace fl::analysis {
 // The lightings a rendered fit matches, one parameter set for both (a material ships one).
 inline constexpr std::array<Lighting, 2> kRenderedFitLightings{Lighting::Ibl, Lighting::Area};
 
-// Minimizes ½ Σ ΔE2000² over kRenderedFitLightings × `points` (three residuals per point and
-// lighting whose squares sum to ΔE2000², color::ciede2000_residuals_batch) between `truth`
+// Minimizes ½ Σ ΔE2000² over kRenderedFitLightings × `points` (fit::fit_model_colours) between
+// `truth`
 // (lobe_truth at the points) and engine_shading, from `starts` (the derived and curve-fitted sets),
 // within the model's fit box.
 fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& truth,
