@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fresnel/basis_polynomials.h"
+#include "fresnel/normal_equations.h"
 
 namespace fl::fresnel {
 
@@ -44,23 +45,7 @@ inline std::array<double, kBasisTerms> basis_coefficients(const std::vector<doub
       for (int c = 0; c <= a; ++c) g[a][c] += b[a] * b[c];
     }
   }
-  for (int a = 0; a < terms; ++a)  // G = L·Lᵀ, L in the lower triangle
-    for (int c = 0; c <= a; ++c) {
-      double s = g[a][c];
-      for (int k = 0; k < c; ++k) s -= g[a][k] * g[c][k];
-      g[a][c] = a == c ? std::sqrt(s) : s / g[c][c];
-    }
-  for (int a = 0; a < terms; ++a) {  // L·z = y
-    for (int k = 0; k < a; ++k) y[a] -= g[a][k] * y[k];
-    y[a] /= g[a][a];
-  }
-  std::array<double, kBasisTerms> c{};
-  for (int a = terms; a-- > 0;) {  // Lᵀ·c = z
-    double s = y[a];
-    for (int k = a + 1; k < terms; ++k) s -= g[k][a] * c[k];
-    c[a] = s / g[a][a];
-  }
-  return c;
+  return solve_normal_equations(g, y, static_cast<size_t>(terms));
 }
 
 }  // namespace fl::fresnel

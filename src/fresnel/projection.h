@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "fresnel/normal_equations.h"
 #include "fresnel/table_terms.h"
 
 namespace fl::fresnel {
@@ -28,22 +29,7 @@ inline TableTerms project_on_terms(std::span<const double> mu, std::span<const d
       for (size_t c = 0; c <= a; ++c) g[a][c] += b[a] * b[c];
     }
   }
-  for (size_t a = 0; a < n; ++a)  // G = L·Lᵀ, L in the lower triangle
-    for (size_t c = 0; c <= a; ++c) {
-      double s = g[a][c];
-      for (size_t k = 0; k < c; ++k) s -= g[a][k] * g[c][k];
-      g[a][c] = a == c ? std::sqrt(s) : s / g[c][c];
-    }
-  for (size_t a = 0; a < n; ++a) {  // L·z = y
-    for (size_t k = 0; k < a; ++k) y[a] -= g[a][k] * y[k];
-    y[a] /= g[a][a];
-  }
-  double c[kTermCount] = {};
-  for (size_t a = n; a-- > 0;) {  // Lᵀ·c = z
-    double s = y[a];
-    for (size_t k = a + 1; k < n; ++k) s -= g[k][a] * c[k];
-    c[a] = s / g[a][a];
-  }
+  const auto c = solve_normal_equations(g, y, n);
   TableTerms w;
   for (size_t a = 0; a < n; ++a) w[terms[a]] = c[a];
   return w;

@@ -66,6 +66,16 @@ ExrImage texture(const std::string& table, int size, std::vector<std::string> ch
   return img;
 }
 
+// The DFG grid's texture axes: x = n·v, y = perceptual roughness, on texel centres.
+Axes dfg_axes(const analysis::LutGrid& g) {
+  return {"nov",
+          g.nov.front(),
+          g.nov.back(),
+          kRoughnessAxis,
+          g.perceptual_roughness.front(),
+          g.perceptual_roughness.back()};
+}
+
 // The LTC texture layout (Heitz & Hill's ltc_code packTab): x = roughness (j), y = √(1 − n·v) (i).
 const Axes kLtcAxes{kRoughnessAxis, 0.0, 1.0, "sqrt(1 - nov)", 0.0, 1.0};
 
@@ -224,12 +234,7 @@ std::string filament_csv(const analysis::DfgTable& t, const std::vector<double>&
 ExrImage dfg_texture(DfgLayout layout, const analysis::DfgTable& t, const std::string& name,
                      const std::vector<double>& values) {
   const auto& g = t.grid;
-  const Axes axes{"nov",
-                  g.nov.front(),
-                  g.nov.back(),
-                  kRoughnessAxis,
-                  g.perceptual_roughness.front(),
-                  g.perceptual_roughness.back()};
+  const Axes axes = dfg_axes(g);
   const DfgText text = dfg_text(layout, g, name);
   const bool split = layout == DfgLayout::SplitSum;
   auto img = texture(split ? name : "dfg_filament", g.size,
@@ -570,12 +575,7 @@ std::string energy_csv(const analysis::EnergyTable& t) {
 
 ExrImage energy_texture(const analysis::EnergyTable& t) {
   const auto& g = t.grid;
-  const Axes axes{"nov",
-                  g.nov.front(),
-                  g.nov.back(),
-                  kRoughnessAxis,
-                  g.perceptual_roughness.front(),
-                  g.perceptual_roughness.back()};
+  const Axes axes = dfg_axes(g);
   auto img = texture("energy", g.size, {"R", "G"}, axes, g.convention, kEnergyChannels);
   img.string_attributes.emplace_back("fresnelLab:shader", kEnergyShader);
   for (int j = 0; j < g.size; ++j)
