@@ -1,20 +1,9 @@
 // libFuzzer target: refractiveindex.info YAML reader (read_refractiveindex_file + sample_ior).
-#include <cmath>
-
-#include "fuzz_common.h"
-#include "spectral/ri_database.h"
-#include "util/errors.h"
+#include "fuzz_optical.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string path = fl::fuzz::temp_path(".yml");
-  fl::fuzz::write_input(path, data, size);
-  try {
-    const auto oc = fl::spectral::read_refractiveindex_file(path);
-    const auto s = fl::spectral::sample_ior(oc, fl::spectral::SpectralGrid::visible(5.0), "fuzz");
-    for (const auto& v : s.ior.ior)
-      fl::fuzz::require(std::isfinite(v.real()) && v.real() > 0.0 && std::isfinite(v.imag()) &&
-                        v.imag() >= 0.0);
-  } catch (const fl::InputError&) {
-  }
-  return 0;
+  return fl::fuzz::fuzz_optical_reader(path, data, size, [](const std::string& p) {
+    return fl::spectral::read_refractiveindex_file(p);
+  });
 }
