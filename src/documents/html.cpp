@@ -310,6 +310,15 @@ std::string html_report(const HtmlReport& r) {
   s += "</nav></header>\n<main>\n";
   if (!r.gallery.empty())
     s += "<section id=\"gallery\"><h2>Gallery</h2>\n" + gallery_html(r.gallery) + "</section>\n";
+  if (!r.figures.empty()) {
+    s += "<section id=\"figures\"><h2>Figures</h2>\n";
+    for (const auto& [caption, path] : r.figures)
+      s += fmt::format(
+          "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\" style=\"max-width:100%\"></a>"
+          "<figcaption>{1}</figcaption></figure>\n",
+          html_escape(path), html_escape(caption));
+    s += "</section>\n";
+  }
   s += "<section id=\"tables\"><h2>Tables</h2>\n";
   for (const auto& t : r.tables)
     s += fmt::format(

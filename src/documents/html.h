@@ -50,6 +50,8 @@ struct HtmlReport {
   std::vector<GalleryEntry> gallery;
   std::span<const analysis::Table> tables;                 // the caller's, shown in order
   std::vector<std::pair<std::string, std::string>> links;  // (text, href): the other formats
+  // (caption, image path): figures shown full width before the tables, each opening full size.
+  std::vector<std::pair<std::string, std::string>> figures;
 };
 
 // The whole page. The same report gives the same bytes.

@@ -9,6 +9,7 @@
 #include "documents/html.h"
 #include "documents/preset_formats.h"
 #include "documents/table_formats.h"
+#include "draw/rendered_library_plot.h"
 #include "jobs/pictures.h"
 #include "util/parallel.h"
 
@@ -16,6 +17,8 @@ namespace fl::report {
 namespace {
 
 using File = Files::value_type;
+
+constexpr const char* kRenderedLibraryPlot = "rendered-library.png";
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -79,7 +82,13 @@ std::string report_page(const analysis::Context& ctx,
   page.links = {{"README.md", "README.md"},
                 {"presets.json", "presets.json"},
                 {"presets.mtlx", "presets.mtlx"}};
-  if (figures) page.links.emplace_back("figures.md", "figures.md");
+  if (figures) {
+    page.links.emplace_back("figures.md", "figures.md");
+    page.figures.emplace_back(
+        "Rendered error of the shippable shaders over every database page, against the number of "
+        "table terms K and against the GPU cost (rendered-library.md)",
+        kRenderedLibraryPlot);
+  }
   return html_report(page);
 }
 
@@ -102,21 +111,28 @@ void add_documents(const analysis::Context& ctx,
 }
 
 // The figures and the sphere flips, with their row of the index; the flips for index.html.
-std::vector<Flip> add_figures(const analysis::Context& ctx,
-                              const std::vector<analysis::MaterialStudy>& studies, Files& files,
-                              std::string& index,
+std::vector<Flip> add_figures(analysis::TableInputs& in, Files& files, std::string& index,
                               const std::function<void(const std::string&)>& log) {
+  const auto& ctx = in.ctx;
+  const auto& studies = in.studies();
   const auto t0 = std::chrono::steady_clock::now();
+  files.emplace_back(
+      kRenderedLibraryPlot,
+      encode(rendered_library_plot(analysis::rendered_library_rows(
+                 in.rendered_library(), analysis::load_gpu_costs(ctx.settings().paths.gpu_costs))),
+             FileType::Png));
   auto pictures = reproduce_figures(ctx, studies);
   auto flip_files = reproduce_flips(ctx, studies);
   log(fmt::format("reproduce: figures ({} PNGs, {:.2f} s)",
-                  pictures.size() - 1 + flip_files.files.size(), seconds_since(t0)));
+                  pictures.size() + flip_files.files.size(), seconds_since(t0)));
   for (auto& f : pictures) files.push_back(std::move(f));
   for (auto& f : flip_files.files) files.push_back(std::move(f));
   index +=
       "| figures | colour strips and reflectance / ΔE2000 curves per material (PNG), and the "
       "sphere flips index.html shows | "
-      "[figures.md](figures.md) |\n";
+      "[figures.md](figures.md) |\n"
+      "| rendered-library.png | rendered error of the shippable shaders over every database page "
+      "against K and against the GPU cost | [rendered-library.png](rendered-library.png) |\n";
   return std::move(flip_files.flips);
 }
 
@@ -136,7 +152,7 @@ Files reproduce_files(analysis::TableInputs& in, bool figures,
   const auto presets = *std::find_if(tables.begin(), tables.end(),
                                      [](const analysis::Table& t) { return t.name == "presets"; });
   add_documents(ctx, studies, presets, files, index);
-  const auto flips = figures ? add_figures(ctx, studies, files, index, log) : std::vector<Flip>{};
+  const auto flips = figures ? add_figures(in, files, index, log) : std::vector<Flip>{};
   const auto t0 = std::chrono::steady_clock::now();
   File page{"index.html", report_page(ctx, studies, presets, tables, figures, flips)};
   log(fmt::format("reproduce: index.html ({} bytes, {:.2f} s)", page.second.size(),

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "color/lab.h"
+#include "fresnel/projection.h"
 #include "fresnel/registered_models.h"
 #include "util/errors.h"
 #include "util/parallel.h"
@@ -237,13 +238,54 @@ std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<co
   return out;
 }
 
+const char* engine_way_name(EngineWay w) {
+  switch (w) {
+    case EngineWay::Native:
+      return "tables";
+    case EngineWay::AtNdotV:
+      return "F(n·v) × lobe";
+    case EngineWay::HoffmanSpan:
+      return "Hoffman span";
+    case EngineWay::BasisSpan:
+      return "basis span";
+  }
+  return "?";
+}
+
+std::array<fresnel::TableTerms, 3> projected_weights(const Context& ctx, Model m,
+                                                     const std::vector<double>& params,
+                                                     std::span<const fresnel::Term> terms) {
+  const auto& mu = ctx.cos_thetas();
+  const auto curve = fresnel::evaluate_curve(m, params, mu);
+  std::array<fresnel::TableTerms, 3> w;
+  std::vector<double> f(mu.size());
+  for (int c = 0; c < 3; ++c) {
+    for (size_t j = 0; j < mu.size(); ++j) f[j] = curve[j][c];
+    w[c] = fresnel::project_on_terms(mu, f, terms);
+  }
+  return w;
+}
+
 std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth, Model m,
                                   const std::vector<double>& params, Lighting lighting,
-                                  const std::vector<ShadingPoint>& points) {
+                                  const std::vector<ShadingPoint>& points, EngineWay way) {
+  if (way == EngineWay::HoffmanSpan || way == EngineWay::BasisSpan)
+    return rendered_de00_terms(
+        ctx, truth,
+        projected_weights(ctx, m, params,
+                          way == EngineWay::HoffmanSpan
+                              ? std::span<const fresnel::Term>(fresnel::kHoffmanSpan)
+                              : fresnel::kBasisSpan),
+        lighting, points);
   std::vector<double> out;
-  for (size_t k = 0; k < points.size(); ++k)
-    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]),
-                                   ctx.rgb_to_lab(engine_shading(m, params, lighting, points[k]))));
+  for (size_t k = 0; k < points.size(); ++k) {
+    const auto engine =
+        way == EngineWay::AtNdotV
+            ? lobe_integrals(lighting == Lighting::Ibl, points[k])[fresnel::Term::One] *
+                  fresnel::model_spec(m).evaluate(points[k].nov, params.data(), false)
+            : engine_shading(m, params, lighting, points[k]);
+    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine)));
+  }
   return out;
 }
 

@@ -10,6 +10,7 @@
 // environment) is the same for every Fresnel model and is not part of this error: it compares the
 // Fresnel-weighted lobe integrals.
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -67,10 +68,26 @@ std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<co
                                         const std::array<fresnel::TableTerms, 3>& weights,
                                         Lighting lighting, const std::vector<ShadingPoint>& points);
 
-// ΔE2000 between truth and engine at every point.
+// How an engine evaluates a model's Fresnel term under IBL or area lights.
+enum class EngineWay {
+  Native,   // through its own table terms where it has them, else AtNdotV
+  AtNdotV,  // F(n·v) × the lobe's Fresnel-free integral, whatever tables hold the model
+  HoffmanSpan,  // its curve projected on {1, (1 − μ)⁵, μ(1 − μ)⁶}, pre-integrated by those terms
+  BasisSpan,  // its curve projected on the 5-term basis, pre-integrated by the basis tables
+};
+const char* engine_way_name(EngineWay w);  // tables | F(n·v) × lobe | Hoffman span | basis span
+
+// The model's RGB curve at the context's angles (uniform in θ, as the basis models' own
+// projection) projected on `terms`, per channel (fresnel/projection.h).
+std::array<fresnel::TableTerms, 3> projected_weights(const Context& ctx, fresnel::Model m,
+                                                     const std::vector<double>& params,
+                                                     std::span<const fresnel::Term> terms);
+
+// ΔE2000 between truth and engine at every point, the engine evaluating the model `way`.
 std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth,
                                   fresnel::Model m, const std::vector<double>& params,
-                                  Lighting lighting, const std::vector<ShadingPoint>& points);
+                                  Lighting lighting, const std::vector<ShadingPoint>& points,
+                                  EngineWay way = EngineWay::Native);
 
 struct ErrorStats {
   double rms = 0, max = 0;

@@ -18,12 +18,17 @@ struct RenderedCandidate {
   ParameterSet set = ParameterSet::Derived;
   std::vector<double> params;
   double punctual_rms = 0;
-  ErrorStats ibl, area;
+  ErrorStats ibl, area;  // as the model's own shader renders it (EngineWay::Native)
+  // RMS ΔE2000 under ibl and area the three ways any model can be rendered, in kProjectedWays
+  // order: at n·v, projected on Hoffman's span, projected on the basis.
+  std::array<double, 3> ibl_ways{}, area_ways{};
   const ErrorStats& under(Lighting l) const { return l == Lighting::Ibl ? ibl : area; }
   double rms_under(Lighting l) const {
     return l == Lighting::Punctual ? punctual_rms : under(l).rms;
   }
 };
+inline constexpr std::array<EngineWay, 3> kProjectedWays{EngineWay::AtNdotV, EngineWay::HoffmanSpan,
+                                                         EngineWay::BasisSpan};
 // Every model's derived set, its fitted set where the fit is usable, and its set fitted to the
 // render at `points` (fit_rendered from the other two), in registry order.
 std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const MaterialStudy& study,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis/lut/lut.h"
+#include "analysis/pipeline/materials.h"
 #include "analysis/tables/averages.h"
 #include "analysis/tables/lut_accuracy.h"
 #include "analysis/tables/speed.h"
@@ -28,14 +29,25 @@ const std::vector<ShadingPoint>& TableInputs::lut_points() {
   return *lut_points_;
 }
 
+const RenderedLibrary& TableInputs::rendered_library() {
+  if (!rendered_library_) {
+    LoadPolicy policy;
+    policy.only = std::nullopt;
+    const auto set = load_materials(ctx, {"**"}, policy);
+    rendered_library_ = analysis::rendered_library(ctx, set.materials, lut_points());
+  }
+  return *rendered_library_;
+}
+
 void TableInputs::prepare() {
-  parallel_for(3, [this](size_t i) {
+  lut_points();
+  parallel_for(4, [this](size_t i) {
     if (i == 0)
       studies();
     else if (i == 1)
       group_pages();
-    else
-      lut_points();
+    else if (i == 2)
+      rendered_library();
   });
 }
 
@@ -86,6 +98,15 @@ const std::vector<TableSpec>& table_specs() {
        "every model (derived, fitted, fitted to the render) as rendered under IBL (DFG) and area "
        "lights (LTC moments) against brute-force spectral integration",
        [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.studies(), in.lut_points()); }},
+      {"rendered-library",
+       "rendered error of the shippable pre-integrated shaders (Schlick, F82, the basis at K = 2 "
+       "to 5) over every database page, against K and the GPU cost",
+       [](TableInputs& in) {
+         return rendered_library_table(
+             in.ctx, in.rendered_library(),
+             rendered_library_rows(in.rendered_library(),
+                                   load_gpu_costs(in.ctx.settings().paths.gpu_costs)));
+       }},
       {"speed",
        "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, "
        "Pareto front",

@@ -8,6 +8,7 @@
 #include "analysis/lut/rendered.h"
 #include "analysis/study/study.h"
 #include "analysis/tables/media_tables.h"
+#include "analysis/tables/rendered_library.h"
 #include "analysis/tables/spread.h"
 #include "analysis/tables/table.h"
 
@@ -30,6 +31,9 @@ class TableInputs {
   const PageStudies& group_pages();
   // lut-accuracy's shading points (lut_accuracy_points()).
   const std::vector<ShadingPoint>& lut_points();
+  // Every database page `library --class all` keeps, rendered by the shippable pre-integrated
+  // shaders (rendered_library.h).
+  const RenderedLibrary& rendered_library();
   // Computes the above at once (each in parallel), for a run that builds many tables; the tables
   // may then be built concurrently.
   void prepare();
@@ -39,6 +43,7 @@ class TableInputs {
   std::optional<std::vector<MaterialStudy>> studies_;
   std::optional<PageStudies> group_pages_;
   std::optional<std::vector<ShadingPoint>> lut_points_;
+  std::optional<RenderedLibrary> rendered_library_;
 };
 
 struct TableSpec {

@@ -1,0 +1,16 @@
+#pragma once
+// The figure of `reports/rendered-library.png`: rendered error over every database page against
+// the number of table terms K and against the GPU cost (analysis/tables/rendered_library.h).
+#include <vector>
+
+#include "analysis/tables/rendered_library.h"
+#include "draw/drawing.h"
+
+namespace fl::report {
+
+// Left: the basis projections' median (solid) and p99 (dashed) page RMS ΔE2000 against K = 2..5,
+// per class and lighting. Right: every shader with a measured GPU cost over all pages, median
+// against SPIR-V instructions (filled: IBL, hollow: area lights). Both error axes log scale.
+Drawing rendered_library_plot(const std::vector<analysis::RenderedLibraryRow>& rows);
+
+}  // namespace fl::report
