@@ -132,8 +132,10 @@ TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
   std::getline(in, line);
   EXPECT_EQ(
       line,
-      "material,class,model,parameters,curve_rms_de00,ibl,ibl_rms_de00,ibl_max_de00,area,area_"
-      "rms_de00,area_max_de00");
+      "material,class,model,parameters,curve_rms_de00,ibl,ibl_rms_de00,ibl_max_de00,ibl_nv_rms_"
+      "de00,"
+      "ibl_hoffman_rms_de00,ibl_basis_rms_de00,area,area_rms_de00,area_max_de00,area_nv_rms_de00,"
+      "area_hoffman_rms_de00,area_basis_rms_de00");
   std::map<std::string, std::array<double, 2>> schlick, f82;  // "material/parameters" → (ibl, area)
   std::set<std::string> metals, models;
   while (std::getline(in, line)) {
@@ -141,14 +143,14 @@ TEST(LutCli, PreIntegratedF82IsNoWorseThanSchlickForEveryMetal) {
     std::string cell;
     std::vector<std::string> cells;
     while (std::getline(row, cell, ',')) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 11u) << line;
+    ASSERT_EQ(cells.size(), 17u) << line;
     models.insert(cells[2]);
     const bool tables =
         fresnel::model_from_name(cells[2]).pre_integration.ibl.fresnel_pre_integrated;
     EXPECT_EQ(cells[5], tables ? "tables" : "F(n·v) × lobe") << line;
     if (cells[1] != "metal" || cells[3] == "rendered") continue;
     metals.insert(cells[0]);
-    const std::array<double, 2> e{std::stod(cells[6]), std::stod(cells[9])};
+    const std::array<double, 2> e{std::stod(cells[6]), std::stod(cells[12])};
     if (cells[2] == "schlick") schlick[cells[0] + "/" + cells[3]] = e;
     if (cells[2] == "f82") f82[cells[0] + "/" + cells[3]] = e;
   }
