@@ -7,6 +7,8 @@
 #include "analysis/plan/plan.h"
 #include "cli/app.h"
 #include "documents/plan_report.h"
+#include "draw/plan_plot.h"
+#include "jobs/plan_files.h"
 #include "util/errors.h"
 
 namespace fl::cli {
@@ -16,7 +18,7 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
                                  "per scene material the cheapest Fresnel model within a ΔE2000 "
                                  "budget, and the lookup tables it needs");
   struct Args {
-    std::string scene, format = "md", costs, gpu_costs, lang = "glsl";
+    std::string scene, format = "md", costs, gpu_costs, lang = "glsl", out, plot;
     bool shader = false;
   };
   auto a = std::make_shared<Args>();
@@ -35,11 +37,18 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_flag("--shader", a->shader,
                 "print the scene-wide model's shader code instead of the plan");
   sub->add_option("--lang", a->lang, "with --shader: glsl or hlsl")->capture_default_str();
+  sub->add_option("--out", a->out,
+                  "write everything the engine needs into this folder: the shader includes, the "
+                  "tables they read, materials.json, README.md, the plan and its figure");
+  sub->add_option("--plot", a->plot,
+                  "also draw the options' cost against error (FILE.png, FILE.svg or FILE.pdf)");
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
       if (a->format != "json" && a->format != "md")
         throw InputError(fmt::format("--format must be json or md, not '{}'", a->format));
       const auto lang = analysis::shader_language_from_name(a->lang);
+      if (!a->plot.empty()) report::file_type(a->plot);  // an unknown extension, before the work
+      if (!a->out.empty()) report::require_replaceable_folder(a->out, report::kPlanMarker);
       auto scene = analysis::read_scene(a->scene);
       const analysis::PlanCosts costs{
           analysis::load_model_costs(given_or(a->costs, g.settings.paths.model_costs)),
@@ -59,6 +68,12 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto studies =
           analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
       const auto p = analysis::make_plan(scene, ctx, studies, costs);
+      if (!a->plot.empty()) report::write_drawing(a->plot, report::plan_plot(p));
+      if (!a->out.empty()) {
+        report::replace_folder_atomic(a->out, report::plan_files(p, costs), report::kPlanMarker);
+        progress(g, fmt::format("plan: wrote {} ({})", a->out, p.scene_choice().name));
+        return 0;
+      }
       if (a->shader)
         fmt::print("{}", report::plan_shader(p, lang));
       else
