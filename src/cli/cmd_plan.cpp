@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 
 #include "analysis/plan/plan.h"
 #include "cli/app.h"
@@ -68,9 +69,12 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto studies =
           analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
       const auto p = analysis::make_plan(scene, ctx, studies, costs);
-      if (!a->plot.empty()) report::write_drawing(a->plot, report::plan_plot(p));
+      std::optional<report::LabelFont> font;
+      if (!a->plot.empty() || !a->out.empty()) font.emplace(g.label_font);
+      if (!a->plot.empty()) report::write_drawing(a->plot, report::plan_plot(p), *font);
       if (!a->out.empty()) {
-        report::replace_folder_atomic(a->out, report::plan_files(p, costs), report::kPlanMarker);
+        report::replace_folder_atomic(a->out, report::plan_files(p, costs, *font),
+                                      report::kPlanMarker);
         progress(g, fmt::format("plan: wrote {} ({})", a->out, p.scene_choice().name));
         return 0;
       }

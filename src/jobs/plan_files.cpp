@@ -137,7 +137,8 @@ std::string plan_readme(const analysis::Plan& p) {
 }
 
 }  // namespace
-Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs, int threads) {
+Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs, const LabelFont& font,
+                 int threads) {
   Files out = table_files(p, threads);
   std::set<std::string> includes;
   for (const auto& g : p.scene_choice().groups) {
@@ -150,7 +151,7 @@ Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs, int 
   out.emplace_back("materials.json", plan_materials_json(p));
   out.emplace_back("plan.md", plan_markdown(p, costs));
   out.emplace_back("plan.json", plan_json(p));
-  out.emplace_back("pareto.svg", encode(plan_plot(p), FileType::Svg));
+  out.emplace_back("pareto.svg", encode(plan_plot(p), FileType::Svg, font));
   out.emplace_back("README.md", plan_readme(p));
   return out;
 }

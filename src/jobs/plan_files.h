@@ -13,6 +13,7 @@
 #include <string>
 
 #include "analysis/plan/plan.h"
+#include "draw/drawing.h"
 #include "io/writer.h"
 
 namespace fl::report {
@@ -20,7 +21,9 @@ namespace fl::report {
 // The marker replace_folder_atomic leaves in a folder `plan --out` made.
 inline constexpr const char* kPlanMarker = ".fresnel-lab-plan";
 
-// Paths relative to the output folder. `threads` for the tables (0: every hardware thread).
-Files plan_files(const analysis::Plan& plan, const analysis::PlanCosts& costs, int threads = 0);
+// Paths relative to the output folder; `font` sets the figure's labels. `threads` for the tables
+// (0: every hardware thread).
+Files plan_files(const analysis::Plan& plan, const analysis::PlanCosts& costs,
+                 const LabelFont& font, int threads = 0);
 
 }  // namespace fl::report
