@@ -103,11 +103,11 @@ PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de
 // Cost, compared lexicographically (scene_cost_less): per draw, the GPU instructions of the
 // dearest variant (its functions for the scene's lightings summed, bench/gpu_costs.csv), then the
 // texture fetches of the dearest variant, then the bytes of every table texture any variant
-// reads (each texture once, as `lut` writes it, at 64² in half floats), then the number of
-// variants. Per-pixel work comes first because it is paid for every pixel of every frame; table
-// memory is paid once; a variant costs a compile and a state change per draw, so of two options
-// otherwise equal the one with fewer shaders is cheaper. An unmeasured count (a model without a
-// row in the cost file) is unknown and ranks after every measured one.
+// reads (each texture once, lut_texture_bytes), then the number of variants. Per-pixel work comes
+// first because it is paid for every pixel of every frame; table memory is paid once; a variant
+// costs a compile and a state change per draw, so of two options otherwise equal the one with fewer
+// shaders is cheaper. An unmeasured count (a model without a row in the cost file) is unknown and
+// ranks after every measured one.
 //
 // Error: each material's error as rendered (the largest over the scene's lightings); an option's
 // worst and median over the materials. Option A dominates B when A costs no more and errs no more
@@ -125,8 +125,8 @@ struct SceneCost {
 // Lexicographic: instructions, texture fetches, table bytes, variants; unmeasured after measured.
 bool scene_cost_less(const SceneCost& a, const SceneCost& b);
 
-// The bytes of a table texture as `lut` writes it and an engine uploads it: 64² texels × its
-// components × 2 (half floats).
+// The bytes of a table texture as an engine uploads it: 64² texels × the components holding its
+// table channels (lut_textures) × 2 (half floats).
 long lut_texture_bytes(const std::string& texture);
 
 // A partition of the scene's materials (indices into the scene's materials).
