@@ -625,6 +625,16 @@ TEST(Plan, SceneDefaultsAndRoughness) {
   EXPECT_EQ(s.materials[1].roughness, (std::vector<double>{0.25}));
   EXPECT_EQ(s.materials[1].spec, "copper");
   EXPECT_EQ(s.materials[2].roughness, (std::vector<double>{0.1, 1.0}));
+  // Roughness 0 (a mirror) and groups.
+  s = fl::analysis::read_scene(
+      dir.file("g.yaml",
+               "materials:\n  - {name: gold, roughness: 0, group: trim}\n  - {name: water, "
+               "roughness: [0, 1]}\n"));
+  EXPECT_EQ(s.materials[0].roughness, (std::vector<double>{0.0}));
+  EXPECT_EQ(s.materials[0].group, "trim");
+  EXPECT_TRUE(s.materials[0].mirror());
+  EXPECT_TRUE(s.materials[1].group.empty());
+  EXPECT_FALSE(s.materials[1].mirror());
 }
 
 TEST(Plan, SceneErrorsNameFileAndLine) {
@@ -656,6 +666,11 @@ TEST(Plan, SceneErrorsNameFileAndLine) {
   EXPECT_NE(
       message("materials:\n  - {name: gold, roughness: -0.1}\n").find("bad.yaml:2: 'roughness'"),
       std::string::npos);
+  EXPECT_NE(message("materials:\n  - {name: gold, group: [a, b]}\n")
+                .find("bad.yaml:2: a material's 'group' must be a string"),
+            std::string::npos);
+  EXPECT_NE(message("materials:\n  - {name: gold, group: ''}\n").find("bad.yaml:2: empty group"),
+            std::string::npos);
   EXPECT_NE(message("materials:\n  - {name: gold, shine: 1}\n")
                 .find("bad.yaml:2: unknown material key 'shine'"),
             std::string::npos);

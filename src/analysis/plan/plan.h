@@ -163,7 +163,9 @@ struct SceneOption {
 // of the models each group keeps (a group drops a model that another matches or beats in
 // instructions, fetches, textures needed — a subset — and worst error over the group, since
 // swapping it in can only cheapen an option and lower its worst error), less those giving every
-// group one model (the single-model option). candidates[k]: material k's (plan_candidates).
+// group one model (the single-model option); when a grouping's combinations exceed 4096, the
+// longest list drops its dearest model until they do not. candidates[k]: material k's
+// (plan_candidates).
 std::vector<SceneOption> scene_options(const Scene& scene,
                                        const std::vector<std::vector<PlanChoice>>& candidates,
                                        const std::vector<Grouping>& groupings, double max_de00);

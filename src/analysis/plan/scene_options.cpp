@@ -127,13 +127,13 @@ bool replaces(const GroupModel& b, const GroupModel& a) {
 }
 
 // The models a group keeps: those no other replaces (of two that replace each other, the first).
-std::vector<Model> kept_models(const std::vector<GroupModel>& all) {
-  std::vector<Model> out;
+std::vector<GroupModel> kept_models(const std::vector<GroupModel>& all) {
+  std::vector<GroupModel> out;
   for (size_t i = 0; i < all.size(); ++i) {
     bool dropped = false;
     for (size_t j = 0; j < all.size() && !dropped; ++j)
       dropped = j != i && replaces(all[j], all[i]) && (j < i || !replaces(all[i], all[j]));
-    if (!dropped) out.push_back(all[i].model);
+    if (!dropped) out.push_back(all[i]);
   }
   return out;
 }
@@ -193,20 +193,40 @@ SceneOption make_option(const Scene& scene, const std::vector<std::vector<PlanCh
   return o;
 }
 
+// At most kMaxSplitOptions combinations: while there are more, the longest list drops its model
+// of most instructions (an unmeasured one first). Scenes with a handful of groups never reach it.
+constexpr size_t kMaxSplitOptions = 4096;
+void limit_combinations(std::vector<std::vector<GroupModel>>& kept) {
+  const auto count = [&] {
+    size_t n = 1;
+    for (const auto& k : kept) n = std::min(n * k.size(), kMaxSplitOptions + 1);
+    return n;
+  };
+  while (count() > kMaxSplitOptions) {
+    auto& longest = *std::max_element(
+        kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    longest.erase(
+        std::max_element(longest.begin(), longest.end(), [](const auto& a, const auto& b) {
+          return compare_optional(a.instructions, b.instructions) < 0;
+        }));
+  }
+}
+
 // Every combination of the groups' kept models but those giving all groups one model.
 void add_splits(const Scene& scene, const std::vector<std::vector<PlanChoice>>& candidates,
                 const Grouping& grouping, double max_de00, std::vector<SceneOption>& out) {
-  std::vector<std::vector<Model>> kept;
+  std::vector<std::vector<GroupModel>> kept;
   for (const auto& group : grouping.groups) {
     std::vector<GroupModel> all;
     for (const auto& spec : fresnel::model_specs())
       all.push_back(group_model(scene, candidates, group, spec.model));
     kept.push_back(kept_models(all));
   }
+  limit_combinations(kept);
   std::vector<size_t> at(kept.size(), 0);  // an odometer over the kept lists
   for (;;) {
     std::vector<Model> models;
-    for (size_t i = 0; i < kept.size(); ++i) models.push_back(kept[i][at[i]]);
+    for (size_t i = 0; i < kept.size(); ++i) models.push_back(kept[i][at[i]].model);
     const bool one_model =
         std::all_of(models.begin(), models.end(), [&](Model m) { return m == models.front(); });
     if (!one_model) out.push_back(make_option(scene, candidates, grouping, models, max_de00));
