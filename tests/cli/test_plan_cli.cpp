@@ -149,7 +149,8 @@ TEST(PlanCli, SceneShadersCompileAndValidate) {
 
 // `plan --out DIR` for every example scene: the folder holds the include of each group, the tables
 // the plan lists, materials.json, README.md, plan.md, plan.json and pareto.svg; every include
-// compiles as GLSL and HLSL and validates. A second run replaces the folder.
+// compiles as GLSL and HLSL and validates. A second run, the folder named with a trailing slash,
+// replaces it.
 TEST(PlanCli, OutFolderForEveryExampleScene) {
   test::TempDir dir;
   for (const auto& e : std::filesystem::directory_iterator(FL_EXAMPLES_DIR)) {
@@ -172,10 +173,10 @@ TEST(PlanCli, OutFolderForEveryExampleScene) {
       expect_compiles(slurp(f.path().string()), ext == ".hlsl", f.path().string());
     }
     EXPECT_GE(includes, 2) << e.path();
-    EXPECT_EQ(
-        test::run_command(test::cli() + " -q plan '" + e.path().string() + "' --out '" + out + "'")
-            .status,
-        0);
+    const auto again = test::run_command(test::cli() + " -q plan '" + e.path().string() +
+                                         "' --out '" + out + "/'");  // "DIR/" is DIR
+    EXPECT_EQ(again.status, 0) << again.err;
+    EXPECT_TRUE(std::filesystem::exists(out + "/README.md"));
   }
 }
 
