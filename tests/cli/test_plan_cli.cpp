@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "documents/plan_report.h"
+#include "fresnel/registered_models.h"
 #include "test_util.h"
 
 namespace fl {
@@ -144,6 +146,37 @@ TEST(PlanCli, SceneShadersCompileAndValidate) {
         expect_compiles(define + r.out, hlsl, std::string(scene) + " " + lang + " " + macro);
       }
     }
+  }
+}
+
+// A split's --shader output: one variant per group behind its macro, each compiling alone in GLSL
+// and HLSL; a mirror's group carries the model's function at n·v.
+TEST(PlanCli, SplitVariantsCompileAndValidate) {
+  using analysis::PlanChoice;
+  const auto schlick = fresnel::model_from_name("schlick").model;
+  const auto f82 = fresnel::model_from_name("f82").model;
+  analysis::Plan p;
+  p.scene.path = "hand.yaml";
+  p.scene.ibl = p.scene.area = true;
+  p.scene.materials = {{"gold", 2, {0.5}, ""}, {"glass", 3, {0.0}, ""}};
+  analysis::SceneOption o;
+  o.name = "metal: schlick, dielectric: f82";
+  o.groups = {{"metal", schlick, {0}}, {"dielectric", f82, {1}}};
+  PlanChoice gold, glass;
+  gold.material = "Gold", gold.model = schlick, gold.params = {0.9, 0.7, 0.4};
+  glass.material = "Glass", glass.model = f82, glass.params = {0.04, 0.5, 0.04, 0.5, 0.04, 0.5};
+  glass.roughness = {0.0};
+  o.materials = {gold, glass};
+  p.scene_options = {o};
+  for (const auto lang : {analysis::ShaderLanguage::Glsl, analysis::ShaderLanguage::Hlsl}) {
+    const std::string code = report::plan_shader(p, lang);
+    EXPECT_NE(code.find("#ifdef FRESNEL_GROUP_METAL"), std::string::npos);
+    EXPECT_NE(code.find("#ifdef FRESNEL_GROUP_DIELECTRIC"), std::string::npos);
+    EXPECT_NE(code.find("fresnel_f82("), std::string::npos);      // the mirror's F(n·v)
+    EXPECT_EQ(code.find("fresnel_schlick("), std::string::npos);  // no mirror among the metals
+    for (const char* macro : {"FRESNEL_GROUP_METAL", "FRESNEL_GROUP_DIELECTRIC"})
+      expect_compiles(std::string("#define ") + macro + "\n" + code,
+                      lang == analysis::ShaderLanguage::Hlsl, macro);
   }
 }
 
