@@ -10,7 +10,6 @@
 
 #include "analysis/pipeline/materials.h"
 #include "color/rgb_space.h"
-#include "draw/drawing.h"
 #include "fresnel_lab_version.h"
 #include "util/errors.h"
 
@@ -192,7 +191,7 @@ int run(int argc, char** argv) {
   g.locations = find_locations(std::filesystem::path(executable_path()).parent_path().string());
   s.paths = default_paths(g.locations);
   s.ocio_config = default_ocio_config();
-  report::use_label_font(label_font_file());
+  g.label_font = label_font_file();
 
   add_global_options(app, g);
 

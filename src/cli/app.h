@@ -17,6 +17,9 @@ struct GlobalOptions {
   analysis::BlendOptions blend;  // `table blend` options
   double min_coverage = -1;      // --min-coverage (negative: not given)
   Locations locations;           // where the tool's data were found (cli/locations.h)
+  // The label font's file ($FRESNEL_LAB_FONT; empty: DejaVu Sans). A command that draws text
+  // loads it into the report::LabelFont it passes to the drawing.
+  std::string label_font;
 };
 
 // `option` (a file given on the command line, named by its path), else `fallback`.

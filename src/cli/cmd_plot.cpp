@@ -1,5 +1,6 @@
 // `plot strip | curves` and `render`: figures and sphere renders of one material.
 #include <memory>
+#include <optional>
 
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
@@ -30,7 +31,9 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
     selected = [&g, r] {
       report::check_plot_request(*r);
       const auto ctx = make_context(g);
-      return write_output(g, report::plot_outputs(ctx, load_many(g, ctx, r->materials), *r));
+      const auto ms = load_many(g, ctx, r->materials);
+      const report::LabelFont font(g.label_font);
+      return write_output(g, report::plot_outputs(ctx, ms, *r, font));
     };
   });
 }
@@ -104,7 +107,10 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
       report::check_render_request(*r);
       r->settings.progress = periodic_progress(g, "render: rows ");
       const auto ctx = make_context(g);
-      return write_output(g, report::render_outputs(ctx, load_many(g, ctx, r->materials), *r));
+      const auto ms = load_many(g, ctx, r->materials);
+      std::optional<report::LabelFont> font;  // only heat maps and sheets have labels
+      if (report::render_draws_labels(*r)) font.emplace(g.label_font);
+      return write_output(g, report::render_outputs(ctx, ms, *r, font ? &*font : nullptr));
     };
   });
 }

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 
 #include "analysis/tables/speed.h"
 #include "analysis/tables/table_registry.h"
@@ -45,11 +46,13 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
                      : analysis::load_model_costs(given_or(a->costs, g.settings.paths.model_costs));
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, a->materials);
+      std::optional<report::LabelFont> font;
+      if (!a->plot.empty()) font.emplace(g.label_font);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       const auto gpu = analysis::load_gpu_costs(given_or(a->gpu_costs, g.settings.paths.gpu_costs));
       const auto t = analysis::speed_table(ctx, in.studies(), costs, gpu);
       if (!a->plot.empty()) {
-        report::write_speed_plot(a->plot, analysis::speed_rows(in.studies(), costs, gpu));
+        report::write_speed_plot(a->plot, analysis::speed_rows(in.studies(), costs, gpu), *font);
         progress(g, "speed: wrote " + a->plot);
       }
       fmt::print("{}", report::render(t, f));

@@ -1,5 +1,7 @@
 #include <fmt/format.h>
 
+#include <optional>
+
 #include "analysis/tables/table_registry.h"
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
@@ -174,8 +176,10 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
+      std::optional<report::LabelFont> font;  // the figures' labels
+      if (!*no_figures) font.emplace(g.label_font);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      auto files = report::reproduce_files(in, !*no_figures,
+      auto files = report::reproduce_files(in, font ? &*font : nullptr,
                                            [&g](const std::string& line) { progress(g, line); });
       for (auto& f : files) f.first = *out + "/" + f.first;
       report::write_files_atomic(files);

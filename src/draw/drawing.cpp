@@ -20,6 +20,16 @@
 #include "util/errors.h"
 
 namespace fl::report {
+
+// Owns one reference to the Cairo face.
+struct LabelFont::Face {
+  cairo_font_face_t* cairo;
+  explicit Face(cairo_font_face_t* face) : cairo(face) {}
+  ~Face() { cairo_font_face_destroy(cairo); }
+  Face(const Face&) = delete;
+  Face& operator=(const Face&) = delete;
+};
+
 namespace {
 
 constexpr const char* kLabelFamily = "DejaVu Sans";
@@ -73,32 +83,17 @@ cairo_font_face_t* load_face(const std::string& path) {
   return face;
 }
 
-std::string& label_font_override() {
-  static std::string file;
-  return file;
-}
-
-// One face for the whole process (Cairo's FreeType faces may be shared between threads): a font
-// is a property of the installation, not of a run.
-cairo_font_face_t* label_face() {
-  static cairo_font_face_t* const face = [] {
-    const std::string& file = label_font_override();
-    return load_face(file.empty() ? dejavu_file() : file);
-  }();
-  return face;
-}
-
 void set_colour(cairo_t* cr, Rgb8 c) {
   cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0);
 }
 
-void paint(cairo_t* cr, const Rect& r) {
+void paint(cairo_t* cr, const Rect& r, const LabelFont*) {
   set_colour(cr, r.fill);
   cairo_rectangle(cr, r.x, r.y, r.w, r.h);
   cairo_fill(cr);
 }
 
-void paint(cairo_t* cr, const Polyline& l) {
+void paint(cairo_t* cr, const Polyline& l, const LabelFont*) {
   if (l.points.empty()) return;
   set_colour(cr, l.colour);
   cairo_set_line_width(cr, l.width_px);
@@ -108,7 +103,7 @@ void paint(cairo_t* cr, const Polyline& l) {
   cairo_stroke(cr);
 }
 
-void paint(cairo_t* cr, const Circle& c) {
+void paint(cairo_t* cr, const Circle& c, const LabelFont*) {
   cairo_new_path(cr);  // an arc would otherwise start with a line from the current point
   set_colour(cr, c.colour);
   if (c.ring_px > 0) {
@@ -122,8 +117,10 @@ void paint(cairo_t* cr, const Circle& c) {
   }
 }
 
-void paint(cairo_t* cr, const Text& t) {
-  cairo_set_font_face(cr, label_face());
+// Text needs a font; the other shapes ignore it.
+void paint(cairo_t* cr, const Text& t, const LabelFont* font) {
+  if (!font) throw std::logic_error("encode_without_text: the drawing holds text");
+  cairo_set_font_face(cr, font->face().cairo);
   set_colour(cr, t.colour);
   cairo_set_font_size(cr, t.size_px);
   cairo_text_extents_t te;
@@ -146,7 +143,7 @@ void paint(cairo_t* cr, const Text& t) {
   cairo_restore(cr);
 }
 
-void paint(cairo_t* cr, const Picture& p) {
+void paint(cairo_t* cr, const Picture& p, const LabelFont*) {
   const Image8& img = p.image;
   if (img.width <= 0 || img.height <= 0) return;
   cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, img.width, img.height);
@@ -187,7 +184,8 @@ void check(cairo_status_t status) {
 
 using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 
-void paint_drawing(cairo_surface_t* surface, const Drawing& d, FileType type) {
+void paint_drawing(cairo_surface_t* surface, const Drawing& d, FileType type,
+                   const LabelFont* font) {
   const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> owner(cairo_create(surface),
                                                                  cairo_destroy);
   cairo_t* cr = owner.get();
@@ -196,7 +194,8 @@ void paint_drawing(cairo_surface_t* surface, const Drawing& d, FileType type) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   set_colour(cr, d.background);
   cairo_paint(cr);
-  for (const auto& shape : d.shapes) std::visit([cr](const auto& s) { paint(cr, s); }, shape);
+  for (const auto& shape : d.shapes)
+    std::visit([cr, font](const auto& s) { paint(cr, s, font); }, shape);
   check(cairo_status(cr));
 }
 
@@ -236,7 +235,26 @@ cairo_surface_t* vector_surface(FileType type, const Drawing& d, std::string& ou
   return s;
 }
 
+std::string encode_with(const Drawing& d, FileType type, const LabelFont* font) {
+  if (d.width <= 0 || d.height <= 0)
+    throw std::logic_error("encode: a drawing needs a positive size");
+  std::string out;
+  const SurfacePtr s(type == FileType::Png
+                         ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height)
+                         : vector_surface(type, d, out),
+                     cairo_surface_destroy);
+  paint_drawing(s.get(), d, type, font);
+  if (type == FileType::Png) check(cairo_surface_write_to_png_stream(s.get(), append_bytes, &out));
+  cairo_surface_finish(s.get());
+  check(cairo_surface_status(s.get()));
+  return type == FileType::Svg ? renumber_svg_ids(out) : out;
+}
+
 }  // namespace
+
+LabelFont::LabelFont(const std::string& file)
+    : file_(file.empty() ? dejavu_file() : file),
+      face_(std::make_shared<const Face>(load_face(file_))) {}
 
 FileType file_type(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -249,27 +267,20 @@ FileType file_type(const std::string& path) {
                                ext.empty() ? "(none)" : ext));
 }
 
-std::string encode(const Drawing& d, FileType type) {
-  if (d.width <= 0 || d.height <= 0)
-    throw std::logic_error("encode: a drawing needs a positive size");
-  std::string out;
-  const SurfacePtr s(type == FileType::Png
-                         ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height)
-                         : vector_surface(type, d, out),
-                     cairo_surface_destroy);
-  paint_drawing(s.get(), d, type);
-  if (type == FileType::Png) check(cairo_surface_write_to_png_stream(s.get(), append_bytes, &out));
-  cairo_surface_finish(s.get());
-  check(cairo_surface_status(s.get()));
-  return type == FileType::Svg ? renumber_svg_ids(out) : out;
+std::string encode(const Drawing& d, FileType type, const LabelFont& font) {
+  return encode_with(d, type, &font);
 }
 
-Image8 rasterize(const Drawing& d) {
+std::string encode_without_text(const Drawing& d, FileType type) {
+  return encode_with(d, type, nullptr);
+}
+
+Image8 rasterize(const Drawing& d, const LabelFont& font) {
   if (d.width <= 0 || d.height <= 0)
     throw std::logic_error("rasterize: a drawing needs a positive size");
   const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height),
                      cairo_surface_destroy);
-  paint_drawing(s.get(), d, FileType::Png);
+  paint_drawing(s.get(), d, FileType::Png, &font);
   cairo_surface_flush(s.get());
   check(cairo_surface_status(s.get()));
   Image8 img(d.width, d.height);
@@ -286,15 +297,11 @@ Image8 rasterize(const Drawing& d) {
   return img;
 }
 
-void use_label_font(const std::string& file) {
-  label_font_override() = file;
-}
-
-double text_width_px(const std::string& utf8, double size_px) {
+double text_width_px(const std::string& utf8, double size_px, const LabelFont& font) {
   const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1), cairo_surface_destroy);
   const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(s.get()), cairo_destroy);
   set_font_options(cr.get(), FileType::Png);
-  cairo_set_font_face(cr.get(), label_face());
+  cairo_set_font_face(cr.get(), font.face().cairo);
   cairo_set_font_size(cr.get(), size_px);
   cairo_text_extents_t te;
   cairo_text_extents(cr.get(), utf8.c_str(), &te);
@@ -302,8 +309,8 @@ double text_width_px(const std::string& utf8, double size_px) {
   return te.x_advance;
 }
 
-void write_drawing(const std::string& path, const Drawing& d) {
-  write_file_atomic(path, encode(d, file_type(path)));
+void write_drawing(const std::string& path, const Drawing& d, const LabelFont& font) {
+  write_file_atomic(path, encode(d, file_type(path), font));
 }
 
 }  // namespace fl::report

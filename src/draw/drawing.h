@@ -1,8 +1,9 @@
 #pragma once
 // Every figure is a Drawing: a list of shapes painted in order, in pixel coordinates (origin at the
 // top-left, y down). One renderer, Cairo, turns the same Drawing into PNG, SVG or PDF (Cairo stays
-// inside draw.cpp and png.cpp). Text is DejaVu Sans, found through fontconfig
-// (fonts-dejavu-core), or the TrueType file the command line names (use_label_font).
+// inside drawing.cpp and png.cpp). Text is set in a LabelFont the caller owns: DejaVu Sans, found
+// through fontconfig (fonts-dejavu-core), or the TrueType file the command line names.
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -66,6 +67,25 @@ struct Drawing {
   }
 };
 
+// The font labels are set in, loaded when constructed: the TrueType or OpenType `file`, or (empty)
+// the file fontconfig gives for DejaVu Sans. InputError when that cannot be loaded: the file named
+// ("cannot load the label font"), or DejaVu Sans not found (fontconfig gives another family, which
+// would change every figure). Copies share the one loaded face, which threads may use at once. The
+// command that draws creates it and passes it to everything that sets or measures text.
+class LabelFont {
+ public:
+  explicit LabelFont(const std::string& file = "");
+  // The font file in use.
+  const std::string& file() const { return file_; }
+
+  struct Face;  // Cairo's face for the file (drawing.cpp)
+  const Face& face() const { return *face_; }
+
+ private:
+  std::string file_;
+  std::shared_ptr<const Face> face_;
+};
+
 enum class FileType { Png, Svg, Pdf };
 
 // From the file name's extension (.png, .svg, .pdf, any case); InputError naming the file
@@ -74,22 +94,21 @@ FileType file_type(const std::string& path);
 
 // The file's bytes. PNG: 8-bit RGB, greyscale-antialiased text and lines, no time or text chunks;
 // SVG and PDF: vector shapes, text as outlines (SVG) or an embedded font subset (PDF), no creation
-// date. The same Drawing gives the same bytes. Throws InputError when the label font cannot be
-// loaded.
-std::string encode(const Drawing& d, FileType type);
+// date. Text is set in `font`. The same Drawing and font give the same bytes.
+std::string encode(const Drawing& d, FileType type, const LabelFont& font);
+
+// encode() of a drawing without Text, which needs no font (the PNG files of plain images, png.h);
+// std::logic_error when it holds Text.
+std::string encode_without_text(const Drawing& d, FileType type);
 
 // The drawing's pixels as PNG output paints them (for frames of an animation, or a picture inside
 // another drawing).
-Image8 rasterize(const Drawing& d);
+Image8 rasterize(const Drawing& d, const LabelFont& font);
 
-// The label font's file instead of fontconfig's DejaVu Sans (empty: DejaVu Sans). Takes effect only
-// before anything is drawn: the command line calls it once at start.
-void use_label_font(const std::string& file);
-
-// The advance width of `utf8` in the label font as PNG output sets it (hinted metrics), for layout.
-double text_width_px(const std::string& utf8, double size_px);
+// The advance width of `utf8` in `font` as PNG output sets it (hinted metrics), for layout.
+double text_width_px(const std::string& utf8, double size_px, const LabelFont& font);
 
 // encode() by the extension of `path`, written atomically.
-void write_drawing(const std::string& path, const Drawing& d);
+void write_drawing(const std::string& path, const Drawing& d, const LabelFont& font);
 
 }  // namespace fl::report

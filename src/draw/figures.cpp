@@ -278,15 +278,15 @@ Image8 heatmap_image(const std::vector<double>& de, int width, int height, doubl
 }
 
 Drawing heatmap_drawing(const std::vector<double>& de, int width, int height,
-                        const std::string& title, double scale) {
+                        const std::string& title, const LabelFont& font, double scale) {
   double de_max = 0;
   for (double v : de)
     if (std::isfinite(v)) de_max = std::max(de_max, v);
   if (!(scale > 0)) scale = heatmap_scale(de);
   const ColourBar bar = heatmap_colour_bar(width, height);
   Drawing dr;
-  dr.width =
-      std::max(width + kHeatRight, static_cast<int>(std::ceil(8 + text_width_px(title, 13) + 8)));
+  dr.width = std::max(width + kHeatRight,
+                      static_cast<int>(std::ceil(8 + text_width_px(title, 13, font) + 8)));
   dr.height = std::max(kHeatTop + height, bar.y + bar.height + 24) + 8;
   dr.add(Text{8, 22, title, 13, kInk});
   dr.add(Picture{0, kHeatTop, heatmap_image(de, width, height, scale)});
@@ -336,7 +336,7 @@ double contact_sheet_scale(const ContactSheet& s) {
   return heatmap_scale(all);
 }
 
-Drawing contact_sheet_drawing(const ContactSheet& s) {
+Drawing contact_sheet_drawing(const ContactSheet& s, const LabelFont& font) {
   if (s.rows.empty() || s.truth.width <= 0)
     throw std::invalid_argument("contact_sheet_drawing: no rows");
   double de_max = 0;
@@ -344,8 +344,8 @@ Drawing contact_sheet_drawing(const ContactSheet& s) {
   const double scale = contact_sheet_scale(s);
   const int size = s.truth.width;
   Drawing dr;
-  double text_w = text_width_px(s.title, 17);
-  for (const auto& line : s.notes) text_w = std::max(text_w, text_width_px(line, 12));
+  double text_w = text_width_px(s.title, 17, font);
+  for (const auto& line : s.notes) text_w = std::max(text_w, text_width_px(line, 12, font));
   dr.width = std::max(kSheetMargin + 3 * (size + kSheetGap) + kSheetBar,
                       static_cast<int>(std::ceil(2 * kSheetMargin + text_w)));
   dr.height = sheet_row_top(s, s.rows.size()) + 8;
@@ -362,7 +362,7 @@ Drawing contact_sheet_drawing(const ContactSheet& s) {
   return dr;
 }
 
-Image8 flip_frame(const Image8& render, const std::string& label) {
+Image8 flip_frame(const Image8& render, const std::string& label, const LabelFont& font) {
   constexpr int kBand = 26;
   Drawing dr;
   dr.width = render.width;
@@ -370,7 +370,7 @@ Image8 flip_frame(const Image8& render, const std::string& label) {
   dr.background = {24, 24, 24};
   dr.add(Picture{0, 0, render});
   dr.add(Text{render.width / 2.0, render.height + 18.0, label, 13, {235, 235, 235}, Align::Center});
-  return rasterize(dr);
+  return rasterize(dr, font);
 }
 
 }  // namespace fl::report

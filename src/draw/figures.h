@@ -1,5 +1,5 @@
 #pragma once
-// The figures as Drawings (draw.h), from data computed in analysis/figure_data.h: colour strips,
+// The figures as Drawings (drawing.h), from data computed in analysis/figure_data.h: colour strips,
 // reflectance / ΔE2000 curves, and the ΔE2000 heat map of a sphere render.
 #include <string>
 #include <vector>
@@ -21,9 +21,9 @@ Point strip_cell(const analysis::StripData& d, size_t row, size_t span, int samp
 Drawing curves_drawing(const analysis::CurveData& d);
 
 // ΔE2000 per pixel (row-major, NaN: no surface) as a heat map on the inferno ramp, with a colour
-// bar from 0 to `scale` (0: heatmap_scale(de)), its ticks labelled.
+// bar from 0 to `scale` (0: heatmap_scale(de)), its ticks labelled; sized for its title in `font`.
 Drawing heatmap_drawing(const std::vector<double>& de, int width, int height,
-                        const std::string& title, double scale = 0);
+                        const std::string& title, const LabelFont& font, double scale = 0);
 // The nice ceiling of the largest finite ΔE (at least 1).
 double heatmap_scale(const std::vector<double>& de);
 // The map's pixels: inferno(ΔE / scale), light grey where there is no surface.
@@ -46,14 +46,15 @@ struct ContactSheet {
 };
 // heatmap_scale over every row's ΔE2000: the one scale of the sheet and of its models' heat maps.
 double contact_sheet_scale(const ContactSheet& s);
-Drawing contact_sheet_drawing(const ContactSheet& sheet);
+// Wide enough for its title and notes in `font`.
+Drawing contact_sheet_drawing(const ContactSheet& sheet, const LabelFont& font);
 // Where the sheet paints a tile (column 0 truth, 1 model, 2 heat map): its top-left pixel, and the
 // top of a row's band (its label line).
 Point sheet_tile(const ContactSheet& sheet, size_t row, int column);
 int sheet_row_top(const ContactSheet& sheet, size_t row);
 
-// One frame of a flip animation: the render above a dark band naming what it shows.
-Image8 flip_frame(const Image8& render, const std::string& label);
+// One frame of a flip animation: the render above a dark band naming what it shows (in `font`).
+Image8 flip_frame(const Image8& render, const std::string& label, const LabelFont& font);
 
 // The map's pixels are drawn unscaled with their top-left corner at (0, kHeatmapImageTop); the
 // colour bar's top pixel row shows the scale's top, its bottom row 0.

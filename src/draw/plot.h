@@ -1,5 +1,5 @@
 #pragma once
-// Plot panels on a Drawing (draw.h): data ranges mapped onto a pixel rectangle, ticks, axes.
+// Plot panels on a Drawing (drawing.h): data ranges mapped onto a pixel rectangle, ticks, axes.
 #include <string>
 #include <vector>
 

@@ -19,7 +19,7 @@ std::string encode_png(const Image8& image) {
   d.width = image.width;
   d.height = image.height;
   d.add(Picture{0, 0, image});
-  return encode(d, FileType::Png);
+  return encode_without_text(d, FileType::Png);
 }
 
 void write_png_atomic(const std::string& path, const Image8& image) {

@@ -1,5 +1,5 @@
 #pragma once
-// PNG files of plain images. Written through the one drawing renderer (draw.h: the image painted
+// PNG files of plain images. Written through the one drawing renderer (drawing.h: the image painted
 // unscaled onto Cairo's image surface, then Cairo's PNG writer): 8-bit RGB, no time or text chunks,
 // so the same pixels give the same bytes.
 #include <string>

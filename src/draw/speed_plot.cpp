@@ -166,9 +166,10 @@ Drawing speed_plot(const std::vector<analysis::SpeedRow>& all_rows) {
   return d;
 }
 
-void write_speed_plot(const std::string& path, const std::vector<analysis::SpeedRow>& rows) {
+void write_speed_plot(const std::string& path, const std::vector<analysis::SpeedRow>& rows,
+                      const LabelFont& font) {
   const FileType type = file_type(path);
-  write_file_atomic(path, encode(speed_plot(rows), type));
+  write_file_atomic(path, encode(speed_plot(rows), type, font));
 }
 
 }  // namespace fl::report

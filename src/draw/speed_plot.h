@@ -1,6 +1,6 @@
 #pragma once
-// The error-against-cost plot of `speed --plot` (reports/speed.png), a Drawing (draw.h) written as
-// PNG, SVG or PDF by the file name's extension.
+// The error-against-cost plot of `speed --plot` (reports/speed.png), a Drawing (drawing.h) written
+// as PNG, SVG or PDF by the file name's extension.
 #include <string>
 #include <vector>
 
@@ -12,7 +12,9 @@ namespace fl::report {
 // Median RMS ΔE2000 (log scale) against ns per evaluation (log scale): one marker per model and
 // parameter set (filled: fitted, hollow: derived), the Pareto front joined by a staircase.
 Drawing speed_plot(const std::vector<analysis::SpeedRow>& rows);
-// InputError for an unknown extension (file_type), checked before drawing.
-void write_speed_plot(const std::string& path, const std::vector<analysis::SpeedRow>& rows);
+// Written with its labels in `font`; InputError for an unknown extension (file_type), checked
+// before drawing.
+void write_speed_plot(const std::string& path, const std::vector<analysis::SpeedRow>& rows,
+                      const LabelFont& font);
 
 }  // namespace fl::report

@@ -59,14 +59,14 @@ void check_plot_request(const PlotRequest& r) {
 }
 
 Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                   const PlotRequest& r) {
+                   const PlotRequest& r, const LabelFont& font) {
   check_plot_request(r);
   const std::vector<analysis::LoadedMaterial> one{m};
   const auto models = parse_models(r.models);
   const auto st = analysis::study_one(ctx, one, r.params, models);
   Output o;
   const auto d = figure_drawing(ctx, figure_input(st, models, r.params), r.figure);
-  o.files.emplace_back(r.out, encode(d, file_type(r.out)));
+  o.files.emplace_back(r.out, encode(d, file_type(r.out), font));
   o.messages.push_back(fmt::format("plot {}: wrote {}", r.figure, r.out));
   return o;
 }
@@ -88,12 +88,12 @@ std::string material_output(const std::string& out, const analysis::LoadedMateri
 }
 
 Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
-                    const PlotRequest& request) {
+                    const PlotRequest& request, const LabelFont& font) {
   Output all;
   for (const auto& m : ms) {
     PlotRequest r = request;
     r.out = material_output(request.out, m, ms.size());
-    auto o = plot_output(ctx, m, r);
+    auto o = plot_output(ctx, m, r, font);
     for (auto& f : o.files) all.files.push_back(std::move(f));
     for (auto& line : o.messages) all.messages.push_back(std::move(line));
   }
@@ -101,12 +101,12 @@ Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::Lo
 }
 
 Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
-                      const RenderRequest& request) {
+                      const RenderRequest& request, const LabelFont* font) {
   Output all;
   for (const auto& m : ms) {
     RenderRequest r = request;
     r.out = material_output(request.out, m, ms.size());
-    auto o = render_output(ctx, m, r);
+    auto o = render_output(ctx, m, r, font);
     for (auto& f : o.files) all.files.push_back(std::move(f));
     for (auto& line : o.messages) all.messages.push_back(std::move(line));
   }
@@ -114,17 +114,18 @@ Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::
 }
 
 Files reproduce_figures(const analysis::Context& ctx,
-                        const std::vector<analysis::MaterialStudy>& studies) {
+                        const std::vector<analysis::MaterialStudy>& studies,
+                        const LabelFont& font) {
   const auto all = parse_models("all");
   const auto curve_models = parse_models("schlick,f82,gulbrandsen");
   const size_t n = studies.size();
   std::vector<std::string> strips(n), curves(n);
   parallel_for(n, [&](size_t i) {
     strips[i] = encode(figure_drawing(ctx, figure_input(studies[i], all, "derived"), "strip"),
-                       FileType::Png);
+                       FileType::Png, font);
     curves[i] =
         encode(figure_drawing(ctx, figure_input(studies[i], curve_models, "derived"), "curves"),
-               FileType::Png);
+               FileType::Png, font);
   });
   Files files;
   std::string gallery =

@@ -7,6 +7,7 @@
 #include "analysis/render/render.h"
 #include "analysis/study/study.h"
 #include "documents/html.h"
+#include "draw/drawing.h"
 #include "io/writer.h"
 
 namespace fl::report {
@@ -22,9 +23,10 @@ struct PlotRequest {
 // InputError for an output type (.png, .svg or .pdf), parameter set or model list that
 // does not exist, checked before any work.
 void check_plot_request(const PlotRequest& request);
-// The figure of `m` with the request's models and parameter set, as request.out.
+// The figure of `m` with the request's models and parameter set, as request.out, its labels in
+// `font`.
 Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                   const PlotRequest& request);
+                   const PlotRequest& request, const LabelFont& font);
 
 struct RenderRequest {
   std::vector<std::string> materials;
@@ -45,9 +47,13 @@ void check_render_request(const RenderRequest& request);
 // the truth as R, G, B, A and each model as the layer MODEL.R, MODEL.G, MODEL.B with its heat map
 // MODEL.de2000; FILE.truth.png, FILE.MODEL.png and FILE.MODEL.de2000.png per model (heat maps on
 // one scale), the animated flip FILE.flip.gif (truth, then each model, each after the truth
-// again) and the contact sheet FILE.sheet.png.
+// again) and the contact sheet FILE.sheet.png. The heat maps, flip frames and sheet are labelled in
+// `font`, which only a render that draws them needs (render_draws_labels; std::invalid_argument
+// when it is null there).
 Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                     const RenderRequest& request);
+                     const RenderRequest& request, const LabelFont* font);
+// Whether the request draws labelled pictures (a model other than the truth, or a comparison).
+bool render_draws_labels(const RenderRequest& request);
 
 // Several materials write one output each: `out` must then hold "{name}", replaced per material by
 // a file-safe form of its name (the catalog key, the page path or the file's stem, with characters
@@ -56,9 +62,9 @@ std::string material_output(const std::string& out, const analysis::LoadedMateri
                             size_t count);
 // plot_output / render_output for every material, to material_output paths.
 Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
-                    const PlotRequest& request);
+                    const PlotRequest& request, const LabelFont& font);
 Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
-                      const RenderRequest& request);
+                      const RenderRequest& request, const LabelFont* font);
 
 // The flip every gallery card of `reproduce` shows: figures/flip-KEY.png per material, the ground
 // truth and then Schlick, F82 and Gulbrandsen (derived parameters) side by side, each a sphere of
@@ -95,9 +101,9 @@ std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx,
                                           const analysis::Table& presets, bool figures,
                                           const std::vector<Flip>& flips);
 
-// figures/strip-KEY.png and figures/curves-KEY.png per material (derived parameters), rendered in
-// parallel, and their Markdown gallery as figures.md.
+// figures/strip-KEY.png and figures/curves-KEY.png per material (derived parameters), labelled in
+// `font` and rendered in parallel, and their Markdown gallery as figures.md.
 Files reproduce_figures(const analysis::Context& ctx,
-                        const std::vector<analysis::MaterialStudy>& studies);
+                        const std::vector<analysis::MaterialStudy>& studies, const LabelFont& font);
 
 }  // namespace fl::report

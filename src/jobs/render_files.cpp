@@ -122,7 +122,7 @@ std::string model_label(fresnel::Model model, const std::string& kind) {
 
 Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                    const RenderRequest& r, const Scene& scene,
-                   const analysis::MaterialRender& images) {
+                   const analysis::MaterialRender& images, const LabelFont* font) {
   const std::string base = r.out.substr(0, r.out.size() - 4);
   const auto& shown = images.models.empty() ? images.truth : images.models[0].image;
   ExrImage exr = exr_header(ctx, m, r, scene, shown.width);
@@ -143,8 +143,8 @@ Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial&
                                    fresnel::model_spec(images.models[0].model).name);
     files.emplace_back(
         base + ".de2000.png",
-        encode(heatmap_drawing(images.models[0].de2000, shown.width, shown.height, title),
-               FileType::Png));
+        encode(heatmap_drawing(images.models[0].de2000, shown.width, shown.height, title, *font),
+               FileType::Png, *font));
   }
   return files;
 }
@@ -190,7 +190,7 @@ ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedM
 
 Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                     const RenderRequest& r, const Scene& scene,
-                    const analysis::MaterialRender& images) {
+                    const analysis::MaterialRender& images, const LabelFont& font) {
   const std::string base = r.out.substr(0, r.out.size() - 4);
   const ContactSheet sheet = contact_sheet(ctx, m, r, scene, images);
   Files files;
@@ -205,13 +205,14 @@ Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial
     const auto title = fmt::format("{}: ΔE2000, truth vs {}", m.material.name, name);
     files.emplace_back(
         base + "." + name + ".de2000.png",
-        encode(heatmap_drawing(mr.de2000, mr.image.width, mr.image.height, title, scale),
-               FileType::Png));
-    frames.push_back(flip_frame(sheet.truth, "ground truth (spectral)"));
-    frames.push_back(flip_frame(sheet.rows[i].render, sheet.rows[i].label));
+        encode(heatmap_drawing(mr.de2000, mr.image.width, mr.image.height, title, font, scale),
+               FileType::Png, font));
+    frames.push_back(flip_frame(sheet.truth, "ground truth (spectral)", font));
+    frames.push_back(flip_frame(sheet.rows[i].render, sheet.rows[i].label, font));
   }
   files.emplace_back(base + ".flip.gif", encode_gif(frames, kFlipDelayCs));
-  files.emplace_back(base + ".sheet.png", encode(contact_sheet_drawing(sheet), FileType::Png));
+  files.emplace_back(base + ".sheet.png",
+                     encode(contact_sheet_drawing(sheet, font), FileType::Png, font));
   return files;
 }
 
@@ -253,9 +254,15 @@ void check_render_request(const RenderRequest& r) {
   if (!r.compare.empty()) parse_models(r.compare);
 }
 
+bool render_draws_labels(const RenderRequest& r) {
+  return !render_models(r).empty();
+}
+
 Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                     const RenderRequest& r) {
+                     const RenderRequest& r, const LabelFont* font) {
   check_render_request(r);
+  if (!font && render_draws_labels(r))
+    throw std::invalid_argument("render_output: heat maps need a label font");
   const auto& rs = r.settings;
   const Scene scene = render_scene(ctx, r);
   const auto t0 = std::chrono::steady_clock::now();
@@ -269,8 +276,8 @@ Output render_output(const analysis::Context& ctx, const analysis::LoadedMateria
                   "pass ({:.2f} s); {}",
                   rs.size_px, rs.size_px, rs.roughness, rs.samples, 1 + images.models.size(), secs,
                   scene.lighting));
-  o.files = r.compare.empty() ? single_files(ctx, m, r, scene, images)
-                              : compare_files(ctx, m, r, scene, images);
+  o.files = r.compare.empty() ? single_files(ctx, m, r, scene, images, font)
+                              : compare_files(ctx, m, r, scene, images, *font);
   const auto& rgb =
       (images.models.empty() || !r.compare.empty() ? images.truth : images.models[0].image).rgb;
   const size_t c = static_cast<size_t>(rs.size_px / 2) * rs.size_px + rs.size_px / 2;

@@ -103,11 +103,11 @@ void add_documents(const analysis::Context& ctx,
 
 // The figures and the sphere flips, with their row of the index; the flips for index.html.
 std::vector<Flip> add_figures(const analysis::Context& ctx,
-                              const std::vector<analysis::MaterialStudy>& studies, Files& files,
-                              std::string& index,
+                              const std::vector<analysis::MaterialStudy>& studies,
+                              const LabelFont& font, Files& files, std::string& index,
                               const std::function<void(const std::string&)>& log) {
   const auto t0 = std::chrono::steady_clock::now();
-  auto pictures = reproduce_figures(ctx, studies);
+  auto pictures = reproduce_figures(ctx, studies, font);
   auto flip_files = reproduce_flips(ctx, studies);
   log(fmt::format("reproduce: figures ({} PNGs, {:.2f} s)",
                   pictures.size() - 1 + flip_files.files.size(), seconds_since(t0)));
@@ -122,7 +122,7 @@ std::vector<Flip> add_figures(const analysis::Context& ctx,
 
 }  // namespace
 
-Files reproduce_files(analysis::TableInputs& in, bool figures,
+Files reproduce_files(analysis::TableInputs& in, const LabelFont* figures_font,
                       const std::function<void(const std::string&)>& log) {
   const auto& ctx = in.ctx;
   Files files;
@@ -136,7 +136,9 @@ Files reproduce_files(analysis::TableInputs& in, bool figures,
   const auto presets = *std::find_if(tables.begin(), tables.end(),
                                      [](const analysis::Table& t) { return t.name == "presets"; });
   add_documents(ctx, studies, presets, files, index);
-  const auto flips = figures ? add_figures(ctx, studies, files, index, log) : std::vector<Flip>{};
+  const bool figures = figures_font != nullptr;
+  const auto flips =
+      figures ? add_figures(ctx, studies, *figures_font, files, index, log) : std::vector<Flip>{};
   const auto t0 = std::chrono::steady_clock::now();
   File page{"index.html", report_page(ctx, studies, presets, tables, figures, flips)};
   log(fmt::format("reproduce: index.html ({} bytes, {:.2f} s)", page.second.size(),

@@ -4,15 +4,17 @@
 #include <string>
 
 #include "analysis/tables/table_registry.h"
+#include "draw/drawing.h"
 #include "io/writer.h"
 
 namespace fl::report {
 
 // Every table of table_specs() marked for reproduce as NAME.csv and NAME.md, the presets in every
 // other format of documents/preset_formats.h (presets.json, presets*.mtlx, presets.gltf), the
-// figures (reproduce_figures) when `figures` is set, and README.md indexing them; paths relative to
-// the output folder. `log` gets one progress line per table and one for the figures.
-Files reproduce_files(analysis::TableInputs& in, bool figures,
+// figures (reproduce_figures) labelled in `figures_font` unless it is null (no figures), and
+// README.md indexing them; paths relative to the output folder. `log` gets one progress line per
+// table and one for the figures.
+Files reproduce_files(analysis::TableInputs& in, const LabelFont* figures_font,
                       const std::function<void(const std::string&)>& log);
 
 }  // namespace fl::report

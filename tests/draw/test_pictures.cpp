@@ -190,9 +190,9 @@ Ink ink(const report::Image8& img) {
   return b;
 }
 
-report::Image8 draw_png(const report::Drawing& d) {
+report::Image8 draw_png(const report::Drawing& d, const report::LabelFont& font) {
   test::TempDir tmp;
-  const auto path = tmp.file("d.png", report::encode(d, report::FileType::Png));
+  const auto path = tmp.file("d.png", report::encode(d, report::FileType::Png, font));
   return report::read_png(path);
 }
 
@@ -221,7 +221,7 @@ TEST(Draw, HairlinesAndRectanglesCoverWholePixels) {
   // A 1 px line along the centres of row 4 covers that row and nothing beyond it.
   d.add(report::Polyline{{{2, 4.5}, {30, 4.5}}, {0, 0, 0}, 1.0, {}});
   d.add(report::Rect{10, 10, 5, 3, {200, 40, 90}});
-  const auto img = draw_png(d);
+  const auto img = draw_png(d, report::LabelFont());
   ASSERT_EQ(img.width, 40);
   ASSERT_EQ(img.height, 20);
   EXPECT_EQ(img.at(15, 4), (report::Rgb8{0, 0, 0}));
@@ -234,12 +234,13 @@ TEST(Draw, HairlinesAndRectanglesCoverWholePixels) {
 }
 
 TEST(Draw, TextIsAlignedOnItsAnchor) {
-  const auto drawn = [](report::Align align, bool vertical) {
+  const report::LabelFont font;
+  const auto drawn = [&font](report::Align align, bool vertical) {
     report::Drawing d;
     d.width = 240;
     d.height = 240;
     d.add(report::Text{120, 120, "Fresnel", 20, {0, 0, 0}, align, vertical});
-    return ink(draw_png(d));
+    return ink(draw_png(d, font));
   };
   constexpr int kInkTol = 3;  // glyph side bearings, pixels
   const Ink centre = drawn(report::Align::Center, false);
@@ -253,7 +254,55 @@ TEST(Draw, TextIsAlignedOnItsAnchor) {
   const Ink up = drawn(report::Align::Left, true);
   EXPECT_GT(up.y1 - up.y0, 2 * (up.x1 - up.x0));  // reads upwards: taller than wide
   EXPECT_NEAR(0.5 * (up.y0 + up.y1), 120, kInkTol);
-  EXPECT_NEAR(report::text_width_px("Fresnel", 20), centre.x1 - centre.x0, 2 * kInkTol);
+  EXPECT_NEAR(report::text_width_px("Fresnel", 20, font), centre.x1 - centre.x0, 2 * kInkTol);
+}
+
+// Advance widths of "Fresnel" in font units (2048 per em), from the hmtx tables of Debian's
+// fonts-dejavu-core 2.37 files: DejaVu Sans F r e s n e l = 1178 842 1260 1067 1298 1260 569;
+// DejaVu Sans Mono sets every glyph 1233 wide.
+constexpr double kSansFresnelUnits = 1178 + 842 + 1260 + 1067 + 1298 + 1260 + 569;
+constexpr double kMonoFresnelUnits = 7 * 1233;
+// Hinted metrics round each glyph's advance to whole pixels: at most half a pixel per glyph.
+constexpr double kHintedTol = 7 * 0.5;
+
+TEST(LabelFont, EachObjectSetsTextInItsOwnFile) {
+  const report::LabelFont sans;
+  EXPECT_EQ(std::filesystem::path(sans.file()).filename(), "DejaVuSans.ttf");
+  const auto mono_file = std::filesystem::path(sans.file()).parent_path() / "DejaVuSansMono.ttf";
+  ASSERT_TRUE(std::filesystem::exists(mono_file)) << "fonts-dejavu-core installs " << mono_file;
+  const report::LabelFont mono(mono_file.string());
+  EXPECT_EQ(mono.file(), mono_file.string());
+  // Both loaded in one process, each measures with its own face.
+  EXPECT_NEAR(report::text_width_px("Fresnel", 20, sans), kSansFresnelUnits / 2048 * 20,
+              kHintedTol);
+  EXPECT_NEAR(report::text_width_px("Fresnel", 20, mono), kMonoFresnelUnits / 2048 * 20,
+              kHintedTol);
+  // A copy shares the face and measures the same.
+  const report::LabelFont copy = mono;
+  EXPECT_NEAR(report::text_width_px("Fresnel", 20, copy), kMonoFresnelUnits / 2048 * 20,
+              kHintedTol);
+  // Drawn text follows the font passed to encode: the monospaced word is wider by the difference.
+  report::Drawing d;
+  d.width = 240;
+  d.height = 60;
+  d.add(report::Text{20, 40, "Fresnel", 20, {0, 0, 0}});
+  const Ink a = ink(draw_png(d, sans)), b = ink(draw_png(d, mono));
+  EXPECT_NEAR((b.x1 - b.x0) - (a.x1 - a.x0), (kMonoFresnelUnits - kSansFresnelUnits) / 2048 * 20,
+              2 * kHintedTol);
+}
+
+TEST(LabelFont, AFileThatIsNoFontIsAnInputErrorNamingIt) {
+  test::TempDir tmp;
+  for (const auto& file : {tmp.path() + "/none.ttf", tmp.file("text.ttf", "not a font")}) {
+    try {
+      report::LabelFont font(file);
+      ADD_FAILURE() << file << " loaded";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), file);
+      EXPECT_EQ(std::string(e.what()),
+                file + ": cannot load the label font (a TrueType or OpenType file)");
+    }
+  }
 }
 
 TEST(Draw, SvgIsWellFormedXmlAndPdfHasOnePage) {
@@ -265,7 +314,8 @@ TEST(Draw, SvgIsWellFormedXmlAndPdfHasOnePage) {
   d.add(report::Circle{100, 100, 6, {255, 127, 14}, 2.0});
   d.add(report::Picture{200, 20, report::Image8(30, 10, report::Rgb8{10, 200, 30})});
   test::TempDir tmp;
-  const auto svg = report::encode(d, report::FileType::Svg);
+  const report::LabelFont font;
+  const auto svg = report::encode(d, report::FileType::Svg, font);
   const auto svg_path = tmp.file("d.svg", svg);
   if (std::system("command -v xmllint >/dev/null 2>&1") == 0) {
     const auto r = test::run_command("xmllint --noout '" + svg_path + "'");
@@ -276,14 +326,16 @@ TEST(Draw, SvgIsWellFormedXmlAndPdfHasOnePage) {
   EXPECT_EQ(count(svg, "<svg"), 1u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   EXPECT_EQ(svg,
-            report::encode(d, report::FileType::Svg));  // Cairo's surface counters have moved on
-  const auto pdf = report::encode(d, report::FileType::Pdf);
+            report::encode(d, report::FileType::Svg, font));  // Cairo's surface counters moved on
+  const auto pdf = report::encode(d, report::FileType::Pdf, font);
   EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
   EXPECT_EQ(count(pdf, "/Type /Page\n") + count(pdf, "/Type /Page "), 1u);
   EXPECT_NE(pdf.find("/MediaBox [ 0 0 320 200 ]"), std::string::npos);
   EXPECT_NE(pdf.find("%%EOF"), std::string::npos);
   EXPECT_EQ(pdf.find("/CreationDate"), std::string::npos);  // nothing that changes between runs
-  EXPECT_EQ(pdf, report::encode(d, report::FileType::Pdf));
+  EXPECT_EQ(pdf, report::encode(d, report::FileType::Pdf, font));
+  // Text needs a font: only a drawing without it may be encoded without one.
+  EXPECT_THROW(report::encode_without_text(d, report::FileType::Png), std::logic_error);
   EXPECT_EQ(report::file_type("A.PDF"), report::FileType::Pdf);
   EXPECT_THROW(report::file_type("a.jpg"), InputError);
 }
@@ -312,7 +364,7 @@ TEST(Figures, StripPixelsAreTheSrgbEncodingOfKnownReflectances) {
       {{fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}}}};
   const auto data = analysis::strip_data(ctx, in);
   ASSERT_EQ(data.rows.size(), 2u);
-  const auto img = draw_png(report::strip_drawing(data));
+  const auto img = draw_png(report::strip_drawing(data), report::LabelFont());
   // Sample 0 of the 0°–90° span is at θ = 1/12°, where both reflectances are their normal-incidence
   // values to 1e-6.
   const auto pixel = [&](size_t row) {
@@ -352,7 +404,8 @@ TEST(Figures, HeatMapLegendEndsAreInfernosEnds) {
   std::vector<double> de(kW * kH, 0.0);
   de[0] = std::nan("");
   de[kW * kH - 1] = 2.0;  // the largest ΔE is 2, a nice value: the scale's top
-  const auto img = draw_png(report::heatmap_drawing(de, kW, kH, "test"));
+  const report::LabelFont font;
+  const auto img = draw_png(report::heatmap_drawing(de, kW, kH, "test", font), font);
   const auto bar = report::heatmap_colour_bar(kW, kH);
   ASSERT_GE(img.height, bar.y + bar.height);
   ASSERT_GE(img.width, bar.x + bar.width);
@@ -385,13 +438,14 @@ TEST(Figures, CurveAndSpeedFiguresHaveTheirSizes) {
   EXPECT_EQ(curves.models[0].de2000.size(), ctx.angles_deg().size());
   // Schlick reaches 1 at 90°, like any Fresnel reflectance: no colour difference there.
   EXPECT_NEAR(curves.models[0].de2000.back(), 0.0, 1e-6);
-  const auto img = draw_png(report::curves_drawing(curves));
+  const report::LabelFont font;
+  const auto img = draw_png(report::curves_drawing(curves), font);
   EXPECT_EQ(img.width, 940);
   EXPECT_EQ(img.height, 820);
   std::vector<analysis::SpeedRow> rows{
       {fresnel::model_of<fresnel::models::Schlick>, false, 0.5, 1.6, 3.0, false},
       {fresnel::model_of<fresnel::models::F82>, true, 1.5, 0.6, 2.0, true}};
-  const auto speed = draw_png(report::speed_plot(rows));
+  const auto speed = draw_png(report::speed_plot(rows), font);
   EXPECT_EQ(speed.width, 960);
   EXPECT_EQ(speed.height, 560);
 }
@@ -415,6 +469,18 @@ TEST(PictureCli, PlotAndRenderWriteTheirFiles) {
        {"/s.png", "/c.svg", "/s.pdf", "/r.exr", "/r.png", "/r.truth.png", "/r.de2000.png"})
     EXPECT_TRUE(std::filesystem::exists(tmp.path() + f)) << f;
   EXPECT_EQ(report::read_png(tmp.path() + "/r.png").width, 21);
+  // $FRESNEL_LAB_FONT reaches the drawing: in DejaVu Sans Mono every glyph of the heat map's title
+  // "Gold: ΔE2000, truth vs F82" (26 characters) advances 1233/2048 × 13 px, hinted to 8 px, and
+  // the map is as wide as the title with 8 px margins (the map and its colour bar are narrower).
+  const auto mono =
+      std::filesystem::path(report::LabelFont().file()).parent_path() / "DejaVuSansMono.ttf";
+  ASSERT_EQ(run_command("FRESNEL_LAB_FONT='" + mono.string() + "' " + cli() +
+                        " -q render gold --model f82 --roughness 0 --size 21 --samples 4 --out '" +
+                        tmp.path() + "/m.exr'")
+                .status,
+            0);
+  EXPECT_EQ(report::read_png(tmp.path() + "/m.de2000.png").width, 8 + 26 * 8 + 8);
+  EXPECT_NE(report::read_png(tmp.path() + "/r.de2000.png").width, 8 + 26 * 8 + 8);
   EXPECT_EQ(slurp(tmp.path() + "/s.pdf").rfind("%PDF-", 0), 0u);
   const auto e = report::read_exr(exr);
   EXPECT_EQ(e.channels.size(), 4u);

@@ -72,7 +72,8 @@ TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
   s.rows.push_back({"schlick", flat(n, n, {200, 10, 10}), de, 0.5, 0.5});
   s.rows.push_back(
       {"f82", flat(n, n, {10, 10, 200}), std::vector<double>(de.size(), 2.0), 2.0, 2.0});
-  const auto img = report::rasterize(report::contact_sheet_drawing(s));
+  const report::LabelFont font;
+  const auto img = report::rasterize(report::contact_sheet_drawing(s, font), font);
   const double scale = report::heatmap_scale({0.5, 2.0});  // shared by both rows: 2
   for (size_t r = 0; r < 2; ++r) {
     const auto at = [&](int col, int dx, int dy) {
