@@ -243,19 +243,16 @@ std::string plan_markdown(const analysis::Plan& p, const analysis::PlanCosts& co
   return s;
 }
 
-std::string plan_shader(const analysis::Plan& p, analysis::ShaderLanguage lang) {
+std::string plan_shader(const analysis::Plan& p, analysis::ShaderDocument doc) {
   const auto& sc = p.scene_choice;
-  std::string s = fmt::format(
-      "// fresnel-lab plan {}: one shader for {} material(s) under {}: {}{}.\n", p.scene.path,
-      sc.materials.size(), join(lighting_list(p.scene), ", "), fresnel::model_spec(sc.model).name,
-      sc.failing.empty() ? "" : fmt::format(" (over budget: {})", join(sc.failing, ", ")));
+  doc.notes.push_back(fmt::format(
+      "Plan {}: one shader for {} material(s) under {}: {}{}.", p.scene.path, sc.materials.size(),
+      join(lighting_list(p.scene), ", "), fresnel::model_spec(sc.model).name,
+      sc.failing.empty() ? "" : fmt::format(" (over budget: {})", join(sc.failing, ", "))));
   for (const auto& m : sc.materials)
-    s += fmt::format("//   {} ({}): {}\n", m.material, analysis::parameter_set_name(m.set),
-                     params_text(m));
-  for (const auto& l : p.scene_luts)
-    s += fmt::format("// table {} ({}): {} — {}\n", l.file, l.lighting, join(l.channels, ", "),
-                     l.command);
-  return s + analysis::shader_code(sc.model, p.scene.lightings(), lang);
+    doc.notes.push_back(fmt::format("  {} ({}): {}", m.material,
+                                    analysis::parameter_set_name(m.set), params_text(m)));
+  return analysis::shader_document(sc.model, p.scene.lightings(), doc);
 }
 
 }  // namespace fl::report
