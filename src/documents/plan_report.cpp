@@ -9,6 +9,7 @@
 #include "documents/json.h"
 #include "documents/table_formats.h"
 #include "fresnel/registered_models.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {
@@ -394,15 +395,20 @@ std::string plan_markdown(const analysis::Plan& p, const analysis::PlanCosts& co
   return s;
 }
 
-std::string plan_shader(const analysis::Plan& p, analysis::ShaderLanguage lang) {
+std::string plan_shader(const analysis::Plan& p, const analysis::ShaderDocument& doc) {
   const auto& sc = p.scene_choice();
-  if (sc.groups.size() == 1) return plan_group_shader(p, sc.groups.front(), lang);
+  if (sc.groups.size() == 1) return plan_group_shader(p, sc.groups.front(), doc);
+  if (doc.standalone)
+    throw InputError(fmt::format(
+        "--standalone prints one shader, and the plan's option '{}' is {} shader variants: print "
+        "the include (without --standalone) or write one per group with --out DIR",
+        sc.name, sc.groups.size()));
   std::string s = fmt::format(
       "// fresnel-lab plan {}: option '{}', one shader variant per group (material permutations); "
       "define one of the groups' macros to compile its variant.\n",
       p.scene.path, sc.name);
   for (const auto& g : sc.groups)
-    s += fmt::format("#ifdef {}\n{}#endif\n", group_macro(g.name), plan_group_shader(p, g, lang));
+    s += fmt::format("#ifdef {}\n{}#endif\n", group_macro(g.name), plan_group_shader(p, g, doc));
   return s;
 }
 
@@ -413,26 +419,24 @@ std::string group_macro(const std::string& group) {
 }
 
 std::string plan_group_shader(const analysis::Plan& p, const analysis::OptionGroup& g,
-                              analysis::ShaderLanguage lang) {
+                              analysis::ShaderDocument doc) {
   const auto& sc = p.scene_choice();
-  std::string s = fmt::format(
-      "// fresnel-lab plan {}: option '{}'; group '{}' ({} material(s)) under {}: {}.\n",
-      p.scene.path, sc.name, g.name, g.materials.size(), join(lighting_list(p.scene), ", "),
-      fresnel::model_spec(g.model).name);
+  doc.notes.push_back(fmt::format("Plan {}: option '{}'; group '{}' ({} material(s)) under {}: {}.",
+                                  p.scene.path, sc.name, g.name, g.materials.size(),
+                                  join(lighting_list(p.scene), ", "),
+                                  fresnel::model_spec(g.model).name));
   for (size_t k : g.materials) {
     const auto& m = sc.materials.at(k);
-    s += fmt::format("//   {} ({}{}): {}\n", m.material, analysis::parameter_set_name(m.set),
-                     m.meets_budget ? "" : ", over budget", params_text(m));
+    doc.notes.push_back(fmt::format("  {} ({}{}): {}", m.material,
+                                    analysis::parameter_set_name(m.set),
+                                    m.meets_budget ? "" : ", over budget", params_text(m)));
   }
-  for (const auto& l : analysis::needed_luts(p.scene, {g.model}))
-    s += fmt::format("// table {} ({}): {} — {}\n", l.file, l.lighting, join(l.channels, ", "),
-                     l.command);
   // A mirror (roughness 0) is the model at n·v, with no table: its function comes along.
   auto lightings = p.scene.lightings();
   const bool mirror = std::any_of(g.materials.begin(), g.materials.end(),
                                   [&](size_t k) { return p.scene.materials.at(k).mirror(); });
   if (mirror && !p.scene.punctual) lightings.insert(lightings.begin(), Lighting::Punctual);
-  return s + analysis::shader_code(g.model, lightings, lang);
+  return analysis::shader_document(g.model, lightings, doc);
 }
 
 std::string plan_include_name(const analysis::Plan& p, const analysis::OptionGroup& g,

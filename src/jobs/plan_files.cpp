@@ -143,10 +143,16 @@ Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs, cons
   std::set<std::string> includes;
   for (const auto& g : p.scene_choice().groups) {
     if (!includes.insert(plan_include_name(p, g, "glsl")).second) continue;
-    out.emplace_back(plan_include_name(p, g, "glsl"),
-                     plan_group_shader(p, g, analysis::ShaderLanguage::Glsl));
-    out.emplace_back(plan_include_name(p, g, "hlsl"),
-                     plan_group_shader(p, g, analysis::ShaderLanguage::Hlsl));
+    for (const auto lang : {analysis::ShaderLanguage::Glsl, analysis::ShaderLanguage::Hlsl}) {
+      const std::string ext = lang == analysis::ShaderLanguage::Glsl ? "glsl" : "hlsl";
+      const analysis::ShaderDocument doc{lang,
+                                         analysis::kEngineLutSize,
+                                         false,
+                                         fmt::format("fresnel-lab plan {} --out DIR ({})",
+                                                     p.scene.path, plan_include_name(p, g, ext)),
+                                         {}};
+      out.emplace_back(plan_include_name(p, g, ext), plan_group_shader(p, g, doc));
+    }
   }
   out.emplace_back("materials.json", plan_materials_json(p));
   out.emplace_back("plan.md", plan_markdown(p, costs));

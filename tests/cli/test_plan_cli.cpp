@@ -169,7 +169,9 @@ TEST(PlanCli, SplitVariantsCompileAndValidate) {
   o.materials = {gold, glass};
   p.scene_options = {o};
   for (const auto lang : {analysis::ShaderLanguage::Glsl, analysis::ShaderLanguage::Hlsl}) {
-    const std::string code = report::plan_shader(p, lang);
+    analysis::ShaderDocument doc;
+    doc.lang = lang;
+    const std::string code = report::plan_shader(p, doc);
     EXPECT_NE(code.find("#ifdef FRESNEL_GROUP_METAL"), std::string::npos);
     EXPECT_NE(code.find("#ifdef FRESNEL_GROUP_DIELECTRIC"), std::string::npos);
     EXPECT_NE(code.find("fresnel_f82("), std::string::npos);      // the mirror's F(n·v)
