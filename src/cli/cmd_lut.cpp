@@ -1,5 +1,5 @@
-// `lut dfg | ltc-moments | ltc`: pre-integrated GGX lookup tables as EXR textures, CSV and C++
-// headers.
+// `lut dfg | ltc-moments | ltc | energy`: pre-integrated GGX lookup tables as EXR textures, CSV
+// and C/C++ headers.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -38,6 +38,9 @@ CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, 
   sub->add_option("--samples", r->samples, "quasi-Monte Carlo samples per cell")
       ->capture_default_str();
   sub->add_option("--threads", r->threads, "worker threads (0: all cores)")->capture_default_str();
+  sub->add_option("--symbol", r->symbol,
+                  "with .h output: the C symbol of the arrays (NAME_data, NAME_SIZE, "
+                  "NAME_CHANNELS; a further texture adds _2, _3, ...)");
   const std::string what = std::string("lut ") + name;
   sub->callback([&g, &selected, r, run, what] {
     selected = [&g, r, run, what] { return write_output(g, run(*r, progress_printer(g, what))); };
@@ -68,7 +71,8 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
                          ", dfg1 stored less dfg2 (the split sum's scale); or Filament's "
                          "multiscatter layout",
                      "output file: .exr (RGB per texture: FILE.exr, FILE_2.exr, ...), .csv, .h "
-                     "(C++ header) or, with --layout filament, .inc (Filament's dfg.inc)",
+                     "(a C/C++ header per texture: FILE.h, FILE_2.h, ...) or, with --layout "
+                     "filament, .inc (Filament's dfg.inc)",
                      report::dfg_lut, dfg)
       ->add_option("--layout", dfg->layout,
                    "split-sum (every table term) or filament (Filament's "
@@ -78,20 +82,20 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
   add_lut_subcommand(*lut, g, selected, "ltc-moments",
                      "LTC moments on the LTC grid, one per table term: " + term_channels(false),
                      "output file: .exr (RGB per texture: FILE.exr = n_d, f_d, l_d; FILE_3.exr, "
-                     "...) or .csv",
+                     "...), .h (a C/C++ header per texture: FILE.h, FILE_3.h, ...) or .csv",
                      report::moments_lut, std::make_shared<report::LutRequest>());
   add_lut_subcommand(
       *lut, g, selected, "ltc",
       "fit the LTC matrix of every cell with Ceres (Heitz et al. 2016) and write the LTC "
       "textures",
       "output: FILE.exr writes FILE_1.exr (inverse matrix), FILE_2.exr (n_d, f_d, l_d, sphere form "
-      "factor), FILE_3.exr, ... (the other table terms' moments) and FILE.csv; FILE.csv writes the "
-      "CSV only",
+      "factor), FILE_3.exr, ... (the other table terms' moments) and FILE.csv; FILE.h writes "
+      "FILE_1.h, FILE_2.h, ... (C/C++ headers of the same textures); FILE.csv writes the CSV only",
       report::ltc_lut, std::make_shared<report::LutRequest>());
   add_lut_subcommand(*lut, g, selected, "energy",
                      "Kulla-Conty energy compensation on the DFG grid: E(n·v, roughness) = ∫ρ cos "
                      "and E_avg(roughness) = 2∫E(μ)μ dμ",
-                     "output file: .exr (R = E, G = E_avg), .csv or .h (C++ header)",
+                     "output file: .exr or .h (a C/C++ header; R = E, G = E_avg), or .csv",
                      report::energy_lut, std::make_shared<report::LutRequest>());
 }
 

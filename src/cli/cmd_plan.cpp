@@ -1,23 +1,58 @@
 // `plan SCENE.yaml`: the cheapest Fresnel model per scene material within a ΔE2000 budget as
-// rendered under the scene's lighting, one shader for the scene, and the lookup tables they need.
+// rendered under the scene's lighting, the shader set for the scene, and the lookup tables they
+// need.
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 
 #include "analysis/plan/plan.h"
 #include "cli/app.h"
 #include "documents/plan_report.h"
+#include "draw/plan_plot.h"
+#include "jobs/plan_files.h"
 #include "util/errors.h"
 
 namespace fl::cli {
+namespace {
+
+// `--shader [--lang L] [--size N] [--standalone]`: the chosen shader set's document.
+struct ShaderArgs {
+  bool shader = false, standalone = false;
+  std::string lang = "glsl";
+  int size = analysis::kEngineLutSize;
+};
+
+void add_shader_options(CLI::App* sub, ShaderArgs& s) {
+  sub->add_flag("--shader", s.shader, "print the chosen shader set's include instead of the plan");
+  sub->add_option("--lang", s.lang, "with --shader: glsl or hlsl")->capture_default_str();
+  sub->add_option("--size", s.size,
+                  "with --shader: texels per axis of the tables the shader samples (`lut --size`)")
+      ->capture_default_str();
+  sub->add_flag("--standalone", s.standalone,
+                "with --shader: a complete fragment shader around the include");
+}
+
+// The options checked (InputError), as plan_shader's request.
+analysis::ShaderDocument shader_document(const std::string& scene, const ShaderArgs& s) {
+  analysis::check_lut_size(s.size);
+  return {analysis::shader_language_from_name(s.lang),
+          s.size,
+          s.standalone,
+          fmt::format("fresnel-lab plan {} --shader --lang {} --size {}{}", scene, s.lang, s.size,
+                      s.standalone ? " --standalone" : ""),
+          {}};
+}
+
+}  // namespace
 
 void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand("plan",
                                  "per scene material the cheapest Fresnel model within a ΔE2000 "
                                  "budget, and the lookup tables it needs");
   struct Args {
-    std::string scene, format = "md", costs, gpu_costs, lang = "glsl";
-    bool shader = false;
+    std::string scene, format = "md", costs, gpu_costs, out, plot;
+    ShaderArgs shader;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("SCENE", a->scene,
@@ -32,14 +67,19 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option(
       "--gpu-costs", a->gpu_costs,
       "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the tool's bench/gpu_costs.csv)");
-  sub->add_flag("--shader", a->shader,
-                "print the scene-wide model's shader code instead of the plan");
-  sub->add_option("--lang", a->lang, "with --shader: glsl or hlsl")->capture_default_str();
+  add_shader_options(sub, a->shader);
+  sub->add_option("--out", a->out,
+                  "write everything the engine needs into this folder: the shader includes, the "
+                  "tables they read, materials.json, README.md, the plan and its figure");
+  sub->add_option("--plot", a->plot,
+                  "also draw the options' cost against error (FILE.png, FILE.svg or FILE.pdf)");
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
       if (a->format != "json" && a->format != "md")
         throw InputError(fmt::format("--format must be json or md, not '{}'", a->format));
-      const auto lang = analysis::shader_language_from_name(a->lang);
+      const auto shader = shader_document(a->scene, a->shader);
+      if (!a->plot.empty()) report::file_type(a->plot);  // an unknown extension, before the work
+      if (!a->out.empty()) report::require_replaceable_folder(a->out, report::kPlanMarker);
       auto scene = analysis::read_scene(a->scene);
       const analysis::PlanCosts costs{
           analysis::load_model_costs(given_or(a->costs, g.settings.paths.model_costs)),
@@ -59,8 +99,17 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto studies =
           analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
       const auto p = analysis::make_plan(scene, ctx, studies, costs);
-      if (a->shader)
-        fmt::print("{}", report::plan_shader(p, lang));
+      std::optional<report::LabelFont> font;
+      if (!a->plot.empty() || !a->out.empty()) font.emplace(g.label_font);
+      if (!a->plot.empty()) report::write_drawing(a->plot, report::plan_plot(p), *font);
+      if (!a->out.empty()) {
+        report::replace_folder_atomic(a->out, report::plan_files(p, costs, *font),
+                                      report::kPlanMarker);
+        progress(g, fmt::format("plan: wrote {} ({})", a->out, p.scene_choice().name));
+        return 0;
+      }
+      if (a->shader.shader)
+        fmt::print("{}", report::plan_shader(p, shader));
       else
         fmt::print("{}",
                    a->format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs));

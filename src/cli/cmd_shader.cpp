@@ -11,13 +11,20 @@ namespace fl::cli {
 
 void add_shader_command(CLI::App& app, GlobalOptions&, Runner& selected) {
   auto* sub = app.add_subcommand("shader",
-                                 "a self-contained shader function for a Fresnel model, with the "
+                                 "a self-describing shader include for a Fresnel model, with the "
                                  "lookup-table read under ibl and area");
   auto r = std::make_shared<analysis::ShaderRequest>();
   sub->add_option("MODEL", r->model, "Fresnel model: " + analysis::model_names())->required();
   sub->add_option("--lang", r->lang, "glsl or hlsl")->capture_default_str();
   sub->add_option("--lighting", r->lighting, "punctual, ibl (DFG table) or area (LTC moments)")
       ->capture_default_str();
+  sub->add_option("--size", r->size,
+                  "texels per axis of the tables it samples (`lut --size`; the LTC uv depends on "
+                  "it)")
+      ->capture_default_str();
+  sub->add_flag("--standalone", r->standalone,
+                "a complete fragment shader: #version 450 core (GLSL), the include and an entry "
+                "point calling it");
   sub->add_flag("--harness", r->harness,
                 "a GLSL compute shader around the function, inputs from a uniform block (what "
                 "scripts/gpu_costs.sh "

@@ -2,9 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
+
+#include "analysis/lut/lut_layout.h"
 #include "documents/json.h"
 #include "documents/table_formats.h"
 #include "fresnel/registered_models.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {
@@ -29,10 +34,15 @@ double error_under(const analysis::PlanChoice& c, Lighting l) {
   return l == Lighting::Ibl ? c.ibl_rms : l == Lighting::Area ? c.area_rms : c.punctual_rms;
 }
 
-// How the engine shades the model under l: "tables" or the named approximation.
-std::string served(fresnel::Model m, Lighting l) {
+// How the engine shades the choice under l: "tables", the named approximation, or, for a mirror
+// (every roughness 0), the model at n·v with no table.
+std::string served(const analysis::PlanChoice& c, Lighting l) {
+  const fresnel::Model m = c.model;
   const auto& s = analysis::lighting_support(m, l);
   if (l == Lighting::Punctual) return "exact at v·h";
+  if (!c.roughness.empty() &&
+      std::all_of(c.roughness.begin(), c.roughness.end(), [](double r) { return r == 0.0; }))
+    return "mirror: F(n·v)";
   return s.fresnel_pre_integrated ? "tables" : fmt::format("F({}) × lobe", s.evaluated_at);
 }
 
@@ -65,7 +75,7 @@ Json choice_json(const analysis::Scene& scene, const analysis::PlanChoice& m) {
   Json errors = Json::object(), how = Json::object();
   for (Lighting l : scene.lightings()) {
     errors[analysis::lighting_name(l)] = error_under(m, l);
-    how[analysis::lighting_name(l)] = served(m.model, l);
+    how[analysis::lighting_name(l)] = served(m, l);
   }
   return {{"material", m.material},
           {"model", fresnel::model_spec(m.model).name},
@@ -95,32 +105,87 @@ Json luts_json(const std::vector<analysis::PlanLut>& luts) {
 
 }  // namespace
 
+namespace {
+
+std::vector<std::string> channel_list(const std::vector<analysis::PlanLut>& luts) {
+  std::vector<std::string> out;
+  for (const auto& l : luts)
+    for (const auto& c : l.channels) out.push_back(l.name + " " + c);
+  return out;
+}
+
+Json groups_json(const analysis::SceneOption& o) {
+  Json out = Json::array();
+  for (const auto& g : o.groups) {
+    Json materials = Json::array(), parameters = Json::array();
+    for (size_t k : g.materials) {
+      const auto& m = o.materials.at(k);
+      materials.push_back(m.material);
+      parameters.push_back({{"material", m.material},
+                            {"set", analysis::parameter_set_name(m.set)},
+                            {"params", params_json(m)}});
+    }
+    out.push_back({{"name", g.name},
+                   {"materials", std::move(materials)},
+                   {"model", fresnel::model_spec(g.model).name},
+                   {"parameters", std::move(parameters)}});
+  }
+  return out;
+}
+
+Json option_json(const std::vector<analysis::SceneOption>& all, const analysis::SceneOption& o) {
+  return {{"name", o.name},
+          {"grouping", o.grouping},
+          {"groups", groups_json(o)},
+          {"gpu_instructions", cost_json(o.cost.gpu_instructions)},
+          {"texture_fetches", cost_json(o.cost.texture_fetches)},
+          {"table_bytes", o.cost.table_bytes},
+          {"shader_variants", o.cost.variants},
+          {"worst_de00", o.worst_de00},
+          {"median_de00", o.median_de00},
+          {"meets_every_budget", o.meets_every_budget()},
+          {"failing", o.failing},
+          {"dominated_by", o.dominated_by ? Json(all.at(*o.dominated_by).name) : Json(nullptr)}};
+}
+
+Json scene_shader_json(const analysis::Plan& p) {
+  const auto& sc = p.scene_choice();
+  Json materials = Json::array();
+  for (size_t k = 0; k < sc.materials.size(); ++k) {
+    Json m = choice_json(p.scene, sc.materials[k]);
+    m["mirror"] = p.scene.materials.at(k).mirror();
+    m["tables"] = channel_list(analysis::material_luts(p, k));
+    materials.push_back(std::move(m));
+  }
+  Json out = {{"option", sc.name}};
+  out.update(option_json(p.scene_options, sc));
+  out["shading"] = sc.cost.variants > 1 ? "material permutations" : "one shader";
+  out["materials"] = std::move(materials);
+  out["luts"] = luts_json(p.scene_luts);
+  return out;
+}
+
+}  // namespace
+
 std::string plan_json(const analysis::Plan& p) {
-  Json materials = Json::array(), scene_materials = Json::array();
+  Json materials = Json::array(), options = Json::array();
   for (const auto& m : p.materials) materials.push_back(choice_json(p.scene, m));
-  for (const auto& m : p.scene_choice.materials) scene_materials.push_back(choice_json(p.scene, m));
-  const auto& sc = p.scene_choice;
+  for (const auto& o : p.scene_options) options.push_back(option_json(p.scene_options, o));
   Json doc = {{"scene", p.scene.path},
               {"space", p.space},
               {"max_de00", p.scene.max_de00},
               {"lighting", lighting_list(p.scene)},
               {"materials", std::move(materials)},
               {"luts", luts_json(p.luts)},
-              {"scene_shader",
-               {{"model", fresnel::model_spec(sc.model).name},
-                {"meets_every_budget", sc.failing.empty()},
-                {"failing", sc.failing},
-                {"gpu_instructions", cost_json(sc.gpu_instructions)},
-                {"cpu_ns_per_eval", cost_json(sc.ns_per_eval)},
-                {"materials", std::move(scene_materials)},
-                {"luts", luts_json(p.scene_luts)}}}};
+              {"scene_shader", scene_shader_json(p)},
+              {"scene_options", std::move(options)}};
   if (!p.unmeasured.empty()) doc["unmeasured"] = p.unmeasured;
   return write_json(doc, [](const std::string& key) {
     if (key == "max_de00" || key == "rms_de00" || key == "punctual" || key == "ibl" ||
         key == "area" || key == "roughness")
       return kErrorDecimals;
     if (key == "cpu_ns_per_eval") return kCostDecimals;
-    return kParamDecimals;  // the members of "params", f_avg
+    return kParamDecimals;  // the members of "params", f_avg, worst_de00, median_de00
   });
 }
 
@@ -152,8 +217,7 @@ std::string luts_markdown(const std::vector<analysis::PlanLut>& luts) {
 std::string lighting_cells(const analysis::Scene& scene, const analysis::PlanChoice& m) {
   std::string s;
   for (Lighting l : scene.lightings())
-    s += fmt::format(" {} ({}) |", format_number(error_under(m, l), kErrorDecimals),
-                     served(m.model, l));
+    s += fmt::format(" {} ({}) |", format_number(error_under(m, l), kErrorDecimals), served(m, l));
   return s;
 }
 
@@ -169,26 +233,114 @@ std::string table_header(const analysis::Scene& scene, bool with_model) {
   return head + rule;
 }
 
+std::string kib_text(long bytes) {
+  return format_number(bytes / 1024.0, 0) + " KiB";
+}
+
+std::string cost_text(const analysis::SceneCost& c) {
+  return fmt::format(
+      "{} GPU instructions and {} texture fetches per draw, {} of tables, {} shader "
+      "variant{}",
+      gpu_text(c.gpu_instructions), gpu_text(c.texture_fetches), kib_text(c.table_bytes),
+      c.variants, c.variants > 1 ? "s" : "");
+}
+
+// The chosen option in a sentence.
+std::string choice_sentence(const analysis::Plan& p) {
+  const auto& sc = p.scene_choice();
+  std::string s = sc.meets_every_budget()
+                      ? fmt::format("**{}** meets every material's budget", sc.name)
+                      : fmt::format(
+                            "No option meets every budget; **{}** has the smallest worst "
+                            "error (over budget: {})",
+                            sc.name, join(sc.failing, ", "));
+  s += fmt::format(" (worst RMS ΔE2000 {}, median {}). Cost: {}", format_number(sc.worst_de00, 3),
+                   format_number(sc.median_de00, 3), cost_text(sc.cost));
+  if (sc.cost.variants > 1)
+    s += " — shaded as material permutations: each group's model is its own shader variant and a "
+         "draw runs its material's (no branch)";
+  return s + fmt::format(
+                 ". Shader: `fresnel-lab plan {} --shader`; everything for the engine: "
+                 "`fresnel-lab plan {} --out DIR`.\n\n",
+                 p.scene.path, p.scene.path);
+}
+
+std::string group_of(const analysis::SceneOption& o, size_t k) {
+  for (const auto& g : o.groups)
+    if (std::find(g.materials.begin(), g.materials.end(), k) != g.materials.end()) return g.name;
+  return "";
+}
+
 std::string scene_markdown(const analysis::Plan& p) {
-  const auto& sc = p.scene_choice;
-  const auto& spec = fresnel::model_spec(sc.model);
-  std::string s = "## One shader for the scene\n\n";
-  s += sc.failing.empty()
-           ? fmt::format("**{}** meets every material's budget", spec.name)
-           : fmt::format("No single model meets every budget; **{}** fails fewest ({}: {})",
-                         spec.name, sc.failing.size(), join(sc.failing, ", "));
-  s += fmt::format(
-      ". Cost: {} GPU instructions ({}), {} CPU ns per evaluation. Shader: `fresnel-lab plan {} "
-      "--shader`.\n\n",
-      gpu_text(sc.gpu_instructions), join(lighting_list(p.scene), " + "), cpu_text(sc.ns_per_eval),
-      p.scene.path);
-  s += table_header(p.scene, false);
-  for (const auto& m : sc.materials)
-    s += fmt::format("| {} | {} |{} {} | {} | {} | {} |\n", m.material,
+  const auto& sc = p.scene_choice();
+  std::string s = "## The shader set for the scene\n\n" + choice_sentence(p);
+  std::string rule = "|---|---|---|---|";
+  s += "| group | model | material | parameters |";
+  for (Lighting l : p.scene.lightings()) {
+    s += fmt::format(" {} rms_de00 |", analysis::lighting_name(l));
+    rule += "---|";
+  }
+  s += " error used | within budget | F_avg (r, g, b) | params | tables read |\n" + rule +
+       "---|---|---|---|---|\n";
+  for (size_t k = 0; k < sc.materials.size(); ++k) {
+    const auto& m = sc.materials[k];
+    const bool mirror = p.scene.materials.at(k).mirror();
+    const auto tables = channel_list(analysis::material_luts(p, k));
+    s += fmt::format("| {} | {} | {} | {} |{} {} | {} | {} | {} | {} |\n", group_of(sc, k),
+                     fresnel::model_spec(m.model).name, m.material,
                      analysis::parameter_set_name(m.set), lighting_cells(p.scene, m), error_name(m),
-                     m.meets_budget ? "yes" : "**no**", f_avg_text(m.f_avg), params_text(m));
-  s += "\nTables for this shader:\n\n" + luts_markdown(p.scene_luts);
+                     m.meets_budget ? "yes" : "**no**", f_avg_text(m.f_avg), params_text(m),
+                     mirror           ? "none (roughness 0: a mirror, the model at n·v)"
+                     : tables.empty() ? "none"
+                                      : join(tables, ", "));
+  }
+  s += "\nTables for these shaders:\n\n" + luts_markdown(p.scene_luts);
   return s;
+}
+
+std::string option_status(const analysis::Plan& p, size_t i) {
+  const auto& o = p.scene_options[i];
+  if (i == p.chosen) return "**chosen**";
+  if (!o.dominated_by) return "front";
+  const auto& d = p.scene_options.at(*o.dominated_by);
+  return fmt::format("dominated by {}: costs {} and errs {} at worst ({} vs {})", d.name,
+                     analysis::scene_cost_less(d.cost, o.cost) ? "less" : "the same",
+                     d.worst_de00 < o.worst_de00 ? "less" : "as much",
+                     format_number(d.worst_de00, 3), format_number(o.worst_de00, 3));
+}
+
+// Every option considered, the front first (cheapest first), then the dominated ones.
+std::string options_markdown(const analysis::Plan& p) {
+  std::vector<size_t> order(p.scene_options.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    const auto &x = p.scene_options[a], &y = p.scene_options[b];
+    if (x.dominated_by.has_value() != y.dominated_by.has_value()) return !x.dominated_by;
+    if (analysis::scene_cost_less(x.cost, y.cost) || analysis::scene_cost_less(y.cost, x.cost))
+      return analysis::scene_cost_less(x.cost, y.cost);
+    return x.worst_de00 < y.worst_de00;
+  });
+  std::string s =
+      "\n## Every option: the Pareto front and the rest\n\n| option | GPU instructions | texture "
+      "fetches | tables | variants | worst ΔE2000 | median ΔE2000 | meets every budget | status "
+      "|\n|---|---|---|---|---|---|---|---|---|\n";
+  for (size_t i : order) {
+    const auto& o = p.scene_options[i];
+    s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", o.name,
+                     gpu_text(o.cost.gpu_instructions), gpu_text(o.cost.texture_fetches),
+                     kib_text(o.cost.table_bytes), o.cost.variants, format_number(o.worst_de00, 3),
+                     format_number(o.median_de00, 3), o.meets_every_budget() ? "yes" : "no",
+                     option_status(p, i));
+  }
+  return s +
+         "\nCost, compared in this order: GPU instructions per draw (the dearest shader variant, "
+         "its "
+         "functions for the scene's lightings summed), texture fetches per draw, the bytes of "
+         "every "
+         "table texture read (each once, 64² half floats), the number of shader variants. An "
+         "option is dominated when another costs no more and has no larger worst error, and is "
+         "cheaper or more accurate. The plan takes the cheapest option meeting every budget, or, "
+         "when none does, the smallest worst error, then the cheapest.\n";
 }
 
 }  // namespace
@@ -204,7 +356,7 @@ std::string plan_markdown(const analysis::Plan& p, const analysis::PlanCosts& co
       "{}; roughness {} unless a material sets its own.\n\n",
       format_number(p.scene.max_de00, kErrorDecimals), join(lighting_list(p.scene), ", "), p.space,
       roughness);
-  s += scene_markdown(p);
+  s += scene_markdown(p) + options_markdown(p);
   s += "\n## Per material\n\n" + table_header(p.scene, true);
   int unserved = 0;
   for (const auto& m : p.materials) {
@@ -243,19 +395,90 @@ std::string plan_markdown(const analysis::Plan& p, const analysis::PlanCosts& co
   return s;
 }
 
-std::string plan_shader(const analysis::Plan& p, analysis::ShaderLanguage lang) {
-  const auto& sc = p.scene_choice;
+std::string plan_shader(const analysis::Plan& p, const analysis::ShaderDocument& doc) {
+  const auto& sc = p.scene_choice();
+  if (sc.groups.size() == 1) return plan_group_shader(p, sc.groups.front(), doc);
+  if (doc.standalone)
+    throw InputError(fmt::format(
+        "--standalone prints one shader, and the plan's option '{}' is {} shader variants: print "
+        "the include (without --standalone) or write one per group with --out DIR",
+        sc.name, sc.groups.size()));
   std::string s = fmt::format(
-      "// fresnel-lab plan {}: one shader for {} material(s) under {}: {}{}.\n", p.scene.path,
-      sc.materials.size(), join(lighting_list(p.scene), ", "), fresnel::model_spec(sc.model).name,
-      sc.failing.empty() ? "" : fmt::format(" (over budget: {})", join(sc.failing, ", ")));
-  for (const auto& m : sc.materials)
-    s += fmt::format("//   {} ({}): {}\n", m.material, analysis::parameter_set_name(m.set),
-                     params_text(m));
-  for (const auto& l : p.scene_luts)
-    s += fmt::format("// table {} ({}): {} — {}\n", l.file, l.lighting, join(l.channels, ", "),
-                     l.command);
-  return s + analysis::shader_code(sc.model, p.scene.lightings(), lang);
+      "// fresnel-lab plan {}: option '{}', one shader variant per group (material permutations); "
+      "define one of the groups' macros to compile its variant.\n",
+      p.scene.path, sc.name);
+  for (const auto& g : sc.groups)
+    s += fmt::format("#ifdef {}\n{}#endif\n", group_macro(g.name), plan_group_shader(p, g, doc));
+  return s;
+}
+
+std::string group_macro(const std::string& group) {
+  std::string out = "FRESNEL_GROUP_";
+  for (unsigned char c : group) out += std::isalnum(c) ? static_cast<char>(std::toupper(c)) : '_';
+  return out;
+}
+
+std::string plan_group_shader(const analysis::Plan& p, const analysis::OptionGroup& g,
+                              analysis::ShaderDocument doc) {
+  const auto& sc = p.scene_choice();
+  doc.notes.push_back(fmt::format("Plan {}: option '{}'; group '{}' ({} material(s)) under {}: {}.",
+                                  p.scene.path, sc.name, g.name, g.materials.size(),
+                                  join(lighting_list(p.scene), ", "),
+                                  fresnel::model_spec(g.model).name));
+  for (size_t k : g.materials) {
+    const auto& m = sc.materials.at(k);
+    doc.notes.push_back(fmt::format("  {} ({}{}): {}", m.material,
+                                    analysis::parameter_set_name(m.set),
+                                    m.meets_budget ? "" : ", over budget", params_text(m)));
+  }
+  // A mirror (roughness 0) is the model at n·v, with no table: its function comes along.
+  auto lightings = p.scene.lightings();
+  const bool mirror = std::any_of(g.materials.begin(), g.materials.end(),
+                                  [&](size_t k) { return p.scene.materials.at(k).mirror(); });
+  if (mirror && !p.scene.punctual) lightings.insert(lightings.begin(), Lighting::Punctual);
+  return analysis::shader_document(g.model, lightings, doc);
+}
+
+std::string plan_include_name(const analysis::Plan& p, const analysis::OptionGroup& g,
+                              const std::string& ext) {
+  if (p.scene_choice().groups.size() == 1) return "fresnel." + ext;
+  std::string name = "fresnel_";
+  for (unsigned char c : g.name) name += std::isalnum(c) ? static_cast<char>(std::tolower(c)) : '_';
+  return name + "." + ext;
+}
+
+std::string plan_materials_json(const analysis::Plan& p) {
+  const auto& sc = p.scene_choice();
+  Json materials = Json::array();
+  for (const auto& g : sc.groups)
+    for (size_t k : g.materials) {
+      const auto& m = sc.materials.at(k);
+      const auto names = fresnel::model_spec(m.model).param_names();
+      Json params = Json::object();
+      for (size_t i = 0; i < names.size(); ++i) params[names[i]] = m.params[i];
+      std::vector<std::string> tables;
+      for (const auto& l : analysis::material_luts(p, k))
+        for (const auto& c : l.channels) tables.push_back(l.file + " " + c);
+      materials.push_back({{"material", m.material},
+                           {"group", g.name},
+                           {"include", plan_include_name(p, g, "glsl")},
+                           {"model", fresnel::model_spec(m.model).name},
+                           {"parameters", analysis::parameter_set_name(m.set)},
+                           {"params", params},
+                           {"roughness", m.roughness},
+                           {"mirror", p.scene.materials.at(k).mirror()},
+                           {"tables", tables},
+                           {"rendered_de00", m.error},
+                           {"meets_budget", m.meets_budget}});
+    }
+  Json doc = {{"scene", p.scene.path},
+              {"option", sc.name},
+              {"max_de00", p.scene.max_de00},
+              {"materials", materials}};
+  return write_json(doc, [](const std::string& key) {
+    return key == "max_de00" || key == "roughness" || key == "rendered_de00" ? kErrorDecimals
+                                                                             : kParamDecimals;
+  });
 }
 
 }  // namespace fl::report

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "draw/inferno_table.h"
 #include "draw/plot.h"
 
 namespace fl::report {
@@ -217,14 +218,12 @@ Drawing curves_drawing(const analysis::CurveData& d) {
 }
 
 Rgb8 inferno(double t) {
-  static const double kStops[5][3] = {
-      {0, 0, 4}, {87, 16, 110}, {188, 55, 84}, {249, 142, 9}, {252, 255, 164}};
-  t = std::clamp(t, 0.0, 1.0) * 4.0;
-  const int i = std::min(3, static_cast<int>(t));
-  const double f = t - i;
+  const double x = std::clamp(t, 0.0, 1.0) * (kInfernoEntries - 1);
+  const int i = std::min(kInfernoEntries - 2, static_cast<int>(x));
+  const double f = x - i;
   const auto ch = [&](int c) {
-    return static_cast<std::uint8_t>(
-        std::lround(kStops[i][c] + (kStops[i + 1][c] - kStops[i][c]) * f));
+    const double v = kInferno[i][c] + (kInferno[i + 1][c] - kInferno[i][c]) * f;
+    return static_cast<std::uint8_t>(std::lround(255.0 * v));
   };
   return {ch(0), ch(1), ch(2)};
 }

@@ -64,8 +64,9 @@ struct ColourBar {
 };
 ColourBar heatmap_colour_bar(int width, int height);
 
-// The ramp: five control points of matplotlib's "inferno" (van der Walt & Smith 2015, CC0),
-// sRGB-encoded, interpolated linearly between them; t is clamped to [0, 1].
+// The ramp: matplotlib's 256-entry "inferno" table (van der Walt & Smith 2015, matplotlib inferno,
+// CC0; draw/inferno_table.h), sRGB-encoded, entry i at t = i / 255 and interpolated linearly
+// between entries, as 8-bit codes; t is clamped to [0, 1].
 Rgb8 inferno(double t);
 
 }  // namespace fl::report

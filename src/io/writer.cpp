@@ -79,7 +79,8 @@ void replace_folder_atomic(const std::string& folder, const Files& files,
                            const std::string& marker) {
   namespace fs = std::filesystem;
   require_replaceable_folder(folder, marker);
-  const fs::path target = fs::path(folder).lexically_normal();
+  fs::path target = fs::path(folder).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();  // "out/" is the folder "out"
   const std::string suffix = fmt::format(".{}", static_cast<long>(::getpid()));
   const fs::path fresh = target.string() + ".new" + suffix, old = target.string() + ".old" + suffix;
   std::error_code ec;

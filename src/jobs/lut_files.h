@@ -26,29 +26,32 @@ struct LutRequest {
   int samples = analysis::kLutSamples;
   int threads = 0;                   // 0: every hardware thread
   std::string layout = "split-sum";  // dfg only
+  // .h output: the C symbol of the first texture's header (a texture after the first adds its
+  // suffix, _2, _3, ...); empty: fresnel_lab_dfg, fresnel_lab_dfg_filament, fresnel_lab_ltc,
+  // fresnel_lab_ltc_moments or fresnel_lab_energy.
+  std::string symbol;
 };
 
-// Each checks the request first (InputError for a size, sample count, thread count or output type
-// out of range), then computes the table.
+// Each checks the request first (InputError for a size, sample count, thread count, output type or
+// symbol out of range, or a symbol without .h output), then computes the table. Wherever a table
+// is written as textures, out.h writes the same textures as C headers (documents/c_header.h: one
+// per texture, where the EXR files go, with the EXR's texels and attributes; C99 and C++).
 // DFG in `request.layout`: out.exr (RGB; split-sum: the dfg texture, and each further texture of
-// the table terms in STEM_2.exr, ...), out.csv (every channel), out.h (a C++ header: float for
-// split-sum, half-float bit patterns for Filament) or, Filament only, out.inc (Filament's dfg.inc
-// form: the array's initializer list). Rows run from smooth to rough (GL order: the first row is
-// texture v = 0), texels within a row from n·v = 0 to 1, at texel centres; uv = (n·v, perceptual
-// roughness).
+// the table terms in STEM_2.exr, ...), out.csv (every channel), out.h (split-sum: out.h, STEM_2.h,
+// ...; Filament: half-float bit patterns) or, Filament only, out.inc (Filament's dfg.inc form: the
+// array's initializer list). Rows run from smooth to rough (GL order: the first row is texture v =
+// 0), texels within a row from n·v = 0 to 1, at texel centres; uv = (n·v, perceptual roughness).
 Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
-// LTC moments: out.exr (RGB = n_D, f_D, l_D) and STEM_3.exr (the basis moments), or out.csv.
+// LTC moments: out.exr (RGB = n_D, f_D, l_D) and STEM_3.exr (the basis moments), out.h and
+// STEM_3.h, or out.csv.
 Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // LTC fit: out.exr gives FILE_1.exr (the inverse matrix), FILE_2.exr (n_D, f_D, l_D, sphere form
-// factor), FILE_3.exr (the basis moments) and FILE.csv; out.csv gives the CSV only.
+// factor), FILE_3.exr (the basis moments) and FILE.csv; out.h gives FILE_1.h, FILE_2.h, FILE_3.h;
+// out.csv gives the CSV only.
 Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
-// Kulla–Conty's tables (analysis/lut/energy.h) on the DFG grid: out.exr (R = E(n·v, roughness),
-// G = E_avg(roughness)), out.csv or out.h (kEnergyLut and kEnergyAverage).
+// Kulla–Conty's tables (analysis/lut/energy.h) on the DFG grid: out.exr or out.h (R = E(n·v,
+// roughness), G = E_avg(roughness)), or out.csv.
 Output energy_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
-
-// The C++ header of a split-sum DFG table: constexpr float kDfgLut[size * size * 3] (the dfg
-// texture), kDfgLut2 (dfg_2), ...
-std::string dfg_header(const analysis::DfgTable& table);
 // Filament's layout as texel values, 3 per texel in file order (the half floats are these rounded).
 std::vector<float> filament_dfg_values(const analysis::DfgTable& table,
                                        const std::vector<double>& sheen);

@@ -39,24 +39,24 @@ std::vector<const YamlNode*> scalar_or_items(const YamlNode& v) {
   return items;
 }
 
-// A roughness or a list of them, each in (0, 1].
+// A roughness or a list of them, each in [0, 1] (0: a mirror).
 std::vector<double> roughness_list(const std::string& path, const YamlNode& v, int line) {
   const std::vector<const YamlNode*> items = scalar_or_items(v);
   if (items.empty())
-    throw InputError(path, line, "'roughness' must be a number or a list of numbers in (0, 1]");
+    throw InputError(path, line, "'roughness' must be a number or a list of numbers in [0, 1]");
   std::vector<double> out;
   for (const YamlNode* x : items) {
     double r = 0;
-    if (!x->is_scalar() || !parse_finite(x->scalar(), r) || !(r > 0.0 && r <= 1.0))
+    if (!x->is_scalar() || !parse_finite(x->scalar(), r) || !(r >= 0.0 && r <= 1.0))
       throw InputError(path, line_of(*x),
-                       fmt::format("'roughness' must be a perceptual roughness in (0, 1], not '{}'",
+                       fmt::format("'roughness' must be a perceptual roughness in [0, 1], not '{}'",
                                    x->is_scalar() ? x->scalar() : std::string("a list or map")));
     out.push_back(r);
   }
   return out;
 }
 
-// A material: a name, or a map {name, roughness}.
+// A material: a name, or a map {name, roughness, group}.
 SceneFileMaterial scene_material(const std::string& path, const YamlNode& m) {
   if (!m.is_map()) {
     const std::string spec = scalar_text(path, m, "each material");
@@ -70,10 +70,13 @@ SceneFileMaterial scene_material(const std::string& path, const YamlNode& m) {
       out.spec = scalar_text(path, kv.second, "a material's 'name'");
     else if (key == "roughness")
       out.roughness = roughness_list(path, kv.second, line_of(kv.first));
-    else
+    else if (key == "group") {
+      out.group = scalar_text(path, kv.second, "a material's 'group'");
+      if (out.group.empty()) throw InputError(path, line_of(kv.second), "empty group name");
+    } else
       throw InputError(
           path, line_of(kv.first),
-          "unknown material key '" + key + "'" + hint_or_list(key, {"name", "roughness"}));
+          "unknown material key '" + key + "'" + hint_or_list(key, {"name", "roughness", "group"}));
   }
   if (out.spec.empty())
     throw InputError(path, out.line, "a material given as a map needs a 'name'");

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -89,9 +91,11 @@ TEST(Plan, FourDielectricsUnderPunctualLightsAtBudget2GetSchlick) {
     EXPECT_LE(m.error, kBudget) << m.material;
     EXPECT_EQ(m.error, m.punctual_rms);  // the curve error, under punctual lights
   }
-  EXPECT_TRUE(r.plan.luts.empty());  // punctual lights need no table
-  EXPECT_EQ(r.plan.scene_choice.model, model_of<models::Schlick>);
-  EXPECT_TRUE(r.plan.scene_choice.failing.empty());
+  EXPECT_TRUE(r.plan.luts.empty());                    // punctual lights need no table
+  ASSERT_EQ(r.plan.scene_choice().groups.size(), 1u);  // four dielectrics: no class split
+  EXPECT_EQ(r.plan.scene_choice().groups[0].model, model_of<models::Schlick>);
+  EXPECT_EQ(r.plan.scene_choice().name, "schlick");
+  EXPECT_TRUE(r.plan.scene_choice().failing.empty());
 }
 
 // Under IBL and area lights the budget is the rendered error: checked against the rendered errors
@@ -120,10 +124,10 @@ TEST(Plan, MetalsUnderIblAndAreaLightsBudgetTheRenderedError) {
       EXPECT_TRUE(s.fresnel_pre_integrated || std::string(s.evaluated_at) == "n·v") << m.material;
     }
   }
-  const auto& sc = r.plan.scene_choice;
+  const auto& sc = r.plan.scene_choice();
   EXPECT_TRUE(sc.failing.empty());
   for (const auto& m : sc.materials) EXPECT_LE(m.error, kBudget) << m.material;
-  expect_served(r.scene, sc.model, r.plan.scene_luts);
+  for (const auto& g : sc.groups) expect_served(r.scene, g.model, r.plan.scene_luts);
   EXPECT_EQ(lut_names(r.plan.luts).front(), "dfg");
 }
 
@@ -169,10 +173,10 @@ TEST(Plan, ExampleScenesAreServedByTheirTablesOrNameTheirApproximation) {
     for (Lighting l : scene.lightings()) lit[static_cast<int>(l)] = true;
     std::vector<fl::analysis::PlanChoice> chosen = plan.materials;
     for (const auto& m : chosen) expect_served(scene, m.model, plan.luts);
-    for (const auto& m : plan.scene_choice.materials)
+    for (const auto& m : plan.scene_choice().materials)
       expect_served(scene, m.model, plan.scene_luts);
-    chosen.insert(chosen.end(), plan.scene_choice.materials.begin(),
-                  plan.scene_choice.materials.end());
+    chosen.insert(chosen.end(), plan.scene_choice().materials.begin(),
+                  plan.scene_choice().materials.end());
     for (const auto& m : chosen) {
       for (Lighting l : scene.lightings()) {
         const auto& s = fl::analysis::lighting_support(m.model, l);
@@ -183,9 +187,8 @@ TEST(Plan, ExampleScenesAreServedByTheirTablesOrNameTheirApproximation) {
       EXPECT_TRUE(std::isfinite(m.error)) << path << " " << m.material;
       EXPECT_EQ(m.meets_budget, m.error <= scene.max_de00) << path << " " << m.material;
     }
-    std::printf("%s: scene-wide %s, %zu failing\n", path.c_str(),
-                fl::fresnel::model_spec(plan.scene_choice.model).name,
-                plan.scene_choice.failing.size());
+    std::printf("%s: scene-wide %s, %zu failing\n", path.c_str(), plan.scene_choice().name.c_str(),
+                plan.scene_choice().failing.size());
   }
   EXPECT_TRUE(lit[0] && lit[1] && lit[2]) << "examples/ covers punctual, ibl and area";
 }
@@ -255,6 +258,7 @@ std::vector<fl::analysis::PlanChoice> hand_candidates(const std::string& name, d
       c.error = (fitted ? h.fitted : h.derived) + offset;
       if (hand_row(spec.model)) {
         c.gpu_instructions = h.gpu;
+        c.texture_fetches = 0;
         c.ns_per_eval = h.ns;
       }
       out.push_back(c);
@@ -377,29 +381,194 @@ TEST(Plan, UnmeasuredCostRanksLast) {
   EXPECT_FALSE(c.gpu_instructions.has_value());
 }
 
+// Punctual lights read no table: the hand-made options cost their instructions alone.
+fl::analysis::Scene punctual_scene() {
+  fl::analysis::Scene s;
+  s.punctual = true;
+  return s;
+}
+
+std::vector<fl::analysis::SceneOption> single_options(
+    const std::vector<std::vector<fl::analysis::PlanChoice>>& cands, double budget) {
+  const size_t n = cands.size();
+  std::vector<bool> metal(n, true);
+  auto options = fl::analysis::scene_options(
+      punctual_scene(), cands, fl::analysis::scene_groupings(metal, std::vector<std::string>(n)),
+      budget);
+  fl::analysis::mark_dominated(options);
+  return options;
+}
+
+const fl::analysis::SceneOption& named(const std::vector<fl::analysis::SceneOption>& options,
+                                       const std::string& name) {
+  const auto it =
+      std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.name == name; });
+  if (it == options.end()) throw std::runtime_error("no option " + name);
+  return *it;
+}
+
 // Three materials: the table, the table + 0.3, the table + 0.6; one model for all, each material
-// with its lower-error set. At budget 1.5 f82 (0.9, 1.2, 1.5) is the cheapest passing every
-// material (cook_torrance, gulbrandsen and fresnel_rgb pass too but cost more; schlick,
-// generalized_schlick and lazanyi fail at least one); at 1.0 only fresnel_rgb (0.05, 0.35, 0.65)
-// passes all; at 0.3 none does, and fresnel_rgb fails fewest (B and C).
+// with its lower-error set. Worst errors: schlick 2.6, generalized_schlick 1.6, cook_torrance 1.1,
+// lazanyi 1.8, f82 1.5, gulbrandsen 1.1, fresnel_rgb 0.65. At budget 1.5 f82 (20 instructions) is
+// the cheapest meeting every budget; at 1.0 only fresnel_rgb does; at 0.3 none does, and
+// fresnel_rgb has the smallest worst error (B and C fail).
 TEST(Plan, SceneWideChoiceOnAHandMadeTable) {
   const std::vector<std::vector<fl::analysis::PlanChoice>> cands{
       hand_candidates("A"), hand_candidates("B", 0.3), hand_candidates("C", 0.6)};
-  auto s = fl::analysis::choose_scene_model(cands, 1.5);
-  EXPECT_EQ(s.model, model_of<models::F82>);
+  auto options = single_options(cands, 1.5);
+  ASSERT_EQ(options.size(), fl::fresnel::model_specs().size());
+  auto s = options[fl::analysis::choose_scene_option(options)];
+  EXPECT_EQ(s.name, "f82");
   EXPECT_TRUE(s.failing.empty());
-  EXPECT_NEAR(s.max_error, 1.5, 1e-12);
+  EXPECT_NEAR(s.worst_de00, 1.5, 1e-12);
+  EXPECT_NEAR(s.median_de00, 1.2, 1e-12);
   ASSERT_EQ(s.materials.size(), 3u);
-  EXPECT_EQ(s.materials[0].set,
-            fl::analysis::ParameterSet::Derived);  // 0.9 either way: derived first
-  s = fl::analysis::choose_scene_model(cands, 1.0);
-  EXPECT_EQ(s.model, model_of<models::FresnelRgb>);
+  EXPECT_EQ(s.materials[0].set, fl::analysis::ParameterSet::Derived);  // 0.9 either way
+  options = single_options(cands, 1.0);
+  s = options[fl::analysis::choose_scene_option(options)];
+  EXPECT_EQ(s.name, "fresnel_rgb");
   EXPECT_TRUE(s.failing.empty());
   EXPECT_EQ(s.materials[0].set, fl::analysis::ParameterSet::Fitted);
-  s = fl::analysis::choose_scene_model(cands, 0.3);
-  EXPECT_EQ(s.model, model_of<models::FresnelRgb>);
+  options = single_options(cands, 0.3);
+  s = options[fl::analysis::choose_scene_option(options)];
+  EXPECT_EQ(s.name, "fresnel_rgb");
   EXPECT_EQ(s.failing, (std::vector<std::string>{"B", "C"}));
-  EXPECT_EQ(s.gpu_instructions, 50);
+  EXPECT_EQ(s.cost.gpu_instructions, 50);
+  // The front of cost against worst error: schlick (10, 2.6), f82 (20, 1.5), cook_torrance
+  // (30, 1.1), fresnel_rgb (50, 0.65). generalized_schlick and lazanyi (20) lose to f82;
+  // gulbrandsen (40, 1.1) to cook_torrance; an unmeasured model to schlick.
+  for (const auto& o : options) {
+    const bool front = o.name == "schlick" || o.name == "f82" || o.name == "cook_torrance" ||
+                       o.name == "fresnel_rgb";
+    EXPECT_EQ(!o.dominated_by, front) << o.name;
+  }
+  auto by = [&](const std::string& name) {
+    return options[*named(options, name).dominated_by].name;
+  };
+  EXPECT_EQ(by("generalized_schlick"), "f82");
+  EXPECT_EQ(by("lazanyi"), "f82");
+  EXPECT_EQ(by("gulbrandsen"), "cook_torrance");
+  for (const auto& spec : fl::fresnel::model_specs())
+    if (!hand_row(spec.model)) {
+      EXPECT_EQ(by(spec.name), "schlick");
+    }
+}
+
+// Two materials, a metal M and a dielectric D, with errors chosen per model (every other model
+// 5.0; instructions from the hand-made table, no table read):
+//   M: schlick 0.4, f82 0.3            D: schlick 1.5, f82 2.0, cook_torrance 0.8, fresnel_rgb 0.2
+// The metal group keeps schlick and f82 (every other model loses to schlick), the dielectric group
+// schlick, cook_torrance and fresnel_rgb, so the class split gives 2 × 3 − 1 = 5 options beside
+// the 10 single models. At budget 1.0 no single model passes (schlick's worst is 1.5); the splits
+// "schlick | cook_torrance" and "f82 | cook_torrance" pass at 30 instructions, 2 variants; the
+// first listed is chosen. "f82 | fresnel_rgb" (50, 0.3) beats "schlick | fresnel_rgb" (50, 0.4).
+TEST(Plan, ClassSplitOnAHandMadeTable) {
+  auto make = [](const std::string& name, std::vector<std::pair<Model, double>> errors) {
+    auto c = hand_candidates(name);
+    for (auto& x : c) {
+      x.error = 5.0;
+      for (const auto& [m, e] : errors)
+        if (x.model == m) x.error = e;
+    }
+    return c;
+  };
+  const Model schlick = model_of<models::Schlick>, f82 = model_of<models::F82>,
+              ct = model_of<models::CookTorrance>, rgb = model_of<models::FresnelRgb>;
+  const std::vector<std::vector<fl::analysis::PlanChoice>> cands{
+      make("M", {{schlick, 0.4}, {f82, 0.3}}),
+      make("D", {{schlick, 1.5}, {f82, 2.0}, {ct, 0.8}, {rgb, 0.2}})};
+  const auto groupings = fl::analysis::scene_groupings({true, false}, {"", ""});
+  ASSERT_EQ(groupings.size(), 2u);
+  auto options = fl::analysis::scene_options(punctual_scene(), cands, groupings, 1.0);
+  fl::analysis::mark_dominated(options);
+  ASSERT_EQ(options.size(), fl::fresnel::model_specs().size() + 5);
+  const auto& chosen = options[fl::analysis::choose_scene_option(options)];
+  EXPECT_EQ(chosen.name, "metal: schlick, dielectric: cook_torrance");
+  EXPECT_EQ(chosen.cost.gpu_instructions, 30);
+  EXPECT_EQ(chosen.cost.variants, 2);
+  EXPECT_NEAR(chosen.worst_de00, 0.8, 1e-12);
+  EXPECT_NEAR(chosen.median_de00, 0.6, 1e-12);
+  using V = std::vector<std::string>;
+  V front;
+  for (const auto& o : options)
+    if (!o.dominated_by) front.push_back(o.name);
+  EXPECT_EQ(front,
+            (V{"schlick", "metal: schlick, dielectric: cook_torrance",
+               "metal: f82, dielectric: cook_torrance", "metal: f82, dielectric: fresnel_rgb"}));
+  EXPECT_EQ(options[*named(options, "metal: schlick, dielectric: fresnel_rgb").dominated_by].name,
+            "metal: f82, dielectric: fresnel_rgb");
+  EXPECT_EQ(options[*named(options, "metal: f82, dielectric: schlick").dominated_by].name,
+            "schlick");
+  EXPECT_EQ(options[*named(options, "cook_torrance").dominated_by].name, "schlick");
+}
+
+// The cost tuple is compared in order; a split's extra variant breaks a tie; unmeasured is last.
+TEST(Plan, SceneCostOrder) {
+  using fl::analysis::SceneCost;
+  EXPECT_TRUE(fl::analysis::scene_cost_less({19, 2, 81920, 1}, {27, 4, 131072, 1}));
+  EXPECT_TRUE(fl::analysis::scene_cost_less({19, 4, 0, 1}, {27, 2, 0, 1}));
+  EXPECT_TRUE(fl::analysis::scene_cost_less({19, 2, 81920, 1}, {19, 2, 81920, 2}));
+  EXPECT_TRUE(fl::analysis::scene_cost_less({19, 2, 0, 2}, {19, 2, 81920, 1}));
+  EXPECT_TRUE(fl::analysis::scene_cost_less({500, 2, 0, 1}, {std::nullopt, 2, 0, 1}));
+  EXPECT_FALSE(fl::analysis::scene_cost_less({19, 2, 0, 1}, {19, 2, 0, 1}));
+  // 64² texels × components × 2 bytes: dfg RGB, ltc_1 RGBA.
+  EXPECT_EQ(fl::analysis::lut_texture_bytes("dfg"), 64 * 64 * 3 * 2);
+  EXPECT_EQ(fl::analysis::lut_texture_bytes("ltc_1"), 64 * 64 * 4 * 2);
+}
+
+TEST(Plan, Groupings) {
+  using V = std::vector<std::string>;
+  auto g = fl::analysis::scene_groupings({true, true, false}, {"", "", ""});
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(g[1].names, (V{"metal", "dielectric"}));
+  EXPECT_EQ(g[1].groups, (std::vector<std::vector<size_t>>{{0, 1}, {2}}));
+  g = fl::analysis::scene_groupings({true, true, true}, {"trim", "", "trim"});
+  ASSERT_EQ(g.size(), 2u);  // no class split among metals only; the scene's groups
+  EXPECT_EQ(g[1].names, (V{"trim", "other"}));
+  EXPECT_EQ(g[1].groups, (std::vector<std::vector<size_t>>{{0, 2}, {1}}));
+  g = fl::analysis::scene_groupings({true, false}, {"a", "b"});  // the class partition again
+  EXPECT_EQ(g.size(), 2u);
+}
+
+// Roughness 0 is a mirror: the truth is the spectral curve at n·v, and every model renders as
+// itself at n·v under either lighting, so the rendered ΔE2000 at each view angle is the ΔE2000
+// between the ground truth and the model evaluated at cos(view), computed here directly.
+TEST(Plan, RoughnessZeroRendersTheCurveAtNdotV) {
+  const fl::analysis::Context ctx(settings());
+  TempDir dir;
+  auto scene = fl::analysis::read_scene(
+      dir.file("m.yaml", "materials:\n  - {name: copper, roughness: 0}\nlighting: [ibl, area]\n"));
+  EXPECT_TRUE(scene.materials[0].mirror());
+  const auto ms = fl::analysis::load_scene_materials(ctx, scene);
+  const auto points = fl::analysis::shading_points({0.0});
+  ASSERT_EQ(points.size(), fl::analysis::kShadingViewDeg.size());
+  const auto truth = fl::analysis::lobe_truth(ctx, ms[0], points);
+  const auto studies = fl::analysis::study_materials(ctx, ms, {});
+  for (const auto& spec : fl::fresnel::model_specs()) {
+    const auto& params = studies[0].result(spec.model).derived;
+    for (Lighting l : {Lighting::Ibl, Lighting::Area}) {
+      const auto de = fl::analysis::rendered_de00(ctx, truth, spec.model, params, l, points);
+      for (size_t k = 0; k < points.size(); ++k) {
+        const double mu = std::cos(fl::analysis::kShadingViewDeg[k] * std::numbers::pi / 180.0);
+        const auto exact =
+            fl::analysis::ground_truth_rgb(ctx, ms[0].ior, mu, ctx.settings().eta_outside);
+        const auto model = spec.evaluate(mu, params.data(), false);
+        const double want = fl::color::ciede2000(ctx.rgb_to_lab(exact), ctx.rgb_to_lab(model));
+        EXPECT_NEAR(de[k], want, 2e-3) << spec.name << " at " << fl::analysis::kShadingViewDeg[k];
+      }
+    }
+  }
+}
+
+// A scene of mirrors and fully rough materials: the plan reads no table for the mirror and says so.
+TEST(Plan, MirrorsAndFullyRoughMaterialsArePlanned) {
+  const auto r = plan_for(
+      "materials:\n  - {name: silver, roughness: 0}\n  - {name: glass_bk7, roughness: [0, 1]}\n"
+      "  - {name: gold, roughness: 1}\nmax_de00: 1.0\nlighting: [ibl, area]\n");
+  ASSERT_EQ(r.plan.materials.size(), 3u);
+  EXPECT_TRUE(fl::analysis::material_luts(r.plan, 0).empty());   // silver: a mirror
+  EXPECT_FALSE(fl::analysis::material_luts(r.plan, 1).empty());  // glass at roughness 1 too
+  for (const auto& m : r.plan.scene_choice().materials) EXPECT_TRUE(std::isfinite(m.error));
 }
 
 TEST(Plan, LookupTableChannelsPerLighting) {
@@ -434,7 +603,7 @@ TEST(Plan, UnservableMaterialIsReportedWithItsBestModel) {
   ASSERT_EQ(r.plan.materials.size(), 1u);
   EXPECT_FALSE(r.plan.materials[0].meets_budget);
   EXPECT_GT(r.plan.materials[0].error, 0.001);
-  EXPECT_EQ(r.plan.scene_choice.failing, std::vector<std::string>{"Chromium"});
+  EXPECT_EQ(r.plan.scene_choice().failing, std::vector<std::string>{"Chromium"});
 }
 
 TEST(Plan, SceneDefaultsAndRoughness) {
@@ -456,6 +625,16 @@ TEST(Plan, SceneDefaultsAndRoughness) {
   EXPECT_EQ(s.materials[1].roughness, (std::vector<double>{0.25}));
   EXPECT_EQ(s.materials[1].spec, "copper");
   EXPECT_EQ(s.materials[2].roughness, (std::vector<double>{0.1, 1.0}));
+  // Roughness 0 (a mirror) and groups.
+  s = fl::analysis::read_scene(
+      dir.file("g.yaml",
+               "materials:\n  - {name: gold, roughness: 0, group: trim}\n  - {name: water, "
+               "roughness: [0, 1]}\n"));
+  EXPECT_EQ(s.materials[0].roughness, (std::vector<double>{0.0}));
+  EXPECT_EQ(s.materials[0].group, "trim");
+  EXPECT_TRUE(s.materials[0].mirror());
+  EXPECT_TRUE(s.materials[1].group.empty());
+  EXPECT_FALSE(s.materials[1].mirror());
 }
 
 TEST(Plan, SceneErrorsNameFileAndLine) {
@@ -482,11 +661,16 @@ TEST(Plan, SceneErrorsNameFileAndLine) {
   EXPECT_NE(message("materials: [gold]\nlights: [area]\n").find("bad.yaml:2: unknown key 'lights'"),
             std::string::npos);
   EXPECT_NE(message("materials: [gold]\nroughness: 1.5\n")
-                .find("bad.yaml:2: 'roughness' must be a perceptual roughness in (0, 1]"),
+                .find("bad.yaml:2: 'roughness' must be a perceptual roughness in [0, 1]"),
             std::string::npos);
   EXPECT_NE(
       message("materials:\n  - {name: gold, roughness: -0.1}\n").find("bad.yaml:2: 'roughness'"),
       std::string::npos);
+  EXPECT_NE(message("materials:\n  - {name: gold, group: [a, b]}\n")
+                .find("bad.yaml:2: a material's 'group' must be a string"),
+            std::string::npos);
+  EXPECT_NE(message("materials:\n  - {name: gold, group: ''}\n").find("bad.yaml:2: empty group"),
+            std::string::npos);
   EXPECT_NE(message("materials:\n  - {name: gold, shine: 1}\n")
                 .find("bad.yaml:2: unknown material key 'shine'"),
             std::string::npos);

@@ -304,6 +304,8 @@ TEST(Shader, NamesAndBadRequests) {
   EXPECT_THROW(lighting_from_name("sun"), fl::InputError);
   EXPECT_THROW(shader_text({"f82", "hlsl", "ibl", true}), fl::InputError);
   EXPECT_THROW(shader_text({"warp", "glsl", "ibl", false}), fl::InputError);
+  EXPECT_THROW(shader_text({"f82", "glsl", "area", false, 1}), fl::InputError);
+  EXPECT_THROW(shader_text({"f82", "glsl", "area", true, 64, true}), fl::InputError);
 }
 
 }  // namespace

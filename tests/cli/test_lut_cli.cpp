@@ -52,12 +52,16 @@ TEST(LutCli, WritesTablesDeterministically) {
 
   r = test::run_command(lut + "dfg --size 4 --samples 256 --out '" + tmp.path() + "/dfg.h'");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(slurp(tmp.path() + "/dfg.h").find("constexpr float kDfgLut[4 * 4 * 3]"),
+  EXPECT_NE(slurp(tmp.path() + "/dfg.h")
+                .find("static const float fresnel_lab_dfg_data[FRESNEL_LAB_DFG_SIZE * "
+                      "FRESNEL_LAB_DFG_SIZE * FRESNEL_LAB_DFG_CHANNELS]"),
+            std::string::npos);
+  EXPECT_NE(slurp(tmp.path() + "/dfg_2.h").find("#define FRESNEL_LAB_DFG_2_SIZE 4\n"),
             std::string::npos);
   r = test::run_command(lut + "dfg --layout filament --size 4 --samples 256 --out '" + tmp.path() +
                         "/f.h'");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(slurp(tmp.path() + "/f.h").find("constexpr std::uint16_t kDfgLut[4 * 4 * 3]"),
+  EXPECT_NE(slurp(tmp.path() + "/f.h").find("static const uint16_t fresnel_lab_dfg_filament_data["),
             std::string::npos);
 
   // The DFG textures hold each channel where the layout (analysis/lut/lut_layout.h) says, which
@@ -106,7 +110,7 @@ TEST(LutCli, BadInputExitsTwoAndWritesNothing) {
   test::TempDir tmp;
   const std::string lut = std::string("'") + FL_CLI + "' lut ";
   for (const std::string args :
-       {"dfg --size 1 --out x.csv", "dfg --size 4 --out x.txt", "ltc-moments --size 4 --out x.h",
+       {"dfg --size 1 --out x.csv", "dfg --size 4 --out x.txt", "ltc-moments --size 4 --out x.inc",
         "dfg --size 4 --out x.inc", "dfg --layout unreal --size 4 --out x.csv",
         "ltc --size 4 --samples 0 --out x.exr", "dfg --size 4", "frob --out x.csv"}) {
     const auto r = test::run_command("cd '" + tmp.path() + "' && " + lut + args);

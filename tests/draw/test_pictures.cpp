@@ -390,7 +390,7 @@ TEST(Figures, StripPixelsAreTheSrgbEncodingOfKnownReflectances) {
                            data.spans[1].samples + 14 + 100 + 16);
 }
 
-// matplotlib's inferno table (van der Walt & Smith 2015): first and last entries.
+// matplotlib's inferno table (van der Walt & Smith 2015, CC0): first and last entries.
 constexpr double kInfernoFirst[3] = {0.001462, 0.000466, 0.013866};
 constexpr double kInfernoLast[3] = {0.988362, 0.998364, 0.644924};
 
@@ -422,6 +422,49 @@ TEST(Figures, HeatMapLegendEndsAreInfernosEnds) {
   // Tick marks at both ends of the bar, on its right edge.
   EXPECT_LT(img.at(bar.x + bar.width + 1, bar.y).r, 128);
   EXPECT_LT(img.at(bar.x + bar.width + 1, bar.y + bar.height - 1).r, 128);
+}
+
+// Published entries of matplotlib's 256-entry inferno table (_cm_listed.py, _inferno_data; entry i
+// at t = i / 255).
+constexpr double kInferno32[3] = {0.129285, 0.047293, 0.290788};
+constexpr double kInferno33[3] = {0.135778, 0.046856, 0.299776};
+constexpr double kInferno128[3] = {0.735683, 0.215906, 0.330245};
+constexpr double kInferno224[3] = {0.974638, 0.797692, 0.206332};
+
+// CIE 1976 L* of an 8-bit sRGB colour (IEC 61966-2-1 decoding, Rec.709 luminance, white Y = 1).
+double lightness(report::Rgb8 c) {
+  const auto lin = [](std::uint8_t code) {
+    const double v = code / 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  const double y = 0.2126 * lin(c.r) + 0.7152 * lin(c.g) + 0.0722 * lin(c.b);
+  constexpr double kEps = 216.0 / 24389.0, kKappa = 24389.0 / 27.0;
+  return y > kEps ? 116.0 * std::cbrt(y) - 16.0 : kKappa * y;
+}
+
+TEST(Figures, InfernoIsThePublishedTableInterpolatedLinearly) {
+  EXPECT_EQ(report::inferno(0.0), codes(kInfernoFirst));
+  EXPECT_EQ(report::inferno(32.0 / 255), codes(kInferno32));    // (33, 12, 74)
+  EXPECT_EQ(report::inferno(128.0 / 255), codes(kInferno128));  // (188, 55, 84)
+  EXPECT_EQ(report::inferno(224.0 / 255), codes(kInferno224));  // (249, 203, 53)
+  EXPECT_EQ(report::inferno(1.0), codes(kInfernoLast));
+  // Halfway between two entries: their mean.
+  const double mid[3] = {0.5 * (kInferno32[0] + kInferno33[0]),
+                         0.5 * (kInferno32[1] + kInferno33[1]),
+                         0.5 * (kInferno32[2] + kInferno33[2])};
+  EXPECT_EQ(report::inferno(32.5 / 255), codes(mid));  // (34, 12, 75)
+  EXPECT_EQ(report::inferno(-1.0), codes(kInfernoFirst));
+  EXPECT_EQ(report::inferno(2.0), codes(kInfernoLast));
+  // The published map's lightness rises monotonically from black (L* 0.1) to pale yellow (L* 98);
+  // the 8-bit codes at the 256 entries keep every step (the smallest is 0.04).
+  double previous = -1;
+  for (int i = 0; i < 256; ++i) {
+    const double l = lightness(report::inferno(i / 255.0));
+    EXPECT_GT(l, previous) << "entry " << i;
+    previous = l;
+  }
+  EXPECT_NEAR(lightness(report::inferno(0.0)), 0.08, 0.01);
+  EXPECT_NEAR(previous, 98.0, 0.1);
 }
 
 TEST(Figures, CurveAndSpeedFiguresHaveTheirSizes) {

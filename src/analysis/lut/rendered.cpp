@@ -132,6 +132,7 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       p.view_deg = deg;
       p.nov = std::cos(deg * std::numbers::pi / 180.0);
       p.alpha = ltc_alpha_at(r);
+      p.mirror = r == 0.0;
       points.push_back(std::move(p));
     }
   // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
@@ -145,6 +146,7 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
   TexelCache<DfgTexel, decltype(dfg_cell)> dfg(dfg_grid(kEngineLutSize), dfg_cell);
   TexelCache<GgxMoments, decltype(ltc_cell)> ltc(ltc_grid(kEngineLutSize), ltc_cell);
   for (const auto& p : points) {
+    if (p.mirror) continue;
     for_texels(dfg_read(p), [&](int i, int j, double) { dfg.request(i, j); });
     for_texels(ltc_read(p), [&](int i, int j, double) { ltc.request(i, j); });
   }
@@ -154,6 +156,10 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       points.size(),
       [&](size_t k) {
         auto& p = points[k];
+        if (p.mirror) {
+          p.samples = {{p.nov, static_cast<double>(kLutSamples)}};
+          return;
+        }
         p.samples.reserve(kLutSamples);
         for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) {
           if (s.weight != 0.0) p.samples.push_back({s.voh, s.weight});
@@ -195,8 +201,15 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
 
 namespace {
 
-// The lobe's integral of each of the tables' terms at a point (the norm is the term 1's).
+// The lobe's integral of each of the tables' terms at a point (the norm is the term 1's); a
+// mirror's lobe is its one direction.
 fresnel::TermValues lobe_integrals(bool ibl, const ShadingPoint& p) {
+  if (p.mirror) {  // the lobe is the one direction v·h = n·v: each term at n·v
+    fresnel::TermValues at_nov;
+    const double m = 1.0 - p.nov, m5 = m * m * m * m * m;
+    for (const auto& t : fresnel::kTermRegistry) at_nov[t.term] = t.kernel(p.nov, m, m5);
+    return at_nov;
+  }
   return ibl ? fresnel::dfg_term_integrals(p.dfg) : static_cast<const fresnel::TermValues&>(p.ltc);
 }
 
@@ -219,6 +232,7 @@ color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting l
                           const ShadingPoint& p) {
   if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
   const auto& spec = fresnel::model_spec(m);
+  if (p.mirror) return spec.evaluate(p.nov, params.data(), false);  // no table: F(n·v)
   if (!lighting_support(m, lighting).fresnel_pre_integrated)
     return lobe_integrals(lighting == Lighting::Ibl, p)[fresnel::Term::One] *
            spec.evaluate(p.nov, params.data(), false);

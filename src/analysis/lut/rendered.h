@@ -38,13 +38,16 @@ constexpr int kTruthCurveSize = 513;
 struct LobeTerm {
   double voh = 0, weight = 0;
 };
+// Roughness 0 is a mirror: the lobe is the reflection direction alone (v·h = n·v), so the truth is
+// the spectral curve at n·v and every model renders as itself at n·v, with no table read.
 struct ShadingPoint {
   double roughness = 0, view_deg = 0, nov = 0, alpha = 0;
+  bool mirror = false;  // roughness 0
   // The kLutSamples visible-normal samples of the lobe at (n·v, α), less those below the horizon
-  // (weight 0, nothing to add).
+  // (weight 0, nothing to add); for a mirror one sample at v·h = n·v of weight kLutSamples.
   std::vector<LobeTerm> samples;
-  DfgTexel dfg;    // the DFG texture read bilinearly here
-  GgxMoments ltc;  // the LTC moments texture (n_D, f_D, l_D) read bilinearly here
+  DfgTexel dfg;    // the DFG texture read bilinearly here (a mirror: none)
+  GgxMoments ltc;  // the LTC moments texture (n_D, f_D, l_D) read bilinearly here (a mirror: none)
 };
 // Every roughness × kShadingViewDeg.
 std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads = 0);
@@ -54,7 +57,8 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points);
 
 // What the engine computes at one point (Ibl or Area): a·n + b·f + c·l from the model's table terms
-// where it is pre-integrated, else F(n·v)·(the lobe's Fresnel-free integral).
+// where it is pre-integrated, else F(n·v)·(the lobe's Fresnel-free integral); at a mirror point
+// the model at n·v.
 color::Rgb engine_shading(fresnel::Model m, const std::vector<double>& params, Lighting lighting,
                           const ShadingPoint& p);
 

@@ -30,6 +30,11 @@ std::string resolve_relative(const std::string& scene_path, const std::string& s
 
 }  // namespace
 
+bool SceneMaterial::mirror() const {
+  return !roughness.empty() &&
+         std::all_of(roughness.begin(), roughness.end(), [](double r) { return r == 0.0; });
+}
+
 std::vector<Lighting> Scene::lightings() const {
   std::vector<Lighting> out;
   if (punctual) out.push_back(Lighting::Punctual);
@@ -46,8 +51,8 @@ Scene read_scene(const std::string& path) {
                     ? std::vector<double>(kDefaultRoughness.begin(), kDefaultRoughness.end())
                     : f.roughness;
   for (const auto& m : f.materials)
-    s.materials.push_back(
-        {resolve_relative(path, m.spec), m.line, m.roughness.empty() ? s.roughness : m.roughness});
+    s.materials.push_back({resolve_relative(path, m.spec), m.line,
+                           m.roughness.empty() ? s.roughness : m.roughness, m.group});
   s.max_de00 = f.max_de00.value_or(kDefaultMaxDe00);
   s.space = f.space;
   s.space_line = f.space_line;
@@ -67,7 +72,7 @@ std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, Scene& scen
         out.push_back(load_material(ctx, r.pattern.empty()
                                              ? spectral::resolve_material(r.spec, paths)
                                              : spectral::read_database_page(r.spec, paths)));
-        expanded.push_back({r.spec, m.line, m.roughness});
+        expanded.push_back({r.spec, m.line, m.roughness, m.group});
       }
     } catch (const InputError& e) {
       throw InputError(scene.path, m.line, e.what());
@@ -79,15 +84,20 @@ std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, Scene& scen
 
 namespace {
 
-// The model's GPU instructions summed over the scene's lightings; nullopt if one is unmeasured.
-std::optional<int> scene_gpu_instructions(const Scene& scene, const GpuCosts& gpu, Model m) {
+// The model's GPU instructions (or texture fetches) summed over the scene's lightings; nullopt if
+// one is unmeasured.
+std::optional<int> scene_gpu_count(const Scene& scene, const GpuCosts& gpu, Model m,
+                                   int GpuCost::*count) {
   int sum = 0;
   for (Lighting l : scene.lightings()) {
     const auto c = gpu.of(m, l);
     if (!c) return std::nullopt;
-    sum += c->instructions;
+    sum += (*c).*count;
   }
   return sum;
+}
+std::optional<int> scene_gpu_instructions(const Scene& scene, const GpuCosts& gpu, Model m) {
+  return scene_gpu_count(scene, gpu, m, &GpuCost::instructions);
 }
 
 // Orders costs: measured ones by value, then the unmeasured (unknown) ones.
@@ -127,6 +137,7 @@ std::vector<PlanChoice> plan_candidates(const Scene& scene,
       }
     }
     c.gpu_instructions = scene_gpu_instructions(scene, costs.gpu, r.model);
+    c.texture_fetches = scene_gpu_count(scene, costs.gpu, r.model, &GpuCost::texture);
     c.ns_per_eval = costs.cpu.ns_per_eval(r.model);
     c.meets_budget = c.error <= scene.max_de00;
     c.f_avg = fresnel::hemispherical_average(r.model, r.params);
@@ -157,48 +168,6 @@ PlanChoice choose_model(const std::vector<PlanChoice>& candidates, double max_de
   return best;
 }
 
-namespace {
-
-// One model for every material: per material its lower-error parameter set.
-SceneChoice scene_option(Model m, const std::vector<std::vector<PlanChoice>>& candidates,
-                         double max_de00) {
-  SceneChoice s;
-  s.model = m;
-  for (const auto& per_material : candidates) {
-    const PlanChoice* best = nullptr;
-    for (const auto& c : per_material)
-      if (c.model == m && (!best || c.error < best->error)) best = &c;
-    if (!best) throw std::logic_error("a material without a candidate of a model");
-    PlanChoice c = *best;
-    c.meets_budget = c.error <= max_de00;
-    if (!c.meets_budget) s.failing.push_back(c.material);
-    s.gpu_instructions = c.gpu_instructions;
-    s.ns_per_eval = c.ns_per_eval;
-    s.max_error = std::max(s.max_error, c.error);
-    s.materials.push_back(std::move(c));
-  }
-  return s;
-}
-
-}  // namespace
-
-SceneChoice choose_scene_model(const std::vector<std::vector<PlanChoice>>& candidates,
-                               double max_de00) {
-  if (candidates.empty()) throw std::logic_error("a scene without materials");
-  std::vector<SceneChoice> options;
-  for (const auto& spec : fresnel::model_specs())
-    options.push_back(scene_option(spec.model, candidates, max_de00));
-  auto better = [](const SceneChoice& a, const SceneChoice& b) {
-    if (a.failing.size() != b.failing.size()) return a.failing.size() < b.failing.size();
-    if (!a.failing.empty() && a.max_error != b.max_error) return a.max_error < b.max_error;
-    if (cost_differs(a.gpu_instructions, b.gpu_instructions))
-      return cost_less(a.gpu_instructions, b.gpu_instructions);
-    if (cost_differs(a.ns_per_eval, b.ns_per_eval)) return cost_less(a.ns_per_eval, b.ns_per_eval);
-    return a.max_error < b.max_error;
-  };
-  return *std::min_element(options.begin(), options.end(), better);
-}
-
 std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<Model>& models) {
   std::set<std::string> needed;  // "lighting/channel", from every model's declaration
   for (Model m : models)
@@ -220,6 +189,29 @@ std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<Model>& m
   return out;
 }
 
+namespace {
+
+// The scene's shader sets, the front, the choice and the tables it reads.
+void add_scene_options(Plan& p, const std::vector<MaterialStudy>& studies,
+                       const std::vector<std::vector<PlanChoice>>& candidates) {
+  std::vector<bool> is_metal;
+  std::vector<std::string> groups;
+  for (size_t k = 0; k < studies.size(); ++k) {
+    is_metal.push_back(studies[k].material->material.material_class ==
+                       spectral::MaterialClass::Metal);
+    groups.push_back(p.scene.materials.at(k).group);
+  }
+  p.scene_options =
+      scene_options(p.scene, candidates, scene_groupings(is_metal, groups), p.scene.max_de00);
+  mark_dominated(p.scene_options);
+  p.chosen = choose_scene_option(p.scene_options);
+  std::vector<Model> variants;
+  for (const auto& g : p.scene_choice().groups) variants.push_back(g.model);
+  p.scene_luts = needed_luts(p.scene, variants);
+}
+
+}  // namespace
+
 Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<MaterialStudy>& studies,
                const PlanCosts& costs) {
   Plan p;
@@ -239,12 +231,16 @@ Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<Materia
   std::vector<Model> chosen;
   for (const auto& m : p.materials) chosen.push_back(m.model);
   p.luts = needed_luts(scene, chosen);
-  p.scene_choice = choose_scene_model(candidates, scene.max_de00);
-  p.scene_luts = needed_luts(scene, {p.scene_choice.model});
+  add_scene_options(p, studies, candidates);
   for (const auto& spec : fresnel::model_specs())
     if (!scene_gpu_instructions(scene, costs.gpu, spec.model) || !costs.cpu.ns_per_eval(spec.model))
       p.unmeasured.push_back(spec.name);
   return p;
+}
+
+std::vector<PlanLut> material_luts(const Plan& plan, size_t k) {
+  if (plan.scene.materials.at(k).mirror()) return {};
+  return needed_luts(plan.scene, {plan.scene_choice().materials.at(k).model});
 }
 
 }  // namespace fl::analysis

@@ -198,70 +198,248 @@ std::string table_function(const ModelSpec& s, Lighting l) {
                      what, s.name, ibl ? "dfg" : "ltc", texels, param_list(s, true), body);
 }
 
+// The uv a lighting's lookup samples its textures at: the DFG textures on their texel centres (no
+// remapping), the LTC ones on Heitz's endpoints, remapped to the texel centres of a table of
+// kLtcSizeMacro texels per axis.
+std::string lookup_uv(Lighting l) {
+  if (l == Lighting::Ibl) return "vec2(nov, perceptual_roughness)";
+  return fmt::format(
+      "vec2(perceptual_roughness, sqrt(1.0 - nov)) * (({0} - 1.0) / {0}) + 0.5 / {0}",
+      kLtcSizeMacro);
+}
+
+// vec3 fresnel_NAME_ibl(sampler2D dfg_lut, ..., float nov, float perceptual_roughness, vec3 f0,
+// ...) (HLSL: the textures, then SamplerState lut_sampler).
+std::string entry_signature(const ModelSpec& s, Lighting l, ShaderLanguage lang) {
+  const bool ibl = l == Lighting::Ibl, glsl = lang == ShaderLanguage::Glsl;
+  std::string samplers;
+  for (const auto* t : sampled_textures(s, l))
+    samplers +=
+        fmt::format("{} {}, ", glsl ? "sampler2D" : "Texture2D<float4>", sampler_name(*t, ibl));
+  return fmt::format("{} {}({}{}float nov, float perceptual_roughness, {})",
+                     glsl ? "vec3" : "float3", shader_function_name(s.model, l), samplers,
+                     glsl ? "" : "SamplerState lut_sampler, ",
+                     translate(param_list(s, true), lang));
+}
+
+// The LTC size macro, defined unless the including code defined it.
+std::string ltc_size_define(int lut_size) {
+  return fmt::format(
+      "// The LTC tables' texels per axis (`fresnel-lab lut ltc --size {1}`); define {0} before "
+      "this code for another size.\n#ifndef {0}\n#define {0} {1}.0\n#endif\n",
+      kLtcSizeMacro, lut_size);
+}
+
 // The texture reads: GLSL sampler2D / HLSL Texture2D + SamplerState, at the table's uv convention.
-std::string lookup_function(const ModelSpec& s, Lighting l, ShaderLanguage lang) {
+std::string lookup_function(const ModelSpec& s, Lighting l, ShaderLanguage lang, int lut_size) {
   const bool ibl = l == Lighting::Ibl;
   const auto textures = sampled_textures(s, l);
-  const std::string uv =
-      ibl ? "vec2(nov, perceptual_roughness)"
-          : fmt::format(
-                "vec2(perceptual_roughness, sqrt(1.0 - nov)) * ({0}.0 / {1}.0) + 0.5 / {1}.0",
-                kEngineLutSize - 1, kEngineLutSize);
-  const std::string comment = ibl ? "// Split sum: multiplies the prefiltered environment. "
-                                    "dfg_lut: `fresnel-lab lut dfg --out dfg.exr`\n"
-                                    "// (texel centres over n·v and perceptual roughness: no uv "
-                                    "remapping), bilinear, clamp to edge.\n"
-                                  : fmt::format(
-                                        "// Multiplies the LTC polygon integral (ltc_1: M⁻¹). "
-                                        "ltc_2: `fresnel-lab lut ltc --size {}`\n"
-                                        "// (endpoints over perceptual roughness and √(1 − n·v)), "
-                                        "bilinear, clamp to edge.\n",
-                                        kEngineLutSize);
+  const std::string comment =
+      ibl ? "// Split sum: multiplies the prefiltered environment. dfg_lut: `fresnel-lab lut dfg "
+            "--out dfg.exr`\n// (texel centres over n·v and perceptual roughness: no uv "
+            "remapping), bilinear, clamp to edge.\n"
+          : ltc_size_define(lut_size) +
+                "// Multiplies the LTC polygon integral (ltc_1: M⁻¹). ltc_2: `fresnel-lab lut ltc "
+                "--out ltc.exr`\n// (endpoints over perceptual roughness and √(1 − n·v)), "
+                "bilinear, clamp to edge.\n";
   const bool glsl = lang == ShaderLanguage::Glsl;
-  std::string samplers, reads, texels;
+  std::string reads, texels;
   for (size_t k = 0; k < textures.size(); ++k) {
     const std::string tex = sampler_name(*textures[k], ibl),
                       texel = k ? fmt::format("texel_{}", k + 1) : "texel";
-    samplers += fmt::format(fmt::runtime(glsl ? "sampler2D {}, " : "Texture2D<float4> {}, "), tex);
     reads += fmt::format(fmt::runtime(glsl ? "  vec3 {} = textureLod({}, {}, 0.0).rgb;\n"
                                            : "  float3 {} = {}.SampleLevel(lut_sampler, {}, "
                                              "0.0).rgb;\n"),
-                         texel, tex, translate(uv, lang));
+                         texel, tex, translate(lookup_uv(l), lang));
     texels += texel + ", ";
   }
-  return fmt::format(
-      "{}{} {}({}{}float nov, float perceptual_roughness, {}) {{\n{}  return fresnel_{}_{}({}nov, "
-      "{});\n}}\n",
-      comment, glsl ? "vec3" : "float3", shader_function_name(s.model, l), samplers,
-      glsl ? "" : "SamplerState lut_sampler, ", translate(param_list(s, true), lang), reads, s.name,
-      ibl ? "dfg" : "ltc", texels, param_list(s, false));
+  return fmt::format("{}{} {{\n{}  return fresnel_{}_{}({}nov, {});\n}}\n", comment,
+                     entry_signature(s, l, lang), reads, s.name, ibl ? "dfg" : "ltc", texels,
+                     param_list(s, false));
+}
+
+// "R dfg1, G dfg2, B dfg_f82": a texture's channels at their components.
+std::string texture_channels(const LutTexture& t) {
+  std::string out;
+  for (const auto& c : t.channels) {
+    std::string comp = c.components;
+    for (char& ch : comp) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    out += fmt::format("{}{} {}", out.empty() ? "" : ", ", comp, c.channel);
+  }
+  return out;
+}
+
+// The command writing a texture's table at `size`: its lut_textures() command with --size.
+std::string sized_command(const LutTexture& t, int size) {
+  std::string cmd = t.command;
+  const auto at = cmd.find(" --out");
+  return cmd.insert(at, fmt::format(" --size {}", size));
+}
+
+// One comment line per lighting (what to call) and per table the lookups sample.
+std::string lighting_lines(const ModelSpec& s, const std::vector<Lighting>& ls,
+                           const ShaderDocument& d) {
+  std::string out;
+  for (Lighting l : ls) {
+    if (l == Lighting::Punctual) {
+      out += fmt::format("// Lighting punctual: {} fresnel_{}(float cos_theta, {}), at v.h.\n",
+                         d.lang == ShaderLanguage::Glsl ? "vec3" : "float3", s.name,
+                         translate(param_list(s, true), d.lang));
+      continue;
+    }
+    const bool pre = lighting_support(s.model, l).fresnel_pre_integrated;
+    out +=
+        fmt::format("// Lighting {}: {} ({}).\n", lighting_name(l), entry_signature(s, l, d.lang),
+                    pre ? "the Fresnel term pre-integrated in the tables"
+                        : "the model at n.v times the lobe's Fresnel-free integral");
+    for (const auto* t : sampled_textures(s, l))
+      out += fmt::format("// Table {} ({}), {}x{} texels: `{}` writes {}.\n", t->name,
+                         texture_channels(*t), d.lut_size, d.lut_size,
+                         sized_command(*t, d.lut_size), t->file);
+    if (l == Lighting::Area)
+      out += fmt::format(
+          "// Table ltc_1 (the LTC matrix), {0}x{0}: read by the engine's polygon integral, not "
+          "here; {1} = {0}.0 maps uv to the LTC tables' texel centres.\n",
+          d.lut_size, kLtcSizeMacro);
+  }
+  return out;
+}
+
+// What the document is and what it was checked with.
+std::string checked_lines(const ShaderDocument& d) {
+  const bool glsl = d.lang == ShaderLanguage::Glsl;
+  std::string what = d.standalone
+                         ? fmt::format(
+                               "// A complete {} fragment shader: the include and an entry "
+                               "point for checking it (inputs from the uniform block "
+                               "FresnelLabInputs, the lightings' sum as the colour).\n",
+                               glsl ? "GLSL" : "HLSL")
+                     : glsl ? "// A GLSL include: no #version line; put it after your shader's "
+                              "`#version 450 core` (or later) line.\n"
+                            : "// An HLSL include: functions only, no entry point.\n";
+  return what +
+         (glsl ? "// Checked with: GLSL `#version 450 core`, fragment stage (glslangValidator -V "
+                 "-S frag, then spirv-val), as `--standalone` prints it.\n"
+               : "// Checked with: HLSL pixel shader, Shader Model 5 syntax (Texture2D, "
+                 "SamplerState, SampleLevel), glslangValidator's HLSL front end (-D -V -S frag -e "
+                 "main, then spirv-val), as `--standalone` prints it.\n");
+}
+
+std::string document_comment(const ModelSpec& s, const std::vector<Lighting>& ls,
+                             const ShaderDocument& d) {
+  std::string out = fmt::format("// Generated by `{}`.\n", d.command);
+  out += fmt::format(
+      "// Model {} ({}): parameters {}, {}.\n", s.name, s.label,
+      translate(param_list(s, true), d.lang),
+      d.standalone ? "from the uniform block FresnelLabInputs" : "the functions' arguments");
+  out += lighting_lines(s, ls, d);
+  for (const auto& n : d.notes) out += "// " + n + "\n";
+  return out + checked_lines(d);
+}
+
+// The inputs of the standalone entry point: the angles the lightings take, then the parameters.
+std::vector<std::pair<std::string, std::string>> entry_inputs(const ModelSpec& s,
+                                                              const std::vector<Lighting>& ls) {
+  std::vector<std::pair<std::string, std::string>> in;
+  const bool punctual = std::find(ls.begin(), ls.end(), Lighting::Punctual) != ls.end();
+  if (punctual) in.emplace_back("float", "cos_theta");
+  if (ls.size() > (punctual ? 1u : 0u)) {
+    in.emplace_back("float", "nov");
+    in.emplace_back("float", "perceptual_roughness");
+  }
+  for (const auto& p : s.channel_params) in.emplace_back("vec3", p.name);
+  for (const auto& p : s.shared_params) in.emplace_back("float", p.name);
+  return in;
+}
+
+// The call of a lighting's function in the standalone entry point, its inputs named by `input`.
+std::string entry_call(const ModelSpec& s, Lighting l, ShaderLanguage lang,
+                       const std::string& input) {
+  std::string args = l == Lighting::Punctual ? input + "cos_theta" : "";
+  if (l != Lighting::Punctual) {
+    for (const auto* t : sampled_textures(s, l))
+      args += "fl_" + sampler_name(*t, l == Lighting::Ibl) + ", ";
+    if (lang == ShaderLanguage::Hlsl) args += "fl_lut_sampler, ";
+    args += input + "nov, " + input + "perceptual_roughness";
+  }
+  for (const auto& p : s.channel_params) args += ", " + input + p.name;
+  for (const auto& p : s.shared_params) args += ", " + input + p.name;
+  return fmt::format("  rgb += {}({});\n", shader_function_name(s.model, l), args);
+}
+
+// The standalone entry point: the uniform block, the tables (bindings 1, 2, ...), main.
+std::string entry_point(const ModelSpec& s, const std::vector<Lighting>& ls, ShaderLanguage lang) {
+  const bool glsl = lang == ShaderLanguage::Glsl;
+  std::string out = glsl
+                        ? "\n// Entry point for checking the include.\nlayout(std140, binding = 0) "
+                          "uniform FresnelLabInputs {\n"
+                        : "\n// Entry point for checking the include.\ncbuffer FresnelLabInputs : "
+                          "register(b0) {\n";
+  for (const auto& [type, name] : entry_inputs(s, ls))
+    out += fmt::format("  {} {}{};\n", translate(type, lang), glsl ? "" : "fl_", name);
+  out += glsl ? "} fl_in;\n" : "};\n";
+  int binding = 1;
+  std::string calls;
+  for (Lighting l : ls) {
+    for (const auto* t :
+         l == Lighting::Punctual ? std::vector<const LutTexture*>{} : sampled_textures(s, l))
+      out += fmt::format(fmt::runtime(glsl ? "layout(binding = {0}) uniform sampler2D fl_{1};\n"
+                                           : "Texture2D<float4> fl_{1} : register(t{0});\n"),
+                         binding++, sampler_name(*t, l == Lighting::Ibl));
+    calls += entry_call(s, l, lang, glsl ? "fl_in." : "fl_");
+  }
+  if (glsl)
+    return out +
+           "layout(location = 0) out vec4 fl_colour;\n\nvoid main() {\n  vec3 rgb = "
+           "vec3(0.0);\n" +
+           calls + "  fl_colour = vec4(rgb, 1.0);\n}\n";
+  return out +
+         "SamplerState fl_lut_sampler : register(s0);\n\nfloat4 main() : SV_Target {\n  "
+         "float3 rgb = float3(0.0, 0.0, 0.0);\n" +
+         calls + "  return float4(rgb, 1.0);\n}\n";
 }
 
 }  // namespace
 
-std::string shader_code(Model m, const std::vector<Lighting>& lightings, ShaderLanguage lang) {
+std::string shader_code(Model m, const std::vector<Lighting>& lightings, ShaderLanguage lang,
+                        int lut_size) {
   const auto& s = fresnel::model_spec(m);
   bool needs_model = false;
   for (Lighting l : lightings)
     needs_model =
         needs_model || l == Lighting::Punctual || !lighting_support(m, l).fresnel_pre_integrated;
-  std::string glsl =
-      fmt::format("// Generated by fresnel-lab: {} ({}).\n", s.label, param_list(s, true));
+  std::string glsl;
   std::set<std::string> emitted;
   for (const auto* h : s.shader.helpers)
-    if (emitted.insert(h->name).second) glsl += "\n" + std::string(h->source);
+    if (emitted.insert(h->name).second) glsl += (glsl.empty() ? "" : "\n") + std::string(h->source);
   for (const auto& w : s.shader.term_weights) {
     const auto& t = fresnel::term_spec(w.term);
     if (needs_model && t.glsl_name && emitted.insert(t.glsl_name).second)
       glsl += "\n" + term_function(t);
   }
-  if (needs_model) glsl += "\n" + punctual_function(s);
+  if (needs_model) glsl += (glsl.empty() ? "" : "\n") + punctual_function(s);
   std::string out = translate(glsl, lang);
   for (Lighting l : lightings) {
     if (l == Lighting::Punctual) continue;
-    out += "\n" + translate(table_function(s, l), lang) + "\n" + lookup_function(s, l, lang);
+    out += (out.empty() ? "" : "\n") + translate(table_function(s, l), lang) + "\n" +
+           lookup_function(s, l, lang, lut_size);
   }
   return out;
+}
+
+std::string shader_document(Model m, const std::vector<Lighting>& lightings,
+                            const ShaderDocument& d) {
+  const auto& s = fresnel::model_spec(m);
+  const std::string code =
+      document_comment(s, lightings, d) + "\n" + shader_code(m, lightings, d.lang, d.lut_size);
+  if (!d.standalone) return code;
+  return (d.lang == ShaderLanguage::Glsl ? "#version 450 core\n" : "") + code +
+         entry_point(s, lightings, d.lang);
+}
+
+void check_lut_size(int size) {
+  if (size < 2 || size > 4096)
+    throw InputError(fmt::format("--size {} out of range (2 to 4096)", size));
 }
 
 std::string shader_text(const ShaderRequest& r) {
@@ -269,7 +447,14 @@ std::string shader_text(const ShaderRequest& r) {
   const auto lighting = lighting_from_name(r.lighting);
   const auto model = fresnel::model_from_name(r.model).model;
   if (r.harness && lang != ShaderLanguage::Glsl) throw InputError("--harness writes GLSL only");
-  return r.harness ? shader_cost_harness(model, lighting) : shader_code(model, {lighting}, lang);
+  if (r.harness && r.standalone) throw InputError("--harness and --standalone exclude each other");
+  check_lut_size(r.size);
+  if (r.harness) return shader_cost_harness(model, lighting);
+  ShaderDocument d{lang, r.size, r.standalone, {}, {}};
+  d.command = fmt::format("fresnel-lab shader {} --lang {} --lighting {} --size {}{}",
+                          fresnel::model_spec(model).name, r.lang, lighting_name(lighting), r.size,
+                          r.standalone ? " --standalone" : "");
+  return shader_document(model, {lighting}, d);
 }
 
 std::vector<std::string> shader_textures(Model m, Lighting l) {

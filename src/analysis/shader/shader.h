@@ -31,10 +31,33 @@ ShaderLanguage shader_language_from_name(
 // The name of the function an engine calls for model m under lighting l.
 std::string shader_function_name(fresnel::Model m, Lighting l);
 
+// The macro holding the LTC tables' size (texels per axis, a float) that the area lookup maps its
+// uv with; shader_code defines it from `lut_size` unless the including code defined it first.
+inline constexpr const char* kLtcSizeMacro = "FRESNEL_LAB_LTC_SIZE";
+
 // Self-contained code for model m under each of `lightings`: the helpers it calls (once), the
-// model's function where a lighting evaluates it, and each lighting's entry point.
+// model's function where a lighting evaluates it, and each lighting's entry point; under area
+// lights, for LTC tables of lut_size² texels.
 std::string shader_code(fresnel::Model m, const std::vector<Lighting>& lightings,
-                        ShaderLanguage lang);
+                        ShaderLanguage lang, int lut_size = kEngineLutSize);
+
+// What a shader document says about itself and what it holds.
+struct ShaderDocument {
+  ShaderLanguage lang = ShaderLanguage::Glsl;
+  int lut_size = kEngineLutSize;   // the tables' size (`lut --size`)
+  bool standalone = false;         // a complete fragment shader instead of an include
+  std::string command;             // the command that printed it, for the first line
+  std::vector<std::string> notes;  // further comment lines (a plan: each material's parameters)
+};
+// An include: a comment naming its command, model, lightings and entry points, the tables it
+// samples with their size and the commands writing them, and the language and profile it is
+// checked with (no #version line), then shader_code. Standalone: #version 450 core (GLSL), the
+// include, and a fragment entry point (GLSL main writing a colour output, HLSL main returning
+// SV_Target) calling each lighting's function with inputs from a uniform block.
+std::string shader_document(fresnel::Model m, const std::vector<Lighting>& lightings,
+                            const ShaderDocument& doc);
+// InputError unless 2 ≤ size ≤ 4096 (the sizes `lut` writes).
+void check_lut_size(int size);
 
 // The textures fresnel_NAME_ibl / _area samples, in argument order (none for punctual lights).
 std::vector<std::string> shader_textures(fresnel::Model m, Lighting l);
@@ -44,11 +67,13 @@ std::vector<std::string> shader_textures(fresnel::Model m, Lighting l);
 // neither fold nor drop the function (scripts/gpu_costs.sh compiles it).
 std::string shader_cost_harness(fresnel::Model m, Lighting l);
 
-// `shader MODEL --lang L --lighting L [--harness]`: the names checked (InputError), then
-// shader_code or shader_cost_harness (GLSL only).
+// `shader MODEL --lang L --lighting L [--size N] [--standalone | --harness]`: the names and size
+// checked (InputError), then shader_document or shader_cost_harness (GLSL only).
 struct ShaderRequest {
   std::string model, lang = "glsl", lighting = "punctual";
   bool harness = false;
+  int size = kEngineLutSize;
+  bool standalone = false;
 };
 std::string shader_text(const ShaderRequest& request);
 

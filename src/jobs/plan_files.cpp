@@ -1,0 +1,165 @@
+#include "jobs/plan_files.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <set>
+
+#include "analysis/lut/lut_layout.h"
+#include "analysis/shader/shader.h"
+#include "documents/plan_report.h"
+#include "documents/table_formats.h"
+#include "draw/plan_plot.h"
+#include "fresnel/registered_models.h"
+#include "jobs/lut_files.h"
+
+namespace fl::report {
+
+using analysis::Lighting;
+
+namespace {
+
+// The table textures the chosen option reads, as `lut dfg` and `lut ltc` write them at 64².
+Files table_files(const analysis::Plan& p, int threads) {
+  std::set<std::string> needed;
+  bool dfg = false, ltc = false;
+  for (const auto& l : p.scene_luts) {
+    needed.insert(l.file);
+    dfg = dfg || l.lighting == "ibl";
+    ltc = ltc || l.lighting == "area";
+  }
+  Files out;
+  const auto keep = [&](const Output& o) {
+    for (const auto& [path, bytes] : o.files) {
+      const std::string file = std::filesystem::path(path).filename().string();
+      if (needed.count(file)) out.emplace_back(file, bytes);
+    }
+  };
+  if (dfg) keep(dfg_lut({analysis::kEngineLutSize, "dfg.exr", analysis::kLutSamples, threads}));
+  if (ltc) keep(ltc_lut({analysis::kEngineLutSize, "ltc.exr", analysis::kLutSamples, threads}));
+  return out;
+}
+
+std::string join_text(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+std::string readme_shaders(const analysis::Plan& p) {
+  const auto& sc = p.scene_choice();
+  std::string s = fmt::format(
+      "## Shaders\n\n{}\n\n| include | group | model | materials | functions |\n"
+      "|---|---|---|---|---|\n",
+      sc.groups.size() == 1
+          ? "One shader for every material."
+          : "One shader variant per group (material permutations): a material's draw compiles "
+            "and runs its group's include; nothing branches inside a shader.");
+  for (const auto& g : sc.groups) {
+    std::vector<std::string> materials, functions;
+    for (size_t k : g.materials) materials.push_back(sc.materials.at(k).material);
+    for (Lighting l : p.scene.lightings())
+      functions.push_back(fmt::format("`{}` ({})", analysis::shader_function_name(g.model, l),
+                                      analysis::lighting_name(l)));
+    s += fmt::format("| `{}`, `{}` | {} | {} | {} | {} |\n", plan_include_name(p, g, "glsl"),
+                     plan_include_name(p, g, "hlsl"), g.name, fresnel::model_spec(g.model).name,
+                     join_text(materials), join_text(functions));
+  }
+  return s +
+         "\nEach include is self-contained (its helpers, the model, the table lookups); its "
+         "header comment lists the materials it serves with their parameters. The `_ibl` "
+         "function returns the split-sum factor that multiplies the prefiltered environment, the "
+         "`_area` function the Fresnel-weighted norm that multiplies the LTC polygon integral; "
+         "per-channel parameters are `vec3` (r, g, b), in the order of the model's parameter "
+         "names.\n";
+}
+
+std::string readme_tables(const analysis::Plan& p) {
+  if (p.scene_luts.empty())
+    return "\n## Tables\n\nNone: punctual lights evaluate the model directly.\n";
+  std::string s = "\n## Tables\n\n| file | lighting | channels | sampled at |\n|---|---|---|---|\n";
+  for (const auto& l : p.scene_luts)
+    s += fmt::format("| `{}` | {} | {} | {} |\n", l.file, l.lighting, join_text(l.channels),
+                     l.lighting == "ibl"
+                         ? "uv = (n·v, perceptual roughness), bilinear, clamped"
+                         : "uv = (perceptual roughness, √(1 − n·v))·63/64 + 0.5/64, bilinear");
+  return s +
+         "\n64² texels of 32-bit floats (an engine may upload them as half floats); rows run from "
+         "smooth to rough. Bind `dfg.exr` to the `_ibl` function's `dfg_lut` argument and "
+         "`ltc_2.exr` "
+         "to the `_area` function's `ltc_2` (further textures, `dfg_2.exr`, `ltc_3.exr`, follow "
+         "them in the include's argument lists); `ltc_1.exr` is the LTC matrix the area-light "
+         "integral itself uses. They are `fresnel-lab lut dfg --out dfg.exr` and `fresnel-lab lut "
+         "ltc --out "
+         "ltc.exr` as written at the default size.\n";
+}
+
+std::string readme_materials(const analysis::Plan& p) {
+  const auto& sc = p.scene_choice();
+  std::string s =
+      "\n## Materials\n\n`materials.json` holds each material's parameters (and its group, "
+      "include, model, roughness, the table channels it reads and its error as rendered).\n\n"
+      "| material | include | model | parameters | rendered RMS ΔE2000 | tables read |\n"
+      "|---|---|---|---|---|---|\n";
+  for (const auto& g : sc.groups)
+    for (size_t k : g.materials) {
+      const auto& m = sc.materials.at(k);
+      const bool mirror = p.scene.materials.at(k).mirror();
+      std::vector<std::string> tables;
+      for (const auto& l : analysis::material_luts(p, k)) tables.push_back(l.file);
+      s += fmt::format("| {} | `{}` | {} | {} | {} | {} |\n", m.material,
+                       plan_include_name(p, g, "glsl"), fresnel::model_spec(m.model).name,
+                       analysis::parameter_set_name(m.set), format_number(m.error, 3),
+                       mirror ? "none: roughness 0 is a mirror; call `" +
+                                    analysis::shader_function_name(m.model, Lighting::Punctual) +
+                                    "(n·v, …)`"
+                       : tables.empty() ? "none"
+                                        : join_text(tables));
+    }
+  return s;
+}
+
+std::string plan_readme(const analysis::Plan& p) {
+  const auto& sc = p.scene_choice();
+  std::string s = fmt::format(
+      "# Fresnel shading for {}\n\nWritten by `fresnel-lab plan {} --out DIR`. The shader set: "
+      "**{}** ({}; worst rendered RMS ΔE2000 {}, median {}, budget {}). `plan.md` says why "
+      "(every option considered, its cost and the Pareto front; `plan.json` the same as data) and "
+      "`pareto.svg` draws it.\n\n",
+      p.scene.path, p.scene.path, sc.name,
+      sc.meets_every_budget() ? "meets every material's budget"
+                              : "over budget: " + join_text(sc.failing),
+      format_number(sc.worst_de00, 3), format_number(sc.median_de00, 3),
+      format_number(p.scene.max_de00, 3));
+  return s + readme_shaders(p) + readme_tables(p) + readme_materials(p);
+}
+
+}  // namespace
+Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs, const LabelFont& font,
+                 int threads) {
+  Files out = table_files(p, threads);
+  std::set<std::string> includes;
+  for (const auto& g : p.scene_choice().groups) {
+    if (!includes.insert(plan_include_name(p, g, "glsl")).second) continue;
+    for (const auto lang : {analysis::ShaderLanguage::Glsl, analysis::ShaderLanguage::Hlsl}) {
+      const std::string ext = lang == analysis::ShaderLanguage::Glsl ? "glsl" : "hlsl";
+      const analysis::ShaderDocument doc{lang,
+                                         analysis::kEngineLutSize,
+                                         false,
+                                         fmt::format("fresnel-lab plan {} --out DIR ({})",
+                                                     p.scene.path, plan_include_name(p, g, ext)),
+                                         {}};
+      out.emplace_back(plan_include_name(p, g, ext), plan_group_shader(p, g, doc));
+    }
+  }
+  out.emplace_back("materials.json", plan_materials_json(p));
+  out.emplace_back("plan.md", plan_markdown(p, costs));
+  out.emplace_back("plan.json", plan_json(p));
+  out.emplace_back("pareto.svg", encode(plan_plot(p), FileType::Svg, font));
+  out.emplace_back("README.md", plan_readme(p));
+  return out;
+}
+
+}  // namespace fl::report
