@@ -44,17 +44,57 @@ analysis::ShaderDocument shader_document(const std::string& scene, const ShaderA
           {}};
 }
 
+struct PlanArgs {
+  std::string scene, format = "md", costs, gpu_costs, out, plot;
+  ShaderArgs shader;
+};
+
+int run_plan(const GlobalOptions& g, const PlanArgs& a) {
+  if (a.format != "json" && a.format != "md")
+    throw InputError(fmt::format("--format must be json or md, not '{}'", a.format));
+  const auto shader = shader_document(a.scene, a.shader);
+  if (!a.plot.empty()) report::file_type(a.plot);  // an unknown extension, before the work
+  if (!a.out.empty()) report::require_replaceable_folder(a.out, report::kPlanMarker);
+  auto scene = analysis::read_scene(a.scene);
+  const analysis::PlanCosts costs{
+      analysis::load_model_costs(given_or(a.costs, g.settings.paths.model_costs)),
+      analysis::load_gpu_costs(given_or(a.gpu_costs, g.settings.paths.gpu_costs))};
+  GlobalOptions run = g;
+  if (!scene.space.empty()) run.settings.space = scene.space;
+  const auto ctx = [&] {
+    try {
+      return make_context(run);
+    } catch (const InputError& e) {
+      if (scene.space.empty()) throw;
+      throw InputError(scene.path, scene.space_line, e.what());
+    }
+  }();
+  const auto ms = analysis::load_scene_materials(ctx, scene);
+  print_warnings(g, ms);
+  const auto studies = analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
+  const auto p = analysis::make_plan(scene, ctx, studies, costs);
+  std::optional<report::LabelFont> font;
+  if (!a.plot.empty() || !a.out.empty()) font.emplace(g.label_font);
+  if (!a.plot.empty()) report::write_drawing(a.plot, report::plan_plot(p), *font);
+  if (!a.out.empty()) {
+    report::replace_folder_atomic(a.out, report::plan_files(p, costs, *font), report::kPlanMarker);
+    progress(g, fmt::format("plan: wrote {} ({})", a.out, p.scene_choice().name));
+    return 0;
+  }
+  if (a.shader.shader)
+    fmt::print("{}", report::plan_shader(p, shader));
+  else
+    fmt::print("{}", a.format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs));
+  return 0;
+}
+
 }  // namespace
 
 void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand("plan",
                                  "per scene material the cheapest Fresnel model within a ΔE2000 "
                                  "budget, and the lookup tables it needs");
-  struct Args {
-    std::string scene, format = "md", costs, gpu_costs, out, plot;
-    ShaderArgs shader;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<PlanArgs>();
   sub->add_option("SCENE", a->scene,
                   "scene YAML: materials (list; an entry may be {name, roughness}), max_de00 "
                   "(default 1.0), space, "
@@ -73,49 +113,7 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "tables they read, materials.json, README.md, the plan and its figure");
   sub->add_option("--plot", a->plot,
                   "also draw the options' cost against error (FILE.png, FILE.svg or FILE.pdf)");
-  sub->callback([&g, &selected, a] {
-    selected = [&g, a] {
-      if (a->format != "json" && a->format != "md")
-        throw InputError(fmt::format("--format must be json or md, not '{}'", a->format));
-      const auto shader = shader_document(a->scene, a->shader);
-      if (!a->plot.empty()) report::file_type(a->plot);  // an unknown extension, before the work
-      if (!a->out.empty()) report::require_replaceable_folder(a->out, report::kPlanMarker);
-      auto scene = analysis::read_scene(a->scene);
-      const analysis::PlanCosts costs{
-          analysis::load_model_costs(given_or(a->costs, g.settings.paths.model_costs)),
-          analysis::load_gpu_costs(given_or(a->gpu_costs, g.settings.paths.gpu_costs))};
-      GlobalOptions run = g;
-      if (!scene.space.empty()) run.settings.space = scene.space;
-      const auto ctx = [&] {
-        try {
-          return make_context(run);
-        } catch (const InputError& e) {
-          if (scene.space.empty()) throw;
-          throw InputError(scene.path, scene.space_line, e.what());
-        }
-      }();
-      const auto ms = analysis::load_scene_materials(ctx, scene);
-      print_warnings(g, ms);
-      const auto studies =
-          analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
-      const auto p = analysis::make_plan(scene, ctx, studies, costs);
-      std::optional<report::LabelFont> font;
-      if (!a->plot.empty() || !a->out.empty()) font.emplace(g.label_font);
-      if (!a->plot.empty()) report::write_drawing(a->plot, report::plan_plot(p), *font);
-      if (!a->out.empty()) {
-        report::replace_folder_atomic(a->out, report::plan_files(p, costs, *font),
-                                      report::kPlanMarker);
-        progress(g, fmt::format("plan: wrote {} ({})", a->out, p.scene_choice().name));
-        return 0;
-      }
-      if (a->shader.shader)
-        fmt::print("{}", report::plan_shader(p, shader));
-      else
-        fmt::print("{}",
-                   a->format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs));
-      return 0;
-    };
-  });
+  sub->callback([&g, &selected, a] { selected = [&g, a] { return run_plan(g, *a); }; });
 }
 
 }  // namespace fl::cli

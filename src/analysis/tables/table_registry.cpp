@@ -51,6 +51,23 @@ void TableInputs::prepare() {
   });
 }
 
+namespace {
+
+Table rendered_library_of(TableInputs& in) {
+  return rendered_library_table(
+      in.ctx, in.rendered_library(),
+      rendered_library_rows(in.rendered_library(),
+                            load_gpu_costs(in.ctx.settings().paths.gpu_costs)));
+}
+
+Table speed_of(TableInputs& in) {
+  const auto& paths = in.ctx.settings().paths;
+  return speed_table(in.ctx, in.studies(), load_model_costs(paths.model_costs),
+                     load_gpu_costs(paths.gpu_costs));
+}
+
+}  // namespace
+
 const std::vector<TableSpec>& table_specs() {
   static const std::vector<TableSpec> specs{
       {"schlick", "Schlick (spectral F0) against spectral ground truth, every catalog material",
@@ -101,20 +118,11 @@ const std::vector<TableSpec>& table_specs() {
       {"rendered-library",
        "rendered error of the shippable pre-integrated shaders (Schlick, F82, the basis at K = 2 "
        "to 5) over every database page, against K and the GPU cost",
-       [](TableInputs& in) {
-         return rendered_library_table(
-             in.ctx, in.rendered_library(),
-             rendered_library_rows(in.rendered_library(),
-                                   load_gpu_costs(in.ctx.settings().paths.gpu_costs)));
-       }},
+       rendered_library_of},
       {"speed",
        "every model's cost per evaluation (committed benchmark costs) against its ΔE2000 error, "
        "Pareto front",
-       [](TableInputs& in) {
-         const auto& paths = in.ctx.settings().paths;
-         return speed_table(in.ctx, in.studies(), load_model_costs(paths.model_costs),
-                            load_gpu_costs(paths.gpu_costs));
-       }},
+       speed_of},
   };
   return specs;
 }
