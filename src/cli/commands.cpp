@@ -1,6 +1,10 @@
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "analysis/tables/table_registry.h"
 #include "analysis/tables/tables.h"
@@ -163,6 +167,19 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   });
 }
 
+// The look-dev contact sheets scripts/lookdev.sh left in OUT/lookdev/ (sorted, relative to OUT).
+std::vector<std::string> lookdev_sheets(const std::string& out) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> sheets;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(fs::path(out) / "lookdev", ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.size() > 10 && name.ends_with(".sheet.png")) sheets.push_back("lookdev/" + name);
+  }
+  std::sort(sheets.begin(), sheets.end());
+  return sheets;
+}
+
 void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand("reproduce",
                                  "every table as DIR/NAME.csv and DIR/NAME.md, plus DIR/README.md");
@@ -179,8 +196,9 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
       std::optional<report::LabelFont> font;  // the figures' labels
       if (!*no_figures) font.emplace(g.label_font);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      auto files = report::reproduce_files(in, font ? &*font : nullptr,
-                                           [&g](const std::string& line) { progress(g, line); });
+      auto files = report::reproduce_files(
+          in, font ? &*font : nullptr, [&g](const std::string& line) { progress(g, line); },
+          lookdev_sheets(*out));
       for (auto& f : files) f.first = *out + "/" + f.first;
       report::write_files_atomic(files);
       progress(g, fmt::format("reproduce: wrote {} files to {}", files.size(), *out));

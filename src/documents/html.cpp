@@ -13,22 +13,23 @@ namespace {
 
 // The page's style: a light, dense layout; tables scroll inside their box with sticky headers.
 constexpr const char* kStyle = R"CSS(
-body{font:14px/1.45 "DejaVu Sans",system-ui,sans-serif;margin:0;color:#1e1e1e;background:#f7f7f7}
+body{font:14px/1.45 "DejaVu Sans",system-ui,sans-serif;margin:0;color:#1e1e1e;background:#f7f7f7;overflow-wrap:anywhere}
 header{background:#1e1e1e;color:#eee;padding:14px 20px}header h1{margin:0 0 6px;font-size:22px}
-header p{margin:4px 0;color:#ccc}header a{color:#9cf}header code{background:#333;color:#eee}nav{margin-top:8px}nav a{margin-right:14px}
-main{max-width:1280px;margin:0 auto;padding:8px 20px 40px}h2{margin:24px 0 8px}
+header p{margin:4px 0;color:#ccc}header a{color:#9cf}header code{background:#333;color:#eee}nav{margin-top:8px}nav a{margin-right:14px;display:inline-block;overflow-wrap:normal}
+main{max-width:1280px;margin:0 auto;padding:8px 20px 40px}@media(max-width:600px){main,header{padding-left:10px;padding-right:10px}}h2{margin:24px 0 8px}
 input[type=search]{font:inherit;padding:4px 8px;width:320px;max-width:90%;border:1px solid #bbb;border-radius:4px}
 .count{color:#666;margin-left:10px}
-.gallery{display:grid;grid-template-columns:repeat(auto-fill,minmax(290px,1fr));gap:12px;margin-top:12px}
-.card{background:#fff;border:1px solid #ddd;border-radius:6px;padding:10px 12px}.card[hidden]{display:none}
+.gallery{display:grid;grid-template-columns:repeat(auto-fill,minmax(min(290px,100%),1fr));gap:12px;margin-top:12px}
+.card{background:#fff;border:1px solid #ddd;border-radius:6px;padding:10px 12px;min-width:0}.card[hidden]{display:none}
 .card h3{margin:0;font-size:16px}.cls{color:#777;font-weight:normal;font-size:13px;margin-left:6px}
 .src{color:#666;font-size:12px;word-break:break-all}
-.strip{height:20px;border-radius:3px;margin:8px 0 2px}.strip-axis{display:flex;justify-content:space-between;font-size:11px;color:#888}
-.sws{margin:6px 0}.sw{display:inline-block;width:26px;height:26px;border:1px solid #bbb;border-radius:3px;vertical-align:middle;margin-right:4px}
-.swl{margin-right:14px;font-size:12px}
+.strip{height:20px;border-radius:3px;margin:8px 0 2px;border:1px solid #555;box-shadow:0 0 0 3px #808080}.strip-axis{display:flex;justify-content:space-between;font-size:11px;color:#888}
+.sws{margin:8px 0 6px;padding:5px 8px;display:inline-block;border-radius:4px;background:repeating-conic-gradient(#6e6e6e 0 25%,#8c8c8c 0 50%) 0 0/10px 10px}
+.sw{display:inline-block;width:26px;height:26px;border:1px solid #222;border-radius:3px;vertical-align:middle;margin-right:4px}
+.swl{margin-right:14px;font-size:12px;color:#fff;text-shadow:0 0 2px #000}
 .flag{display:inline-block;background:#fde6c8;color:#7a3d00;border-radius:10px;padding:0 8px;font-size:12px;margin:2px 4px 2px 0}
-.facts{display:grid;grid-template-columns:auto 1fr;gap:0 10px;font-size:12px;margin:6px 0}.facts dt{color:#666}.facts dd{margin:0}
-.flip{margin:8px 0}.flip-img{cursor:pointer;background-repeat:no-repeat;border-radius:4px;background-color:#111}
+.facts{display:grid;grid-template-columns:auto 1fr;gap:0 10px;font-size:12px;margin:6px 0}.facts dt{color:#666}.facts dd{margin:0;min-width:0}
+.flip{margin:8px 0;max-width:100%;overflow-x:auto}.flip-img{cursor:pointer;background-repeat:no-repeat;border-radius:4px;background-color:#111}
 .flip-label{font-size:12px;color:#444;margin:2px 0}.flip button{font:inherit;font-size:12px;margin:0 4px 4px 0;padding:1px 8px;border:1px solid #bbb;background:#f3f3f3;border-radius:10px;cursor:pointer}
 .flip button[aria-pressed=true]{background:#1e1e1e;color:#fff}
 details.tbl{background:#fff;border:1px solid #ddd;border-radius:6px;margin:8px 0;padding:4px 12px}
@@ -38,6 +39,10 @@ table{border-collapse:collapse;font-size:12px}th,td{border:1px solid #e2e2e2;pad
 td.t,th.t{text-align:left}th{cursor:pointer;position:sticky;top:0;background:#eee;user-select:none}
 th[aria-sort=ascending]::after{content:" \25B2"}th[aria-sort=descending]::after{content:" \25BC"}
 tr[hidden]{display:none}code{background:#eee;padding:0 3px;border-radius:3px}img.fig{max-width:100%;margin-top:6px}
+.figcap{font-size:12px;margin:0 0 6px}
+#summary ul{background:#fff;border:1px solid #ddd;border-radius:6px;padding:8px 12px 8px 30px;margin:0}#summary li{margin:3px 0}
+figure{margin:12px 0}figure img{max-width:100%;height:auto}.sheets{display:grid;grid-template-columns:repeat(auto-fill,minmax(min(380px,100%),1fr));gap:12px}
+.sheets figure{margin:0;background:#fff;border:1px solid #ddd;border-radius:6px;padding:8px}
 )CSS";
 
 // The page's behaviour: sortable tables, row and gallery filters, flips.
@@ -131,8 +136,10 @@ std::string hex(Rgb8 c) {
 // Markdown's inline code and links in a table's reading and notes, the rest escaped.
 std::string inline_markdown(const std::string& text) {
   static const std::regex kCode("`([^`]*)`"), kLink(R"(\[([^\]]*)\]\(([^)\s]*)\))");
+  static const std::regex kBold(R"(\*\*([^*]+)\*\*)");
   std::string s = html_escape(text);
   s = std::regex_replace(s, kCode, "<code>$1</code>");
+  s = std::regex_replace(s, kBold, "<strong>$1</strong>");
   return std::regex_replace(s, kLink, "<a href=\"$2\">$1</a>");
 }
 
@@ -176,6 +183,17 @@ std::string flip_html(const Flip& f) {
   return s;
 }
 
+// Figures with their captions, each image a link to itself at full size.
+std::string figures_html(const std::vector<std::pair<std::string, std::string>>& figures) {
+  std::string s;
+  for (const auto& [caption, path] : figures)
+    s += fmt::format(
+        "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\" loading=\"lazy\"></a>"
+        "<figcaption>{1} (<a href=\"{0}\">full size</a>)</figcaption></figure>\n",
+        html_escape(path), html_escape(caption));
+  return s;
+}
+
 std::string search_text(const GalleryEntry& e) {
   std::string s = e.name + " " + e.material_class + " " + e.source;
   for (const auto& f : e.flags) s += " " + f;
@@ -216,7 +234,8 @@ std::string card_html(const GalleryEntry& e) {
     s += "<details><summary>figures</summary>";
     for (const auto& [caption, path] : e.figures)
       s += fmt::format(
-          "<a href=\"{0}\"><img class=\"fig\" loading=\"lazy\" src=\"{0}\" alt=\"{1}\"></a>",
+          "<a href=\"{0}\"><img class=\"fig\" loading=\"lazy\" src=\"{0}\" alt=\"{1}\"></a>"
+          "<p class=\"figcap\"><a href=\"{0}\" target=\"_blank\">{1}: open full size</a></p>",
           html_escape(path), html_escape(caption));
     s += "</details>";
   }
@@ -304,20 +323,27 @@ std::string html_report(const HtmlReport& r) {
       "</head>\n<body><header><h1>{}</h1>\n",
       html_escape(r.title), kStyle, html_escape(r.title));
   for (const auto& p : r.intro) s += "<p>" + inline_markdown(p) + "</p>\n";
-  s += "<nav><a href=\"#gallery\">Gallery</a><a href=\"#tables\">Tables</a>";
+  s += "<nav>";
+  if (!r.summary.empty()) s += "<a href=\"#summary\">Summary</a>";
+  s += "<a href=\"#gallery\">Gallery</a>";
+  if (!r.lookdev.empty()) s += "<a href=\"#lookdev\">Look-dev</a>";
+  s += "<a href=\"#tables\">Tables</a>";
   for (const auto& [text, href] : r.links)
     s += fmt::format("<a href=\"{}\">{}</a>", html_escape(href), html_escape(text));
   s += "</nav></header>\n<main>\n";
+  if (!r.summary.empty()) {
+    s += "<section id=\"summary\"><h2>Summary</h2><ul>\n";
+    for (const auto& line : r.summary) s += "<li>" + inline_markdown(line) + "</li>\n";
+    s += "</ul></section>\n";
+  }
   if (!r.gallery.empty())
     s += "<section id=\"gallery\"><h2>Gallery</h2>\n" + gallery_html(r.gallery) + "</section>\n";
-  if (!r.figures.empty()) {
-    s += "<section id=\"figures\"><h2>Figures</h2>\n";
-    for (const auto& [caption, path] : r.figures)
-      s += fmt::format(
-          "<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\" style=\"max-width:100%\"></a>"
-          "<figcaption>{1}</figcaption></figure>\n",
-          html_escape(path), html_escape(caption));
-    s += "</section>\n";
+  if (!r.figures.empty())
+    s += "<section id=\"figures\"><h2>Figures</h2>\n" + figures_html(r.figures) + "</section>\n";
+  if (!r.lookdev.empty()) {
+    s += "<section id=\"lookdev\"><h2>Look-dev sheets</h2>\n";
+    if (!r.lookdev_reading.empty()) s += "<p>" + inline_markdown(r.lookdev_reading) + "</p>\n";
+    s += "<div class=\"sheets\">\n" + figures_html(r.lookdev) + "</div></section>\n";
   }
   s += "<section id=\"tables\"><h2>Tables</h2>\n";
   for (const auto& t : r.tables)

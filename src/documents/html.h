@@ -52,6 +52,11 @@ struct HtmlReport {
   std::vector<std::pair<std::string, std::string>> links;  // (text, href): the other formats
   // (caption, image path): figures shown full width before the tables, each opening full size.
   std::vector<std::pair<std::string, std::string>> figures;
+  // Findings shown first, one Markdown line each (inline code, links and **bold**).
+  std::vector<std::string> summary;
+  // (caption, image path): look-dev contact sheets shown after the figures, each opening full size.
+  std::vector<std::pair<std::string, std::string>> lookdev;
+  std::string lookdev_reading;  // Markdown paragraph above the sheets (may be empty)
 };
 
 // The whole page. The same report gives the same bytes.

@@ -196,6 +196,16 @@ std::vector<std::string> card_flags(const analysis::MaterialStudy& st,
   return flags;
 }
 
+// The real index at `lambda_nm`, linear between the material's grid wavelengths.
+double eta_at(const spectral::ComplexIorSpectrum& ior, double lambda_nm) {
+  std::vector<double> x, n;
+  for (int i = 0; i < ior.grid.count; ++i) {
+    x.push_back(ior.grid.lambda_nm(i));
+    n.push_back(ior.ior[static_cast<size_t>(i)].real());
+  }
+  return spectral::interpolate_linear(x, n, lambda_nm);
+}
+
 std::vector<std::pair<std::string, std::string>> card_facts(const analysis::MaterialStudy& st) {
   std::string derived;
   for (const auto m : parse_models("schlick,f82,gulbrandsen"))
@@ -204,9 +214,13 @@ std::vector<std::pair<std::string, std::string>> card_facts(const analysis::Mate
   const analysis::ModelResult* best = &st.models.front();
   for (const auto& r : st.models)
     if (r.fitted_error.rms < best->fitted_error.rms) best = &r;
-  return {{"RMS ΔE2000", derived},
-          {"best fitted", fmt::format("{} {:.3f}", fresnel::model_spec(best->model).name,
-                                      best->fitted_error.rms)}};
+  std::vector<std::pair<std::string, std::string>> facts{
+      {"RMS ΔE2000", derived},
+      {"best fitted",
+       fmt::format("{} {:.3f}", fresnel::model_spec(best->model).name, best->fitted_error.rms)}};
+  if (st.material->material.material_class == spectral::MaterialClass::Dielectric)
+    facts.emplace_back("η at 589 nm", fmt::format("{:.4f}", eta_at(st.material->ior, 589.0)));
+  return facts;
 }
 
 Rgb8 rgb8(const std::uint8_t* p) {

@@ -3,7 +3,11 @@
 // table sorts when its header is clicked; the gallery search narrows the cards; a flip toggles a
 // sphere between the truth and a model. Saves a screenshot. With --library, the page of a preset
 // library: the library table sorts, the search narrows the cards to one metal's pages (no flips).
-//   node report.test.mjs --html DIR/index.html --screenshot FILE.png [--library] [--chromium PATH]
+// At 1280 and 390 px wide the page does not overflow horizontally; with --top PREFIX the top of the
+// page at each width is saved as PREFIX-1280.png and PREFIX-390.png. The report (not the library)
+// opens with its summary, shows η on dielectric cards and, with --lookdev, the look-dev sheets.
+//   node report.test.mjs --html DIR/index.html --screenshot FILE.png [--top PREFIX] [--library]
+//        [--lookdev] [--chromium PATH]
 import { existsSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
 import puppeteer from 'puppeteer-core';
@@ -15,6 +19,7 @@ function option(name, fallback) {
 
 const html = option('--html');
 const screenshot = option('--screenshot');
+const top = option('--top');
 const chromium = option('--chromium', process.env.CHROMIUM || '/usr/bin/chromium');
 let failures = 0, passes = 0;
 
@@ -102,6 +107,52 @@ async function flipToggles(page) {
   check(loaded > 0, `the flip's image loads (${loaded} px wide)`);
 }
 
+// No horizontal overflow at either width (the whole document, every section open); the top of the
+// page saved at each width when --top is given.
+async function widths(page) {
+  await page.$eval('#gallery-filter', (g) => { g.value = ''; g.dispatchEvent(new Event('input')); });
+  for (const width of [1280, 390]) {
+    await page.setViewport({ width, height: 900 });
+    await page.evaluate(() => document.querySelectorAll('details').forEach((d) => { d.open = true; }));
+    const m = await page.evaluate(() => {
+      const inner = window.innerWidth, scroll = document.scrollingElement.scrollWidth;
+      const wide = Array.from(document.querySelectorAll('body *')).filter((e) => {
+        const r = e.getBoundingClientRect();
+        return r.width > 0 && r.right > inner + 1 && !e.closest('.tablewrap, .flip');
+      }).slice(0, 5).map((e) => `${e.tagName.toLowerCase()}.${e.className} ${Math.round(e.getBoundingClientRect().right)}`);
+      return { inner, scroll, wide };
+    });
+    check(m.scroll <= m.inner, `at ${width} px wide nothing overflows horizontally (scrollWidth ${m.scroll}, innerWidth ${m.inner}` +
+          `${m.wide.length ? `; too wide: ${m.wide.join(', ')}` : ''})`);
+    await page.evaluate(() => document.querySelectorAll('details').forEach((d) => { d.open = false; }));
+    if (top) {
+      await page.evaluate(() => window.scrollTo(0, 0));
+      await page.screenshot({ path: `${top}-${width}.png` });
+      console.log(`screenshot: ${top}-${width}.png`);
+    }
+  }
+  await page.setViewport({ width: 1280, height: 1000 });
+}
+
+// The summary's lines, η on every dielectric card, and the look-dev sheets when they are expected.
+async function structure(page) {
+  const lines = await page.$$eval('#summary li', (li) => li.map((l) => l.textContent));
+  check(lines.length === 5 && /Best model per class/.test(lines[0]) && /talk's Schlick/.test(lines[1]) && /front/.test(lines[4]),
+        `the summary has five findings (${lines.map((l) => l.slice(0, 40)).join(' | ')})`);
+  const cards = await page.$$eval('.card', (cs) => cs.map((c) => ({
+    cls: c.querySelector('.cls').textContent,
+    eta: Array.from(c.querySelectorAll('.facts dt')).some((dt) => dt.textContent.startsWith('η')),
+  })));
+  const dielectrics = cards.filter((c) => c.cls === 'dielectric');
+  check(dielectrics.length > 0 && dielectrics.every((c) => c.eta) && cards.filter((c) => c.eta).length === dielectrics.length,
+        `every dielectric card (${dielectrics.length}) and no metal card shows η`);
+  if (process.argv.includes('--lookdev')) {
+    const widthsLoaded = await page.$$eval('#lookdev img', (imgs) => Promise.all(imgs.map((i) => { i.loading = 'eager'; return i.decode().then(() => i.naturalWidth, () => 0); })));
+    check(widthsLoaded.length > 0 && widthsLoaded.every((w) => w > 0),
+          `the look-dev section shows ${widthsLoaded.length} sheets, every one loading (${widthsLoaded.join(', ')} px wide)`);
+  }
+}
+
 async function main() {
   if (!html || !existsSync(html)) throw new Error(`no report at ${html} (pass --html DIR/index.html)`);
   if (!existsSync(chromium)) throw new Error(`no Chromium at ${chromium}: scripts/setup.sh installs Debian's chromium`);
@@ -130,6 +181,8 @@ async function main() {
     await tableSorts(page);
     await galleryFilters(page);
     if (!library) await flipToggles(page);
+    if (!library) await structure(page);
+    await widths(page);
     check(errors.length === 0, `no errors while using the page${errors.length ? `: ${errors.join('; ')}` : ''}`);
     if (screenshot) {
       await page.evaluate(() => window.scrollTo(0, 0));
