@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "analysis/pipeline/materials.h"
+#include "analysis/gold_shading.h"
 #include "analysis/tables/lut_accuracy.h"
 #include "fresnel/registry.h"
 
@@ -20,21 +20,13 @@ constexpr double kInSpan = 1e-6;
 // basis it should render within about that of the basis projection of the truth itself (basis5).
 constexpr double kCurveGap = 0.1;
 
-struct Gold {
-  Context ctx{[] {
-    Settings s;
-    s.paths = {FL_DEFAULT_DB, FL_MATERIALS};
-    return s;
-  }()};
-  MaterialSet set = load_materials(ctx, {"gold"}, {});
-  StudyOptions options = [] {
-    StudyOptions o;
-    o.fit = false;
-    return o;
-  }();
-  MaterialStudy study = study_materials(ctx, set.materials, options).front();
-  std::vector<ShadingPoint> points = lut_accuracy_points();
-  std::vector<color::Rgb> truth = lobe_truth(ctx, set.materials.front(), points);
+struct Gold : test::GoldShading {
+  Gold()
+      : GoldShading([] {
+          StudyOptions o;
+          o.fit = false;
+          return o;
+        }()) {}
 
   std::vector<double> de00(fresnel::Model m, Lighting l, EngineWay w) const {
     return rendered_de00(ctx, truth, m, study.result(m).derived, l, points, w);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "analysis/gold_shading.h"
 #include "analysis/lut/rendered_fit.h"
 #include "analysis/pipeline/materials.h"
 #include "analysis/tables/lut_accuracy.h"
@@ -33,17 +34,7 @@ double combined_rms(const Context& ctx, const std::vector<color::Rgb>& truth, fr
   return std::sqrt(sum / static_cast<double>(n));
 }
 
-struct Gold {
-  Context ctx{[] {
-    Settings s;
-    s.paths = {FL_DEFAULT_DB, FL_MATERIALS};
-    return s;
-  }()};
-  MaterialSet set = load_materials(ctx, {"gold"}, {});
-  MaterialStudy study = study_materials(ctx, set.materials, {}).front();
-  std::vector<ShadingPoint> points = lut_accuracy_points();
-  std::vector<color::Rgb> truth = lobe_truth(ctx, set.materials.front(), points);
-};
+using Gold = test::GoldShading;
 
 // The F82 fit to the render is a minimum of what the table reports: no better than the derived and
 // curve-fitted sets it starts from, and every parameter moved by ±kStep raises the error.

@@ -225,6 +225,13 @@ fresnel::TermValues lobe_integrals(bool ibl, const ShadingPoint& p) {
   return ibl ? fresnel::dfg_term_integrals(p.dfg) : static_cast<const fresnel::TermValues&>(p.ltc);
 }
 
+// F(n·v) × the lobe's Fresnel-free integral: how an engine shades a model no table holds.
+color::Rgb shading_at_nov(Model m, const std::vector<double>& params, Lighting lighting,
+                          const ShadingPoint& p) {
+  return lobe_integrals(lighting == Lighting::Ibl, p)[fresnel::Term::One] *
+         fresnel::model_spec(m).evaluate(p.nov, params.data(), false);
+}
+
 }  // namespace
 
 color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weights,
@@ -246,8 +253,7 @@ color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting l
   const auto& spec = fresnel::model_spec(m);
   if (p.mirror) return spec.evaluate(p.nov, params.data(), false);  // no table: F(n·v)
   if (!lighting_support(m, lighting).fresnel_pre_integrated)
-    return lobe_integrals(lighting == Lighting::Ibl, p)[fresnel::Term::One] *
-           spec.evaluate(p.nov, params.data(), false);
+    return shading_at_nov(m, params, lighting, p);
   std::array<fresnel::TableTerms, 3> w;
   for (int c = 0; c < 3; ++c) w[c] = spec.table_terms(params.data(), c);
   return engine_shading_terms(w, lighting, p);
@@ -305,11 +311,8 @@ std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::R
         lighting, points);
   std::vector<double> out;
   for (size_t k = 0; k < points.size(); ++k) {
-    const auto engine =
-        way == EngineWay::AtNdotV
-            ? lobe_integrals(lighting == Lighting::Ibl, points[k])[fresnel::Term::One] *
-                  fresnel::model_spec(m).evaluate(points[k].nov, params.data(), false)
-            : engine_shading(m, params, lighting, points[k]);
+    const auto engine = way == EngineWay::AtNdotV ? shading_at_nov(m, params, lighting, points[k])
+                                                  : engine_shading(m, params, lighting, points[k]);
     out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine)));
   }
   return out;
