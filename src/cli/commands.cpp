@@ -102,7 +102,7 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
 
 // The presets of `specs` in `format` (documents/preset_formats.h).
 std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& specs,
-                             const report::PresetFormat& format, bool openpbr) {
+                             const report::PresetFormat& format, bool openpbr, int basis_terms) {
   const auto ctx = make_context(g);
   const auto ms = load_many(g, ctx, specs);
   if (format.kind != report::PresetKind::Table) {
@@ -117,8 +117,8 @@ std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& s
   }
   const auto studies = analysis::study_materials(ctx, ms, analysis::presets_study_options(openpbr),
                                                  study_progress(g, "fitting: "));
-  const auto t =
-      openpbr ? analysis::openpbr_table(ctx, studies) : analysis::presets_table(ctx, studies);
+  const auto t = openpbr ? analysis::openpbr_table(ctx, studies)
+                         : analysis::presets_table(ctx, studies, basis_terms);
   return report::preset_document(format, {ctx, studies, t});
 }
 
@@ -128,6 +128,7 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   struct Args {
     std::string format = "csv", shader, out;
     bool openpbr = false;
+    int basis = 0;  // 0: not given
     std::vector<std::string> materials, consensus;
   };
   auto a = std::make_shared<Args>();
@@ -142,6 +143,10 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "mtlx only: generalized_schlick (default), open_pbr_surface or standard_surface");
   sub->add_option("--out", a->out,
                   "write to FILE (atomically: complete or not at all) instead of standard output");
+  sub->add_option("--basis", a->basis,
+                  "csv, md, json: the coefficients of basis3, basis4 (default) or basis5 (K = 3, "
+                  "4, 5)")
+      ->check(CLI::Range(3, 5));
   sub->add_option("--consensus", a->consensus,
                   "consensus presets instead, with their uncertainty: an element ('Au', 'gold'), a "
                   "page glob, or NAME=GLOB[,GLOB...] (repeatable; docs/consensus.md)");
@@ -155,9 +160,13 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
       };
       return;
     }
+    if (a->basis != 0 && (format->kind != report::PresetKind::Table || a->openpbr))
+      throw InputError("presets: --basis applies to the csv, md and json presets only");
     if (!a->out.empty()) require_output_folder(a->out);
     selected = [&g, a, format] {
-      emit(g, a->out, preset_documents(g, a->materials, *format, a->openpbr));
+      emit(g, a->out,
+           preset_documents(g, a->materials, *format, a->openpbr,
+                            a->basis != 0 ? a->basis : analysis::kPresetBasisTerms));
       return 0;
     };
   });

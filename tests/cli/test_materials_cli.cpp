@@ -45,6 +45,35 @@ TEST(MaterialsCli, PresetsTakeDatabasePagesCatalogNamesAndFiles) {
     EXPECT_EQ(std::stod(rows[2].at(c)), 0.0) << c;
 }
 
+// `presets --basis K` carries basis K's coefficients c0..c(K−1) per channel. A
+// wavelength-independent index reflects the same at every wavelength, so its three channels'
+// coefficients are equal; the option is refused where a format has no place for it.
+TEST(MaterialsCli, PresetsCarryTheBasisModelAsked) {
+  test::TempDir tmp;
+  const auto csv = tmp.file("grey.csv", "Wavelength (nm),n\n350,1.5\n850,1.5\n");
+  for (const int k : {3, 4, 5}) {
+    const auto r = run_command(cli() + fmt::format(" -q presets --basis {} '{}'", k, csv));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto rows = csv_records(r.out);
+    ASSERT_EQ(rows.size(), 1u);
+    for (int c = 0; c < 5; ++c) {
+      const auto name = fmt::format("basis{}_c{}_", k, c);
+      if (c >= k) {
+        EXPECT_EQ(rows[0].count(name + "r"), 0u) << name;
+        continue;
+      }
+      const double red = std::stod(rows[0].at(name + "r"));
+      EXPECT_NEAR(std::stod(rows[0].at(name + "g")), red, 1e-5) << name;
+      EXPECT_NEAR(std::stod(rows[0].at(name + "b")), red, 1e-5) << name;
+    }
+  }
+  for (const char* bad : {"--basis 6", "--basis 4 --format gltf", "--basis 4 --openpbr"}) {
+    const auto r = run_command(cli() + " -q presets gold " + bad);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_EQ(lines(r.err), 1) << bad << ": " << r.err;
+  }
+}
+
 TEST(MaterialsCli, EveryModelsErrorForOneFileInOneRun) {
   test::TempDir tmp;
   const auto csv = tmp.file("metal.csv", "lambda_um,n,k\n0.35,1.2,1.9\n0.85,0.3,5.0\n");

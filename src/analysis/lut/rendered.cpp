@@ -123,6 +123,19 @@ void for_texels(const Bilinear& b, Fn fn) {
 
 }  // namespace
 
+namespace {
+
+// Linear interpolation of the tabulated truth at cos θ, as weights on its two nodes.
+void add_truth_weight(std::vector<double>& nodes, double cos_theta, double weight) {
+  const double x = std::clamp(cos_theta, 0.0, 1.0) * (kTruthCurveSize - 1);
+  const size_t k = std::min(static_cast<size_t>(x), nodes.size() - 2);
+  const double f = x - static_cast<double>(k);
+  nodes[k] += (1.0 - f) * weight;
+  nodes[k + 1] += f * weight;
+}
+
+}  // namespace
+
 std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads) {
   std::vector<ShadingPoint> points;
   for (double r : roughness)
@@ -156,13 +169,13 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       points.size(),
       [&](size_t k) {
         auto& p = points[k];
+        p.truth_weights.assign(kTruthCurveSize, 0.0);
         if (p.mirror) {
-          p.samples = {{p.nov, static_cast<double>(kLutSamples)}};
+          add_truth_weight(p.truth_weights, p.nov, 1.0);
           return;
         }
-        p.samples.reserve(kLutSamples);
         for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) {
-          if (s.weight != 0.0) p.samples.push_back({s.voh, s.weight});
+          if (s.weight != 0.0) add_truth_weight(p.truth_weights, s.voh, s.weight / kLutSamples);
         });
         for_texels(dfg_read(p), [&](int i, int j, double w) {
           const auto& c = dfg.at(i, j);
@@ -180,21 +193,20 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points) {
   const double eta_e = ctx.settings().eta_outside;
-  std::vector<color::Rgb> curve;
+  std::vector<color::Rgb> curve(kTruthCurveSize);
+  std::vector<bool> needed(kTruthCurveSize, false);
+  for (const auto& p : points)
+    for (int k = 0; k < kTruthCurveSize; ++k) needed[k] = needed[k] || p.truth_weights[k] != 0.0;
   for (int k = 0; k < kTruthCurveSize; ++k)
-    curve.push_back(
-        ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kTruthCurveSize - 1), eta_e));
-  auto at = [&](double cos_theta) {
-    const double x = std::clamp(cos_theta, 0.0, 1.0) * (kTruthCurveSize - 1);
-    const size_t k = std::min(static_cast<size_t>(x), curve.size() - 2);
-    const double f = x - static_cast<double>(k);
-    return (1.0 - f) * curve[k] + f * curve[k + 1];
-  };
+    if (needed[k])
+      curve[k] =
+          ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kTruthCurveSize - 1), eta_e);
   std::vector<color::Rgb> out;
   for (const auto& p : points) {
     color::Rgb sum{};
-    for (const auto& s : p.samples) sum = sum + s.weight * at(s.voh);
-    out.push_back((1.0 / kLutSamples) * sum);
+    for (int k = 0; k < kTruthCurveSize; ++k)
+      if (p.truth_weights[k] != 0.0) sum = sum + p.truth_weights[k] * curve[k];
+    out.push_back(sum);
   }
   return out;
 }

@@ -34,18 +34,16 @@ constexpr int kEngineLutSize = 64;
 // Ground truth RGB tabulated at cos θ = k/(K − 1) and interpolated linearly in cos θ per sample.
 constexpr int kTruthCurveSize = 513;
 
-// A lobe sample as the brute-force integral reads it.
-struct LobeTerm {
-  double voh = 0, weight = 0;
-};
 // Roughness 0 is a mirror: the lobe is the reflection direction alone (v·h = n·v), so the truth is
 // the spectral curve at n·v and every model renders as itself at n·v, with no table read.
 struct ShadingPoint {
   double roughness = 0, view_deg = 0, nov = 0, alpha = 0;
   bool mirror = false;  // roughness 0
-  // The kLutSamples visible-normal samples of the lobe at (n·v, α), less those below the horizon
-  // (weight 0, nothing to add); for a mirror one sample at v·h = n·v of weight kLutSamples.
-  std::vector<LobeTerm> samples;
+  // The lobe's weight on each node k/(kTruthCurveSize − 1) of the tabulated truth curve: the
+  // kLutSamples visible-normal samples' weights at their v·h, split between the two nearest nodes
+  // as linear interpolation splits them, over kLutSamples (a mirror: all at v·h = n·v). The truth
+  // is linear in the curve, so Σ_k w_k·curve_k is the sampled integral.
+  std::vector<double> truth_weights;
   DfgTexel dfg;    // the DFG texture read bilinearly here (a mirror: none)
   GgxMoments ltc;  // the LTC moments texture (n_D, f_D, l_D) read bilinearly here (a mirror: none)
 };

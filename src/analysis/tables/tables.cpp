@@ -369,21 +369,27 @@ void add_f_avg(std::vector<Cell>& row, const fresnel::DerivedParameters& d) {
   for (int c = 0; c < 3; ++c) row.push_back(f_avg[c]);
 }
 
-// The basis4 model's coefficients c0..c3 per channel (its derived set: the projection of the
-// ground truth on the basis), named like the model's parameters: basis4_c0_r, ...
-constexpr fresnel::Model kPresetBasis = fresnel::model_of<fresnel::models::Basis<4>>;
-void add_basis_columns(Table& t) {
-  for (const auto& name : fresnel::model_spec(kPresetBasis).param_names())
-    t.columns.push_back({fmt::format("{}_{}", fresnel::model_spec(kPresetBasis).name, name), 6});
+// A basis model's coefficients per channel (its derived set: the projection of the ground truth on
+// the basis), named like the model's parameters: basis4_c0_r, ...
+void add_basis_columns(Table& t, fresnel::Model basis) {
+  for (const auto& name : fresnel::model_spec(basis).param_names())
+    t.columns.push_back({fmt::format("{}_{}", fresnel::model_spec(basis).name, name), 6});
 }
-void add_basis(std::vector<Cell>& row, const MaterialStudy& s) {
-  for (double c : s.result(kPresetBasis).derived) row.push_back(c);
+void add_basis(std::vector<Cell>& row, const MaterialStudy& s, fresnel::Model basis) {
+  for (double c : s.result(basis).derived) row.push_back(c);
 }
-constexpr const char* kBasisNote =
-    "basis4_c*: the basis4 model's coefficients per channel on the Fresnel basis {1, (1 − μ)⁵, b2, "
-    "b3} (docs/basis.md), F = c0 + c1·(1 − μ)⁵ + c2·b2(μ) + c3·b3(μ): the least-squares "
-    "projection of the ground truth, pre-integrated through the dfg/dfg_2 and ltc_2/ltc_3 "
-    "tables.";
+std::string basis_note(int terms) {
+  std::string span = "1, (1 − μ)⁵", sum = "c0 + c1·(1 − μ)⁵";
+  for (int k = 2; k < terms; ++k) {
+    span += fmt::format(", b{}", k);
+    sum += fmt::format(" + c{}·b{}(μ)", k, k);
+  }
+  return fmt::format(
+      "basis{0}_c*: the basis{0} model's coefficients per channel on the Fresnel basis {{{1}}} "
+      "(docs/basis.md), F = {2}: the least-squares projection of the ground truth, "
+      "pre-integrated through the dfg/dfg_2 and ltc_2/ltc_3 tables.",
+      terms, span, sum);
+}
 
 }  // namespace
 
@@ -396,7 +402,9 @@ std::string page_kind_text(const spectral::Material& m) {
   return std::string(spectral::to_string(c.kind)) + (c.detail.empty() ? "" : " " + c.detail);
 }
 
-Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
+Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                    int basis_terms) {
+  const auto basis = fresnel::model_from_name(fmt::format("basis{}", basis_terms)).model;
   Table t;
   t.name = "presets";
   t.title = fmt::format("Material presets in {}", ctx.settings().space);
@@ -404,7 +412,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   for (const char* q : {"f0", "f82", "g", "eta", "kappa"})
     for (const char* c : {"r", "g", "b"}) t.columns.push_back({fmt::format("{}_{}", q, c), 6});
   add_f_avg_columns(t);
-  add_basis_columns(t);
+  add_basis_columns(t, basis);
   t.columns.push_back({"out_of_range"});
   add_coverage_columns(t);
   t.columns.insert(t.columns.end(), {{"fit_flags"}, {"page_kind"}});
@@ -422,7 +430,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c]);
     for (int c = 0; c < 3; ++c) row.push_back(ek[2 * c + 1]);
     add_f_avg(row, d);
-    add_basis(row, s);
+    add_basis(row, s, basis);
     NamedValues unit;
     add_channels(unit, "f0", d.f0);
     add_channels(unit, "f82", d.f82);
@@ -443,7 +451,7 @@ Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       "g: Gulbrandsen's edge tint from (F0, Refl. η), unclamped.",
       "eta, kappa: RGB η, κ fitted with Ceres to minimize the RMS ΔE2000 against ground truth.",
       kF82AverageNote,
-      kBasisNote,
+      basis_note(basis_terms),
       out_of_range_note(flagged),
       "fit_flags: of the eta, kappa fit (see the models table's notes).",
       "page_kind: a database page's kind from the catalog (bulk, thin film, nanostructure, model, "

@@ -37,8 +37,11 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
 std::string page_kind_text(const spectral::Material& m);
 
 // F0, F82, g, η, κ per material (values outside [0, 1] kept and flagged in out_of_range,
-// analysis/tables/shading_presets.h).
-Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
+// analysis/tables/shading_presets.h), and the coefficients of the basis model with
+// `basis_terms` terms (basis3, basis4 or basis5).
+inline constexpr int kPresetBasisTerms = 4;
+Table presets_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                    int basis_terms = kPresetBasisTerms);
 // OpenPBR Surface parameters per material (open_pbr_parameters).
 Table openpbr_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 // The studies the presets tables read: the RGB η, κ fit only (presets_table), no fit
