@@ -224,4 +224,102 @@ void SpaceLibrary::encode_srgb_display(std::vector<float>& rgb) {
   for (auto& v : rgb) v = std::clamp(v, 0.0f, 1.0f);
 }
 
+struct DisplayTransform::Impl {
+  OCIO::ConstCPUProcessorRcPtr cpu;
+};
+
+namespace {
+
+bool view_exists(const OCIO::Config& config, const std::string& display, const std::string& view) {
+  for (int i = 0; i < config.getNumViews(display.c_str()); ++i)
+    if (view == config.getView(display.c_str(), i)) return true;
+  return false;
+}
+
+// Clamps every channel to [0, 1].
+OCIO::TransformRcPtr clip_unit() {
+  auto r = OCIO::RangeTransform::Create();
+  r->setStyle(OCIO::RANGE_CLAMP);
+  r->setMinInValue(0);
+  r->setMinOutValue(0);
+  r->setMaxInValue(1);
+  r->setMaxOutValue(1);
+  return r;
+}
+
+// Working space → ACES2065-1 (a matrix through OCIO), then the built-in view and sRGB display.
+OCIO::GroupTransformRcPtr builtin_view(const SpaceLibrary& spaces, const std::string& working,
+                                       const std::string& view) {
+  auto g = OCIO::GroupTransform::Create();
+  if (view == kAcesSdrView) {
+    g->appendTransform(matrix_transform(spaces.conversion_to_builtin(working, "aces2065-1"),
+                                        OCIO::TRANSFORM_DIR_FORWARD));
+    g->appendTransform(ocio_builtin("ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - SDR-VIDEO_1.0"));
+  } else {
+    g->appendTransform(matrix_transform(spaces.conversion_to_builtin(working, "lin_rec709"),
+                                        OCIO::TRANSFORM_DIR_FORWARD));
+    g->appendTransform(clip_unit());
+    g->appendTransform(builtin_to_xyz_d65("lin_rec709", OCIO::TRANSFORM_DIR_FORWARD));
+  }
+  g->appendTransform(ocio_builtin("DISPLAY - CIE-XYZ-D65_to_sRGB"));
+  return g;
+}
+
+}  // namespace
+
+DisplayTransform::DisplayTransform(const SpaceLibrary& spaces, const std::string& working,
+                                   const ViewSettings& vs) {
+  if (!std::isfinite(vs.exposure_ev) || std::abs(vs.exposure_ev) > 32)
+    throw InputError("--exposure must be between -32 and 32 stops");
+  auto impl = std::make_shared<Impl>();
+  // Without a config, or with neither named: the built-in display and view; with a config, a
+  // missing one is the config's default display, or its default view of the display.
+  const bool builtin = spaces.is_builtin() || (vs.display.empty() && vs.view.empty());
+  const auto* config = spaces.impl_->config.get();
+  std::string display = vs.display, view = vs.view;
+  if (display.empty()) display = builtin ? kBuiltinDisplay : config->getDefaultDisplay();
+  if (view.empty()) view = builtin ? kAcesSdrView : config->getDefaultView(display.c_str());
+  auto g = OCIO::GroupTransform::Create();
+  auto exposure = OCIO::MatrixTransform::Create();
+  const double k = std::exp2(vs.exposure_ev);
+  const double m44[16] = {k, 0, 0, 0, 0, k, 0, 0, 0, 0, k, 0, 0, 0, 0, 1};
+  exposure->setMatrix(m44);
+  g->appendTransform(exposure);
+  std::string source = "OpenColorIO built-in";
+  try {
+    if (builtin) {
+      if (display != kBuiltinDisplay || (view != kAcesSdrView && view != kUntonemappedView))
+        throw InputError(fmt::format(
+            "unknown display/view '{}' / '{}': without an OCIO config the display is {} and the "
+            "view {} or {}",
+            display, view, kBuiltinDisplay, kAcesSdrView, kUntonemappedView));
+      g->appendTransform(builtin_view(spaces, working, view));
+    } else {
+      if (!view_exists(*config, display, view))
+        throw InputError(
+            spaces.config_path(), 0,
+            fmt::format("the config has no display '{}' with view '{}'", display, view));
+      auto dv = OCIO::DisplayViewTransform::Create();
+      dv->setSrc(working.c_str());
+      dv->setDisplay(display.c_str());
+      dv->setView(view.c_str());
+      g->appendTransform(dv);
+      source = "OCIO config " + spaces.config_path();
+    }
+    impl->cpu = spaces.impl_->config->getProcessor(g)->getDefaultCPUProcessor();
+  } catch (const OCIO::Exception& e) {
+    throw InputError(fmt::format("OpenColorIO cannot build display '{}', view '{}': {}", display,
+                                 view, e.what()));
+  }
+  impl_ = impl;
+  description_ = fmt::format("display {}, view {} ({}), exposure {:+g} EV", display, view, source,
+                             vs.exposure_ev);
+}
+
+void DisplayTransform::apply(std::vector<float>& rgb) const {
+  OCIO::PackedImageDesc img(rgb.data(), static_cast<long>(rgb.size() / 3), 1, 3);
+  impl_->cpu->apply(img);
+  for (auto& v : rgb) v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+}
+
 }  // namespace fl::color

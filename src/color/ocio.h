@@ -25,6 +25,8 @@ struct SpaceWhite {
 // primaries agree to about 1e-6.
 inline constexpr double kBuiltinMatchTolerance = 1e-4;
 
+class DisplayTransform;
+
 class SpaceLibrary {
  public:
   // Our five built-in spaces, defined to OCIO through its built-in transforms (ACES AP0/AP1 to
@@ -63,9 +65,44 @@ class SpaceLibrary {
   static void encode_srgb_display(std::vector<float>& rgb_linear_rec709);
 
  private:
+  friend class DisplayTransform;
   struct Impl;
   std::shared_ptr<const Impl> impl_;
   std::string config_path_;
+};
+
+// Which OpenColorIO display and view turn scene-linear renders into pictures for eyes, and an
+// exposure (stops) applied in scene-linear before the view. Empty display and view: the built-in
+// default, sRGB through the ACES 1.0 SDR video output transform.
+struct ViewSettings {
+  std::string display, view;
+  double exposure_ev = 0;
+};
+
+// The built-in displays and views (used without an OCIO config): display "sRGB"; views
+// "ACES 1.0 - SDR Video" (OCIO's built-in ACES RRT + sRGB 100-nit dim-surround ODT, the default)
+// and "Un-tone-mapped" (linear Rec.709 clipped to [0, 1] and sRGB-encoded).
+inline constexpr const char* kBuiltinDisplay = "sRGB";
+inline constexpr const char* kAcesSdrView = "ACES 1.0 - SDR Video";
+inline constexpr const char* kUntonemappedView = "Un-tone-mapped";
+
+// A display/view transform from a working space of a SpaceLibrary, built once (OCIO processor)
+// and applied to many images. With the built-in library only the built-in display and views
+// exist; with a config, a display and view it defines (OCIO DisplayViewTransform from the
+// working space), or the built-in default when neither is given. InputError for an unknown one.
+class DisplayTransform {
+ public:
+  DisplayTransform(const SpaceLibrary& spaces, const std::string& working_space,
+                   const ViewSettings& settings);
+  // Working-space RGB (3 floats per pixel) → display-encoded values in [0, 1], in place.
+  void apply(std::vector<float>& rgb) const;
+  // "display sRGB, view ACES 1.0 - SDR Video (OpenColorIO built-in), exposure +0 EV".
+  const std::string& description() const { return description_; }
+
+ private:
+  struct Impl;
+  std::shared_ptr<const Impl> impl_;
+  std::string description_;
 };
 
 }  // namespace fl::color

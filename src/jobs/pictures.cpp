@@ -102,11 +102,12 @@ Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::Lo
 
 Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
                       const RenderRequest& request, const LabelFont* font) {
+  const color::DisplayTransform view(ctx.spaces(), ctx.settings().space, request.view);
   Output all;
   for (const auto& m : ms) {
     RenderRequest r = request;
     r.out = material_output(request.out, m, ms.size());
-    auto o = render_output(ctx, m, r, font);
+    auto o = render_output(ctx, m, r, view, font);
     for (auto& f : o.files) all.files.push_back(std::move(f));
     for (auto& line : o.messages) all.messages.push_back(std::move(line));
   }
@@ -157,6 +158,7 @@ FlipFiles reproduce_flips(const analysis::Context& ctx,
   rs.roughness = kFlipRoughness;
   rs.samples = kFlipSamples;
   const analysis::SceneLight light = analysis::default_environment();
+  const color::DisplayTransform view(ctx.spaces(), ctx.settings().space, {});
   const size_t n = studies.size();
   std::vector<std::string> sprites(n);
   parallel_for(n, [&](size_t i) {
@@ -166,7 +168,7 @@ FlipFiles reproduce_flips(const analysis::Context& ctx,
         analysis::render_truth_and_models(ctx, *studies[i].material, light, models, params, rs);
     Image8 sprite(kFlipSizePx * static_cast<int>(images.size()), kFlipSizePx);
     for (size_t f = 0; f < images.size(); ++f) {
-      const Image8 frame(kFlipSizePx, kFlipSizePx, analysis::sphere_display(ctx, images[f]));
+      const Image8 frame(kFlipSizePx, kFlipSizePx, analysis::sphere_display(view, images[f]));
       for (int y = 0; y < kFlipSizePx; ++y)
         for (int x = 0; x < kFlipSizePx; ++x)
           sprite.set(static_cast<int>(f) * kFlipSizePx + x, y, frame.at(x, y));

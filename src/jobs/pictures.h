@@ -6,6 +6,7 @@
 
 #include "analysis/render/render.h"
 #include "analysis/study/study.h"
+#include "color/ocio.h"
 #include "documents/html.h"
 #include "draw/drawing.h"
 #include "io/writer.h"
@@ -37,6 +38,7 @@ struct RenderRequest {
       env_space;  // the environment's colour space (empty: its chromaticities, else lin_rec709)
   double env_rotate_deg = 0;
   double env_exposure_ev = 0;  // analysis::environment_map's exposure
+  color::ViewSettings view;    // the display and view the PNGs, flip and sheet go through
   analysis::RenderSettings settings;
 };
 // InputError for an output that is not .exr, an unknown model, model list or parameter set, or a
@@ -50,8 +52,10 @@ void check_render_request(const RenderRequest& request);
 // again) and the contact sheet FILE.sheet.png. The heat maps, flip frames and sheet are labelled in
 // `font`, which only a render that draws them needs (render_draws_labels; std::invalid_argument
 // when it is null there).
+// The pictures go through `view`; the EXR and every ΔE2000 stay scene-linear.
 Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                     const RenderRequest& request, const LabelFont* font);
+                     const RenderRequest& request, const color::DisplayTransform& view,
+                     const LabelFont* font);
 // Whether the request draws labelled pictures (a model other than the truth, or a comparison).
 bool render_draws_labels(const RenderRequest& request);
 
@@ -60,7 +64,8 @@ bool render_draws_labels(const RenderRequest& request);
 // other than letters, digits, '.', '-' and '_' turned into '_'); InputError otherwise.
 std::string material_output(const std::string& out, const analysis::LoadedMaterial& m,
                             size_t count);
-// plot_output / render_output for every material, to material_output paths.
+// plot_output / render_output for every material, to material_output paths (render_outputs builds
+// the display transform of request.view once, from the context's spaces and working space).
 Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
                     const PlotRequest& request, const LabelFont& font);
 Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,

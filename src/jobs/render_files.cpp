@@ -23,8 +23,8 @@ namespace {
 // A flip frame stays on screen this long (hundredths of a second).
 constexpr int kFlipDelayCs = 90;
 
-Image8 display_image(const analysis::Context& ctx, const analysis::SphereImage& img) {
-  return Image8(img.width, img.height, analysis::sphere_display(ctx, img));
+Image8 display_image(const color::DisplayTransform& view, const analysis::SphereImage& img) {
+  return Image8(img.width, img.height, analysis::sphere_display(view, img));
 }
 
 const fresnel::ModelSpec* render_model(const RenderRequest& r) {
@@ -122,7 +122,8 @@ std::string model_label(fresnel::Model model, const std::string& kind) {
 
 Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                    const RenderRequest& r, const Scene& scene,
-                   const analysis::MaterialRender& images, const LabelFont* font) {
+                   const analysis::MaterialRender& images, const color::DisplayTransform& view,
+                   const LabelFont* font) {
   const std::string base = r.out.substr(0, r.out.size() - 4);
   const auto& shown = images.models.empty() ? images.truth : images.models[0].image;
   ExrImage exr = exr_header(ctx, m, r, scene, shown.width);
@@ -136,9 +137,9 @@ Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial&
       model ? parameter_text(images.models[0].model, images.models[0].params) : "");
   Files files;
   files.emplace_back(r.out, encode_exr(exr));
-  files.emplace_back(base + ".png", encode_png(display_image(ctx, shown)));
+  files.emplace_back(base + ".png", encode_png(display_image(view, shown)));
   if (model) {
-    files.emplace_back(base + ".truth.png", encode_png(display_image(ctx, images.truth)));
+    files.emplace_back(base + ".truth.png", encode_png(display_image(view, images.truth)));
     const auto title = fmt::format("{}: ΔE2000, truth vs {}", m.material.name,
                                    fresnel::model_spec(images.models[0].model).name);
     files.emplace_back(
@@ -172,27 +173,31 @@ std::string compare_exr(const analysis::Context& ctx, const analysis::LoadedMate
 
 ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                            const RenderRequest& r, const Scene& scene,
-                           const analysis::MaterialRender& images) {
+                           const analysis::MaterialRender& images,
+                           const color::DisplayTransform& view) {
   ContactSheet sheet;
   sheet.title = fmt::format("{}: ground truth against each model (roughness {:g})", m.material.name,
                             r.settings.roughness);
-  sheet.notes = {scene.lighting,
-                 fmt::format("{} working space, {} illuminant; GGX specular, {} samples per "
-                             "strategy; ΔE2000 per pixel "
-                             "against the truth (CIELAB relative to Y = 1)",
-                             ctx.settings().space, ctx.settings().illuminant, r.settings.samples)};
-  sheet.truth = display_image(ctx, images.truth);
+  sheet.notes = {
+      scene.lighting,
+      fmt::format("{} working space, {} illuminant; GGX specular, {} samples per "
+                  "strategy; ΔE2000 per pixel "
+                  "against the truth (CIELAB relative to Y = 1)",
+                  ctx.settings().space, ctx.settings().illuminant, r.settings.samples),
+      "pictures through OpenColorIO " + view.description() + "; ΔE2000 on the scene-linear values"};
+  sheet.truth = display_image(view, images.truth);
   for (const auto& mr : images.models)
-    sheet.rows.push_back({model_label(mr.model, r.params), display_image(ctx, mr.image), mr.de2000,
+    sheet.rows.push_back({model_label(mr.model, r.params), display_image(view, mr.image), mr.de2000,
                           mr.stats.mean, mr.stats.max});
   return sheet;
 }
 
 Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                     const RenderRequest& r, const Scene& scene,
-                    const analysis::MaterialRender& images, const LabelFont& font) {
+                    const analysis::MaterialRender& images, const color::DisplayTransform& view,
+                    const LabelFont& font) {
   const std::string base = r.out.substr(0, r.out.size() - 4);
-  const ContactSheet sheet = contact_sheet(ctx, m, r, scene, images);
+  const ContactSheet sheet = contact_sheet(ctx, m, r, scene, images, view);
   Files files;
   files.emplace_back(r.out, compare_exr(ctx, m, r, scene, images));
   files.emplace_back(base + ".truth.png", encode_png(sheet.truth));
@@ -259,7 +264,8 @@ bool render_draws_labels(const RenderRequest& r) {
 }
 
 Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                     const RenderRequest& r, const LabelFont* font) {
+                     const RenderRequest& r, const color::DisplayTransform& view,
+                     const LabelFont* font) {
   check_render_request(r);
   if (!font && render_draws_labels(r))
     throw std::invalid_argument("render_output: heat maps need a label font");
@@ -276,8 +282,9 @@ Output render_output(const analysis::Context& ctx, const analysis::LoadedMateria
                   "pass ({:.2f} s); {}",
                   rs.size_px, rs.size_px, rs.roughness, rs.samples, 1 + images.models.size(), secs,
                   scene.lighting));
-  o.files = r.compare.empty() ? single_files(ctx, m, r, scene, images, font)
-                              : compare_files(ctx, m, r, scene, images, *font);
+  o.messages.push_back("render: pictures through OpenColorIO " + view.description());
+  o.files = r.compare.empty() ? single_files(ctx, m, r, scene, images, view, font)
+                              : compare_files(ctx, m, r, scene, images, view, *font);
   const auto& rgb =
       (images.models.empty() || !r.compare.empty() ? images.truth : images.models[0].image).rgb;
   const size_t c = static_cast<size_t>(rs.size_px / 2) * rs.size_px + rs.size_px / 2;

@@ -199,6 +199,41 @@ TEST(RenderCli, CompareUnderAnHdrEnvironment) {
   EXPECT_NE(gif.frames[0].pixels, gif.frames[1].pixels);
 }
 
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The view and exposure change the pictures only: the EXR (scene-linear, with its ΔE2000 layers)
+// is the same bytes under any view, and the stderr ΔE2000 figures are the same.
+TEST(RenderCli, ViewChangesPicturesNotTheExr) {
+  test::TempDir tmp;
+  const auto render = [&](const std::string& name, const std::string& view) {
+    const auto r = run_command(cli() + " render gold --env '" + kHdri +
+                               "/sunset.exr' --compare schlick --size 31 --samples 4 " + view +
+                               " --out '" + tmp.path() + "/" + name + ".exr'");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return r.err;
+  };
+  const auto aces = render("a", "");
+  const auto clipped = render("c", "--view Un-tone-mapped --exposure 1");
+  EXPECT_NE(aces.find("view ACES 1.0 - SDR Video (OpenColorIO built-in)"), std::string::npos);
+  EXPECT_NE(clipped.find("view Un-tone-mapped (OpenColorIO built-in), exposure +1 EV"),
+            std::string::npos);
+  EXPECT_EQ(file_bytes(tmp.path() + "/a.exr"), file_bytes(tmp.path() + "/c.exr"));
+  EXPECT_NE(file_bytes(tmp.path() + "/a.truth.png"), file_bytes(tmp.path() + "/c.truth.png"));
+  const auto de = [](const std::string& err) {
+    const auto from = err.find("ΔE2000 truth vs");
+    return err.substr(from, err.find("render: wrote") - from);
+  };
+  EXPECT_EQ(de(aces), de(clipped));
+  const auto bad = run_command(cli() +
+                               " render gold --compare schlick --size 31 --samples 4 "
+                               "--view Filmic --out '" +
+                               tmp.path() + "/b.exr'");
+  EXPECT_EQ(bad.status, 2) << bad.err;
+}
+
 // An EXR written by the tool's own encoder, for the bad-input cases.
 std::string exr_file(const test::TempDir& tmp, const std::string& name, int w, int h,
                      std::vector<std::string> channels, float value) {

@@ -122,13 +122,18 @@ MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIo
   return sw;
 }
 
-std::vector<std::uint8_t> sphere_display(const Context& ctx, const SphereImage& img) {
+std::vector<std::uint8_t> sphere_display(const color::DisplayTransform& view,
+                                         const SphereImage& img) {
   constexpr float kBackground = 0.02f;  // linear grey behind the sphere
   std::vector<float> working(img.rgb.size());
   for (size_t k = 0; k < img.alpha.size(); ++k)
     for (int c = 0; c < 3; ++c)
       working[3 * k + c] = img.rgb[3 * k + c] + (1.0f - img.alpha[k]) * kBackground;
-  return display_encode(ctx, working);
+  view.apply(working);
+  std::vector<std::uint8_t> out(working.size());
+  for (size_t i = 0; i < working.size(); ++i)
+    out[i] = static_cast<std::uint8_t>(std::lround(255.0f * working[i]));
+  return out;
 }
 
 }  // namespace fl::analysis

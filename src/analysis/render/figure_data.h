@@ -11,6 +11,7 @@
 
 #include "analysis/pipeline/context.h"
 #include "analysis/render/render.h"
+#include "color/ocio.h"
 #include "fresnel/registered_models.h"
 
 namespace fl::analysis {
@@ -84,8 +85,9 @@ struct MaterialSwatches {
 MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
                                    int samples = 19);
 
-// A render composited over a dark grey background and display-encoded (3 codes per pixel, the
-// render's layout).
-std::vector<std::uint8_t> sphere_display(const Context& ctx, const SphereImage& img);
+// A render composited over a dark grey background and passed through `view` (an OCIO display and
+// view), as 8-bit codes (3 per pixel, the render's layout).
+std::vector<std::uint8_t> sphere_display(const color::DisplayTransform& view,
+                                         const SphereImage& img);
 
 }  // namespace fl::analysis
