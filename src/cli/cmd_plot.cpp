@@ -55,13 +55,14 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected) {
 }
 
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand("render",
-                                 "a GGX sphere under an analytic sky and key light or a "
-                                 "latitude-longitude EXR environment: FILE.exr and "
-                                 "FILE.png; with a model also FILE.truth.png and the ΔE2000 heat "
-                                 "map FILE.de2000.png; with --compare the truth "
-                                 "and every model, heat maps, an animated flip (FILE.flip.gif) and "
-                                 "a contact sheet (FILE.sheet.png)");
+  auto* sub =
+      app.add_subcommand("render",
+                         "a GGX sphere under an analytic sky and key light or a "
+                         "latitude-longitude EXR environment: FILE.exr and "
+                         "FILE.png; with a model also FILE.truth.png and the ΔE2000 heat "
+                         "map FILE.de2000.png; with --compare the truth "
+                         "and every model, heat maps, an animated flip (FILE.flip.webp) and "
+                         "a contact sheet (FILE.sheet.png)");
   auto r = std::make_shared<report::RenderRequest>();
   sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
   sub->add_option("--model", r->model,
@@ -99,8 +100,12 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--roughness", r->settings.roughness,
                   "GGX perceptual roughness (0: perfect mirror)")
       ->capture_default_str();
-  sub->add_option("--size", r->settings.size_px,
-                  "image width and height in pixels (odd: a pixel at the centre)")
+  auto* size = sub->add_option("--size", r->settings.size_px,
+                               "image width and height in pixels (odd: a pixel at the centre; "
+                               "default 255, with --compare 512)");
+  sub->add_option("--flip", r->flip,
+                  "the --compare flip's format: webp (lossless, FILE.flip.webp) or gif (256 "
+                  "colours per frame, dithered, FILE.flip.gif)")
       ->capture_default_str();
   sub->add_option("--samples", r->settings.samples, "samples per strategy per shading point")
       ->capture_default_str();
@@ -111,7 +116,8 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "is replaced by each "
                   "one's name")
       ->required();
-  sub->callback([&g, &selected, r] {
+  sub->callback([&g, &selected, r, size] {
+    if (!r->compare.empty() && size->count() == 0) r->settings.size_px = report::kCompareSizePx;
     selected = [&g, r] {
       report::check_render_request(*r);
       r->settings.progress = periodic_progress(g, "render: rows ");

@@ -361,15 +361,4 @@ Drawing contact_sheet_drawing(const ContactSheet& s, const LabelFont& font) {
   return dr;
 }
 
-Image8 flip_frame(const Image8& render, const std::string& label, const LabelFont& font) {
-  constexpr int kBand = 26;
-  Drawing dr;
-  dr.width = render.width;
-  dr.height = render.height + kBand;
-  dr.background = {24, 24, 24};
-  dr.add(Picture{0, 0, render});
-  dr.add(Text{render.width / 2.0, render.height + 18.0, label, 13, {235, 235, 235}, Align::Center});
-  return rasterize(dr, font);
-}
-
 }  // namespace fl::report

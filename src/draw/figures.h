@@ -53,9 +53,6 @@ Drawing contact_sheet_drawing(const ContactSheet& sheet, const LabelFont& font);
 Point sheet_tile(const ContactSheet& sheet, size_t row, int column);
 int sheet_row_top(const ContactSheet& sheet, size_t row);
 
-// One frame of a flip animation: the render above a dark band naming what it shows (in `font`).
-Image8 flip_frame(const Image8& render, const std::string& label, const LabelFont& font);
-
 // The map's pixels are drawn unscaled with their top-left corner at (0, kHeatmapImageTop); the
 // colour bar's top pixel row shows the scale's top, its bottom row 0.
 constexpr int kHeatmapImageTop = 34;

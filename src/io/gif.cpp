@@ -3,7 +3,10 @@
 #include <gif_lib.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 
 #include "util/errors.h"
@@ -23,26 +26,107 @@ void check(int status, GifFileType* gif, const char* step) {
                            GifErrorString(gif->Error));
 }
 
-// Every frame's pixels as palette indices (frame after frame), with the shared palette.
-std::vector<GifByteType> quantize(const std::vector<Image8>& frames, ColorMapObject*& palette) {
-  const size_t per_frame = static_cast<size_t>(frames[0].width) * frames[0].height;
-  const size_t n = per_frame * frames.size();
-  std::vector<GifByteType> r(n), g(n), b(n), indices(n);
-  for (size_t f = 0; f < frames.size(); ++f)
-    for (size_t k = 0; k < per_frame; ++k) {
-      r[f * per_frame + k] = frames[f].pixels[3 * k];
-      g[f * per_frame + k] = frames[f].pixels[3 * k + 1];
-      b[f * per_frame + k] = frames[f].pixels[3 * k + 2];
+struct MapDeleter {
+  void operator()(ColorMapObject* m) const { GifFreeMapObject(m); }
+};
+using Palette = std::unique_ptr<ColorMapObject, MapDeleter>;
+
+// The nearest palette entry (squared distance of the codes, the lowest index on a tie) per 24-bit
+// colour, remembered for one palette.
+class Nearest {
+ public:
+  explicit Nearest(const ColorMapObject& palette) : palette_(palette), index_(1u << 24, -1) {}
+  int operator()(int r, int g, int b) {
+    std::int16_t& i = index_[(static_cast<size_t>(r) << 16) | (g << 8) | b];
+    if (i >= 0) return i;
+    int best = 0, best_d = 1 << 30;
+    for (int k = 0; k < palette_.ColorCount; ++k) {
+      const GifColorType& c = palette_.Colors[k];
+      const int d =
+          (c.Red - r) * (c.Red - r) + (c.Green - g) * (c.Green - g) + (c.Blue - b) * (c.Blue - b);
+      if (d < best_d) best = k, best_d = d;
     }
-  int colours = 256;
-  palette = GifMakeMapObject(256, nullptr);
+    return i = static_cast<std::int16_t>(best);
+  }
+
+ private:
+  const ColorMapObject& palette_;
+  std::vector<std::int16_t> index_;
+};
+
+// Two rounds of Lloyd's k-means on the palette: each entry becomes the mean of the pixels nearest
+// to it (an entry no pixel is nearest to stays). Moves giflib's entries, which it computes from
+// colours binned to 5 bits per channel, to the frame's own colours.
+void refine(const Image8& frame, ColorMapObject& palette) {
+  for (int round = 0; round < 2; ++round) {
+    std::vector<std::array<std::uint64_t, 4>> sum(static_cast<size_t>(palette.ColorCount));
+    Nearest nearest(palette);
+    for (size_t k = 0; 3 * k < frame.pixels.size(); ++k) {
+      const std::uint8_t* p = &frame.pixels[3 * k];
+      auto& s = sum[static_cast<size_t>(nearest(p[0], p[1], p[2]))];
+      s[0] += p[0], s[1] += p[1], s[2] += p[2], s[3] += 1;
+    }
+    for (int i = 0; i < palette.ColorCount; ++i) {
+      const auto& s = sum[static_cast<size_t>(i)];
+      if (s[3] == 0) continue;
+      const auto mean = [&](int c) {
+        return static_cast<GifByteType>((2 * s[c] + s[3]) / (2 * s[3]));
+      };
+      palette.Colors[i] = {mean(0), mean(1), mean(2)};
+    }
+  }
+}
+
+// The frame's own palette: giflib's median-cut quantizer (GifQuantizeBuffer) over its pixels,
+// refined.
+Palette frame_palette(const Image8& frame) {
+  const size_t n = static_cast<size_t>(frame.width) * frame.height;
+  std::vector<GifByteType> r(n), g(n), b(n), unused(n);
+  for (size_t k = 0; k < n; ++k)
+    r[k] = frame.pixels[3 * k], g[k] = frame.pixels[3 * k + 1], b[k] = frame.pixels[3 * k + 2];
+  Palette palette(GifMakeMapObject(256, nullptr));
   if (!palette) throw std::bad_alloc();
-  if (GifQuantizeBuffer(static_cast<unsigned>(frames[0].width),
-                        static_cast<unsigned>(per_frame / frames[0].width * frames.size()),
-                        &colours, r.data(), g.data(), b.data(), indices.data(),
-                        palette->Colors) != GIF_OK) {
-    GifFreeMapObject(palette);
+  int colours = 256;
+  if (GifQuantizeBuffer(static_cast<unsigned>(frame.width), static_cast<unsigned>(frame.height),
+                        &colours, r.data(), g.data(), b.data(), unused.data(),
+                        palette->Colors) != GIF_OK)
     throw std::runtime_error("GIF encoding failed: colour quantization");
+  // Entries giflib left unused repeat entry 0: never nearest (a tie goes to the lowest index).
+  for (int i = colours; i < palette->ColorCount; ++i) palette->Colors[i] = palette->Colors[0];
+  refine(frame, *palette);
+  return palette;
+}
+
+// The frame's pixels as indices into `palette` by Floyd–Steinberg error diffusion (Floyd &
+// Steinberg 1976: 7/16 of a pixel's error to the right, 3/16, 5/16 and 1/16 to the row below),
+// left to right on every row, in integer sixteenths of a code: deterministic on every machine.
+std::vector<GifByteType> dither(const Image8& frame, const ColorMapObject& palette) {
+  const int w = frame.width, h = frame.height;
+  std::vector<GifByteType> indices(static_cast<size_t>(w) * h);
+  std::vector<int> err(3 * static_cast<size_t>(w + 2)), below(err.size());  // x + 1
+  Nearest nearest(palette);
+  for (int y = 0; y < h; ++y) {
+    std::fill(below.begin(), below.end(), 0);
+    for (int x = 0; x < w; ++x) {
+      const size_t k = static_cast<size_t>(y) * w + x, e = 3 * static_cast<size_t>(x + 1);
+      int want[3], code[3];
+      for (int c = 0; c < 3; ++c) {
+        want[c] = std::clamp(16 * frame.pixels[3 * k + c] + err[e + c], 0, 16 * 255);
+        code[c] = (want[c] + 8) / 16;
+      }
+      const int i = nearest(code[0], code[1], code[2]);
+      indices[k] = static_cast<GifByteType>(i);
+      const GifColorType& got = palette.Colors[i];
+      const int have[3] = {got.Red, got.Green, got.Blue};
+      for (int c = 0; c < 3; ++c) {
+        const int q = want[c] - 16 * have[c];
+        err[e + 3 + c] += q * 7 / 16;
+        below[e - 3 + c] += q * 3 / 16;
+        below[e + c] += q * 5 / 16;
+        below[e + 3 + c] += q / 16;
+      }
+    }
+    std::swap(err, below);
   }
   return indices;
 }
@@ -57,8 +141,7 @@ void put_loop_forever(GifFileType* gif) {
   check(EGifPutExtensionTrailer(gif), gif, "loop extension");
 }
 
-void put_frames(GifFileType* gif, const std::vector<Image8>& frames,
-                const std::vector<GifByteType>& indices, int delay_cs) {
+void put_frames(GifFileType* gif, const std::vector<Image8>& frames, int delay_cs) {
   const int w = frames[0].width, h = frames[0].height;
   GraphicsControlBlock gcb{};
   gcb.DisposalMode = DISPOSE_DO_NOT;
@@ -66,15 +149,14 @@ void put_frames(GifFileType* gif, const std::vector<Image8>& frames,
   gcb.TransparentColor = NO_TRANSPARENT_COLOR;
   GifByteType ext[4];
   const size_t ext_len = EGifGCBToExtension(&gcb, ext);
-  std::vector<GifByteType> row(static_cast<size_t>(w));
-  for (size_t f = 0; f < frames.size(); ++f) {
+  for (const auto& frame : frames) {
+    const Palette palette = frame_palette(frame);
+    auto indices = dither(frame, *palette);
     check(EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, static_cast<int>(ext_len), ext), gif,
           "frame delay");
-    check(EGifPutImageDesc(gif, 0, 0, w, h, false, nullptr), gif, "frame");
-    for (int y = 0; y < h; ++y) {
-      std::memcpy(row.data(), &indices[(f * h + y) * w], row.size());
-      check(EGifPutLine(gif, row.data(), w), gif, "frame pixels");
-    }
+    check(EGifPutImageDesc(gif, 0, 0, w, h, false, palette.get()), gif, "frame");
+    for (int y = 0; y < h; ++y)
+      check(EGifPutLine(gif, &indices[static_cast<size_t>(y) * w], w), gif, "frame pixels");
   }
 }
 
@@ -85,26 +167,20 @@ std::string encode_gif(const std::vector<Image8>& frames, int delay_cs) {
   for (const auto& f : frames)
     if (f.width != frames[0].width || f.height != frames[0].height || f.width <= 0 || f.height <= 0)
       throw std::invalid_argument("encode_gif: frames differ in size");
-  ColorMapObject* palette = nullptr;
-  const auto indices = quantize(frames, palette);
   std::string out;
   int error = 0;
   GifFileType* gif = EGifOpen(&out, append_bytes, &error);
-  if (!gif) {
-    GifFreeMapObject(palette);
-    throw std::runtime_error(std::string("GIF encoding failed: ") + GifErrorString(error));
-  }
+  if (!gif) throw std::runtime_error(std::string("GIF encoding failed: ") + GifErrorString(error));
   try {
     EGifSetGifVersion(gif, true);
-    check(EGifPutScreenDesc(gif, frames[0].width, frames[0].height, 8, 0, palette), gif, "screen");
+    // No global colour map: every frame carries its own.
+    check(EGifPutScreenDesc(gif, frames[0].width, frames[0].height, 8, 0, nullptr), gif, "screen");
     put_loop_forever(gif);
-    put_frames(gif, frames, indices, delay_cs);
+    put_frames(gif, frames, delay_cs);
   } catch (...) {
-    GifFreeMapObject(palette);
     EGifCloseFile(gif, &error);
     throw;
   }
-  GifFreeMapObject(palette);
   if (EGifCloseFile(gif, &error) != GIF_OK)
     throw std::runtime_error(std::string("GIF encoding failed: ") + GifErrorString(error));
   return out;
@@ -146,9 +222,12 @@ GifAnimation decode_gif(const std::string& bytes, const std::string& what) {
   GifFileType* gif = DGifOpen(&state, read_bytes, &error);
   if (!gif) throw InputError(what, 0, std::string("not a GIF: ") + GifErrorString(error));
   GifAnimation a;
-  const bool ok = DGifSlurp(gif) == GIF_OK && gif->SColorMap;
+  bool ok = DGifSlurp(gif) == GIF_OK;
   for (int i = 0; ok && i < gif->ImageCount; ++i) {
     const SavedImage& img = gif->SavedImages[i];
+    if (!(ok = img.ImageDesc.ColorMap || gif->SColorMap)) break;  // a frame without colours
+    a.local_palette_sizes.push_back(img.ImageDesc.ColorMap ? img.ImageDesc.ColorMap->ColorCount
+                                                           : 0);
     a.frames.push_back(frame_colours(gif, img));
     GraphicsControlBlock gcb{};
     a.delays_cs.push_back(DGifSavedExtensionToGCB(gif, i, &gcb) == GIF_OK ? gcb.DelayTime : 0);
@@ -160,8 +239,9 @@ GifAnimation decode_gif(const std::string& bytes, const std::string& what) {
         a.loop_count =
             img.ExtensionBlocks[e + 1].Bytes[1] | (img.ExtensionBlocks[e + 1].Bytes[2] << 8);
   }
-  if (ok) a.palette_size = gif->SColorMap->ColorCount;
-  const std::string message = ok ? "" : GifErrorString(gif->Error);
+  if (ok && gif->SColorMap) a.global_palette_size = gif->SColorMap->ColorCount;
+  const std::string message =
+      ok ? "" : (gif->Error ? GifErrorString(gif->Error) : "a frame has no colour map");
   DGifCloseFile(gif, &error);
   if (!ok) throw InputError(what, 0, "not a readable GIF: " + message);
   return a;

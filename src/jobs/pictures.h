@@ -39,17 +39,21 @@ struct RenderRequest {
   double env_rotate_deg = 0;
   double env_exposure_ev = 0;  // analysis::environment_map's exposure
   color::ViewSettings view;    // the display and view the PNGs, flip and sheet go through
+  std::string flip = "webp";   // the flip's format with `compare`: webp or gif
   analysis::RenderSettings settings;
 };
-// InputError for an output that is not .exr, an unknown model, model list or parameter set, or a
-// roughness, size, sample or thread count out of range, checked before any work.
+// `render --compare` renders at this size when --size is not given: flip frames 512 px wide.
+constexpr int kCompareSizePx = 512;
+// InputError for an output that is not .exr, an unknown model, model list, parameter set or flip
+// format, or a roughness, size, sample or thread count out of range, checked before any work.
 void check_render_request(const RenderRequest& request);
 // FILE.exr (linear, premultiplied RGBA, the scene in its attributes) and FILE.png; with a model
 // also FILE.truth.png and the ΔE2000 heat map FILE.de2000.png. With `compare`: FILE.exr holds
 // the truth as R, G, B, A and each model as the layer MODEL.R, MODEL.G, MODEL.B with its heat map
 // MODEL.de2000; FILE.truth.png, FILE.MODEL.png and FILE.MODEL.de2000.png per model (heat maps on
-// one scale), the animated flip FILE.flip.gif (truth, then each model, each after the truth
-// again) and the contact sheet FILE.sheet.png. The heat maps, flip frames and sheet are labelled in
+// one scale), the animated flip FILE.flip.webp (lossless; FILE.flip.gif with flip "gif": per
+// model the truth, the model and its difference frame, draw/flip.h) and the contact sheet
+// FILE.sheet.png. The heat maps, flip frames and sheet are labelled in
 // `font`, which only a render that draws them needs (render_draws_labels; std::invalid_argument
 // when it is null there).
 // The pictures go through `view`; the EXR and every ΔE2000 stay scene-linear.

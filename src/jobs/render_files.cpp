@@ -10,18 +10,20 @@
 #include "analysis/tables/tables.h"
 #include "draw/drawing.h"
 #include "draw/figures.h"
+#include "draw/flip.h"
 #include "draw/png.h"
 #include "io/environment.h"
 #include "io/exr.h"
 #include "io/gif.h"
+#include "io/webp.h"
 #include "jobs/pictures.h"
 #include "util/errors.h"
 
 namespace fl::report {
 namespace {
 
-// A flip frame stays on screen this long (hundredths of a second).
-constexpr int kFlipDelayCs = 90;
+// A flip frame stays on screen this long (milliseconds; the GIF counts hundredths of a second).
+constexpr int kFlipDelayMs = 900;
 
 Image8 display_image(const color::DisplayTransform& view, const analysis::SphereImage& img) {
   return Image8(img.width, img.height, analysis::sphere_display(view, img));
@@ -192,6 +194,25 @@ ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedM
   return sheet;
 }
 
+// The flip's frames: per model the truth, the model and its difference frame.
+std::vector<Image8> flip_frames(const ContactSheet& sheet, const analysis::MaterialRender& images,
+                                double scale, const color::DisplayTransform& view,
+                                const LabelFont& font) {
+  std::vector<Image8> frames;
+  const Image8 truth = flip_frame(sheet.truth, "ground truth (spectral)", view.description(), font);
+  for (size_t i = 0; i < images.models.size(); ++i) {
+    const auto& row = sheet.rows[i];
+    const std::string name = fresnel::model_spec(images.models[i].model).name;
+    frames.push_back(truth);
+    frames.push_back(flip_frame(
+        row.render, row.label,
+        fmt::format("ΔE2000 mean {:.2f}, max {:.2f}", row.mean_de2000, row.max_de2000), font));
+    frames.push_back(flip_difference_frame(sheet.truth, row.render, row.de2000, scale, name,
+                                           row.label + ": difference", font));
+  }
+  return frames;
+}
+
 Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                     const RenderRequest& r, const Scene& scene,
                     const analysis::MaterialRender& images, const color::DisplayTransform& view,
@@ -202,7 +223,6 @@ Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial
   files.emplace_back(r.out, compare_exr(ctx, m, r, scene, images));
   files.emplace_back(base + ".truth.png", encode_png(sheet.truth));
   const double scale = contact_sheet_scale(sheet);
-  std::vector<Image8> frames;
   for (size_t i = 0; i < images.models.size(); ++i) {
     const auto& mr = images.models[i];
     const std::string name = fresnel::model_spec(mr.model).name;
@@ -212,10 +232,12 @@ Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial
         base + "." + name + ".de2000.png",
         encode(heatmap_drawing(mr.de2000, mr.image.width, mr.image.height, title, font, scale),
                FileType::Png, font));
-    frames.push_back(flip_frame(sheet.truth, "ground truth (spectral)", font));
-    frames.push_back(flip_frame(sheet.rows[i].render, sheet.rows[i].label, font));
   }
-  files.emplace_back(base + ".flip.gif", encode_gif(frames, kFlipDelayCs));
+  const auto frames = flip_frames(sheet, images, scale, view, font);
+  if (r.flip == "gif")
+    files.emplace_back(base + ".flip.gif", encode_gif(frames, kFlipDelayMs / 10));
+  else
+    files.emplace_back(base + ".flip.webp", encode_webp(frames, kFlipDelayMs));
   files.emplace_back(base + ".sheet.png",
                      encode(contact_sheet_drawing(sheet, font), FileType::Png, font));
   return files;
@@ -257,6 +279,8 @@ void check_render_request(const RenderRequest& r) {
     throw InputError("--env-exposure must be between -32 and 32 stops");
   render_model(r);
   if (!r.compare.empty()) parse_models(r.compare);
+  if (r.flip != "webp" && r.flip != "gif")
+    throw InputError(fmt::format("--flip {} unknown (webp or gif)", r.flip));
 }
 
 bool render_draws_labels(const RenderRequest& r) {

@@ -1,6 +1,6 @@
-// Look-dev outputs: the animated flip (decoded by giflib's reader), the contact sheet's layout, the
-// HTML serializer (escaping, sortable values, a page libxml2 parses cleanly), and `render --env`
-// and `render --compare` through the CLI, bad environments included.
+// Look-dev outputs: the animated flip (decoded by libwebp's and giflib's readers), the contact
+// sheet's layout, the HTML serializer (escaping, sortable values, a page libxml2 parses cleanly),
+// and `render --env` and `render --compare` through the CLI, bad environments included.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +15,7 @@
 #include "draw/png.h"
 #include "io/exr.h"
 #include "io/gif.h"
+#include "io/webp.h"
 #include "test_util.h"
 #include "util/errors.h"
 
@@ -26,39 +27,8 @@ using report::Rgb8;
 using test::cli;
 using test::run_command;
 
-// giflib's quantizer bins colours to 5 bits per channel before its median cut: a flat colour comes
-// back within one 5-bit step (8 codes).
-constexpr int kQuantizeCodes = 8;
-
 Image8 flat(int w, int h, Rgb8 c) {
   return Image8(w, h, c);
-}
-
-TEST(Gif, FramesDelaysLoopAndOnePalette) {
-  Image8 a = flat(40, 30, {200, 40, 30}), b = flat(40, 30, {200, 40, 30});
-  for (int x = 0; x < 40; ++x)
-    for (int y = 0; y < 10; ++y)
-      b.set(x, y, {20, 90, 220});  // frame b differs only in its top third
-  const auto bytes = report::encode_gif({a, b, a}, 90);
-  EXPECT_EQ(bytes.substr(0, 6), "GIF89a");
-  const auto gif = report::decode_gif(bytes, "flip.gif");
-  ASSERT_EQ(gif.frames.size(), 3u);
-  EXPECT_EQ(gif.delays_cs, (std::vector<int>{90, 90, 90}));
-  EXPECT_EQ(gif.loop_count, 0);  // forever
-  EXPECT_LE(gif.palette_size, 256);
-  for (const auto& [x, y, c] :
-       {std::tuple{5, 5, Rgb8{20, 90, 220}}, std::tuple{5, 25, Rgb8{200, 40, 30}}}) {
-    const Rgb8 got = gif.frames[1].at(x, y);
-    EXPECT_NEAR(got.r, c.r, kQuantizeCodes);
-    EXPECT_NEAR(got.g, c.g, kQuantizeCodes);
-    EXPECT_NEAR(got.b, c.b, kQuantizeCodes);
-  }
-  // One palette: what is the same in two frames decodes the same.
-  EXPECT_EQ(gif.frames[0].at(5, 25), gif.frames[1].at(5, 25));
-  EXPECT_EQ(gif.frames[0].pixels, gif.frames[2].pixels);
-  EXPECT_EQ(report::encode_gif({a, b, a}, 90), bytes);  // deterministic
-  EXPECT_THROW(report::encode_gif({a, flat(10, 10, {})}, 90), std::invalid_argument);
-  EXPECT_THROW(report::decode_gif("not a gif", "x.gif"), InputError);
 }
 
 TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
@@ -183,7 +153,7 @@ TEST(RenderCli, CompareUnderAnHdrEnvironment) {
   EXPECT_NE(r.err.find("lin_rec709 (OpenEXR's default"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("ΔE2000 truth vs f82"), std::string::npos);
   for (const char* f : {"g.truth.png", "g.schlick.png", "g.schlick.de2000.png", "g.f82.png",
-                        "g.f82.de2000.png", "g.flip.gif", "g.sheet.png"})
+                        "g.f82.de2000.png", "g.flip.webp", "g.sheet.png"})
     EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/" + f)) << f;
   const auto exr = report::read_exr(out);
   for (const char* ch :
@@ -191,12 +161,50 @@ TEST(RenderCli, CompareUnderAnHdrEnvironment) {
     EXPECT_NE(std::find(exr.channels.begin(), exr.channels.end(), ch), exr.channels.end()) << ch;
   ASSERT_TRUE(exr.chromaticities.has_value());
   EXPECT_NEAR((*exr.chromaticities)[0], 0.713, 1e-4);  // ACEScg's red primary
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/g.flip.gif"));
+  // Per model the truth, the model and its difference frame; the truth frame's render is the truth
+  // PNG's codes exactly (lossless), above the label band.
+  std::ifstream in(tmp.path() + "/g.flip.webp", std::ios::binary);
+  const auto flip =
+      report::decode_webp(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.webp");
+  ASSERT_EQ(flip.frames.size(), 6u);
+  EXPECT_EQ(flip.delays_ms, std::vector<int>(6, 900));
+  EXPECT_EQ(flip.loop_count, 0);
+  const Image8 truth = report::read_png(tmp.path() + "/g.truth.png"),
+               schlick = report::read_png(tmp.path() + "/g.schlick.png");
+  const auto top = [](const Image8& frame, int size) {
+    return Image8(
+        size, size,
+        std::vector<std::uint8_t>(frame.pixels.begin(), frame.pixels.begin() + 3 * size * size));
+  };
+  EXPECT_EQ(flip.frames[0].width, 41);
+  EXPECT_GT(flip.frames[0].height, 41);
+  EXPECT_EQ(top(flip.frames[0], 41).pixels, truth.pixels);
+  EXPECT_EQ(top(flip.frames[1], 41).pixels, schlick.pixels);
+  EXPECT_EQ(flip.frames[3].pixels, flip.frames[0].pixels);
+  EXPECT_NE(flip.frames[2].pixels, flip.frames[0].pixels);
+  EXPECT_NE(flip.frames[5].pixels, flip.frames[2].pixels);  // f82's difference, not schlick's
+}
+
+// --flip gif writes the dithered GIF instead (same frames); another format is exit 2 with one line.
+TEST(RenderCli, FlipFormats) {
+  test::TempDir tmp;
+  const auto run = [&](const std::string& flip) {
+    return run_command(cli() + " render gold --compare schlick --size 21 --samples 2 --flip " +
+                       flip + " --out '" + tmp.path() + "/g.exr'");
+  };
+  const auto gif = run("gif");
+  ASSERT_EQ(gif.status, 0) << gif.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/g.flip.webp"));
   std::ifstream in(tmp.path() + "/g.flip.gif", std::ios::binary);
-  const auto gif =
+  const auto decoded =
       report::decode_gif(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.gif");
-  EXPECT_EQ(gif.frames.size(), 4u);  // truth, schlick, truth, f82
-  EXPECT_EQ(gif.frames[0].pixels, gif.frames[2].pixels);
-  EXPECT_NE(gif.frames[0].pixels, gif.frames[1].pixels);
+  EXPECT_EQ(decoded.frames.size(), 3u);
+  EXPECT_EQ(decoded.delays_cs, std::vector<int>(3, 90));
+  const auto bad = run("png");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, "fresnel-lab: error: --flip png unknown (webp or gif)\n");
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/g.flip.png"));
 }
 
 std::string file_bytes(const std::string& path) {

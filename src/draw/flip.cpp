@@ -1,0 +1,134 @@
+#include "draw/flip.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "draw/figures.h"
+
+namespace fl::report {
+namespace {
+
+const Rgb8 kBackground{24, 24, 24}, kLabel{235, 235, 235}, kDetail{175, 175, 175};
+
+// Text size and band height grow with the frame: 11 px up to 374 px wide, 15 px from 510.
+double text_size(int width) {
+  return std::clamp(width / 34.0, 11.0, 15.0);
+}
+int band_height(int width) {
+  return static_cast<int>(std::ceil(3.4 * text_size(width)));
+}
+
+Drawing frame_drawing(const Image8& render) {
+  Drawing dr;
+  dr.width = render.width;
+  dr.height = render.height + band_height(render.width);
+  dr.background = kBackground;
+  return dr;
+}
+
+void add_band(Drawing& dr, int top, const std::string& label, const std::string& detail) {
+  const double fs = text_size(dr.width), x = dr.width / 2.0;
+  dr.add(Text{x, top + 1.4 * fs, label, fs, kLabel, Align::Center});
+  dr.add(Text{x, top + 2.8 * fs, detail, fs * 0.9, kDetail, Align::Center});
+}
+
+// A horizontal ramp `width` × `height`: colour(t) for t from 0 at the left to 1 at the right.
+template <class Colour>
+Image8 ramp(int width, int height, Colour colour) {
+  Image8 bar(width, height);
+  for (int x = 0; x < width; ++x)
+    for (int y = 0; y < height; ++y) bar.set(x, y, colour(width > 1 ? x / (width - 1.0) : 0.0));
+  return bar;
+}
+
+Rgb8 difference_code(double t) {
+  const double d = kFlipDifferenceRange * (2 * t - 1);
+  const auto c =
+      static_cast<std::uint8_t>(std::clamp(std::lround(128 + kFlipDifferenceGain * d), 0L, 255L));
+  return {c, c, c};
+}
+
+// A panel at (x, y) with its caption above and its ramp, labelled at both ends and the middle,
+// below.
+struct Panel {
+  Image8 image, bar;
+  std::string caption, low, middle, high;
+};
+void add_panel(Drawing& dr, const Panel& p, int x, int y) {
+  const double fs = text_size(dr.width), w = p.image.width;
+  dr.add(Text{x + w / 2, y - 0.6 * fs, p.caption, fs, kLabel, Align::Center});
+  dr.add(Picture{x, y, p.image});
+  const int bar_y = y + p.image.height + static_cast<int>(0.6 * fs);
+  dr.add(Picture{x, bar_y, p.bar});
+  const double text_y = bar_y + p.bar.height + 1.2 * fs;
+  dr.add(Text{double(x), text_y, p.low, fs * 0.9, kDetail, Align::Left});
+  dr.add(Text{x + w / 2, text_y, p.middle, fs * 0.9, kDetail, Align::Center});
+  dr.add(Text{x + w, text_y, p.high, fs * 0.9, kDetail, Align::Right});
+}
+
+}  // namespace
+
+Image8 flip_frame(const Image8& render, const std::string& label, const std::string& detail,
+                  const LabelFont& font) {
+  Drawing dr = frame_drawing(render);
+  dr.add(Picture{0, 0, render});
+  add_band(dr, render.height, label, detail);
+  return rasterize(dr, font);
+}
+
+Image8 signed_difference(const Image8& truth, const Image8& model) {
+  if (truth.width != model.width || truth.height != model.height)
+    throw std::invalid_argument("signed_difference: images differ in size");
+  Image8 d(truth.width, truth.height);
+  for (size_t k = 0; k < d.pixels.size(); ++k)
+    d.pixels[k] = static_cast<std::uint8_t>(std::clamp(
+        128 + kFlipDifferenceGain * (int(model.pixels[k]) - int(truth.pixels[k])), 0, 255));
+  return d;
+}
+
+Image8 half_size(const Image8& image) {
+  Image8 h(image.width / 2, image.height / 2);
+  const auto code = [&](int x, int y, int c) {
+    return int(image.pixels[3 * (static_cast<size_t>(y) * image.width + x) + c]);
+  };
+  for (int y = 0; y < h.height; ++y)
+    for (int x = 0; x < h.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        h.pixels[3 * (static_cast<size_t>(y) * h.width + x) + c] = static_cast<std::uint8_t>(
+            (code(2 * x, 2 * y, c) + code(2 * x + 1, 2 * y, c) + code(2 * x, 2 * y + 1, c) +
+             code(2 * x + 1, 2 * y + 1, c) + 2) /
+            4);
+  return h;
+}
+
+Image8 flip_difference_frame(const Image8& truth, const Image8& model,
+                             const std::vector<double>& de2000, double scale,
+                             const std::string& name, const std::string& label,
+                             const LabelFont& font) {
+  Drawing dr = frame_drawing(truth);
+  const int panel = truth.width / 2, top = (truth.height - panel) / 2;
+  const int bar_h = std::max(4, static_cast<int>(0.6 * text_size(truth.width)));
+  const Panel heat{half_size(heatmap_image(de2000, truth.width, truth.height, scale)),
+                   ramp(panel, bar_h, [](double t) { return inferno(t); }),
+                   "ΔE2000 of " + name,
+                   "0",
+                   "ΔE2000",
+                   fmt::format("{:g}", scale)};
+  const Panel diff{half_size(signed_difference(truth, model)),
+                   ramp(panel, bar_h, difference_code),
+                   fmt::format("{} − truth, ×{}", name, kFlipDifferenceGain),
+                   fmt::format("−{}", kFlipDifferenceRange),
+                   "equal",
+                   fmt::format("+{} codes", kFlipDifferenceRange)};
+  add_panel(dr, heat, 0, top);
+  add_panel(dr, diff, truth.width - panel, top);
+  add_band(dr, truth.height, label,
+           fmt::format("ΔE2000 on the sheet's scale 0–{:g}; grey + {} × (model − truth) codes",
+                       scale, kFlipDifferenceGain));
+  return rasterize(dr, font);
+}
+
+}  // namespace fl::report

@@ -1,0 +1,182 @@
+// The flip files of `render --compare`: animated WebP (lossless, checked against the RIFF chunks
+// the WebP container specification defines), the dithered GIF with a palette per frame (against
+// giflib's own undithered quantization), and the difference frame's arithmetic.
+#include <gif_lib.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "draw/flip.h"
+#include "io/gif.h"
+#include "io/webp.h"
+#include "util/errors.h"
+
+namespace fl {
+namespace {
+
+using report::Image8;
+using report::Rgb8;
+
+// A frame of w × h pixels that every channel varies over (a fixed linear congruential sequence
+// mixed with gradients), so that a lossy or palette encoding would change codes.
+Image8 busy_frame(int w, int h, std::uint32_t seed) {
+  Image8 f(w, h);
+  std::uint32_t s = seed;
+  for (auto& c : f.pixels) {
+    s = s * 1664525u + 1013904223u;
+    c = static_cast<std::uint8_t>(s >> 24);
+  }
+  return f;
+}
+
+std::uint32_t le(const std::string& b, size_t at, int bytes) {
+  std::uint32_t v = 0;
+  for (int i = 0; i < bytes; ++i) v |= std::uint32_t(std::uint8_t(b[at + i])) << (8 * i);
+  return v;
+}
+
+// The payload offsets of every chunk `id` at the top level of the RIFF container (WebP container
+// specification: "RIFF" size "WEBP", then chunks of a FourCC, a 32-bit little-endian size and the
+// payload padded to an even length).
+std::vector<size_t> chunks(const std::string& b, const std::string& id) {
+  std::vector<size_t> at;
+  for (size_t p = 12; p + 8 <= b.size(); p += 8 + ((le(b, p + 4, 4) + 1) & ~1u))
+    if (b.compare(p, 4, id) == 0) at.push_back(p + 8);
+  return at;
+}
+
+TEST(Webp, LosslessFramesLoopForeverDelaysAndSameBytes) {
+  const Image8 a = busy_frame(37, 23, 1), b = busy_frame(37, 23, 2);
+  Image8 c = a;
+  c.set(5, 7, {1, 2, 3});  // differs from a in one pixel
+  const std::vector<Image8> frames{a, b, c, a};
+  const auto bytes = report::encode_webp(frames, 900);
+  ASSERT_GT(bytes.size(), 12u);
+  EXPECT_EQ(bytes.substr(0, 4), "RIFF");
+  EXPECT_EQ(bytes.substr(8, 4), "WEBP");
+  EXPECT_EQ(le(bytes, 4, 4) + 8, bytes.size());
+  const auto anim = chunks(bytes, "ANIM"), anmf = chunks(bytes, "ANMF");
+  ASSERT_EQ(anim.size(), 1u);
+  EXPECT_EQ(le(bytes, anim[0] + 4, 2), 0u);  // loop count 0: forever
+  ASSERT_EQ(anmf.size(), 4u);
+  for (size_t f : anmf) {
+    EXPECT_EQ(le(bytes, f + 12, 3), 900u);           // frame duration, ms
+    EXPECT_EQ(bytes.compare(f + 16, 4, "VP8L"), 0);  // lossless bitstream
+  }
+  const auto decoded = report::decode_webp(bytes, "flip.webp");
+  ASSERT_EQ(decoded.frames.size(), frames.size());
+  for (size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_EQ(decoded.frames[i].width, 37);
+    EXPECT_EQ(decoded.frames[i].pixels, frames[i].pixels) << "frame " << i;
+  }
+  EXPECT_EQ(decoded.delays_ms, (std::vector<int>{900, 900, 900, 900}));
+  EXPECT_EQ(decoded.loop_count, 0);
+  EXPECT_EQ(report::encode_webp(frames, 900), bytes);  // deterministic
+  EXPECT_THROW(report::encode_webp({a, Image8(10, 10)}, 900), std::invalid_argument);
+  EXPECT_THROW(report::encode_webp({}, 900), std::invalid_argument);
+  EXPECT_THROW(report::decode_webp("RIFF0000WEBPjunk", "x.webp"), InputError);
+}
+
+// The difference frame's arithmetic: 128 + 8 × (model − truth) per channel, clamped; the panels'
+// 2 × 2 means rounded half up.
+TEST(FlipFrames, SignedDifferenceAndHalfSize) {
+  Image8 truth(2, 2, Rgb8{100, 100, 100}), model(2, 2, Rgb8{103, 100, 90});
+  model.set(1, 1, {255, 0, 116});
+  const Image8 d = report::signed_difference(truth, model);
+  EXPECT_EQ(d.at(0, 0), (Rgb8{152, 128, 48}));  // +3 → 152, 0 → 128, −10 → 48
+  EXPECT_EQ(d.at(1, 1), (Rgb8{255, 0, 255}));   // +155, −100 and +16 clip
+  const Image8 h = report::half_size(d);
+  ASSERT_EQ(h.width, 1);
+  EXPECT_EQ(h.at(0, 0),
+            (Rgb8{(3 * 152 + 255 + 2) / 4, (3 * 128 + 0 + 2) / 4, (3 * 48 + 255 + 2) / 4}));
+  EXPECT_THROW(report::signed_difference(truth, Image8(3, 2)), std::invalid_argument);
+}
+
+// A sky: a smooth two-dimensional gradient from warm grey at the bottom to blue at the top, with
+// thousands of colours (more than a palette holds), codes rounded from exact linear ramps.
+Image8 sky(int w, int h) {
+  Image8 f(w, h);
+  const auto code = [](double v) { return static_cast<std::uint8_t>(std::lround(v)); };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double u = x / (w - 1.0), v = y / (h - 1.0);
+      f.set(x, y, {code(90 + 110 * v + 20 * u), code(120 + 90 * v), code(240 - 60 * v + 10 * u)});
+    }
+  return f;
+}
+
+// The largest error of an n × n block's mean colour (any channel, codes) of `got` against `want`.
+double block_mean_error(const Image8& got, const Image8& want, int n) {
+  double worst = 0;
+  for (int y = 0; y + n <= want.height; y += n)
+    for (int x = 0; x + n <= want.width; x += n)
+      for (int c = 0; c < 3; ++c) {
+        double sum = 0;
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i) {
+            const size_t k = 3 * (static_cast<size_t>(y + j) * want.width + x + i) + c;
+            sum += double(got.pixels[k]) - double(want.pixels[k]);
+          }
+        worst = std::max(worst, std::abs(sum) / (n * n));
+      }
+  return worst;
+}
+
+// The frames stacked top to bottom, as one image.
+Image8 stacked(const Image8& a, const Image8& b) {
+  std::vector<std::uint8_t> codes(a.pixels);
+  codes.insert(codes.end(), b.pixels.begin(), b.pixels.end());
+  return Image8(a.width, a.height + b.height, std::move(codes));
+}
+
+// giflib's quantizer without dithering: every pixel its median-cut box's colour.
+Image8 undithered(const Image8& f) {
+  const size_t n = static_cast<size_t>(f.width) * f.height;
+  std::vector<GifByteType> r(n), g(n), b(n), idx(n);
+  for (size_t k = 0; k < n; ++k)
+    r[k] = f.pixels[3 * k], g[k] = f.pixels[3 * k + 1], b[k] = f.pixels[3 * k + 2];
+  std::vector<GifColorType> map(256);
+  int colours = 256;
+  EXPECT_EQ(GifQuantizeBuffer(f.width, f.height, &colours, r.data(), g.data(), b.data(), idx.data(),
+                              map.data()),
+            GIF_OK);
+  Image8 out(f.width, f.height);
+  for (size_t k = 0; k < n; ++k)
+    out.pixels[3 * k] = map[idx[k]].Red, out.pixels[3 * k + 1] = map[idx[k]].Green,
+                   out.pixels[3 * k + 2] = map[idx[k]].Blue;
+  return out;
+}
+
+// A 256-colour palette over a sky of thousands of colours is a few codes apart per channel:
+// dithered, an 8 × 8 block's mean stays within 4 codes (under one ΔE2000 at sky tones); a band is a
+// step of more than 16 codes, which a shared palette leaves over a smooth frame.
+constexpr double kDitheredBlockCodes = 4.0, kBandedBlockCodes = 16.0;
+
+TEST(Gif, PalettePerFrameDitheredKeepsLocalMeans) {
+  const Image8 smooth = sky(256, 256), busy = busy_frame(256, 256, 3);
+  const auto bytes = report::encode_gif({smooth, busy}, 90);
+  const auto gif = report::decode_gif(bytes, "flip.gif");
+  ASSERT_EQ(gif.frames.size(), 2u);
+  EXPECT_EQ(gif.delays_cs, (std::vector<int>{90, 90}));
+  EXPECT_EQ(gif.loop_count, 0);
+  EXPECT_EQ(gif.global_palette_size, 0);
+  ASSERT_EQ(gif.local_palette_sizes.size(), 2u);
+  for (int size : gif.local_palette_sizes) EXPECT_EQ(size, 256);
+  const double dithered = block_mean_error(gif.frames[0], smooth, 8);
+  const double own = block_mean_error(undithered(smooth), smooth, 8);
+  Image8 shared = undithered(stacked(smooth, busy));
+  shared.height = smooth.height, shared.pixels.resize(smooth.pixels.size());
+  const double global = block_mean_error(shared, smooth, 8);
+  // Floyd–Steinberg keeps every 8 × 8 block's mean within kDitheredBlockCodes of the sky's; the
+  // same palette without dithering misses by more, and one palette shared with a busy frame (the
+  // quantization of both frames together) bands by more than kBandedBlockCodes.
+  EXPECT_LT(dithered, kDitheredBlockCodes);
+  EXPECT_GT(own, dithered);
+  EXPECT_GT(global, kBandedBlockCodes);
+  EXPECT_EQ(report::encode_gif({smooth, busy}, 90), bytes);  // deterministic
+  EXPECT_THROW(report::decode_gif("not a gif", "x.gif"), InputError);
+}
+
+}  // namespace
+}  // namespace fl
