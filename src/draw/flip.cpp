@@ -51,6 +51,14 @@ Rgb8 difference_code(double t) {
   return {c, c, c};
 }
 
+// The image without `margin` pixels on every side.
+Image8 cropped(const Image8& image, int margin) {
+  Image8 c(image.width - 2 * margin, image.height - 2 * margin);
+  for (int y = 0; y < c.height; ++y)
+    for (int x = 0; x < c.width; ++x) c.set(x, y, image.at(x + margin, y + margin));
+  return c;
+}
+
 // A panel at (x, y) with its caption above and its ramp, labelled at both ends and the middle,
 // below.
 struct Panel {
@@ -109,22 +117,24 @@ Image8 flip_difference_frame(const Image8& truth, const Image8& model,
                              const std::string& name, const std::string& label,
                              const LabelFont& font) {
   Drawing dr = frame_drawing(truth);
-  const int panel = truth.width / 2, top = (truth.height - panel) / 2;
+  const int half = truth.width / 2, crop = half / 25, panel = half - 2 * crop;
+  const int top = (truth.height - panel) / 2;
   const int bar_h = std::max(4, static_cast<int>(0.6 * text_size(truth.width)));
-  const Panel heat{half_size(heatmap_image(de2000, truth.width, truth.height, scale)),
-                   ramp(panel, bar_h, [](double t) { return inferno(t); }),
-                   "ΔE2000 of " + name,
-                   "0",
-                   "ΔE2000",
-                   fmt::format("{:g}", scale)};
-  const Panel diff{half_size(signed_difference(truth, model)),
+  const Panel heat{
+      cropped(half_size(heatmap_image(de2000, truth.width, truth.height, scale)), crop),
+      ramp(panel, bar_h, [](double t) { return inferno(t); }),
+      "ΔE2000 of " + name,
+      "0",
+      "ΔE2000",
+      fmt::format("{:g}", scale)};
+  const Panel diff{cropped(half_size(signed_difference(truth, model)), crop),
                    ramp(panel, bar_h, difference_code),
                    fmt::format("{} − truth, ×{}", name, kFlipDifferenceGain),
                    fmt::format("−{}", kFlipDifferenceRange),
                    "equal",
                    fmt::format("+{} codes", kFlipDifferenceRange)};
-  add_panel(dr, heat, 0, top);
-  add_panel(dr, diff, truth.width - panel, top);
+  add_panel(dr, heat, crop, top);
+  add_panel(dr, diff, truth.width - half + crop, top);
   add_band(dr, truth.height, label,
            fmt::format("ΔE2000 on the sheet's scale 0–{:g}; grey + {} × (model − truth) codes",
                        scale, kFlipDifferenceGain));

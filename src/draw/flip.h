@@ -11,19 +11,23 @@
 namespace fl::report {
 
 // The signed difference is shown as mid grey (code 128) + kFlipDifferenceGain × (model − truth)
-// per channel of the display codes: a difference of one code shows as 8, and the ramp clips at
-// ±16 codes (kFlipDifferenceRange).
-constexpr int kFlipDifferenceGain = 8;
-constexpr int kFlipDifferenceRange = 16;
+// per channel of the display codes: a difference of one code, the smallest there is, shows as a
+// step of 32 from mid grey, and the ramp clips at ±4 codes (kFlipDifferenceRange). Through the
+// ACES view, models a few ΔE2000 off differ from the truth by a few codes (gold under the sunset:
+// Schlick and F82, up to 2.4 ΔE2000, by at most 3), which a gain of 8 would leave within 24 levels
+// of mid grey, hard to see.
+constexpr int kFlipDifferenceGain = 32;
+constexpr int kFlipDifferenceRange = 128 / kFlipDifferenceGain;
 
 // The render (display codes) above a dark band with `label` and, under it in grey, `detail`.
 Image8 flip_frame(const Image8& render, const std::string& label, const std::string& detail,
                   const LabelFont& font);
 
 // A model's difference frame, the size of flip_frame(truth, ...): on the left the ΔE2000 heat map
-// (heatmap_image on `scale`, each panel half the render's width, 2 × 2 pixels averaged) with an
-// inferno bar from 0 to `scale`, on the right signed_difference(truth, model) with its grey ramp
-// from −16 to +16 codes; `name` (the model) in the captions, `label` in the band.
+// (heatmap_image on `scale`), on the right signed_difference(truth, model), each panel at half the
+// render's size (2 × 2 pixels averaged, a 25th of the empty margin cropped from each side), with a
+// ramp under it (inferno from 0 to `scale`; grey from −4 to +4 codes); `name` (the model) in the
+// captions, `label` in the band.
 Image8 flip_difference_frame(const Image8& truth, const Image8& model,
                              const std::vector<double>& de2000, double scale,
                              const std::string& name, const std::string& label,

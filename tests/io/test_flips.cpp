@@ -78,18 +78,20 @@ TEST(Webp, LosslessFramesLoopForeverDelaysAndSameBytes) {
   EXPECT_THROW(report::decode_webp("RIFF0000WEBPjunk", "x.webp"), InputError);
 }
 
-// The difference frame's arithmetic: 128 + 8 × (model − truth) per channel, clamped; the panels'
+// The difference frame's arithmetic: 128 + 32 × (model − truth) per channel, clamped; the panels'
 // 2 × 2 means rounded half up.
 TEST(FlipFrames, SignedDifferenceAndHalfSize) {
   Image8 truth(2, 2, Rgb8{100, 100, 100}), model(2, 2, Rgb8{103, 100, 90});
   model.set(1, 1, {255, 0, 116});
+  model.set(1, 0, {101, 99, 100});
   const Image8 d = report::signed_difference(truth, model);
-  EXPECT_EQ(d.at(0, 0), (Rgb8{152, 128, 48}));  // +3 → 152, 0 → 128, −10 → 48
+  EXPECT_EQ(d.at(0, 0), (Rgb8{224, 128, 0}));   // +3 → 128 + 96, 0 → 128, −10 clips
   EXPECT_EQ(d.at(1, 1), (Rgb8{255, 0, 255}));   // +155, −100 and +16 clip
+  EXPECT_EQ(d.at(1, 0), (Rgb8{160, 96, 128}));  // ±1 code: a step of 32
   const Image8 h = report::half_size(d);
   ASSERT_EQ(h.width, 1);
-  EXPECT_EQ(h.at(0, 0),
-            (Rgb8{(3 * 152 + 255 + 2) / 4, (3 * 128 + 0 + 2) / 4, (3 * 48 + 255 + 2) / 4}));
+  EXPECT_EQ(h.at(0, 0), (Rgb8{(2 * 224 + 160 + 255 + 2) / 4, (2 * 128 + 96 + 0 + 2) / 4,
+                              (0 + 0 + 128 + 255 + 2) / 4}));
   EXPECT_THROW(report::signed_difference(truth, Image8(3, 2)), std::invalid_argument);
 }
 
