@@ -199,7 +199,9 @@ std::vector<Image8> flip_frames(const ContactSheet& sheet, const analysis::Mater
                                 double scale, const color::DisplayTransform& view,
                                 const LabelFont& font) {
   std::vector<Image8> frames;
-  const Image8 truth = flip_frame(sheet.truth, "ground truth (spectral)", view.description(), font);
+  const std::string& through = view.description();  // "display D, view V (where), exposure"
+  const Image8 truth = flip_frame(sheet.truth, "ground truth (spectral)",
+                                  through.substr(0, through.find(" (")), font);
   for (size_t i = 0; i < images.models.size(); ++i) {
     const auto& row = sheet.rows[i];
     const std::string name = fresnel::model_spec(images.models[i].model).name;
