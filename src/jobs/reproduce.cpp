@@ -58,11 +58,11 @@ std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files,
 std::string settings_line(const analysis::Context& ctx) {
   const auto& st = ctx.settings();
   return fmt::format(
-      "Settings: space {}, illuminant {}, {} adaptation, {} angles, {:g} nm steps. Swatches, "
-      "strips "
-      "and renders are shown through OpenColorIO {}; every table and ΔE2000 is computed on the "
-      "scene-linear values.",
-      st.space, st.illuminant, st.adaptation, st.angles, st.step_nm, ctx.display().description());
+      "Settings: space {}, illuminant {}, {} adaptation, {} angles, {:g} nm steps. Renders are "
+      "shown through OpenColorIO {}; reflectance strips and swatches through {}. Every table and "
+      "ΔE2000 is computed on the scene-linear values.",
+      st.space, st.illuminant, st.adaptation, st.angles, st.step_nm, ctx.display().description(),
+      ctx.reflectance_display().description());
 }
 
 // index.html: the gallery (with figures and flips when they were drawn) and every table.
