@@ -169,6 +169,19 @@ void add_global_options(CLI::App& app, GlobalOptions& g) {
                  "white of the --space colour space of the config: ACES or an illuminant name "
                  "(default: the built-in "
                  "space whose matrix it has, else D65)");
+  app.add_option("--display", s.view.display,
+                 "OpenColorIO display of every picture (default: sRGB; with --ocio-config, any the "
+                 "config has)");
+  app.add_option("--view", s.view.view,
+                 "OpenColorIO view of renders, flips and contact sheets (default: ACES 1.0 - SDR "
+                 "Video; without a config also Un-tone-mapped)");
+  app.add_option("--reflectance-view", s.reflectance_view,
+                 "OpenColorIO view of reflectance colours: strips and swatches (default: "
+                 "Un-tone-mapped, reflectance 1 as display white)");
+  app.add_option("--exposure", s.view.exposure_ev,
+                 "stops applied to renders before the view (EXRs, tables and every ΔE2000 stay "
+                 "scene-linear)")
+      ->capture_default_str();
   app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
   app.add_option("--min-coverage", g.min_coverage,
                  "refuse (one material) or skip (several) materials whose data covers less than "

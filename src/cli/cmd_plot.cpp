@@ -88,15 +88,6 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "stops above the environment's normalization (mean luminance 1: a white diffuse "
                   "ball reads 1)")
       ->capture_default_str();
-  sub->add_option("--display", r->view.display,
-                  "OpenColorIO display of the pictures (default: sRGB; with --ocio, any the config "
-                  "has)");
-  sub->add_option("--view", r->view.view,
-                  "OpenColorIO view of the pictures (default: ACES 1.0 - SDR Video; without a "
-                  "config also Un-tone-mapped)");
-  sub->add_option("--exposure", r->view.exposure_ev,
-                  "stops applied to the pictures before the view (the EXR stays as rendered)")
-      ->capture_default_str();
   sub->add_option("--roughness", r->settings.roughness,
                   "GGX perceptual roughness (0: perfect mirror)")
       ->capture_default_str();

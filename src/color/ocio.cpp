@@ -278,7 +278,7 @@ DisplayTransform::DisplayTransform(const SpaceLibrary& spaces, const std::string
   const auto* config = spaces.impl_->config.get();
   std::string display = vs.display, view = vs.view;
   if (display.empty()) display = builtin ? kBuiltinDisplay : config->getDefaultDisplay();
-  if (view.empty()) view = builtin ? kAcesSdrView : config->getDefaultView(display.c_str());
+  if (view.empty()) view = builtin ? vs.builtin_view : config->getDefaultView(display.c_str());
   auto g = OCIO::GroupTransform::Create();
   auto exposure = OCIO::MatrixTransform::Create();
   const double k = std::exp2(vs.exposure_ev);

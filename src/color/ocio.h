@@ -71,20 +71,21 @@ class SpaceLibrary {
   std::string config_path_;
 };
 
-// Which OpenColorIO display and view turn scene-linear renders into pictures for eyes, and an
-// exposure (stops) applied in scene-linear before the view. Empty display and view: the built-in
-// default, sRGB through the ACES 1.0 SDR video output transform.
-struct ViewSettings {
-  std::string display, view;
-  double exposure_ev = 0;
-};
-
 // The built-in displays and views (used without an OCIO config): display "sRGB"; views
 // "ACES 1.0 - SDR Video" (OCIO's built-in ACES RRT + sRGB 100-nit dim-surround ODT, the default)
 // and "Un-tone-mapped" (linear Rec.709 clipped to [0, 1] and sRGB-encoded).
 inline constexpr const char* kBuiltinDisplay = "sRGB";
 inline constexpr const char* kAcesSdrView = "ACES 1.0 - SDR Video";
 inline constexpr const char* kUntonemappedView = "Un-tone-mapped";
+
+// Which OpenColorIO display and view turn scene-linear values into pictures for eyes, and an
+// exposure (stops) applied in scene-linear before the view. Empty display and view: the built-in
+// display sRGB through `builtin_view` (one of the built-in views above).
+struct ViewSettings {
+  std::string display, view;
+  double exposure_ev = 0;
+  std::string builtin_view = kAcesSdrView;
+};
 
 // A display/view transform from a working space of a SpaceLibrary, built once (OCIO processor)
 // and applied to many images. With the built-in library only the built-in display and views

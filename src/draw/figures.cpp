@@ -16,6 +16,9 @@ namespace {
 constexpr int kStripMargin = 16, kStripLabelW = 190, kStripGap = 36, kStripErrGap = 14,
               kStripErrW = 100;
 constexpr int kStripTop = 84, kStripRowGap = 6;
+// Under each model's strip, 2 px below it, its ΔE2000 row (kStripDeHeight tall); the legend's bar.
+constexpr int kStripDeGap = kStripDeOffset, kStripDeHeight = 12, kStripLegendW = 240,
+              kStripLegendH = 12;
 
 std::vector<int> span_lefts(const analysis::StripData& d) {
   std::vector<int> xs;
@@ -28,8 +31,11 @@ std::vector<int> span_lefts(const analysis::StripData& d) {
   return xs;
 }
 
+// Row 0 (the truth) has no ΔE2000 row; every later row has one.
 int strip_row_top(size_t row) {
-  return kStripTop + static_cast<int>(row) * (kStripRowHeight + kStripRowGap);
+  const int r = static_cast<int>(row);
+  return kStripTop + r * (kStripRowHeight + kStripRowGap) +
+         std::max(r - 1, 0) * (kStripDeGap + kStripDeHeight);
 }
 
 std::string degrees(double v) {
@@ -46,6 +52,17 @@ Image8 strip_picture(const analysis::StripRow& row, size_t first_sample, int sam
   return img;
 }
 
+// One span of a model row's ΔE2000: inferno(ΔE / kStripDe2000Scale), saturating above the scale.
+Image8 de_picture(const analysis::StripRow& row, size_t first_sample, int samples) {
+  Image8 img(samples, kStripDeHeight);
+  for (int x = 0; x < samples; ++x) {
+    const Rgb8 c =
+        inferno(std::min(row.de2000[first_sample + x] / analysis::kStripDe2000Scale, 1.0));
+    for (int y = 0; y < kStripDeHeight; ++y) img.set(x, y, c);
+  }
+  return img;
+}
+
 void add_strip_rows(Drawing& dr, const analysis::StripData& d, const std::vector<int>& xs) {
   const int label_x = xs.front() - 10, err_x = xs.back() + kStripErrGap;
   for (size_t r = 0; r < d.rows.size(); ++r) {
@@ -54,6 +71,9 @@ void add_strip_rows(Drawing& dr, const analysis::StripData& d, const std::vector
     size_t first = 0;
     for (size_t s = 0; s < d.spans.size(); ++s) {
       dr.add(Picture{xs[s], top, strip_picture(row, first, d.spans[s].samples)});
+      if (!row.de2000.empty())
+        dr.add(Picture{xs[s], top + kStripRowHeight + kStripDeGap,
+                       de_picture(row, first, d.spans[s].samples)});
       first += d.spans[s].samples;
     }
     dr.add(Text{double(label_x), double(baseline), row.label, 13, kInk, Align::Right, false});
@@ -94,6 +114,23 @@ void add_zoom_marks(Drawing& dr, const analysis::StripData& d, const std::vector
   }
 }
 
+// The ΔE2000 rows' colour scale, left-aligned with the spans at `top`.
+void add_de_legend(Drawing& dr, int left, int top) {
+  Image8 bar(kStripLegendW, kStripLegendH);
+  for (int x = 0; x < kStripLegendW; ++x)
+    for (int y = 0; y < kStripLegendH; ++y) bar.set(x, y, inferno((x + 0.5) / kStripLegendW));
+  dr.add(Text{double(left - 10), double(top + 10), "ΔE2000 row under each model", 12, kInk,
+              Align::Right, false});
+  dr.add(Picture{left, top, bar});
+  const double scale = analysis::kStripDe2000Scale;
+  for (int i = 0; i <= 4; ++i) {
+    const double x = left + std::min(i / 4.0 * kStripLegendW, kStripLegendW - 1.0);
+    dr.add(Rect{std::floor(x), double(top + kStripLegendH), 1, 4, kInk});
+    dr.add(Text{std::floor(x) + 0.5, double(top + kStripLegendH + 16),
+                fmt::format("{}{:g}", i == 4 ? "≥ " : "", scale * i / 4), 11, kInk, Align::Center});
+  }
+}
+
 std::string span_heading(const analysis::StripSpan& sp, bool first) {
   return fmt::format("{} {}–{}", first ? "incidence angle" : "zoom", degrees(sp.theta0_deg),
                      degrees(sp.theta1_deg));
@@ -111,15 +148,16 @@ Drawing strip_drawing(const analysis::StripData& d) {
   const int bottom = strip_row_top(d.rows.size()) - kStripRowGap;
   Drawing dr;
   dr.width = err_x + kStripErrW + kStripMargin;
-  dr.height = bottom + 56;
+  const bool has_de = d.rows.size() > 1;
+  dr.height = bottom + (has_de ? 100 : 56);
   const auto& c = d.caption;
   dr.add(Text{kStripMargin, 26,
               fmt::format("{}: Fresnel reflectance, ground truth and models ({} parameters)",
                           c.material, c.parameter_kind),
               17, kInk});
   dr.add(Text{kStripMargin, 46,
-              fmt::format("{} working space, {} illuminant; sRGB display encoding by OpenColorIO",
-                          c.space, c.illuminant),
+              fmt::format("{} working space, {} illuminant; colours through OpenColorIO {}",
+                          c.space, c.illuminant, c.view),
               12, kGreyInk});
   for (size_t s = 0; s < d.spans.size(); ++s)
     dr.add(Text{xs[s] + 0.5 * d.spans[s].samples, kStripTop - 10, span_heading(d.spans[s], s == 0),
@@ -128,6 +166,7 @@ Drawing strip_drawing(const analysis::StripData& d) {
   add_strip_rows(dr, d, xs);
   for (size_t s = 0; s < d.spans.size(); ++s) add_strip_ticks(dr, d.spans[s], xs[s], bottom);
   if (!d.spans.empty()) add_zoom_marks(dr, d, xs, bottom);
+  if (has_de) add_de_legend(dr, xs.front(), bottom + 58);
   return dr;
 }
 

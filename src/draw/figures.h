@@ -10,11 +10,14 @@
 namespace fl::report {
 
 // Stacked strips, one row per StripData row (ground truth, then each model), one pixel column per
-// sample of each span, spans side by side; the RMS ΔE2000 of each model on the right.
+// sample of each span, spans side by side; the RMS ΔE2000 of each model on the right. Under each
+// model's strip, its ΔE2000 against the truth per sample (inferno on 0 to kStripDe2000Scale,
+// saturating above), with the scale's legend at the bottom.
 Drawing strip_drawing(const analysis::StripData& d);
 
 // Where strip_drawing paints a sample: the top-left pixel of its column (kStripRowHeight tall).
-constexpr int kStripRowHeight = 30;
+// Its ΔE2000 (model rows) is painted from kStripRowHeight + kStripDeOffset below it.
+constexpr int kStripRowHeight = 30, kStripDeOffset = 2;
 Point strip_cell(const analysis::StripData& d, size_t row, size_t span, int sample);
 
 // R, G, B reflectance against angle (ground truth solid, models dashed) and ΔE2000 against angle.

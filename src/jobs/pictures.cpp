@@ -102,7 +102,7 @@ Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::Lo
 
 Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
                       const RenderRequest& request, const LabelFont* font) {
-  const color::DisplayTransform view(ctx.spaces(), ctx.settings().space, request.view);
+  const color::DisplayTransform& view = ctx.display();
   Output all;
   for (const auto& m : ms) {
     RenderRequest r = request;
@@ -158,7 +158,7 @@ FlipFiles reproduce_flips(const analysis::Context& ctx,
   rs.roughness = kFlipRoughness;
   rs.samples = kFlipSamples;
   const analysis::SceneLight light = analysis::default_environment();
-  const color::DisplayTransform view(ctx.spaces(), ctx.settings().space, {});
+  const color::DisplayTransform& view = ctx.display();
   const size_t n = studies.size();
   std::vector<std::string> sprites(n);
   parallel_for(n, [&](size_t i) {
@@ -166,9 +166,11 @@ FlipFiles reproduce_flips(const analysis::Context& ctx,
     for (const auto m : models) params.push_back(analysis::model_params(studies[i], m, "derived"));
     const auto images =
         analysis::render_truth_and_models(ctx, *studies[i].material, light, models, params, rs);
+    const auto backdrop = analysis::backdrop_for(studies[i].material->material.material_class);
     Image8 sprite(kFlipSizePx * static_cast<int>(images.size()), kFlipSizePx);
     for (size_t f = 0; f < images.size(); ++f) {
-      const Image8 frame(kFlipSizePx, kFlipSizePx, analysis::sphere_display(view, images[f]));
+      const Image8 frame(kFlipSizePx, kFlipSizePx,
+                         analysis::sphere_display(view, images[f], backdrop));
       for (int y = 0; y < kFlipSizePx; ++y)
         for (int x = 0; x < kFlipSizePx; ++x)
           sprite.set(static_cast<int>(f) * kFlipSizePx + x, y, frame.at(x, y));
@@ -176,10 +178,14 @@ FlipFiles reproduce_flips(const analysis::Context& ctx,
     sprites[i] = encode_png(sprite);
   });
   FlipFiles out;
-  std::vector<std::string> labels{"ground truth (spectral)"};
-  for (const auto m : models) labels.push_back(fresnel::model_spec(m).name);
   for (size_t i = 0; i < n; ++i) {
-    const std::string path = "figures/flip-" + studies[i].material->material.key + ".png";
+    const auto& mat = studies[i].material->material;
+    std::vector<std::string> labels{
+        analysis::backdrop_for(mat.material_class) == analysis::Backdrop::Dark
+            ? "ground truth (spectral)"
+            : fmt::format("ground truth (spectral; {})", analysis::kReflectionOnlyNote)};
+    for (const auto m : models) labels.push_back(fresnel::model_spec(m).name);
+    const std::string path = "figures/flip-" + mat.key + ".png";
     out.files.emplace_back(path, std::move(sprites[i]));
     out.flips.push_back({path, kFlipSizePx, labels});
   }

@@ -38,7 +38,6 @@ struct RenderRequest {
       env_space;  // the environment's colour space (empty: its chromaticities, else lin_rec709)
   double env_rotate_deg = 0;
   double env_exposure_ev = 0;  // analysis::environment_map's exposure
-  color::ViewSettings view;    // the display and view the PNGs, flip and sheet go through
   std::string flip = "webp";   // the flip's format with `compare`: webp or gif
   analysis::RenderSettings settings;
 };
@@ -68,8 +67,8 @@ bool render_draws_labels(const RenderRequest& request);
 // other than letters, digits, '.', '-' and '_' turned into '_'); InputError otherwise.
 std::string material_output(const std::string& out, const analysis::LoadedMaterial& m,
                             size_t count);
-// plot_output / render_output for every material, to material_output paths (render_outputs builds
-// the display transform of request.view once, from the context's spaces and working space).
+// plot_output / render_output for every material, to material_output paths (the pictures through
+// the context's display view, Context::display).
 Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
                     const PlotRequest& request, const LabelFont& font);
 Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,

@@ -25,8 +25,16 @@ namespace {
 // A flip frame stays on screen this long (milliseconds; the GIF counts hundredths of a second).
 constexpr int kFlipDelayMs = 900;
 
-Image8 display_image(const color::DisplayTransform& view, const analysis::SphereImage& img) {
-  return Image8(img.width, img.height, analysis::sphere_display(view, img));
+// The render through `view` on the backdrop of m's class (dielectrics: reflection only, over grey).
+Image8 display_image(const color::DisplayTransform& view, const analysis::SphereImage& img,
+                     const analysis::LoadedMaterial& m) {
+  return Image8(
+      img.width, img.height,
+      analysis::sphere_display(view, img, analysis::backdrop_for(m.material.material_class)));
+}
+
+bool reflection_only(const analysis::LoadedMaterial& m) {
+  return analysis::backdrop_for(m.material.material_class) != analysis::Backdrop::Dark;
 }
 
 const fresnel::ModelSpec* render_model(const RenderRequest& r) {
@@ -139,9 +147,9 @@ Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial&
       model ? parameter_text(images.models[0].model, images.models[0].params) : "");
   Files files;
   files.emplace_back(r.out, encode_exr(exr));
-  files.emplace_back(base + ".png", encode_png(display_image(view, shown)));
+  files.emplace_back(base + ".png", encode_png(display_image(view, shown, m)));
   if (model) {
-    files.emplace_back(base + ".truth.png", encode_png(display_image(view, images.truth)));
+    files.emplace_back(base + ".truth.png", encode_png(display_image(view, images.truth, m)));
     const auto title = fmt::format("{}: ΔE2000, truth vs {}", m.material.name,
                                    fresnel::model_spec(images.models[0].model).name);
     files.emplace_back(
@@ -187,10 +195,15 @@ ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedM
                   "against the truth (CIELAB relative to Y = 1)",
                   ctx.settings().space, ctx.settings().illuminant, r.settings.samples),
       "pictures through OpenColorIO " + view.description() + "; ΔE2000 on the scene-linear values"};
-  sheet.truth = display_image(view, images.truth);
+  if (reflection_only(m)) {
+    sheet.title += ", reflection only";
+    sheet.notes.push_back(std::string(analysis::kReflectionOnlyNote) +
+                          ": the render holds the surface reflection, not the light through it");
+  }
+  sheet.truth = display_image(view, images.truth, m);
   for (const auto& mr : images.models)
-    sheet.rows.push_back({model_label(mr.model, r.params), display_image(view, mr.image), mr.de2000,
-                          mr.stats.mean, mr.stats.max});
+    sheet.rows.push_back({model_label(mr.model, r.params), display_image(view, mr.image, m),
+                          mr.de2000, mr.stats.mean, mr.stats.max});
   return sheet;
 }
 
@@ -308,7 +321,9 @@ Output render_output(const analysis::Context& ctx, const analysis::LoadedMateria
                   "pass ({:.2f} s); {}",
                   rs.size_px, rs.size_px, rs.roughness, rs.samples, 1 + images.models.size(), secs,
                   scene.lighting));
-  o.messages.push_back("render: pictures through OpenColorIO " + view.description());
+  o.messages.push_back(
+      "render: pictures through OpenColorIO " + view.description() +
+      (reflection_only(m) ? std::string("; ") + analysis::kReflectionOnlyNote : ""));
   o.files = r.compare.empty() ? single_files(ctx, m, r, scene, images, view, font)
                               : compare_files(ctx, m, r, scene, images, view, *font);
   const auto& rgb =

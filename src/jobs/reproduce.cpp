@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "analysis/render/figure_data.h"
 #include "analysis/tables/tables.h"
 #include "documents/html.h"
 #include "documents/preset_formats.h"
@@ -56,8 +57,12 @@ std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files,
 
 std::string settings_line(const analysis::Context& ctx) {
   const auto& st = ctx.settings();
-  return fmt::format("Settings: space {}, illuminant {}, {} adaptation, {} angles, {:g} nm steps.",
-                     st.space, st.illuminant, st.adaptation, st.angles, st.step_nm);
+  return fmt::format(
+      "Settings: space {}, illuminant {}, {} adaptation, {} angles, {:g} nm steps. Renders are "
+      "shown through OpenColorIO {}; reflectance strips and swatches through {}. Every table and "
+      "ΔE2000 is computed on the scene-linear values.",
+      st.space, st.illuminant, st.adaptation, st.angles, st.step_nm, ctx.display().description(),
+      ctx.reflectance_display().description());
 }
 
 // index.html: the gallery (with figures and flips when they were drawn) and every table.
@@ -78,8 +83,9 @@ std::string report_page(const analysis::Context& ctx,
     page.intro.push_back(fmt::format(
         "Flips: click a sphere to toggle between the ground truth and the selected model; hover a "
         "model to preview it. "
-        "GGX roughness {:g} under the analytic sky and key light, {} px, derived parameters.",
-        kFlipRoughness, kFlipSizePx));
+        "GGX roughness {:g} under the analytic sky and key light, {} px, derived parameters. "
+        "Dielectrics: {}.",
+        kFlipRoughness, kFlipSizePx, analysis::kReflectionOnlyNote));
   page.gallery = catalog_gallery(ctx, studies, presets, figures, flips);
   page.tables = tables;
   page.links = {{"README.md", "README.md"},

@@ -390,6 +390,71 @@ TEST(Figures, StripPixelsAreTheSrgbEncodingOfKnownReflectances) {
                            data.spans[1].samples + 14 + 100 + 16);
 }
 
+// CIEDE2000 between two neutral greys of lightness L1 and L2 (Sharma, Wu & Dalal 2005 with
+// a* = b* = 0: every chroma and hue term vanishes, leaving ΔL' / S_L).
+double neutral_de2000(double l1, double l2) {
+  const double lbar = 0.5 * (l1 + l2), d = (lbar - 50) * (lbar - 50);
+  return std::abs(l2 - l1) / (1 + 0.015 * d / std::sqrt(20 + d));
+}
+
+// CIE 1976 lightness of a luminance relative to white (Y > 0.008856).
+double lightness(double y) {
+  return 116 * std::cbrt(y) - 16;
+}
+
+// Under each model's strip, its ΔE2000 against the truth: a grey glass (n = 1.5, F0 = 0.04) against
+// Schlick with F0 = 0.04 (ΔE ≈ 0 at normal incidence), with a grey 0.3 ΔE2000 lighter (found from
+// the neutral-grey form of CIEDE2000) and with a colour (far beyond the scale's top).
+TEST(Figures, StripsShowEachModelsDe2000UnderItsStrip) {
+  const auto& ctx = test_context();
+  spectral::ComplexIorSpectrum glass{
+      ctx.grid(), std::vector<std::complex<double>>(ctx.grid().count, {1.5, 0.0})};
+  double lo = 0.04, hi = 0.05;  // bisection for Y with ΔE2000(0.04, Y) = 0.3
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (neutral_de2000(lightness(0.04), lightness(mid)) < 0.3 ? lo : hi) = mid;
+  }
+  const auto schlick = [](double r, double g, double b) {
+    return analysis::FigureModel{fresnel::model_of<fresnel::models::Schlick>, {r, g, b}};
+  };
+  const analysis::FigureRequest in{
+      "Test glass",
+      "derived",
+      &glass,
+      {schlick(0.04, 0.04, 0.04), schlick(lo, lo, lo), schlick(0.6, 0.45, 0.3)}};
+  const auto data = analysis::strip_data(ctx, in);
+  ASSERT_EQ(data.rows.size(), 4u);
+  EXPECT_TRUE(data.rows[0].de2000.empty());
+  constexpr double kDeTolerance = 1e-3;  // θ = 1/12° moves either reflectance by < 1e-6
+  EXPECT_NEAR(data.rows[1].de2000[0], 0.0, kDeTolerance);
+  EXPECT_NEAR(data.rows[2].de2000[0], 0.3, kDeTolerance);
+  EXPECT_GT(data.rows[3].de2000[0], analysis::kStripDe2000Scale);
+  const auto img = draw_png(report::strip_drawing(data), report::LabelFont());
+  const auto de_pixel = [&](size_t row) {
+    const auto p = report::strip_cell(data, row, 0, 0);
+    return img.at(static_cast<int>(p.x),
+                  static_cast<int>(p.y) + report::kStripRowHeight + report::kStripDeOffset + 1);
+  };
+  const auto expect_colour = [](report::Rgb8 got, report::Rgb8 want) {
+    EXPECT_NEAR(got.r, want.r, kOneCode);
+    EXPECT_NEAR(got.g, want.g, kOneCode);
+    EXPECT_NEAR(got.b, want.b, kOneCode);
+  };
+  expect_colour(de_pixel(1), report::inferno(0.0));
+  expect_colour(de_pixel(2), report::inferno(0.3 / analysis::kStripDe2000Scale));
+  expect_colour(de_pixel(3), report::inferno(1.0));  // saturated
+  // 0.3 ΔE2000 stands out from 0: its colour is tens of codes away from the zero colour.
+  const auto a = de_pixel(1), b = de_pixel(2);
+  EXPECT_GT(std::hypot(a.r - b.r, a.g - b.g, a.b - b.b), 40.0);
+  // The strips themselves stay where strip_cell says: the model rows' colours are their F0 greys.
+  const auto strip = [&](size_t row) {
+    const auto p = report::strip_cell(data, row, 0, 0);
+    return img.at(static_cast<int>(p.x), static_cast<int>(p.y) + report::kStripRowHeight / 2);
+  };
+  EXPECT_NEAR(strip(1).g, srgb_code(0.04), kOneCode);
+  EXPECT_NEAR(strip(2).g, srgb_code(lo), kOneCode);
+}
+
 // matplotlib's inferno table (van der Walt & Smith 2015, CC0): first and last entries.
 constexpr double kInfernoFirst[3] = {0.001462, 0.000466, 0.013866};
 constexpr double kInfernoLast[3] = {0.988362, 0.998364, 0.644924};
@@ -545,6 +610,44 @@ TEST(PictureCli, PlotAndRenderWriteTheirFiles) {
     EXPECT_FALSE(std::filesystem::exists(tmp.path() + f)) << f;
   for (const char* cmd : {"plot", "plot strip", "plot curves", "render"})
     EXPECT_EQ(run_command(cli() + " " + cmd + " --help").status, 0) << cmd;
+}
+
+// Dielectric renders hold the reflection only: their pictures add it over mid grey 0.18 and say so;
+// metals keep the dark backdrop 0.02. Through the Un-tone-mapped view a neutral working-space
+// value v shows as the sRGB encoding of v (ACES white is D65 white after Bradford adaptation).
+TEST(PictureCli, DielectricRendersShowTheirReflectionOverMidGrey) {
+  using test::cli;
+  using test::run_command;
+  test::TempDir tmp;
+  const auto render = [&](const std::string& material, const std::string& name) {
+    return run_command(cli() + " --view Un-tone-mapped render '" + material +
+                       "' --model schlick --roughness 0 --size 21 --samples 4 --out '" +
+                       tmp.path() + "/" + name + ".exr'");
+  };
+  const auto glass = render("glass BK7", "g"), gold = render("gold", "m");
+  ASSERT_EQ(glass.status, 0) << glass.err;
+  ASSERT_EQ(gold.status, 0) << gold.err;
+  EXPECT_NE(glass.err.find("reflection only (no transmission), added over mid grey 0.18"),
+            std::string::npos)
+      << glass.err;
+  EXPECT_EQ(gold.err.find("reflection only"), std::string::npos);
+  const auto g = report::read_png(tmp.path() + "/g.png"),
+             m = report::read_png(tmp.path() + "/m.png");
+  EXPECT_NEAR(g.at(0, 0).g, srgb_code(analysis::kMidGreyBackdrop), kOneCode);
+  EXPECT_NEAR(m.at(0, 0).g, srgb_code(analysis::kDarkBackdrop), kOneCode);
+  // The sphere's centre: its reflection (about 0.042, F0 of BK7 under a unit key light) over grey.
+  const auto exr = report::read_exr(tmp.path() + "/g.exr");
+  const size_t centre = 10 * 21 + 10, nc = exr.channels.size();
+  const auto green = std::find(exr.channels.begin(), exr.channels.end(), "G");
+  ASSERT_NE(green, exr.channels.end());
+  const double reflection = exr.pixels[nc * centre + (green - exr.channels.begin())];
+  EXPECT_NEAR(g.at(10, 10).g, srgb_code(reflection + analysis::kMidGreyBackdrop), kOneCode);
+  // A view that does not exist: exit 2, one line, nothing written.
+  const auto bad = run_command(cli() + " --reflectance-view nosuch plot strip gold --out '" +
+                               tmp.path() + "/x.png'");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/x.png"));
 }
 
 TEST(PictureCli, FiguresAreByteIdenticalRunToRun) {

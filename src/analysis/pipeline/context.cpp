@@ -49,11 +49,21 @@ std::optional<color::SpaceWhite> space_white(const Settings& s, const spectral::
 
 }  // namespace
 
+namespace {
+
+color::ViewSettings reflectance_view(const Settings& s) {
+  return {s.view.display, s.reflectance_view, 0.0, color::kUntonemappedView};
+}
+
+}  // namespace
+
 Context::Context(const Settings& s)
     : settings_(validated(s)),
       grid_(spectral::SpectralGrid::visible(s.step_nm)),
       spaces_(s.ocio_config.empty() ? color::SpaceLibrary::builtin()
-                                    : color::SpaceLibrary::from_config(s.ocio_config, s.ocio_xyz)) {
+                                    : color::SpaceLibrary::from_config(s.ocio_config, s.ocio_xyz)),
+      display_(spaces_, s.space, s.view),
+      reflectance_display_(spaces_, s.space, reflectance_view(s)) {
   // The run's page catalog: one per database, shared with the settings' copies.
   if (!settings_.paths.pages || settings_.paths.pages->database() != settings_.paths.database)
     settings_.paths.pages = std::make_shared<const spectral::PageCatalog>(settings_.paths.database);

@@ -23,6 +23,11 @@ struct Settings {
   std::string ocio_xyz;      // the config's CIE XYZ D65 space (empty: role / default name)
   std::string
       ocio_white;  // a config space's white: ACES or an illuminant name (empty: from the config)
+  // The display and view renders (scene-linear radiance) go through, and the view of reflectance
+  // colours (strips, swatches: already display-referred, 1 is a white surface), by default the
+  // built-in Un-tone-mapped view: a tone-mapping view's shoulder would desaturate them.
+  color::ViewSettings view;
+  std::string reflectance_view;
   spectral::DataPaths paths;
 };
 
@@ -37,6 +42,11 @@ class Context {
   const spectral::SpectralGrid& grid() const { return grid_; }
   const color::RgbSpace& space() const { return space_; }
   const color::SpaceLibrary& spaces() const { return spaces_; }
+  // settings().view from the working space: what renders, their flips and sheets go through.
+  const color::DisplayTransform& display() const { return display_; }
+  // settings().view's display with reflectance_view (no exposure): what strips and swatches of
+  // reflectance go through.
+  const color::DisplayTransform& reflectance_display() const { return reflectance_display_; }
   const std::vector<color::Rgb>& rgb_weights() const { return rgb_weights_; }
   // Per grid wavelength S·ȳ / Σ S·ȳ: its share of a white surface's luminance (sums to 1).
   const std::vector<double>& luminance_weights() const { return luminance_weights_; }
@@ -60,6 +70,7 @@ class Context {
   spectral::SpectralGrid grid_;
   color::SpaceLibrary spaces_;
   color::RgbSpace space_;
+  color::DisplayTransform display_, reflectance_display_;
   color::Xyz illuminant_white_;
   std::vector<color::Rgb> rgb_weights_;
   std::vector<double> luminance_weights_;

@@ -12,33 +12,36 @@ namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 FigureCaption caption(const Context& ctx, const FigureRequest& in) {
-  return {in.material, in.parameter_kind, ctx.settings().space, ctx.settings().illuminant};
+  return {in.material, in.parameter_kind, ctx.settings().space, ctx.settings().illuminant,
+          ctx.reflectance_display().description()};
 }
 
 color::Rgb model_rgb(const FigureModel& m, double cos_theta) {
   return fresnel::model_spec(m.model).evaluate(cos_theta, m.params.data(), false);
 }
 
-// Working-space RGB of every row (truth, then models) at every sample, row by row.
-std::vector<float> strip_samples(const Context& ctx, const FigureRequest& in,
-                                 const std::vector<StripSpan>& spans, int columns) {
-  const size_t rows = 1 + in.models.size();
-  std::vector<float> working(rows * columns * 3);
+// Working-space RGB of every row (truth, then models) at every sample: rows[r][column].
+std::vector<std::vector<color::Rgb>> strip_samples(const Context& ctx, const FigureRequest& in,
+                                                   const std::vector<StripSpan>& spans) {
+  std::vector<std::vector<color::Rgb>> rows(1 + in.models.size());
   const double eta_e = ctx.settings().eta_outside;
-  int col = 0;
   for (const auto& sp : spans)
-    for (int i = 0; i < sp.samples; ++i, ++col) {
+    for (int i = 0; i < sp.samples; ++i) {
       const double theta = sp.theta0_deg + (sp.theta1_deg - sp.theta0_deg) * (i + 0.5) / sp.samples;
       const double c = std::cos(theta * kDegToRad);
-      for (size_t r = 0; r < rows; ++r) {
-        const color::Rgb v =
-            r == 0 ? ground_truth_rgb(ctx, *in.ior, c, eta_e) : model_rgb(in.models[r - 1], c);
-        float* p = &working[3 * (r * columns + col)];
-        p[0] = static_cast<float>(v.r), p[1] = static_cast<float>(v.g),
-        p[2] = static_cast<float>(v.b);
-      }
+      for (size_t r = 0; r < rows.size(); ++r)
+        rows[r].push_back(r == 0 ? ground_truth_rgb(ctx, *in.ior, c, eta_e)
+                                 : model_rgb(in.models[r - 1], c));
     }
-  return working;
+  return rows;
+}
+
+std::vector<float> as_floats(const std::vector<color::Rgb>& v) {
+  std::vector<float> out;
+  for (const auto& c : v)
+    out.insert(out.end(),
+               {static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b)});
+  return out;
 }
 
 }  // namespace
@@ -68,37 +71,37 @@ StripData strip_data(const Context& ctx, const FigureRequest& in,
   StripData d;
   d.caption = caption(ctx, in);
   d.spans = spans;
-  int columns = 0;
-  for (const auto& sp : spans) columns += sp.samples;
-  const auto display = display_encode(ctx, strip_samples(ctx, in, spans, columns));
+  const auto samples = strip_samples(ctx, in, spans);
   const auto curves = curve_data(ctx, in);
-  const size_t row_codes = 3 * static_cast<size_t>(columns);
-  for (size_t r = 0; r <= in.models.size(); ++r) {
+  for (size_t r = 0; r < samples.size(); ++r) {
     StripRow row;
     row.label = r == 0 ? std::string("ground truth (spectral)") : curves.models[r - 1].name;
-    if (r > 0) row.rms_de2000 = curves.models[r - 1].rms_de2000;
-    row.srgb.assign(display.begin() + r * row_codes, display.begin() + (r + 1) * row_codes);
+    if (r > 0) {
+      row.rms_de2000 = curves.models[r - 1].rms_de2000;
+      row.de2000 = de2000_per_angle(ctx, samples[0], samples[r]);
+    }
+    row.srgb = display_encode(ctx, as_floats(samples[r]));
     d.rows.push_back(std::move(row));
   }
   return d;
 }
 
+namespace {
+
+std::vector<std::uint8_t> codes(const std::vector<float>& display) {
+  std::vector<std::uint8_t> out(display.size());
+  for (size_t i = 0; i < display.size(); ++i)
+    out[i] = static_cast<std::uint8_t>(std::lround(255.0f * display[i]));
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> display_encode(const Context& ctx,
                                          const std::vector<float>& working_rgb) {
-  const auto m = ctx.spaces().conversion(ctx.settings().space, "lin_rec709");
-  std::vector<float> rgb(working_rgb.size());
-  for (size_t i = 0; i + 2 < rgb.size(); i += 3) {
-    const auto o =
-        color::transform_rgb(m, {working_rgb[i], working_rgb[i + 1], working_rgb[i + 2]});
-    rgb[i] = static_cast<float>(o.r);
-    rgb[i + 1] = static_cast<float>(o.g);
-    rgb[i + 2] = static_cast<float>(o.b);
-  }
-  color::SpaceLibrary::encode_srgb_display(rgb);
-  std::vector<std::uint8_t> out(rgb.size());
-  for (size_t i = 0; i < rgb.size(); ++i)
-    out[i] = static_cast<std::uint8_t>(std::lround(255.0f * rgb[i]));
-  return out;
+  std::vector<float> rgb = working_rgb;
+  ctx.reflectance_display().apply(rgb);
+  return codes(rgb);
 }
 
 MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
@@ -122,18 +125,20 @@ MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIo
   return sw;
 }
 
+Backdrop backdrop_for(spectral::MaterialClass c) {
+  return c == spectral::MaterialClass::Dielectric ? Backdrop::ReflectionOnMidGrey : Backdrop::Dark;
+}
+
 std::vector<std::uint8_t> sphere_display(const color::DisplayTransform& view,
-                                         const SphereImage& img) {
-  constexpr float kBackground = 0.02f;  // linear grey behind the sphere
+                                         const SphereImage& img, Backdrop backdrop) {
   std::vector<float> working(img.rgb.size());
   for (size_t k = 0; k < img.alpha.size(); ++k)
     for (int c = 0; c < 3; ++c)
-      working[3 * k + c] = img.rgb[3 * k + c] + (1.0f - img.alpha[k]) * kBackground;
+      working[3 * k + c] =
+          img.rgb[3 * k + c] +
+          (backdrop == Backdrop::Dark ? (1.0f - img.alpha[k]) * kDarkBackdrop : kMidGreyBackdrop);
   view.apply(working);
-  std::vector<std::uint8_t> out(working.size());
-  for (size_t i = 0; i < working.size(); ++i)
-    out[i] = static_cast<std::uint8_t>(std::lround(255.0f * working[i]));
-  return out;
+  return codes(working);
 }
 
 }  // namespace fl::analysis

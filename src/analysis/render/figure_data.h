@@ -1,8 +1,8 @@
 #pragma once
 // The numbers behind the figures, computed here so that draw/figures.h only draws: ground truth
 // and model curves with their ΔE2000, colour-strip samples, and display codes for sphere renders.
-// Display codes: working-space RGB → linear Rec.709 with the SpaceLibrary's (OCIO) matrix, then
-// sRGB display-encoded by OCIO (SpaceLibrary::encode_srgb_display), as 8-bit codes round(255·v).
+// Display codes: reflectance colours through the context's OCIO reflectance view
+// (Context::reflectance_display), renders through a given view; 8-bit codes round(255·v).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -31,6 +31,7 @@ struct FigureRequest {
 // What a figure's title and subtitle state.
 struct FigureCaption {
   std::string material, parameter_kind, space, illuminant;
+  std::string view;  // the display view the colours went through (DisplayTransform::description)
 };
 
 struct ModelCurveData {
@@ -62,7 +63,13 @@ struct StripRow {
   std::string label;
   std::optional<double> rms_de2000;  // none for the ground truth row
   std::vector<std::uint8_t> srgb;    // display codes, 3 per sample, spans in order
+  std::vector<double> de2000;        // per sample against the truth (empty for the truth row)
 };
+
+// The ΔE2000 a strip's error row shows at the top of its colour scale (larger values saturate):
+// twice the conventional just-noticeable difference of 1, so that a 0.3 difference is 15 % up the
+// scale and a visible difference sits in its middle.
+inline constexpr double kStripDe2000Scale = 2.0;
 
 struct StripData {
   FigureCaption caption;
@@ -73,7 +80,8 @@ struct StripData {
 StripData strip_data(const Context& ctx, const FigureRequest& in,
                      const std::vector<StripSpan>& spans = default_strip_spans());
 
-// Working-space RGB (3 floats per pixel) → 8-bit sRGB display codes, through OCIO.
+// Working-space reflectance RGB (3 floats per pixel) → 8-bit display codes through the context's
+// reflectance view (Context::reflectance_display).
 std::vector<std::uint8_t> display_encode(const Context& ctx, const std::vector<float>& working_rgb);
 
 // What a gallery card shows of a material: the ground truth's display codes at `samples` angles
@@ -85,9 +93,22 @@ struct MaterialSwatches {
 MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIorSpectrum& ior,
                                    int samples = 19);
 
-// A render composited over a dark grey background and passed through `view` (an OCIO display and
-// view), as 8-bit codes (3 per pixel, the render's layout).
+// What a render's picture shows where the render has no light of its own. Dark: a dark grey
+// (0.02) behind the sphere, for metals, whose reflection is all there is. ReflectionOnMidGrey:
+// for dielectrics, whose renders hold the reflection only (no transmission), the reflection added
+// over a mid grey (0.18, behind and under the sphere) so that it reads as a reflection rather than
+// as a black ball.
+enum class Backdrop { Dark, ReflectionOnMidGrey };
+inline constexpr float kDarkBackdrop = 0.02f, kMidGreyBackdrop = 0.18f;
+Backdrop backdrop_for(spectral::MaterialClass c);
+// The caption a picture on the ReflectionOnMidGrey backdrop carries.
+inline constexpr const char* kReflectionOnlyNote =
+    "reflection only (no transmission), added over mid grey 0.18";
+
+// A render on `backdrop` passed through `view` (an OCIO display and view), as 8-bit codes (3 per
+// pixel, the render's layout).
 std::vector<std::uint8_t> sphere_display(const color::DisplayTransform& view,
-                                         const SphereImage& img);
+                                         const SphereImage& img,
+                                         Backdrop backdrop = Backdrop::Dark);
 
 }  // namespace fl::analysis
