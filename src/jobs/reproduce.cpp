@@ -102,8 +102,9 @@ std::string report_page(const analysis::Context& ctx,
   if (!lookdev.empty())
     page.lookdev_reading =
         "Rendered by `scripts/lookdev.sh`, not by reproduce (shown when the output folder holds "
-        "them): one row per model, truth, model and ΔE2000 heat map; the errors by view angle are "
-        "in [lookdev/README.md](lookdev/README.md).";
+        "them): one row per model, truth, model and ΔE2000 heat map; the errors by view angle and "
+        "the animated flips (lossless WebP: per model the truth, the model and a difference "
+        "frame) are in [lookdev/README.md](lookdev/README.md).";
   return html_report(page);
 }
 
