@@ -5,7 +5,7 @@
 # (NAME-ENV.flip.webp: lossless, 512 px; per model the truth, the model and its difference frame),
 # and README.md with every heat map's mean and max ΔE2000 and its mean by view angle. 512 px,
 # roughness 0.25, 512 samples per strategy (where the heat maps of metals under a sky stop changing,
-# to 0.05 ΔE2000). Not part of `reproduce`: it renders for about TIME.
+# to 0.05 ΔE2000). Not part of `reproduce`: it renders for 1.5 to 2.5 minutes on two cores.
 #   scripts/lookdev.sh [BUILD_DIR]        default build dir: build
 set -euo pipefail
 cd "$(dirname "$0")/.."

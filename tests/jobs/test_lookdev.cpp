@@ -186,6 +186,24 @@ TEST(RenderCli, CompareUnderAnHdrEnvironment) {
   EXPECT_NE(flip.frames[5].pixels, flip.frames[2].pixels);  // f82's difference, not schlick's
 }
 
+// Without --size a comparison renders at kCompareSizePx: 512-px flip frames and PNGs; --size wins.
+TEST(RenderCli, CompareDefaultsTo512PxFrames) {
+  test::TempDir tmp;
+  const auto r = run_command(cli() + " render gold --compare schlick --samples 1 --out '" +
+                             tmp.path() + "/g.exr'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("render: 512 × 512 px"), std::string::npos) << r.err;
+  EXPECT_EQ(report::read_png(tmp.path() + "/g.truth.png").width, 512);
+  std::ifstream in(tmp.path() + "/g.flip.webp", std::ios::binary);
+  const auto flip =
+      report::decode_webp(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.webp");
+  ASSERT_EQ(flip.frames.size(), 3u);
+  for (const auto& f : flip.frames) EXPECT_EQ(f.width, 512);
+  const auto single =
+      run_command(cli() + " render gold --samples 1 --out '" + tmp.path() + "/s.exr'");
+  EXPECT_NE(single.err.find("render: 255 × 255 px"), std::string::npos) << single.err;
+}
+
 // --flip gif writes the dithered GIF instead (same frames); another format is exit 2 with one line.
 TEST(RenderCli, FlipFormats) {
   test::TempDir tmp;
