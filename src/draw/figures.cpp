@@ -338,8 +338,24 @@ namespace {
 // its tiles, tiles kSheetGap apart, the shared colour bar at the right.
 constexpr int kSheetMargin = 16, kSheetTitle = 30, kSheetNoteLine = 18, kSheetNotes = 2,
               kSheetGap = 12, kSheetLabel = 22, kSheetRowGap = 18, kSheetBar = 110;
+// Tiles narrower than this still get a column this wide, so that their labels stay legible; a
+// label wider than its column is set smaller to fit, down to kSheetMinLabelPt.
+constexpr int kSheetMinColumn = 180;
+constexpr double kSheetLabelPt = 12, kSheetMinLabelPt = 8;
 
-void add_sheet_row(Drawing& dr, const ContactSheet& s, size_t r, double scale) {
+// The label size that fits `text` in `width` pixels (at least kSheetMinLabelPt).
+double fitting_label_pt(const std::string& text, int width, const LabelFont& font) {
+  double pt = kSheetLabelPt;  // half-point steps: hinted widths do not scale exactly with size
+  while (pt > kSheetMinLabelPt && text_width_px(text, pt, font) > width) pt -= 0.5;
+  return pt;
+}
+
+int sheet_column(const ContactSheet& s) {
+  return std::max(s.truth.width, kSheetMinColumn);
+}
+
+void add_sheet_row(Drawing& dr, const ContactSheet& s, size_t r, double scale,
+                   const LabelFont& font) {
   const auto& row = s.rows[r];
   const int size = s.truth.width, top = sheet_row_top(s, r);
   const std::string labels[3] = {
@@ -347,7 +363,11 @@ void add_sheet_row(Drawing& dr, const ContactSheet& s, size_t r, double scale) {
       fmt::format("ΔE2000: mean {:.2f}, max {:.2f}", row.mean_de2000, row.max_de2000)};
   for (int c = 0; c < 3; ++c) {
     const Point p = sheet_tile(s, r, c);
-    dr.add(Text{p.x, double(top + 15), labels[c], 12, c == 2 ? kGreyInk : kInk});
+    dr.add(
+        Text{p.x, double(top + 15), labels[c],
+             fitting_label_pt(
+                 labels[c], (c == 2 ? size + kHeatBarGap : sheet_column(s) + kSheetGap) - 4, font),
+             c == 2 ? kGreyInk : kInk});
   }
   dr.add(Picture{int(sheet_tile(s, r, 0).x), int(sheet_tile(s, r, 0).y), s.truth});
   dr.add(Picture{int(sheet_tile(s, r, 1).x), int(sheet_tile(s, r, 1).y), row.render});
@@ -364,7 +384,7 @@ int sheet_row_top(const ContactSheet& s, size_t row) {
 }
 
 Point sheet_tile(const ContactSheet& s, size_t row, int column) {
-  return {double(kSheetMargin + column * (s.truth.width + kSheetGap)),
+  return {double(kSheetMargin + column * (sheet_column(s) + kSheetGap)),
           double(sheet_row_top(s, row) + kSheetLabel)};
 }
 
@@ -384,14 +404,15 @@ Drawing contact_sheet_drawing(const ContactSheet& s, const LabelFont& font) {
   Drawing dr;
   double text_w = text_width_px(s.title, 17, font);
   for (const auto& line : s.notes) text_w = std::max(text_w, text_width_px(line, 12, font));
-  dr.width = std::max(kSheetMargin + 3 * (size + kSheetGap) + kSheetBar,
-                      static_cast<int>(std::ceil(2 * kSheetMargin + text_w)));
+  dr.width =
+      std::max(kSheetMargin + 2 * (sheet_column(s) + kSheetGap) + size + kSheetGap + kSheetBar,
+               static_cast<int>(std::ceil(2 * kSheetMargin + text_w)));
   dr.height = sheet_row_top(s, s.rows.size()) + 8;
   dr.add(Text{double(kSheetMargin), double(kSheetTitle), s.title, 17, kInk});
   for (size_t i = 0; i < s.notes.size(); ++i)
     dr.add(Text{double(kSheetMargin), double(kSheetTitle + 22 + kSheetNoteLine * i), s.notes[i], 12,
                 kGreyInk});
-  for (size_t r = 0; r < s.rows.size(); ++r) add_sheet_row(dr, s, r, scale);
+  for (size_t r = 0; r < s.rows.size(); ++r) add_sheet_row(dr, s, r, scale, font);
   const Point last = sheet_tile(s, 0, 2);
   const ColourBar bar{
       int(last.x) + size + kHeatBarGap, int(last.y) + 16, kHeatBarW,

@@ -60,6 +60,30 @@ TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
   EXPECT_GT(report::sheet_tile(s, 1, 0).y, report::sheet_tile(s, 0, 0).y + n);
 }
 
+// Tiles narrower than their labels: every label of a row ends before the next one begins, as the
+// font measures it at the size it is set in.
+TEST(ContactSheet, LabelsOfSmallTilesDoNotOverlap) {
+  const int n = 21;
+  report::ContactSheet s;
+  s.title = "Gold";
+  s.truth = flat(n, n, {10, 200, 10});
+  s.rows.push_back({"generalized_schlick (rendered parameters)", flat(n, n, {200, 10, 10}),
+                    std::vector<double>(static_cast<size_t>(n) * n, 0.5), 0.512, 1.234});
+  const report::LabelFont font;
+  const auto dr = report::contact_sheet_drawing(s, font);
+  const double label_y = report::sheet_tile(s, 0, 0).y - 7;  // the label line above the tiles
+  std::vector<const report::Text*> labels;
+  for (const auto& shape : dr.shapes)
+    if (const auto* t = std::get_if<report::Text>(&shape); t && t->y == label_y)
+      labels.push_back(t);
+  ASSERT_EQ(labels.size(), 3u);
+  for (size_t i = 0; i + 1 < labels.size(); ++i)
+    EXPECT_LT(labels[i]->x + report::text_width_px(labels[i]->utf8, labels[i]->size_px, font),
+              labels[i + 1]->x)
+        << labels[i]->utf8;
+  EXPECT_GE(labels[1]->size_px, 8.0);  // shrunk, but no smaller than legible
+}
+
 TEST(Html, TableCellsAreEscapedAndSortable) {
   analysis::Table t;
   t.name = "x";
