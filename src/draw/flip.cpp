@@ -29,10 +29,18 @@ Drawing frame_drawing(const Image8& render) {
   return dr;
 }
 
-void add_band(Drawing& dr, int top, const std::string& label, const std::string& detail) {
-  const double fs = text_size(dr.width), x = dr.width / 2.0;
-  dr.add(Text{x, top + 1.4 * fs, label, fs, kLabel, Align::Center});
-  dr.add(Text{x, top + 2.8 * fs, detail, fs * 0.9, kDetail, Align::Center});
+// `size`, or smaller (down to 7 px) so that `text` fits in `width` pixels.
+double fitted(const std::string& text, double size, double width, const LabelFont& font) {
+  const double w = text_width_px(text, size, font);
+  return w <= width ? size : std::max(7.0, size * width / w);
+}
+
+void add_band(Drawing& dr, int top, const std::string& label, const std::string& detail,
+              const LabelFont& font) {
+  const double fs = text_size(dr.width), x = dr.width / 2.0, room = dr.width - 8.0;
+  dr.add(Text{x, top + 1.4 * fs, label, fitted(label, fs, room, font), kLabel, Align::Center});
+  dr.add(Text{x, top + 2.8 * fs, detail, fitted(detail, fs * 0.9, room, font), kDetail,
+              Align::Center});
 }
 
 // A horizontal ramp `width` × `height`: colour(t) for t from 0 at the left to 1 at the right.
@@ -65,16 +73,21 @@ struct Panel {
   Image8 image, bar;
   std::string caption, low, middle, high;
 };
-void add_panel(Drawing& dr, const Panel& p, int x, int y) {
+void add_panel(Drawing& dr, const Panel& p, int x, int y, const LabelFont& font) {
   const double fs = text_size(dr.width), w = p.image.width;
-  dr.add(Text{x + w / 2, y - 0.6 * fs, p.caption, fs, kLabel, Align::Center});
+  dr.add(Text{x + w / 2, y - 0.6 * fs, p.caption, fitted(p.caption, fs, w, font), kLabel,
+              Align::Center});
   dr.add(Picture{x, y, p.image});
   const int bar_y = y + p.image.height + static_cast<int>(0.6 * fs);
   dr.add(Picture{x, bar_y, p.bar});
   const double text_y = bar_y + p.bar.height + 1.2 * fs;
-  dr.add(Text{double(x), text_y, p.low, fs * 0.9, kDetail, Align::Left});
-  dr.add(Text{x + w / 2, text_y, p.middle, fs * 0.9, kDetail, Align::Center});
-  dr.add(Text{x + w, text_y, p.high, fs * 0.9, kDetail, Align::Right});
+  // The three ramp labels share the panel's width: each fits a third.
+  const double small = std::min({fitted(p.low, fs * 0.9, w / 3 - 2, font),
+                                 fitted(p.middle, fs * 0.9, w / 3 - 2, font),
+                                 fitted(p.high, fs * 0.9, w / 3 - 2, font)});
+  dr.add(Text{double(x), text_y, p.low, small, kDetail, Align::Left});
+  dr.add(Text{x + w / 2, text_y, p.middle, small, kDetail, Align::Center});
+  dr.add(Text{x + w, text_y, p.high, small, kDetail, Align::Right});
 }
 
 }  // namespace
@@ -83,7 +96,7 @@ Image8 flip_frame(const Image8& render, const std::string& label, const std::str
                   const LabelFont& font) {
   Drawing dr = frame_drawing(render);
   dr.add(Picture{0, 0, render});
-  add_band(dr, render.height, label, detail);
+  add_band(dr, render.height, label, detail, font);
   return rasterize(dr, font);
 }
 
@@ -133,11 +146,12 @@ Image8 flip_difference_frame(const Image8& truth, const Image8& model,
                    fmt::format("−{}", kFlipDifferenceRange),
                    "equal",
                    fmt::format("+{} codes", kFlipDifferenceRange)};
-  add_panel(dr, heat, crop, top);
-  add_panel(dr, diff, truth.width - half + crop, top);
+  add_panel(dr, heat, crop, top, font);
+  add_panel(dr, diff, truth.width - half + crop, top, font);
   add_band(dr, truth.height, label,
            fmt::format("ΔE2000 on the sheet's scale 0–{:g}; grey + {} × (model − truth) codes",
-                       scale, kFlipDifferenceGain));
+                       scale, kFlipDifferenceGain),
+           font);
   return rasterize(dr, font);
 }
 

@@ -208,13 +208,16 @@ ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedM
 }
 
 // The flip's frames: per model the truth, the model and its difference frame.
+// The truth frame's second line names the view, or for a dielectric that it shows the reflection
+// only.
 std::vector<Image8> flip_frames(const ContactSheet& sheet, const analysis::MaterialRender& images,
-                                double scale, const color::DisplayTransform& view,
+                                double scale, const color::DisplayTransform& view, bool reflection,
                                 const LabelFont& font) {
   std::vector<Image8> frames;
   const std::string& through = view.description();  // "display D, view V (where), exposure"
-  const Image8 truth = flip_frame(sheet.truth, "ground truth (spectral)",
-                                  through.substr(0, through.find(" (")), font);
+  const Image8 truth = flip_frame(
+      sheet.truth, "ground truth (spectral)",
+      reflection ? analysis::kReflectionOnlyNote : through.substr(0, through.find(" (")), font);
   for (size_t i = 0; i < images.models.size(); ++i) {
     const auto& row = sheet.rows[i];
     const std::string name = fresnel::model_spec(images.models[i].model).name;
@@ -248,7 +251,7 @@ Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial
         encode(heatmap_drawing(mr.de2000, mr.image.width, mr.image.height, title, font, scale),
                FileType::Png, font));
   }
-  const auto frames = flip_frames(sheet, images, scale, view, font);
+  const auto frames = flip_frames(sheet, images, scale, view, reflection_only(m), font);
   if (r.flip == "gif")
     files.emplace_back(base + ".flip.gif", encode_gif(frames, kFlipDelayMs / 10));
   else
