@@ -54,6 +54,26 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "schlick,f82,gulbrandsen", "output file (.png, .svg or .pdf)");
 }
 
+namespace {
+
+// render's lighting: an EXR environment, its colour space, rotation and exposure.
+void add_environment_options(CLI::App& sub, report::RenderRequest& r) {
+  sub.add_option("--env", r.env,
+                 "a latitude-longitude OpenEXR environment (default: the analytic sky)");
+  sub.add_option(
+      "--env-space", r.env_space,
+      "the environment's colour space (default: its chromaticities attribute, else lin_rec709)");
+  sub.add_option("--env-rotate", r.env_rotate_deg,
+                 "environment rotation about the vertical axis, degrees")
+      ->capture_default_str();
+  sub.add_option("--env-exposure", r.env_exposure_ev,
+                 "stops above the environment's normalization (mean luminance 1: a white diffuse "
+                 "ball reads 1)")
+      ->capture_default_str();
+}
+
+}  // namespace
+
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub =
       app.add_subcommand("render",
@@ -76,18 +96,7 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
          "--params", r->params,
          "derived, fitted (to the curve) or rendered (to the render under IBL and area lights)")
       ->capture_default_str();
-  sub->add_option("--env", r->env,
-                  "a latitude-longitude OpenEXR environment (default: the analytic sky)");
-  sub->add_option(
-      "--env-space", r->env_space,
-      "the environment's colour space (default: its chromaticities attribute, else lin_rec709)");
-  sub->add_option("--env-rotate", r->env_rotate_deg,
-                  "environment rotation about the vertical axis, degrees")
-      ->capture_default_str();
-  sub->add_option("--env-exposure", r->env_exposure_ev,
-                  "stops above the environment's normalization (mean luminance 1: a white diffuse "
-                  "ball reads 1)")
-      ->capture_default_str();
+  add_environment_options(*sub, *r);
   sub->add_option("--roughness", r->settings.roughness,
                   "GGX perceptual roughness (0: perfect mirror)")
       ->capture_default_str();
