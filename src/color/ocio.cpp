@@ -211,19 +211,6 @@ RgbSpace SpaceLibrary::space(const std::string& name,
   return s;
 }
 
-void SpaceLibrary::encode_srgb_display(std::vector<float>& rgb) {
-  // Linear Rec.709 → XYZ-D65 → sRGB (piecewise EOTF inverse), both OCIO built-ins.
-  auto config = OCIO::Config::CreateRaw();
-  auto g = OCIO::GroupTransform::Create();
-  g->appendTransform(builtin_to_xyz_d65("lin_rec709", OCIO::TRANSFORM_DIR_FORWARD));
-  g->appendTransform(ocio_builtin("DISPLAY - CIE-XYZ-D65_to_sRGB"));
-  const auto cpu = config->getProcessor(g)->getDefaultCPUProcessor();
-  for (auto& v : rgb) v = std::clamp(v, 0.0f, 1.0f);
-  OCIO::PackedImageDesc img(rgb.data(), static_cast<long>(rgb.size() / 3), 1, 3);
-  cpu->apply(img);
-  for (auto& v : rgb) v = std::clamp(v, 0.0f, 1.0f);
-}
-
 struct DisplayTransform::Impl {
   OCIO::ConstCPUProcessorRcPtr cpu;
 };

@@ -60,10 +60,6 @@ class SpaceLibrary {
   bool is_builtin() const { return config_path_.empty(); }
   const std::string& config_path() const { return config_path_; }
 
-  // Linear Rec.709 → sRGB display encoding (OCIO's piecewise sRGB curve), 3 floats per pixel,
-  // in place; values are clamped to [0, 1] after encoding.
-  static void encode_srgb_display(std::vector<float>& rgb_linear_rec709);
-
  private:
   friend class DisplayTransform;
   struct Impl;
