@@ -14,57 +14,16 @@ the largest error of a 5 × 5 block's mean colour against the PNG's.
 The region is given in fractions of the frame's width (the render is the top square of a frame),
 so it covers the same part of the sphere at any size; the default, 0.30,0.10,0.70,0.40, is the sky
 above the horizon in the sphere's upper middle under scripts/lookdev.sh's sunset.
-Standard library only (PNG decoded with zlib).
+Standard library only (PNGs decoded by png_rgb.py beside it).
 """
 import argparse
 import os
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
 
-
-def read_png(path):
-    """(width, height, rows of RGB bytes) of an 8-bit RGB or RGBA, non-interlaced PNG."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        sys.exit(f"flip_banding: {path}: not a PNG")
-    pos, idat, width = 8, b"", 0
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            if depth != 8 or colour not in (2, 6) or interlace:
-                sys.exit(f"flip_banding: {path}: only 8-bit RGB(A) non-interlaced PNGs")
-            bpp = 3 if colour == 2 else 4
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    raw = zlib.decompress(idat)
-    stride = width * bpp
-    rows, prev = [], bytearray(stride)
-    for y in range(height):
-        line = raw[y * (stride + 1):(y + 1) * (stride + 1)]
-        kind, cur = line[0], bytearray(line[1:])
-        for i in range(stride):
-            a = cur[i - bpp] if i >= bpp else 0
-            b, c = prev[i], (prev[i - bpp] if i >= bpp else 0)
-            if kind == 1:
-                cur[i] = (cur[i] + a) & 255
-            elif kind == 2:
-                cur[i] = (cur[i] + b) & 255
-            elif kind == 3:
-                cur[i] = (cur[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                cur[i] = (cur[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(bytes(cur[i] for i in range(stride) if i % bpp < 3))
-        prev = cur
-    return width, height, rows
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png_rgb import read_png  # noqa: E402
 
 
 def box(width, region):
