@@ -299,8 +299,9 @@ DisplayTransform::DisplayTransform(const SpaceLibrary& spaces, const std::string
                                  view, e.what()));
   }
   impl_ = impl;
-  description_ = fmt::format("display {}, view {} ({}), exposure {:+g} EV", display, view, source,
-                             vs.exposure_ev);
+  display_and_view_ = fmt::format("display {}, view {}", display, view);
+  description_ =
+      fmt::format("{} ({}), exposure {:+g} EV", display_and_view_, source, vs.exposure_ev);
 }
 
 void DisplayTransform::apply(std::vector<float>& rgb) const {

@@ -95,11 +95,13 @@ class DisplayTransform {
   void apply(std::vector<float>& rgb) const;
   // "display sRGB, view ACES 1.0 - SDR Video (OpenColorIO built-in), exposure +0 EV".
   const std::string& description() const { return description_; }
+  // "display sRGB, view ACES 1.0 - SDR Video".
+  const std::string& display_and_view() const { return display_and_view_; }
 
  private:
   struct Impl;
   std::shared_ptr<const Impl> impl_;
-  std::string description_;
+  std::string display_and_view_, description_;
 };
 
 }  // namespace fl::color

@@ -309,6 +309,14 @@ double text_width_px(const std::string& utf8, double size_px, const LabelFont& f
   return te.x_advance;
 }
 
+double text_size_to_fit(const std::string& utf8, double size_px, double min_px, double width_px,
+                        const LabelFont& font) {
+  double size = size_px;
+  while (size > min_px && text_width_px(utf8, size, font) > width_px)
+    size = std::max(min_px, size - 0.5);
+  return size;
+}
+
 void write_drawing(const std::string& path, const Drawing& d, const LabelFont& font) {
   write_file_atomic(path, encode(d, file_type(path), font));
 }

@@ -107,6 +107,10 @@ Image8 rasterize(const Drawing& d, const LabelFont& font);
 
 // The advance width of `utf8` in `font` as PNG output sets it (hinted metrics), for layout.
 double text_width_px(const std::string& utf8, double size_px, const LabelFont& font);
+// size_px, or the largest size below it in half-pixel steps (hinted widths do not scale exactly
+// with the size) at which `utf8` is at most width_px wide, but not below min_px.
+double text_size_to_fit(const std::string& utf8, double size_px, double min_px, double width_px,
+                        const LabelFont& font);
 
 // encode() by the extension of `path`, written atomically.
 void write_drawing(const std::string& path, const Drawing& d, const LabelFont& font);

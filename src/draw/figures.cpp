@@ -339,16 +339,9 @@ namespace {
 constexpr int kSheetMargin = 16, kSheetTitle = 30, kSheetNoteLine = 18, kSheetNotes = 2,
               kSheetGap = 12, kSheetLabel = 22, kSheetRowGap = 18, kSheetBar = 110;
 // Tiles narrower than this still get a column this wide, so that their labels stay legible; a
-// label wider than its column is set smaller to fit, down to kSheetMinLabelPt.
+// label wider than its column is set smaller to fit (text_size_to_fit), down to kSheetMinLabelPt.
 constexpr int kSheetMinColumn = 180;
 constexpr double kSheetLabelPt = 12, kSheetMinLabelPt = 8;
-
-// The label size that fits `text` in `width` pixels (at least kSheetMinLabelPt).
-double fitting_label_pt(const std::string& text, int width, const LabelFont& font) {
-  double pt = kSheetLabelPt;  // half-point steps: hinted widths do not scale exactly with size
-  while (pt > kSheetMinLabelPt && text_width_px(text, pt, font) > width) pt -= 0.5;
-  return pt;
-}
 
 int sheet_column(const ContactSheet& s) {
   return std::max(s.truth.width, kSheetMinColumn);
@@ -363,11 +356,11 @@ void add_sheet_row(Drawing& dr, const ContactSheet& s, size_t r, double scale,
       fmt::format("ΔE2000: mean {:.2f}, max {:.2f}", row.mean_de2000, row.max_de2000)};
   for (int c = 0; c < 3; ++c) {
     const Point p = sheet_tile(s, r, c);
-    dr.add(
-        Text{p.x, double(top + 15), labels[c],
-             fitting_label_pt(
-                 labels[c], (c == 2 ? size + kHeatBarGap : sheet_column(s) + kSheetGap) - 4, font),
-             c == 2 ? kGreyInk : kInk});
+    dr.add(Text{
+        p.x, double(top + 15), labels[c],
+        text_size_to_fit(labels[c], kSheetLabelPt, kSheetMinLabelPt,
+                         (c == 2 ? size + kHeatBarGap : sheet_column(s) + kSheetGap) - 4, font),
+        c == 2 ? kGreyInk : kInk});
   }
   dr.add(Picture{int(sheet_tile(s, r, 0).x), int(sheet_tile(s, r, 0).y), s.truth});
   dr.add(Picture{int(sheet_tile(s, r, 1).x), int(sheet_tile(s, r, 1).y), row.render});

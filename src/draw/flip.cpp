@@ -31,8 +31,7 @@ Drawing frame_drawing(const Image8& render) {
 
 // `size`, or smaller (down to 7 px) so that `text` fits in `width` pixels.
 double fitted(const std::string& text, double size, double width, const LabelFont& font) {
-  const double w = text_width_px(text, size, font);
-  return w <= width ? size : std::max(7.0, size * width / w);
+  return text_size_to_fit(text, size, 7.0, width, font);
 }
 
 void add_band(Drawing& dr, int top, const std::string& label, const std::string& detail,

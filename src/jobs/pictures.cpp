@@ -102,12 +102,11 @@ Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::Lo
 
 Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
                       const RenderRequest& request, const LabelFont* font) {
-  const color::DisplayTransform& view = ctx.display();
   Output all;
   for (const auto& m : ms) {
     RenderRequest r = request;
     r.out = material_output(request.out, m, ms.size());
-    auto o = render_output(ctx, m, r, view, font);
+    auto o = render_output(ctx, m, r, font);
     for (auto& f : o.files) all.files.push_back(std::move(f));
     for (auto& line : o.messages) all.messages.push_back(std::move(line));
   }
@@ -181,9 +180,9 @@ FlipFiles reproduce_flips(const analysis::Context& ctx,
   for (size_t i = 0; i < n; ++i) {
     const auto& mat = studies[i].material->material;
     std::vector<std::string> labels{
-        analysis::backdrop_for(mat.material_class) == analysis::Backdrop::Dark
-            ? "ground truth (spectral)"
-            : fmt::format("ground truth (spectral; {})", analysis::kReflectionOnlyNote)};
+        analysis::reflection_only(mat.material_class)
+            ? fmt::format("ground truth (spectral; {})", analysis::kReflectionOnlyNote)
+            : "ground truth (spectral)"};
     for (const auto m : models) labels.push_back(fresnel::model_spec(m).name);
     const std::string path = "figures/flip-" + mat.key + ".png";
     out.files.emplace_back(path, std::move(sprites[i]));

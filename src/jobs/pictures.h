@@ -6,7 +6,6 @@
 
 #include "analysis/render/render.h"
 #include "analysis/study/study.h"
-#include "color/ocio.h"
 #include "documents/html.h"
 #include "draw/drawing.h"
 #include "io/writer.h"
@@ -55,10 +54,10 @@ void check_render_request(const RenderRequest& request);
 // FILE.sheet.png. The heat maps, flip frames and sheet are labelled in
 // `font`, which only a render that draws them needs (render_draws_labels; std::invalid_argument
 // when it is null there).
-// The pictures go through `view`; the EXR and every ΔE2000 stay scene-linear.
+// The pictures go through the context's display view (Context::display); the EXR and every
+// ΔE2000 stay scene-linear.
 Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                     const RenderRequest& request, const color::DisplayTransform& view,
-                     const LabelFont* font);
+                     const RenderRequest& request, const LabelFont* font);
 // Whether the request draws labelled pictures (a model other than the truth, or a comparison).
 bool render_draws_labels(const RenderRequest& request);
 

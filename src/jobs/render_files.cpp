@@ -25,16 +25,17 @@ namespace {
 // A flip frame stays on screen this long (milliseconds; the GIF counts hundredths of a second).
 constexpr int kFlipDelayMs = 900;
 
-// The render through `view` on the backdrop of m's class (dielectrics: reflection only, over grey).
-Image8 display_image(const color::DisplayTransform& view, const analysis::SphereImage& img,
+// The render through the context's view on the backdrop of m's class (dielectrics: reflection
+// only, over grey).
+Image8 display_image(const analysis::Context& ctx, const analysis::SphereImage& img,
                      const analysis::LoadedMaterial& m) {
-  return Image8(
-      img.width, img.height,
-      analysis::sphere_display(view, img, analysis::backdrop_for(m.material.material_class)));
+  return Image8(img.width, img.height,
+                analysis::sphere_display(ctx.display(), img,
+                                         analysis::backdrop_for(m.material.material_class)));
 }
 
 bool reflection_only(const analysis::LoadedMaterial& m) {
-  return analysis::backdrop_for(m.material.material_class) != analysis::Backdrop::Dark;
+  return analysis::reflection_only(m.material.material_class);
 }
 
 const fresnel::ModelSpec* render_model(const RenderRequest& r) {
@@ -132,8 +133,7 @@ std::string model_label(fresnel::Model model, const std::string& kind) {
 
 Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                    const RenderRequest& r, const Scene& scene,
-                   const analysis::MaterialRender& images, const color::DisplayTransform& view,
-                   const LabelFont* font) {
+                   const analysis::MaterialRender& images, const LabelFont* font) {
   const std::string base = r.out.substr(0, r.out.size() - 4);
   const auto& shown = images.models.empty() ? images.truth : images.models[0].image;
   ExrImage exr = exr_header(ctx, m, r, scene, shown.width);
@@ -147,9 +147,9 @@ Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial&
       model ? parameter_text(images.models[0].model, images.models[0].params) : "");
   Files files;
   files.emplace_back(r.out, encode_exr(exr));
-  files.emplace_back(base + ".png", encode_png(display_image(view, shown, m)));
+  files.emplace_back(base + ".png", encode_png(display_image(ctx, shown, m)));
   if (model) {
-    files.emplace_back(base + ".truth.png", encode_png(display_image(view, images.truth, m)));
+    files.emplace_back(base + ".truth.png", encode_png(display_image(ctx, images.truth, m)));
     const auto title = fmt::format("{}: ΔE2000, truth vs {}", m.material.name,
                                    fresnel::model_spec(images.models[0].model).name);
     files.emplace_back(
@@ -183,26 +183,25 @@ std::string compare_exr(const analysis::Context& ctx, const analysis::LoadedMate
 
 ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                            const RenderRequest& r, const Scene& scene,
-                           const analysis::MaterialRender& images,
-                           const color::DisplayTransform& view) {
+                           const analysis::MaterialRender& images) {
   ContactSheet sheet;
   sheet.title = fmt::format("{}: ground truth against each model (roughness {:g})", m.material.name,
                             r.settings.roughness);
-  sheet.notes = {
-      scene.lighting,
-      fmt::format("{} working space, {} illuminant; GGX specular, {} samples per "
-                  "strategy; ΔE2000 per pixel "
-                  "against the truth (CIELAB relative to Y = 1)",
-                  ctx.settings().space, ctx.settings().illuminant, r.settings.samples),
-      "pictures through OpenColorIO " + view.description() + "; ΔE2000 on the scene-linear values"};
+  sheet.notes = {scene.lighting,
+                 fmt::format("{} working space, {} illuminant; GGX specular, {} samples per "
+                             "strategy; ΔE2000 per pixel "
+                             "against the truth (CIELAB relative to Y = 1)",
+                             ctx.settings().space, ctx.settings().illuminant, r.settings.samples),
+                 "pictures through OpenColorIO " + ctx.display().description() +
+                     "; ΔE2000 on the scene-linear values"};
   if (reflection_only(m)) {
     sheet.title += ", reflection only";
     sheet.notes.push_back(std::string(analysis::kReflectionOnlyNote) +
                           ": the render holds the surface reflection, not the light through it");
   }
-  sheet.truth = display_image(view, images.truth, m);
+  sheet.truth = display_image(ctx, images.truth, m);
   for (const auto& mr : images.models)
-    sheet.rows.push_back({model_label(mr.model, r.params), display_image(view, mr.image, m),
+    sheet.rows.push_back({model_label(mr.model, r.params), display_image(ctx, mr.image, m),
                           mr.de2000, mr.stats.mean, mr.stats.max});
   return sheet;
 }
@@ -214,10 +213,9 @@ std::vector<Image8> flip_frames(const ContactSheet& sheet, const analysis::Mater
                                 double scale, const color::DisplayTransform& view, bool reflection,
                                 const LabelFont& font) {
   std::vector<Image8> frames;
-  const std::string& through = view.description();  // "display D, view V (where), exposure"
-  const Image8 truth = flip_frame(
-      sheet.truth, "ground truth (spectral)",
-      reflection ? analysis::kReflectionOnlyNote : through.substr(0, through.find(" (")), font);
+  const Image8 truth =
+      flip_frame(sheet.truth, "ground truth (spectral)",
+                 reflection ? analysis::kReflectionOnlyNote : view.display_and_view(), font);
   for (size_t i = 0; i < images.models.size(); ++i) {
     const auto& row = sheet.rows[i];
     const std::string name = fresnel::model_spec(images.models[i].model).name;
@@ -233,10 +231,9 @@ std::vector<Image8> flip_frames(const ContactSheet& sheet, const analysis::Mater
 
 Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                     const RenderRequest& r, const Scene& scene,
-                    const analysis::MaterialRender& images, const color::DisplayTransform& view,
-                    const LabelFont& font) {
+                    const analysis::MaterialRender& images, const LabelFont& font) {
   const std::string base = r.out.substr(0, r.out.size() - 4);
-  const ContactSheet sheet = contact_sheet(ctx, m, r, scene, images, view);
+  const ContactSheet sheet = contact_sheet(ctx, m, r, scene, images);
   Files files;
   files.emplace_back(r.out, compare_exr(ctx, m, r, scene, images));
   files.emplace_back(base + ".truth.png", encode_png(sheet.truth));
@@ -251,7 +248,7 @@ Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial
         encode(heatmap_drawing(mr.de2000, mr.image.width, mr.image.height, title, font, scale),
                FileType::Png, font));
   }
-  const auto frames = flip_frames(sheet, images, scale, view, reflection_only(m), font);
+  const auto frames = flip_frames(sheet, images, scale, ctx.display(), reflection_only(m), font);
   if (r.flip == "gif")
     files.emplace_back(base + ".flip.gif", encode_gif(frames, kFlipDelayMs / 10));
   else
@@ -306,8 +303,7 @@ bool render_draws_labels(const RenderRequest& r) {
 }
 
 Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                     const RenderRequest& r, const color::DisplayTransform& view,
-                     const LabelFont* font) {
+                     const RenderRequest& r, const LabelFont* font) {
   check_render_request(r);
   if (!font && render_draws_labels(r))
     throw std::invalid_argument("render_output: heat maps need a label font");
@@ -325,10 +321,10 @@ Output render_output(const analysis::Context& ctx, const analysis::LoadedMateria
                   rs.size_px, rs.size_px, rs.roughness, rs.samples, 1 + images.models.size(), secs,
                   scene.lighting));
   o.messages.push_back(
-      "render: pictures through OpenColorIO " + view.description() +
+      "render: pictures through OpenColorIO " + ctx.display().description() +
       (reflection_only(m) ? std::string("; ") + analysis::kReflectionOnlyNote : ""));
-  o.files = r.compare.empty() ? single_files(ctx, m, r, scene, images, view, font)
-                              : compare_files(ctx, m, r, scene, images, view, *font);
+  o.files = r.compare.empty() ? single_files(ctx, m, r, scene, images, font)
+                              : compare_files(ctx, m, r, scene, images, *font);
   const auto& rgb =
       (images.models.empty() || !r.compare.empty() ? images.truth : images.models[0].image).rgb;
   const size_t c = static_cast<size_t>(rs.size_px / 2) * rs.size_px + rs.size_px / 2;

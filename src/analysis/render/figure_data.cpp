@@ -129,6 +129,10 @@ Backdrop backdrop_for(spectral::MaterialClass c) {
   return c == spectral::MaterialClass::Dielectric ? Backdrop::ReflectionOnMidGrey : Backdrop::Dark;
 }
 
+bool reflection_only(spectral::MaterialClass c) {
+  return backdrop_for(c) == Backdrop::ReflectionOnMidGrey;
+}
+
 std::vector<std::uint8_t> sphere_display(const color::DisplayTransform& view,
                                          const SphereImage& img, Backdrop backdrop) {
   std::vector<float> working(img.rgb.size());

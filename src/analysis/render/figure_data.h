@@ -101,6 +101,8 @@ MaterialSwatches material_swatches(const Context& ctx, const spectral::ComplexIo
 enum class Backdrop { Dark, ReflectionOnMidGrey };
 inline constexpr float kDarkBackdrop = 0.02f, kMidGreyBackdrop = 0.18f;
 Backdrop backdrop_for(spectral::MaterialClass c);
+// Whether pictures of class c show the reflection only (on the ReflectionOnMidGrey backdrop).
+bool reflection_only(spectral::MaterialClass c);
 // The caption a picture on the ReflectionOnMidGrey backdrop carries.
 inline constexpr const char* kReflectionOnlyNote =
     "reflection only (no transmission), added over mid grey 0.18";
