@@ -18,6 +18,7 @@ PACKAGES=(
   liblcms2-dev libcairo2-dev fonts-dejavu-core libgif-dev libwebp-dev
   clang libclang-rt-14-dev clang-format python3
   glslang-tools spirv-tools
+  mesa-vulkan-drivers libvulkan-dev vulkan-tools
   chromium nodejs npm
 )
 
