@@ -19,8 +19,9 @@
 namespace fl {
 namespace {
 
-// F0 of the same data read from another file: the SOPRA resampling moves it by < 1e-4 where the
-// rows are 5-10 nm apart; 2e-3 is the acceptance of the exports.
+// F0 of the same data read from another file. The SOPRA file is resampled on the reader's own 5 nm
+// grid, so every file gives the page's F0 to the presets' six decimals (measured: 0.810767,
+// 0.643424, 0.542162 for each); 2e-3 is the acceptance of the exports.
 constexpr double kSameF0 = 2e-3;
 
 std::string decimal_comma(double v) {
