@@ -63,9 +63,16 @@ std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const st
 // `text` on standard output when `out` is empty, else written to the file `out` atomically
 // (complete or not at all; InputError when its folder does not exist).
 void emit(const GlobalOptions& g, const std::string& out, const std::string& text);
-// InputError unless the folder that would hold the output file `path` exists (outputs never
-// create folders a typo named).
-void require_output_folder(const std::string& path);
+// The writer's rule for where outputs go (io/writer.h): the folder that holds `path` exists and
+// is writable.
+using report::require_output_folder;
+// The check of every --out and --plot option, run while the command line is parsed (before any
+// work): not empty, and require_output_folder.
+CLI::Validator output_location();
+// A number option's check: finite (NaN and infinities refused) and in [lo, hi].
+CLI::Validator finite_range(double lo, double hi);
+// A text option's check: not empty.
+CLI::Validator non_empty();
 // Writes out.files (all or nothing), then prints out.messages; returns exit status 0.
 int write_output(const GlobalOptions& g, const report::Output& out);
 

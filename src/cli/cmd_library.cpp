@@ -69,7 +69,8 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
   sub->add_option("--out", a->out,
                   "output folder, replaced as a whole (new, empty, or one `library` wrote)")
-      ->required();
+      ->required()
+      ->check(output_location());
   sub->add_option("--class", a->cls, "metal (conductors, from the data), dielectric or all")
       ->capture_default_str();
   sub->add_flag("--strict", a->strict,

@@ -49,7 +49,7 @@ CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, 
                              std::shared_ptr<report::LutRequest> r) {
   auto* sub = lut.add_subcommand(name, help);
   sub->add_option("--size", r->size, "cells per axis (N×N; default 64)");
-  sub->add_option("--out", r->out, out_help)->required();
+  sub->add_option("--out", r->out, out_help)->required()->check(output_location());
   sub->add_option("--samples", r->samples, "quasi-Monte Carlo samples per cell")
       ->capture_default_str();
   sub->add_option("--threads", r->threads, "worker threads (0: all cores)")->capture_default_str();

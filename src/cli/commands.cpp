@@ -146,7 +146,8 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--shader", a->shader,
                   "mtlx only: generalized_schlick (default), open_pbr_surface or standard_surface");
   sub->add_option("--out", a->out,
-                  "write to FILE (atomically: complete or not at all) instead of standard output");
+                  "write to FILE (atomically: complete or not at all) instead of standard output")
+      ->check(output_location());
   sub->add_option("--basis", a->basis,
                   "csv, md, json: the coefficients of basis3, basis4 (default) or basis5 (K = 3, "
                   "4, 5)")
@@ -166,7 +167,6 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
     }
     if (a->basis != 0 && (format->kind != report::PresetKind::Table || a->openpbr))
       throw InputError("presets: --basis applies to the csv, md and json presets only");
-    if (!a->out.empty()) require_output_folder(a->out);
     selected = [&g, a, format] {
       emit(g, a->out,
            preset_documents(g, a->materials, *format, a->openpbr,
@@ -193,7 +193,9 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand("reproduce",
                                  "every table as DIR/NAME.csv and DIR/NAME.md, plus DIR/README.md");
   auto out = std::make_shared<std::string>();
-  sub->add_option("--out", *out, "output folder (created if missing)")->required();
+  sub->add_option("--out", *out, "output folder (created if missing; its parent must exist)")
+      ->required()
+      ->check(output_location());
   auto no_figures = std::make_shared<bool>(false);
   sub->add_flag("--no-figures", *no_figures,
                 "skip DIR/figures/ (colour strips and curve plots per material)");
@@ -209,7 +211,7 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
           in, font ? &*font : nullptr, [&g](const std::string& line) { progress(g, line); },
           lookdev_sheets(*out));
       for (auto& f : files) f.first = *out + "/" + f.first;
-      report::write_files_atomic(files);
+      report::write_files_atomic(files, *out);
       progress(g, fmt::format("reproduce: wrote {} files to {}", files.size(), *out));
       return 0;
     };

@@ -21,12 +21,16 @@ namespace {
 
 constexpr int kDefaultSize = 64;
 
-// The request with its size (default_size when 0), checked.
+// The request with its size (default_size when not given), checked.
 LutRequest sized(LutRequest r, int default_size) {
-  if (r.size == 0) r.size = default_size;
+  if (r.size == LutRequest::kSizeNotGiven) r.size = default_size;
   if (r.size < 2 || r.size > 4096)
     throw InputError(fmt::format("--size {} out of range (2 to 4096)", r.size));
-  if (r.samples < 1) throw InputError(fmt::format("--samples {} must be positive", r.samples));
+  if (r.samples < kMinLutSamples)
+    throw InputError(
+        fmt::format("--samples {} is below {}: fewer samples per cell leave the table visibly "
+                    "wrong ({} samples: DFG values off by up to 4e-3)",
+                    r.samples, kMinLutSamples, kMinLutSamples));
   if (r.threads < 0)
     throw InputError(fmt::format("--threads {} must be 0 (all) or positive", r.threads));
   return r;

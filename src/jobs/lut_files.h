@@ -22,8 +22,14 @@ DfgLayout dfg_layout_from_name(
 // Filament's DFG_LUT_SIZE: the table its engine compiles in (128 × 128 RGB16F).
 inline constexpr int kFilamentDfgSize = 128;
 
+// The fewest quasi-Monte Carlo samples per cell `lut` takes: fewer leave a table visibly wrong.
+// Measured: a 16² DFG table at 256 samples is off by up to 3.9e-3 from 8192 samples, at 1024 by
+// 1.1e-3 (docs/engines.md).
+inline constexpr int kMinLutSamples = 256;
+
 struct LutRequest {
-  int size = 0;  // cells per axis; 0: 64, or kFilamentDfgSize for the Filament layout
+  static constexpr int kSizeNotGiven = -1;
+  int size = kSizeNotGiven;  // cells per axis; not given: 64, or kFilamentDfgSize for Filament
   std::string out;
   int samples = analysis::kLutSamples;
   int threads = 0;                   // 0: every hardware thread

@@ -242,7 +242,7 @@ double defined(const std::string& text, const std::string& name) {
 TEST(ShippingCli, ShaderSizeIsTheTableSize) {
   test::TempDir dir;
   const std::string d = dir.path() + "/";
-  auto r = test::run_command(lut("ltc-moments --size 32 --samples 16 --out '" + d + "m.h'"));
+  auto r = test::run_command(lut("ltc-moments --size 32 --samples 256 --out '" + d + "m.h'"));
   ASSERT_EQ(r.status, 0) << r.err;
   const double table = defined(test::read_text_file(d + "m.h"), "FRESNEL_LAB_LTC_MOMENTS_SIZE");
   EXPECT_EQ(table, 32);
@@ -251,7 +251,7 @@ TEST(ShippingCli, ShaderSizeIsTheTableSize) {
   EXPECT_EQ(defined(r.out, "FRESNEL_LAB_LTC_SIZE"), table);
   EXPECT_FALSE(std::regex_search(r.out, std::regex(R"(\b64\b)"))) << r.out;
 
-  r = test::run_command(lut("energy --samples 16 --out '" + d + "e.h'"));
+  r = test::run_command(lut("energy --samples 256 --out '" + d + "e.h'"));
   ASSERT_EQ(r.status, 0) << r.err;
   const double default_table = defined(test::read_text_file(d + "e.h"), "FRESNEL_LAB_ENERGY_SIZE");
   r = test::run_command(test::cli() + " -q shader basis4 --lighting area");
