@@ -135,6 +135,8 @@ std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& s
                                                  study_progress(g, "fitting: "));
   auto t = openpbr ? analysis::openpbr_table(ctx, studies)
                    : analysis::presets_table(ctx, studies, basis_terms);
+  for (const auto& m : ms)
+    if (!m.resolved.empty()) t.notes.push_back(m.resolved);
   if (!options.skipped.empty())
     t.notes.push_back(
         fmt::format("skipped {}: {}", options.skipped.size(), fmt::join(options.skipped, "; ")));
