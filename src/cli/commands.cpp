@@ -155,7 +155,10 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   };
   auto a = std::make_shared<Args>();
   sub->add_option("MATERIALS", a->materials,
-                  std::string(kMaterialsHelp) + "; default: the catalog");
+                  std::string(kMaterialsHelp) +
+                      "; a metal's short name (gold, Ti) gives the element's trusted value: the "
+                      "consensus of its bulk pages where enough agree, else the recommended page; "
+                      "default: the catalog (the talk's pages)");
   sub->add_option("--format", a->format,
                   "csv, md, json, mtlx (a MaterialX document) or gltf (glTF 2.0 materials)")
       ->capture_default_str();
