@@ -34,15 +34,21 @@ const char* const kMaterialsHelp =
 
 std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g,
                                                 const analysis::Context& ctx,
-                                                const std::vector<std::string>& specs) {
+                                                const std::vector<std::string>& specs,
+                                                std::vector<std::string>* skipped,
+                                                bool allow_empty) {
   analysis::LoadPolicy policy;
   policy.min_coverage = g.min_coverage >= 0 ? g.min_coverage : analysis::kDefaultMinCoverage;
+  policy.skip_named = g.skip_unusable;
   auto set = analysis::load_materials(ctx, specs, policy);
   print_warnings(g, set.materials);
-  for (const auto& s : set.skipped) progress(g, fmt::format("skipped {}: {}", s.spec, s.reason));
+  for (const auto& s : set.skipped) {
+    progress(g, fmt::format("skipped {}: {}", s.spec, s.reason));
+    if (skipped) skipped->push_back(s.spec + ": " + s.reason);
+  }
   if (!set.skipped.empty())
     progress(g, fmt::format("skipped {} of {} materials", set.skipped.size(), set.requested));
-  if (set.materials.empty())
+  if (set.materials.empty() && !allow_empty)
     throw InputError("no material left to work on (every one was skipped)");
   return std::move(set.materials);
 }
@@ -218,10 +224,14 @@ void add_global_options(CLI::App& app, GlobalOptions& g) {
       ->capture_default_str();
   app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
   app.add_option("--min-coverage", g.min_coverage,
-                 "refuse (one material) or skip (several) materials whose data covers less than "
-                 "this share of the visible range, weighted by the illuminant x ybar (0-1; default "
-                 "0.99: a material measured over part of the visible is mostly extrapolation)")
+                 "refuse materials named explicitly, skip pages matched by a glob, whose data "
+                 "covers less than this share of the visible range, weighted by the illuminant x "
+                 "ybar (0-1; default 0.99: a material measured over part of the visible is mostly "
+                 "extrapolation)")
       ->check(finite_range(0.0, 1.0));
+  app.add_flag("--skip-unusable", g.skip_unusable,
+               "skip (with the reason) a material named explicitly that cannot be read or is "
+               "below --min-coverage, instead of refusing the command");
 }
 
 }  // namespace

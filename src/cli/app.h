@@ -16,6 +16,7 @@ struct GlobalOptions {
   bool quiet = false;            // no progress or warnings on stderr
   analysis::BlendOptions blend;  // `table blend` options
   double min_coverage = -1;      // --min-coverage (negative: not given)
+  bool skip_unusable = false;    // --skip-unusable: skip explicitly named unusable materials
   Locations locations;           // where the tool's data were found (cli/locations.h)
   // The label font's file ($FRESNEL_LAB_FONT; empty: DejaVu Sans). A command that draws text
   // loads it into the report::LabelFont it passes to the drawing.
@@ -48,9 +49,14 @@ analysis::Context make_context(const GlobalOptions& g);
 void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms);
 // MATERIALS (catalog names, database pages, page globs, files; none: the catalog) loaded under
 // --min-coverage, their warnings and the skipped ones printed.
+// `skipped` (if given) collects "SPEC: reason" of each skipped material, for a document's
+// provenance. InputError when every material is skipped, unless allow_empty (a caller loading in
+// parts checks the whole).
 std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g,
                                                 const analysis::Context& ctx,
-                                                const std::vector<std::string>& specs);
+                                                const std::vector<std::string>& specs,
+                                                std::vector<std::string>* skipped = nullptr,
+                                                bool allow_empty = false);
 // The help text of a MATERIALS argument.
 extern const char* const kMaterialsHelp;
 // Study progress "<what>done/total materials": a live counter on a terminal, one line when stderr
