@@ -266,7 +266,8 @@ TEST(ShippingCli, BadRequestsExitTwo) {
        {" shader f82 --lighting area --size 1", " shader f82 --harness --standalone",
         " shader f82 --lang hlsl --harness", " lut dfg --size 4 --symbol 9lives --out x.h",
         " lut dfg --size 4 --symbol good --out x.csv", " lut energy --size 4 --out x.inc",
-        " plan x.yaml --shader --size 0"}) {
+        " lut energy --dielectric --size 4 --slices 5 --out x.csv",
+        " lut energy --slices 4 --out x.csv", " plan x.yaml --shader --size 0"}) {
     const auto r = test::run_command("cd '" + dir.path() + "' && " + test::cli() + args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
   }
