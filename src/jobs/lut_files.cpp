@@ -14,6 +14,7 @@
 #include "fresnel/table_terms.h"
 #include "io/exr.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 
 namespace fl::report {
 namespace {
@@ -441,9 +442,10 @@ std::string ltc_fit_message(const analysis::LtcTable& t) {
 }  // namespace
 
 DfgLayout dfg_layout_from_name(const std::string& name) {
-  if (name == "split-sum") return DfgLayout::SplitSum;
-  if (name == "filament") return DfgLayout::Filament;
-  throw InputError(fmt::format("--layout must be split-sum or filament, not '{}'", name));
+  const std::vector<NameChoice> choices = {{"split-sum", {"splitsum"}}, {"filament", {}}};
+  const auto match = match_name(name, choices);
+  if (!match) throw InputError("--layout: " + unknown_name_message("layout", name, choices));
+  return *match == "filament" ? DfgLayout::Filament : DfgLayout::SplitSum;
 }
 
 std::vector<float> filament_dfg_values(const analysis::DfgTable& t,
@@ -478,13 +480,21 @@ Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress)
   const std::string symbol = header_symbol(
       r, ext, layout == DfgLayout::Filament ? "fresnel_lab_dfg_filament" : "fresnel_lab_dfg");
   const auto grid = analysis::dfg_grid(r.size);
-  const auto opts = lut_options(r, progress);
+  // Filament's layout integrates two tables (GGX, then sheen): one bar over both, never restarting.
+  const int stages = layout == DfgLayout::Filament ? 2 : 1;
+  const auto stage = [&](int k) -> analysis::LutProgress {
+    if (!progress) return {};
+    return
+        [&progress, k, stages](int done, int total) { progress(k * total + done, stages * total); };
+  };
+  auto opts = lut_options(r, stage(0));
   const auto t = analysis::dfg_table(grid, opts);
   if (layout == DfgLayout::SplitSum && ext != ".csv") return split_sum_textures(r, ext, symbol, t);
   std::string bytes;
   if (layout == DfgLayout::SplitSum) {
     bytes = split_sum_csv(t);
   } else {
+    opts.progress = stage(1);
     const auto sheen = analysis::sheen_dfg_table(grid, opts);
     const auto values = filament_values(t, sheen);
     if (ext == ".csv")

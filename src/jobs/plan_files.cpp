@@ -22,7 +22,7 @@ using analysis::Lighting;
 namespace {
 
 // The table textures the chosen option reads, as `lut dfg` and `lut ltc` write them at 64².
-Files table_files(const analysis::Plan& p, int threads) {
+Files table_files(const analysis::Plan& p, int threads, const TableProgress& progress) {
   std::set<std::string> needed;
   bool dfg = false, ltc = false;
   for (const auto& l : p.scene_luts) {
@@ -37,8 +37,16 @@ Files table_files(const analysis::Plan& p, int threads) {
       if (needed.count(file)) out.emplace_back(file, bytes);
     }
   };
-  if (dfg) keep(dfg_lut({analysis::kEngineLutSize, "dfg.exr", analysis::kLutSamples, threads}));
-  if (ltc) keep(ltc_lut({analysis::kEngineLutSize, "ltc.exr", analysis::kLutSamples, threads}));
+  const auto labelled = [&progress](const std::string& table) -> analysis::LutProgress {
+    if (!progress) return {};
+    return [&progress, table](int done, int total) { progress(table, done, total); };
+  };
+  if (dfg)
+    keep(dfg_lut({analysis::kEngineLutSize, "dfg.exr", analysis::kLutSamples, threads},
+                 labelled("DFG table")));
+  if (ltc)
+    keep(ltc_lut({analysis::kEngineLutSize, "ltc.exr", analysis::kLutSamples, threads},
+                 labelled("LTC table")));
   return out;
 }
 
@@ -138,8 +146,8 @@ std::string plan_readme(const analysis::Plan& p) {
 
 }  // namespace
 Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs, const LabelFont& font,
-                 int threads) {
-  Files out = table_files(p, threads);
+                 int threads, const TableProgress& progress) {
+  Files out = table_files(p, threads, progress);
   std::set<std::string> includes;
   for (const auto& g : p.scene_choice().groups) {
     if (!includes.insert(plan_include_name(p, g, "glsl")).second) continue;

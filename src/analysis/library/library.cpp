@@ -152,12 +152,14 @@ void add_consensus_columns(Table& t, const std::vector<MaterialStudy>& studies,
       continue;
     }
     const auto* d = find_distance(set, studies[i]);
-    row.insert(row.end(), {m.origin == spectral::Material::Origin::Page
-                               ? std::string(spectral::to_string(m.page_class.kind))
-                               : std::string(),
-                           m.page_class.detail, d ? d->f0_de00 : NAN, d ? d->f82_de00 : NAN,
-                           std::string(d ? (d->outlier ? "yes" : "no") : ""),
-                           d ? d->reason : std::string(), NAN, NAN, NAN, NAN});
+    row.insert(row.end(),
+               {m.origin == spectral::Material::Origin::Page
+                    ? std::string(spectral::to_string(m.page_class.kind))
+                : m.origin == spectral::Material::Origin::Catalog ? std::string("catalog")
+                                                                  : std::string("file"),
+                m.page_class.detail, d ? d->f0_de00 : NAN, d ? d->f82_de00 : NAN,
+                std::string(d ? (d->outlier ? "yes" : "no") : ""), d ? d->reason : std::string(),
+                NAN, NAN, NAN, NAN});
   }
 }
 
@@ -201,7 +203,8 @@ Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       "reader dropped or merged outside 360-830 nm.");
   if (consensus) {
     t.notes.push_back(
-        "kind: the page's kind from the database catalog (docs/consensus.md); consensus rows "
+        "kind: the page's kind from the database catalog (docs/consensus.md), catalog for a "
+        "catalog entry, file for a file; consensus rows "
         "(GROUP/consensus) are the per-wavelength median of the group's bulk pages' reflectance at "
         "0° and arccos(1/7); consensus_f0_de00, consensus_f82_de00: a page's ΔE2000 from its "
         "group's consensus; spread_*: a consensus row's uncertainty, the median and largest "
