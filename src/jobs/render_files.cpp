@@ -18,6 +18,7 @@
 #include "io/webp.h"
 #include "jobs/pictures.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 
 namespace fl::report {
 namespace {
@@ -303,7 +304,8 @@ void check_render_request(const RenderRequest& r) {
   render_model(r);
   if (!r.compare.empty()) parse_models(r.compare);
   if (r.flip != "webp" && r.flip != "gif")
-    throw InputError(fmt::format("--flip {} unknown (webp or gif)", r.flip));
+    throw InputError("--flip: " +
+                     unknown_name_message("flip format", r.flip, {{"webp", {}}, {"gif", {}}}));
 }
 
 bool render_draws_labels(const RenderRequest& r) {

@@ -42,6 +42,8 @@ TEST(Suggestions, SubcommandsAndValues) {
        {"did you mean one of 'glass_bk7', 'glass_f5', 'glass_sf11', 'glass_sf66'?"}},
       {"presets gold --format mtlx --shader openpbs", {"did you mean 'open_pbr_surface'?"}},
       {"shader schlick --lighting IBM", {"did you mean 'ibl'?"}},
+      {"shader schlick --lang hsl", {"did you mean 'hlsl'?"}},
+      {"render gold --compare all --flip gift --out x.exr", {"did you mean 'gif'?"}},
       {"presets gold --bogus", {"see fresnel-lab presets --help"}},
       {"lut dfg --out x.exr --samples many", {"see fresnel-lab lut dfg --help"}},
   };
@@ -57,8 +59,8 @@ TEST(Suggestions, SubcommandsAndValues) {
 
 // Enumerations and MaterialX's short names are accepted in any case, meaning the canonical value.
 TEST(Suggestions, EnumerationsInAnyCase) {
-  const auto canonical = run_command(cli() + " -q shader schlick --lighting ibl");
-  const auto upper = run_command(cli() + " -q shader schlick --lighting IBL");
+  const auto canonical = run_command(cli() + " -q shader schlick --lighting ibl --lang hlsl");
+  const auto upper = run_command(cli() + " -q shader schlick --lighting IBL --lang HLSL");
   ASSERT_EQ(canonical.status, 0) << canonical.err;
   ASSERT_EQ(upper.status, 0) << upper.err;
   EXPECT_EQ(upper.out, canonical.out);

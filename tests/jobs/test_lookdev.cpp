@@ -250,7 +250,8 @@ TEST(RenderCli, FlipFormats) {
   EXPECT_EQ(decoded.delays_cs, std::vector<int>(3, 90));
   const auto bad = run("png");
   EXPECT_EQ(bad.status, 2);
-  EXPECT_EQ(bad.err, "fresnel-lab: error: --flip png unknown (webp or gif)\n");
+  EXPECT_EQ(bad.err,
+            "fresnel-lab: error: --flip: unknown flip format 'png' (expected webp or gif)\n");
   EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/g.flip.png"));
 }
 
