@@ -645,7 +645,7 @@ Output energy_lut(const LutRequest& request, const analysis::LutProgress& progre
 std::string table_error_line(const analysis::Context& ctx,
                              const std::vector<analysis::MaterialStudy>& studies,
                              const LutRequest& r, analysis::Lighting lighting) {
-  const int size = r.size ? r.size : kDefaultSize;
+  const int size = r.size > 0 ? r.size : kDefaultSize;
   const auto storage = r.half ? analysis::TexelStorage::Half : analysis::TexelStorage::Float;
   const auto e =
       analysis::table_error_summary(ctx, studies, analysis::engine_tables(size, storage), lighting);
