@@ -19,8 +19,10 @@ export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/scripts/lsan.supp:print_s
 # both sides agree.
 # Debug information is line tables only (-g1): reports still name file and line, and the build
 # takes a third less time than with full debug information. The benchmarks are left out (they are
-# no tests; scripts/test.sh builds them).
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRESNEL_LAB_SANITIZE=ON -DFRESNEL_LAB_BENCH=OFF \
+# no tests; scripts/test.sh builds them). Through ccache when it is installed.
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRESNEL_LAB_SANITIZE=ON -DFRESNEL_LAB_BENCH=OFF "${launcher[@]}" \
   -DCMAKE_CXX_FLAGS="-DEIGEN_MALLOC_ALREADY_ALIGNED=1" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
 cmake --build "$build" -j"$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)" --timeout 900

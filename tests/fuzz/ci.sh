@@ -4,7 +4,7 @@
 # with a fixed seed: the same commit explores the same inputs on every machine, so this pass is a
 # repeatable regression test rather than a lottery. Open-ended fuzzing is tests/fuzz/run.sh. A
 # crash, leak, timeout or sanitizer report fails the run (the input is kept in tests/fuzz/findings/).
-#   tests/fuzz/ci.sh [RUNS]
+#   tests/fuzz/ci.sh [RUNS]    FUZZ_JOBS: harnesses run at once (default: the number of cores)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 runs=${1:-20000} build=${FUZZ_BUILD:-build-fuzz}
@@ -17,14 +17,29 @@ CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DFRESNEL
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# The harnesses run side by side, one per core (FUZZ_JOBS): each is one process with its own seed,
+# corpus and count, so running them together changes nothing they try.
+jobs=${FUZZ_JOBS:-$(nproc)}
 for t in "${targets[@]}"; do
-  # 900 s only bounds a pathological run; -runs ends every normal one.
-  if ! FUZZ_WORK="$work" FUZZ_ARGS="-seed=1 -runs=$runs" tests/fuzz/run.sh "$t" 900 "$build" \
-    >"$work/$t.log" 2>&1; then
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+  (
+    rc=0
+    # 900 s only bounds a pathological run; -runs ends every normal one.
+    FUZZ_WORK="$work" FUZZ_ARGS="-seed=1 -runs=$runs" tests/fuzz/run.sh "$t" 900 "$build" \
+      >"$work/$t.log" 2>&1 || rc=$?
+    echo "$rc" >"$work/$t.rc"
+  ) &
+done
+wait
+failed=0
+for t in "${targets[@]}"; do
+  if [ "$(cat "$work/$t.rc")" != 0 ]; then
     tail -n 40 "$work/$t.log" >&2
     echo "fuzz: fuzz_$t FAILED (input in tests/fuzz/findings/)" >&2
-    exit 1
+    failed=1
+  else
+    echo "fuzz: fuzz_$t $runs executions (seed 1), no crash" >&2
   fi
-  echo "fuzz: fuzz_$t $runs executions (seed 1), no crash" >&2
 done
+[ "$failed" = 0 ] || exit 1
 echo "fuzz: every harness passed in $(($(date +%s) - start)) s" >&2

@@ -1,9 +1,11 @@
 // libFuzzer target: material catalog entry reader (read_catalog_entry + sample_ior). A small
 // synthetic database page main/Good/nk/Synthetic holds a valid file so that `source:` can resolve.
+// An accepted entry has a source, an order within ±1000000, a finite talk error and physical
+// optical constants (fuzz_optical.h).
 #include <cmath>
 #include <filesystem>
 
-#include "fuzz_common.h"
+#include "fuzz_optical.h"
 #include "spectral/material.h"
 #include "util/errors.h"
 
@@ -28,11 +30,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fl::fuzz::write_input(path, data, size);
   try {
     const auto m = fl::spectral::read_catalog_entry(path, paths);
+    fl::fuzz::require(!m.source.empty() && std::abs(m.order) <= 1000000 &&
+                      std::isfinite(m.talk_schlick_rms_de00));
     const auto s =
         fl::spectral::sample_ior(m.constants, fl::spectral::SpectralGrid::visible(5.0), m.name);
-    for (const auto& v : s.ior.ior)
-      fl::fuzz::require(std::isfinite(v.real()) && v.real() > 0.0 && std::isfinite(v.imag()) &&
-                        v.imag() >= 0.0);
+    for (const auto& v : s.ior.ior) fl::fuzz::require(fl::fuzz::physical(v));
   } catch (const fl::InputError&) {
   }
   return 0;

@@ -20,7 +20,7 @@ case $target in
   sopra_nk) seeds=(tests/bad_input/sopra tests/good_input/sopra_decimal_comma.nk) ;;
   wvase_mat) seeds=(tests/bad_input/wvase tests/good_input/wvase_gold_like.mat) ;;
   catalog) seeds=(tests/bad_input/catalog tests/good_input/catalog materials) ;;
-  scene) seeds=(tests/bad_input/scene examples) ;;
+  scene) seeds=(tests/bad_input/scene tests/good_input/scene examples) ;;
   ocio) seeds=(tests/bad_input/ocio tests/good_input/ocio) ;;
   exr_env) seeds=(tests/bad_input/env tests/good_input/env) ;;
   *) echo "unknown target $target" >&2; exit 2 ;;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "spectral/material.h"
 #include "spectral/nk_text.h"
@@ -160,6 +161,13 @@ TEST(Database, ErrorsNameFileLineAndProblem) {
       tmp.file("f.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        0.4 -1.0 2.0\n"), 4,
       "not physical");
   expect_input_error(tmp.file("g.yml", "DATA: [\n"), 2, "invalid YAML");
+}
+
+// Every test that reads the database fails without it (none skips); this one says so in one line.
+TEST(Database, IsFound) {
+  const std::string data = std::string(FL_DEFAULT_DB) + "/data";
+  ASSERT_TRUE(std::filesystem::is_directory(data))
+      << "database not found (looked for " << data << ")";
 }
 
 TEST(Catalog, HasTheTalksTwentyEightMaterials) {
