@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "analysis/plan/plan.h"
+#include "analysis/plan/reference.h"
 #include "cli/app.h"
 #include "documents/plan_report.h"
 #include "draw/plan_plot.h"
@@ -77,7 +78,9 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
   if (!a.plot.empty() || !a.out.empty()) font.emplace(g.label_font);
   if (!a.plot.empty()) report::write_drawing(a.plot, report::plan_plot(p), *font);
   if (!a.out.empty()) {
-    report::replace_folder_atomic(a.out, report::plan_files(p, costs, *font), report::kPlanMarker);
+    report::replace_folder_atomic(
+        a.out, report::plan_files(p, costs, analysis::plan_reference(ctx, studies, p), *font),
+        report::kPlanMarker);
     progress(g, fmt::format("plan: wrote {} ({})", a.out, p.scene_choice().name));
     return 0;
   }

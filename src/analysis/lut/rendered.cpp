@@ -136,6 +136,13 @@ void add_truth_weight(std::vector<double>& nodes, double cos_theta, double weigh
 
 }  // namespace
 
+namespace {
+
+// Fills in the truth weights and the table reads of points whose angles are set.
+void complete_points(std::vector<ShadingPoint>& points, int threads);
+
+}  // namespace
+
 std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads) {
   std::vector<ShadingPoint> points;
   for (double r : roughness)
@@ -148,6 +155,29 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       p.mirror = r == 0.0;
       points.push_back(std::move(p));
     }
+  complete_points(points, threads);
+  return points;
+}
+
+std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
+                                            bool mirror_at_zero, int threads) {
+  std::vector<ShadingPoint> points;
+  for (const auto& a : at) {
+    ShadingPoint p;
+    p.roughness = a.roughness;
+    p.nov = a.nov;
+    p.view_deg = std::acos(std::clamp(a.nov, 0.0, 1.0)) * 180.0 / std::numbers::pi;
+    p.alpha = ltc_alpha_at(a.roughness);
+    p.mirror = mirror_at_zero && a.roughness == 0.0;
+    points.push_back(std::move(p));
+  }
+  complete_points(points, threads);
+  return points;
+}
+
+namespace {
+
+void complete_points(std::vector<ShadingPoint>& points, int threads) {
   // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
   const auto disk = lobe_disk_points(kLutSamples);
   const auto dfg_cell = [&disk](double nov, double alpha) {
@@ -187,8 +217,9 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
         });
       },
       threads);
-  return points;
 }
+
+}  // namespace
 
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points) {

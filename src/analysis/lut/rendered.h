@@ -49,6 +49,14 @@ struct ShadingPoint {
 };
 // Every roughness × kShadingViewDeg.
 std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads = 0);
+// Points at given (n·v, roughness), view_deg = acos(n·v). With mirror_at_zero false, roughness 0
+// reads the tables like any other roughness (what a shader's _ibl and _area functions compute when
+// called there; the truth is the lobe of α = ltc_alpha_at(0)) instead of being a mirror.
+struct NovRoughness {
+  double nov = 1, roughness = 0;
+};
+std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
+                                            bool mirror_at_zero = true, int threads = 0);
 
 // The brute-force lobe integral with the spectral ground truth per v·h, per point.
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
