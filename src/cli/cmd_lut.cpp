@@ -41,6 +41,11 @@ CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, 
   sub->add_option("--symbol", r->symbol,
                   "with .h output: the C symbol of the arrays (NAME_data, NAME_SIZE, "
                   "NAME_CHANNELS; a further texture adds _2, _3, ...)");
+  sub->add_option_function<std::string>(
+         "--storage", [r](const std::string& s) { r->half = s == "half"; },
+         "texel storage: float (32-bit) or half (EXR HALF channels; .h: uint16_t half-float bit "
+         "patterns); default float")
+      ->check(CLI::IsMember({"float", "half"}, CLI::ignore_case));
   const std::string what = std::string("lut ") + name;
   sub->callback([&g, &selected, r, run, what] {
     selected = [&g, r, run, what] { return write_output(g, run(*r, progress_printer(g, what))); };

@@ -3,6 +3,7 @@
 // need.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -47,6 +48,7 @@ analysis::ShaderDocument shader_document(const std::string& scene, const ShaderA
 
 struct PlanArgs {
   std::string scene, format = "md", costs, gpu_costs, out, plot;
+  int lut_size = 0;  // 0: chosen by the budget
   ShaderArgs shader;
 };
 
@@ -54,6 +56,9 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
   if (a.format != "json" && a.format != "md")
     throw InputError(fmt::format("--format must be json or md, not '{}'", a.format));
   const auto shader = shader_document(a.scene, a.shader);
+  const auto& sizes = analysis::kPlanLutSizes;
+  if (a.lut_size != 0 && std::find(sizes.begin(), sizes.end(), a.lut_size) == sizes.end())
+    throw InputError(fmt::format("--lut-size must be 16, 32, 64 or 128, not {}", a.lut_size));
   if (!a.plot.empty()) report::file_type(a.plot);  // an unknown extension, before the work
   if (!a.out.empty()) report::require_replaceable_folder(a.out, report::kPlanMarker);
   auto scene = analysis::read_scene(a.scene);
@@ -73,7 +78,8 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
   const auto ms = analysis::load_scene_materials(ctx, scene);
   print_warnings(g, ms);
   const auto studies = analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
-  const auto p = analysis::make_plan(scene, ctx, studies, costs);
+  progress(g, "plan: choosing the shaders and the tables' size");
+  const auto p = analysis::make_plan(scene, ctx, studies, costs, a.lut_size);
   std::optional<report::LabelFont> font;
   if (!a.plot.empty() || !a.out.empty()) font.emplace(g.label_font);
   if (!a.plot.empty()) report::write_drawing(a.plot, report::plan_plot(p), *font);
@@ -110,6 +116,9 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option(
       "--gpu-costs", a->gpu_costs,
       "GPU costs file (default $FRESNEL_LAB_GPU_COSTS or the tool's bench/gpu_costs.csv)");
+  sub->add_option("--lut-size", a->lut_size,
+                  "texels per axis of the tables the plan writes (16, 32, 64 or 128; default: the "
+                  "fewest bytes that keep every material within its budget)");
   add_shader_options(sub, a->shader);
   sub->add_option("--out", a->out,
                   "write everything the engine needs into this folder: the shader includes, the "

@@ -24,14 +24,15 @@ struct ReferenceArgs {
 int print_reference(const GlobalOptions& g, const analysis::ShaderRequest& r,
                     const ReferenceArgs& a) {
   const auto model = fresnel::model_from_name(r.model).model;
+  analysis::check_lut_size(r.size);
   const auto lighting = analysis::lighting_from_name(r.lighting);
   for (double x : a.roughness)
     if (!(x >= 0.0 && x <= 1.0))
       throw InputError(fmt::format("--roughness {} out of range (0 to 1)", x));
   const auto ctx = make_context(g);
   const auto ms = load_many(g, ctx, a.materials);
-  fmt::print("{}",
-             report::to_csv(analysis::model_reference(ctx, ms, model, lighting, a.roughness)));
+  fmt::print("{}", report::to_csv(analysis::model_reference(ctx, ms, model, lighting, a.roughness,
+                                                            analysis::engine_tables(r.size))));
   return 0;
 }
 

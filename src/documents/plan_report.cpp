@@ -163,6 +163,12 @@ Json scene_shader_json(const analysis::Plan& p) {
   out["shading"] = sc.cost.variants > 1 ? "material permutations" : "one shader";
   out["materials"] = std::move(materials);
   out["luts"] = luts_json(p.scene_luts);
+  if (!p.scene_luts.empty())
+    out["lut_tables"] = {{"size", p.tables.size},
+                         {"storage", analysis::texel_storage_name(p.tables.storage)},
+                         {"bytes", p.tables.bytes},
+                         {"worst_de00", p.tables.worst_de00},
+                         {"size_forced", p.tables.forced}};
   return out;
 }
 
@@ -296,6 +302,18 @@ std::string scene_markdown(const analysis::Plan& p) {
                                       : join(tables, ", "));
   }
   s += "\nTables for these shaders:\n\n" + luts_markdown(p.scene_luts);
+  if (!p.scene_luts.empty())
+    s += fmt::format(
+        "\nTable size and storage: {0}² texels of {1}, {2} in all ({3}), worst rendered RMS "
+        "ΔE2000 {4} with them.\n",
+        p.tables.size,
+        p.tables.storage == analysis::TexelStorage::Half ? "half floats" : "32-bit floats",
+        kib_text(p.tables.bytes),
+        p.tables.forced ? "the size given by --lut-size"
+                        : "the fewest bytes of 16² to 128², half or float, that keep every "
+                          "material within the larger of its budget and its error with 64² "
+                          "floats",
+        format_number(p.tables.worst_de00, 3));
   return s;
 }
 
@@ -377,7 +395,7 @@ std::string plan_markdown(const analysis::Plan& p, const analysis::PlanCosts& co
       "Errors: the curve's "
       "RMS ΔE2000 under punctual lights; under ibl and area the RMS ΔE2000 over the roughness "
       "values × view angles "
-      "{}° of what the engine computes from the 64² tables (`tables`: the Fresnel term "
+      "{}° of what the engine computes from the 64² float tables (`tables`: the Fresnel term "
       "pre-integrated; `F(n·v) × "
       "lobe`: the stated approximation for models no shared table holds) against brute-force "
       "spectral integration of "

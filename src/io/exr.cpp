@@ -216,7 +216,9 @@ std::string encode_exr(const ExrImage& image) {
     const size_t x_stride = sizeof(float) * nc;
     const size_t y_stride = x_stride * image.width;
     for (size_t c = 0; c < nc; ++c) {
-      header.channels().insert(image.channels[c], Imf::Channel(Imf::FLOAT));
+      // A half channel is filled from the float slice by OpenEXR's float-to-half conversion.
+      header.channels().insert(image.channels[c],
+                               Imf::Channel(image.half ? Imf::HALF : Imf::FLOAT));
       // OpenEXR only reads through the slice base pointer when writing.
       char* base = reinterpret_cast<char*>(const_cast<float*>(image.pixels.data() + c));
       fb.insert(image.channels[c], Imf::Slice(Imf::FLOAT, base, x_stride, y_stride));

@@ -20,9 +20,10 @@ struct ExrImage {
   // The standard chromaticities attribute: red x, y, green x, y, blue x, y, white x, y (absent:
   // OpenEXR's default, Rec.709 primaries with a D65 white).
   std::optional<std::array<float, 8>> chromaticities;
+  bool half = false;  // stored as half floats (the pixels rounded to nearest even), else float
 };
 
-// The EXR file (ZIP-compressed float channels, the attributes in the header) as bytes, for
+// The EXR file (ZIP-compressed float or half channels, the attributes in the header) as bytes, for
 // write_files_atomic.
 std::string encode_exr(const ExrImage& image);
 

@@ -67,7 +67,16 @@ ExrImage texture(const std::string& table, int size, std::vector<std::string> ch
   return img;
 }
 
-// The DFG grid's texture axes: x = n·v, y = perceptual roughness, on texel centres.
+// The uv a shader reads a DFG-grid texture at: (n·v, roughness) remapped to the texel centres of
+// endpoints, or as it is for texel centres (the Filament layout).
+std::string dfg_uv_text(const analysis::LutGrid& g) {
+  if (g.placement == analysis::TexelPlacement::Centres) return "vec2(NoV, perceptualRoughness)";
+  return fmt::format("vec2(NoV, perceptualRoughness) * ({0}.0 / {1}.0) + 0.5 / {1}.0", g.size - 1,
+                     g.size);
+}
+
+// The DFG grid's texture axes: x = n·v, y = perceptual roughness, at the grid's first and last
+// texels.
 Axes dfg_axes(const analysis::LutGrid& g) {
   return {"nov",
           g.nov.front(),
@@ -132,17 +141,18 @@ std::string header_symbol(const LutRequest& r, const std::string& ext, const cha
   return r.symbol;
 }
 
-// A texture as EXR bytes, or as a C header for `.h` output.
-std::string texture_bytes(const ExrImage& img, const std::string& ext, const CHeader& header) {
+// A texture as EXR bytes, or as a C header for `.h` output; half floats when the request asks.
+std::string texture_bytes(ExrImage img, const std::string& ext, CHeader header, bool half) {
+  img.half = header.half = half;
   return ext == ".h" ? c_header(img, header) : encode_exr(img);
 }
 
 // "fresnel-lab lut NAME --size N [...]": what wrote a header.
 std::string lut_command(const char* name, const LutRequest& r, const std::string& symbol) {
-  return fmt::format("fresnel-lab lut {} --size {}{} --symbol {}", name, r.size,
+  return fmt::format("fresnel-lab lut {} --size {}{}{} --symbol {}", name, r.size,
                      std::string(name) == "dfg" && r.layout != "split-sum" ? " --layout " + r.layout
                                                                            : std::string(),
-                     symbol);
+                     r.half ? " --storage half" : "", symbol);
 }
 
 // ----- dfg
@@ -165,26 +175,26 @@ std::string dfg_channel_text(const std::string& texture) {
 
 // How a shader reads a split-sum texture after the first: a model weighing term t by w_t adds
 // w_t times the term's channel.
-std::string dfg_extra_shader_text(const std::string& texture) {
+std::string dfg_extra_shader_text(const analysis::LutGrid& g, const std::string& texture) {
   return fmt::format(
-      "vec3 {0} = textureLod({0}_lut, vec2(NoV, perceptualRoughness), 0.0).rgb; a model weighing "
-      "a term by w adds w * its channel",
-      texture);
+      "vec3 {0} = textureLod({0}_lut, {1}, 0.0).rgb; a model weighing a term by w adds w * its "
+      "channel",
+      texture, dfg_uv_text(g));
 }
 
 DfgText dfg_text(DfgLayout layout, const analysis::LutGrid& g, const std::string& texture) {
   const std::string axes = fmt::format(
-      "x = n.v, y = perceptual roughness (alpha = roughness^2), {}; rows from smooth "
-      "to rough (the first row is texture v = 0, GL order)",
+      "x = n.v, y = perceptual roughness, {}; rows from smooth to rough (the first row is texture "
+      "v = 0, GL order)",
       g.convention);
   if (layout == DfgLayout::SplitSum && texture != "dfg")
-    return {axes, dfg_channel_text(texture), dfg_extra_shader_text(texture)};
+    return {axes, dfg_channel_text(texture), dfg_extra_shader_text(g, texture)};
   if (layout == DfgLayout::SplitSum)
     return {axes, dfg_channel_text(texture),
-            "vec3 dfg = textureLod(dfgLut, vec2(NoV, perceptualRoughness), 0.0).rgb; Schlick: E = "
-            "f0 * dfg.r + dfg.g; "
-            "Hoffman's F82 model: E = f0 * dfg.r + dfg.g - a * dfg.b, a = (823543/46656) (f0 - "
-            "f82) + (49/6) (1 - f0)"};
+            fmt::format("vec3 dfg = textureLod(dfgLut, {}, 0.0).rgb; Schlick: E = f0 * dfg.r + "
+                        "dfg.g; Hoffman's F82 model: E = f0 * dfg.r + dfg.g - a * dfg.b, a = "
+                        "(823543/46656) (f0 - f82) + (49/6) (1 - f0)",
+                        dfg_uv_text(g))};
   return {axes,
           "Filament's multiscatter DFG: R = integral Fc rho cos, G = integral rho cos, B = "
           "integral D_charlie V_neubelt "
@@ -462,7 +472,7 @@ Output split_sum_textures(const LutRequest& r, const std::string& ext, const std
     o.files.emplace_back(
         texture_path(r.out, textures[k], k),
         texture_bytes(dfg_texture(DfgLayout::SplitSum, t, textures[k], dfg_values(t, textures[k])),
-                      ext, {sym, lut_command("dfg", r, symbol)}));
+                      ext, {sym, lut_command("dfg", r, symbol)}, r.half));
   }
   o.messages.push_back("lut dfg (split-sum): wrote " + file_list(o.files));
   return o;
@@ -477,7 +487,8 @@ Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress)
                               : output_extension(r.out, {".exr", ".csv", ".h"});
   const std::string symbol = header_symbol(
       r, ext, layout == DfgLayout::Filament ? "fresnel_lab_dfg_filament" : "fresnel_lab_dfg");
-  const auto grid = analysis::dfg_grid(r.size);
+  const auto grid = layout == DfgLayout::Filament ? analysis::filament_dfg_grid(r.size)
+                                                  : analysis::dfg_grid(r.size);
   const auto opts = lut_options(r, progress);
   const auto t = analysis::dfg_table(grid, opts);
   if (layout == DfgLayout::SplitSum && ext != ".csv") return split_sum_textures(r, ext, symbol, t);
@@ -512,7 +523,8 @@ Output moments_lut(const LutRequest& request, const analysis::LutProgress& progr
     o.files.emplace_back(texture_path(r.out, textures[k], k),
                          texture_bytes(moments_texture(t, textures[k]), ext,
                                        {k ? symbol + suffix(textures[k]) : symbol,
-                                        lut_command("ltc-moments", r, symbol)}));
+                                        lut_command("ltc-moments", r, symbol)},
+                                       r.half));
   o.messages.push_back("lut ltc-moments: wrote " + file_list(o.files));
   return o;
 }
@@ -532,7 +544,7 @@ Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress)
     auto add = [&](const std::string& texture, const ExrImage& img) {
       CHeader h = header;
       h.symbol += suffix(texture);
-      o.files.emplace_back(stem + suffix(texture) + ext, texture_bytes(img, ext, h));
+      o.files.emplace_back(stem + suffix(texture) + ext, texture_bytes(img, ext, h, r.half));
     };
     add("ltc_1", matrix_texture(t));
     const auto names = analysis::term_texture_names(false);
@@ -549,15 +561,21 @@ Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress)
 
 namespace {
 
-constexpr const char* kEnergyAxes =
-    "x = n.v, y = perceptual roughness (alpha = roughness^2), texel centres; rows from smooth to "
-    "rough (the first row is texture v = 0, GL order)";
+std::string energy_axes(const analysis::LutGrid& g) {
+  return fmt::format(
+      "x = n.v, y = perceptual roughness, {}; rows from smooth to rough (the first row is texture "
+      "v = 0, GL order)",
+      g.convention);
+}
 constexpr const char* kEnergyChannels =
     "R = E = integral rho cos (the GGX lobe's directional albedo, height-correlated Smith, no "
     "Fresnel), G = E_avg = 2 integral_0^1 E(mu) mu dmu (the same for every texel of a row)";
-constexpr const char* kEnergyShader =
-    "vec2 e = textureLod(energyLut, vec2(NoV, perceptualRoughness), 0.0).rg; Kulla-Conty: f_ms = "
-    "(1 - E(NoV)) (1 - E(NoL)) / (pi (1 - e.g)) * F_avg^2 e.g / (1 - F_avg (1 - e.g))";
+std::string energy_shader(const analysis::LutGrid& g) {
+  return fmt::format(
+      "vec2 e = textureLod(energyLut, {}, 0.0).rg; Kulla-Conty: f_ms = (1 - E(NoV)) (1 - E(NoL)) "
+      "/ (pi (1 - e.g)) * F_avg^2 e.g / (1 - F_avg (1 - e.g))",
+      dfg_uv_text(g));
+}
 
 std::string energy_csv(const analysis::EnergyTable& t) {
   const auto& g = t.grid;
@@ -568,8 +586,8 @@ std::string energy_csv(const analysis::EnergyTable& t) {
     for (int i = 0; i < g.size; ++i)
       tab.rows.push_back(
           {g.nov[i], g.perceptual_roughness[j], g.alpha[j], t.e[g.index(i, j)], t.e_avg[j]});
-  return fmt::format("# axes: {}\n# channels: {}\n# shader: {}\n", kEnergyAxes, kEnergyChannels,
-                     kEnergyShader) +
+  return fmt::format("# axes: {}\n# channels: {}\n# shader: {}\n", energy_axes(g), kEnergyChannels,
+                     energy_shader(g)) +
          to_csv(tab);
 }
 
@@ -577,7 +595,7 @@ ExrImage energy_texture(const analysis::EnergyTable& t) {
   const auto& g = t.grid;
   const Axes axes = dfg_axes(g);
   auto img = texture("energy", g.size, {"R", "G"}, axes, g.convention, kEnergyChannels);
-  img.string_attributes.emplace_back("fresnelLab:shader", kEnergyShader);
+  img.string_attributes.emplace_back("fresnelLab:shader", energy_shader(g));
   for (int j = 0; j < g.size; ++j)
     for (int i = 0; i < g.size; ++i)
       img.pixels.insert(img.pixels.end(),
@@ -592,9 +610,10 @@ Output energy_lut(const LutRequest& request, const analysis::LutProgress& progre
   const std::string ext = output_extension(r.out, {".exr", ".csv", ".h"});
   const std::string symbol = header_symbol(r, ext, "fresnel_lab_energy");
   const auto t = analysis::energy_table(analysis::dfg_grid(r.size), lut_options(r, progress));
-  std::string bytes = ext == ".csv" ? energy_csv(t)
-                                    : texture_bytes(energy_texture(t), ext,
-                                                    {symbol, lut_command("energy", r, symbol)});
+  std::string bytes = ext == ".csv"
+                          ? energy_csv(t)
+                          : texture_bytes(energy_texture(t), ext,
+                                          {symbol, lut_command("energy", r, symbol)}, r.half);
   return one_file("lut energy", r.out, std::move(bytes));
 }
 

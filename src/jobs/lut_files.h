@@ -26,6 +26,7 @@ struct LutRequest {
   int samples = analysis::kLutSamples;
   int threads = 0;                   // 0: every hardware thread
   std::string layout = "split-sum";  // dfg only
+  bool half = false;  // textures as half floats (EXR HALF channels; .h: uint16_t bit patterns)
   // .h output: the C symbol of the first texture's header (a texture after the first adds its
   // suffix, _2, _3, ...); empty: fresnel_lab_dfg, fresnel_lab_dfg_filament, fresnel_lab_ltc,
   // fresnel_lab_ltc_moments or fresnel_lab_energy.

@@ -22,7 +22,8 @@ using analysis::Lighting;
 
 namespace {
 
-// The table textures the chosen option reads, as `lut dfg` and `lut ltc` write them at 64².
+// The table textures the chosen option reads, as `lut dfg` and `lut ltc` write them at the plan's
+// size and storage: each as EXR and as a C header.
 Files table_files(const analysis::Plan& p, int threads) {
   std::set<std::string> needed;
   bool dfg = false, ltc = false;
@@ -34,12 +35,21 @@ Files table_files(const analysis::Plan& p, int threads) {
   Files out;
   const auto keep = [&](const Output& o) {
     for (const auto& [path, bytes] : o.files) {
-      const std::string file = std::filesystem::path(path).filename().string();
-      if (needed.count(file)) out.emplace_back(file, bytes);
+      const std::filesystem::path file = std::filesystem::path(path).filename();
+      const std::string exr = std::filesystem::path(file).replace_extension(".exr").string();
+      if (needed.count(exr)) out.emplace_back(file.string(), bytes);
     }
   };
-  if (dfg) keep(dfg_lut({analysis::kEngineLutSize, "dfg.exr", analysis::kLutSamples, threads}));
-  if (ltc) keep(ltc_lut({analysis::kEngineLutSize, "ltc.exr", analysis::kLutSamples, threads}));
+  const bool half = p.tables.storage == analysis::TexelStorage::Half;
+  for (const char* ext : {".exr", ".h"}) {
+    const auto request = [&](const char* stem) {
+      LutRequest r{p.tables.size, stem + std::string(ext), analysis::kLutSamples, threads};
+      r.half = half;
+      return r;
+    };
+    if (dfg) keep(dfg_lut(request("dfg")));
+    if (ltc) keep(ltc_lut(request("ltc")));
+  }
   return out;
 }
 
@@ -80,21 +90,35 @@ std::string readme_shaders(const analysis::Plan& p) {
 std::string readme_tables(const analysis::Plan& p) {
   if (p.scene_luts.empty())
     return "\n## Tables\n\nNone: punctual lights evaluate the model directly.\n";
-  std::string s = "\n## Tables\n\n| file | lighting | channels | sampled at |\n|---|---|---|---|\n";
+  const int n = p.tables.size;
+  const bool half = p.tables.storage == analysis::TexelStorage::Half;
+  std::string s =
+      "\n## Tables\n\n| file | C header | lighting | channels | sampled at |\n"
+      "|---|---|---|---|---|\n";
   for (const auto& l : p.scene_luts)
-    s += fmt::format("| `{}` | {} | {} | {} |\n", l.file, l.lighting, join_text(l.channels),
-                     l.lighting == "ibl"
-                         ? "uv = (n·v, perceptual roughness), bilinear, clamped"
-                         : "uv = (perceptual roughness, √(1 − n·v))·63/64 + 0.5/64, bilinear");
+    s += fmt::format(
+        "| `{}` | `{}` | {} | {} | uv = {}·{}/{} + 0.5/{}, bilinear, clamped |\n", l.file,
+        std::filesystem::path(l.file).replace_extension(".h").string(), l.lighting,
+        join_text(l.channels),
+        l.lighting == "ibl" ? "(n·v, perceptual roughness)" : "(perceptual roughness, √(1 − n·v))",
+        n - 1, n, n);
   return s +
-         "\n64² texels of 32-bit floats (an engine may upload them as half floats); rows run from "
-         "smooth to rough. Bind `dfg.exr` to the `_ibl` function's `dfg_lut` argument and "
-         "`ltc_2.exr` "
-         "to the `_area` function's `ltc_2` (further textures, `dfg_2.exr`, `ltc_3.exr`, follow "
-         "them in the include's argument lists); `ltc_1.exr` is the LTC matrix the area-light "
-         "integral itself uses. They are `fresnel-lab lut dfg --out dfg.exr` and `fresnel-lab lut "
-         "ltc --out "
-         "ltc.exr` as written at the default size.\n";
+         fmt::format(
+             "\n{0}² texels of {1} ({2} bytes in all; {3}; worst rendered RMS ΔE2000 {4} with "
+             "these tables). Each table holds its "
+             "axes' ends in its edge texels, so the include maps uv as above "
+             "(`FRESNEL_LAB_DFG_SIZE`, `FRESNEL_LAB_LTC_SIZE` = {0}.0). Rows run from smooth to "
+             "rough. Bind `dfg.exr` to the `_ibl` function's `dfg_lut` argument and `ltc_2.exr` "
+             "to the `_area` function's `ltc_2` (further textures, `dfg_2.exr`, `ltc_3.exr`, "
+             "follow them in the include's argument lists); `ltc_1.exr` is the LTC matrix the "
+             "area-light integral itself uses. They are `fresnel-lab lut dfg --size {0}{5} --out "
+             "dfg.exr` and `fresnel-lab lut ltc --size {0}{5} --out ltc.exr`; the `.h` files hold "
+             "the same texels as C arrays.\n",
+             n, half ? "half floats" : "32-bit floats", p.tables.bytes,
+             p.tables.forced ? "the size given by --lut-size"
+                             : "the fewest bytes of 16² to 128², half or float, that keep every "
+                               "material within its budget",
+             format_number(p.tables.worst_de00, 3), half ? " --storage half" : "");
 }
 
 std::string readme_materials(const analysis::Plan& p) {
@@ -131,9 +155,9 @@ std::string readme_reference() {
       "model at cos θ = `nov` (punctual lights, mirrors); `fresnel_NAME_ibl` and `_area` rows are "
       "the function called at (`nov`, `roughness`): the materials' roughness values and the "
       "tables' edges 0 and 1, n·v from {:g} to 1. Call your port's function at each row with the "
-      "material's parameters from `materials.json`, the tables uploaded as RGBA32F (bilinear, "
-      "clamp to edge), and compare: within 2e-4 in each channel with float textures, 1e-3 with "
-      "half floats.\n",
+      "material's parameters (`materials.json`, or the row's `parameters`) and the tables "
+      "uploaded as their files store them (bilinear, clamp to edge), and expect the `engine_` "
+      "values within 2e-4 per channel (1e-3 if you upload 32-bit tables as half floats).\n",
       analysis::kReferenceMinNov);
 }
 
@@ -162,7 +186,7 @@ Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs,
     for (const auto lang : {analysis::ShaderLanguage::Glsl, analysis::ShaderLanguage::Hlsl}) {
       const std::string ext = lang == analysis::ShaderLanguage::Glsl ? "glsl" : "hlsl";
       const analysis::ShaderDocument doc{lang,
-                                         analysis::kEngineLutSize,
+                                         p.tables.size,
                                          false,
                                          fmt::format("fresnel-lab plan {} --out DIR ({})",
                                                      p.scene.path, plan_include_name(p, g, ext)),

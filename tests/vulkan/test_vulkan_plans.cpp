@@ -24,9 +24,11 @@ namespace {
 using analysis::Lighting;
 using analysis::ShaderLanguage;
 
-// As in test_vulkan_shaders.cpp: the driver against the CPU model (float and half tables), and,
-// with float tables, the ΔE2000 against the truth recomputed from the driver's RGB against
-// reference.csv's (which rounds it to 4 decimals).
+// As in test_vulkan_shaders.cpp: the driver against the CPU model (reference.csv's engine values,
+// from the texels as the folder's files store them), and the ΔE2000 against the truth recomputed
+// from the driver's RGB against reference.csv's (which rounds it to 4 decimals). Files of floats
+// uploaded as RGBA16F are rounded by the upload, which reference.csv does not model: the RGB is
+// held to kHalfTolerance and the ΔE2000 (up to about 0.009 apart) reported, not checked.
 constexpr double kFloatTolerance = 2e-4;
 constexpr double kHalfTolerance = 1e-3;
 constexpr double kDe00Tolerance = 0.005;
@@ -81,11 +83,13 @@ color::Rgb row_rgb(const CsvRecord& r, const std::string& what) {
 
 struct Totals {
   int runs = 0;
-  double rgb_half = 0, rgb_float = 0, de00 = 0;  // de00: float tables
+  double rgb_half = 0, rgb_float = 0;  // by upload storage
+  double de00 = 0, de00_rounded = 0;   // the latter: float files uploaded as half
 };
 
 void check_batch(const analysis::Context& ctx, const std::string& folder, const Batch& b,
-                 const std::string& include, ShaderLanguage lang, Storage storage, Totals& t) {
+                 const std::string& include, ShaderLanguage lang, Storage storage, bool files_half,
+                 Totals& t) {
   const auto textures = lighting_textures(b.material->model, b.lighting, folder);
   const std::string file =
       folder + "/" +
@@ -104,9 +108,12 @@ void check_batch(const analysis::Context& ctx, const std::string& folder, const 
                                        r.at("material"), r.at("nov"), r.at("roughness"));
     EXPECT_LE(diff, storage == Storage::Half ? kHalfTolerance : kFloatTolerance) << at;
     const double de00 = color::ciede2000(ctx.rgb_to_lab(row_rgb(r, "truth")), ctx.rgb_to_lab(rgb));
-    if (storage == Storage::Float) {
-      EXPECT_NEAR(de00, std::stod(r.at("de00")), kDe00Tolerance) << at;
-      t.de00 = std::max(t.de00, std::abs(de00 - std::stod(r.at("de00"))));
+    const double dde = std::abs(de00 - std::stod(r.at("de00")));
+    if (storage == Storage::Float || files_half) {
+      EXPECT_LE(dde, kDe00Tolerance) << at;
+      t.de00 = std::max(t.de00, dde);
+    } else {
+      t.de00_rounded = std::max(t.de00_rounded, dde);
     }
     double& rgb_max = storage == Storage::Half ? t.rgb_half : t.rgb_float;
     rgb_max = std::max(rgb_max, diff);
@@ -127,6 +134,8 @@ TEST(VulkanPlans, EveryExampleSceneIncludeMatchesItsReference) {
     ASSERT_TRUE(std::filesystem::exists(folder + "/reference.csv"))
         << folder << ": made by the CTest fixture Vulkan.plan_" << e.path().stem().string();
     const auto materials = plan_materials(folder);
+    const auto plan = nlohmann::json::parse(read_text_file(folder + "/plan.json"));
+    const bool files_half = plan.contains("lut_tables") && plan["lut_tables"]["storage"] == "half";
     const auto rows = csv_records(read_text_file(folder + "/reference.csv"));
     EXPECT_FALSE(rows.empty()) << folder;
     Totals scene;
@@ -134,13 +143,13 @@ TEST(VulkanPlans, EveryExampleSceneIncludeMatchesItsReference) {
       for (ShaderLanguage lang : {ShaderLanguage::Glsl, ShaderLanguage::Hlsl})
         for (Storage s : {Storage::Half, Storage::Float}) {
           if (b.lighting == Lighting::Punctual && s == Storage::Half) continue;
-          check_batch(ctx, folder, b, key.first, lang, s, scene);
+          check_batch(ctx, folder, b, key.first, lang, s, files_half, scene);
         }
     std::printf(
-        "%s: reference.csv %zu rows, %d runs; largest |driver - reference| %.3g (float tables), "
-        "%.3g (half); ΔE2000 difference %.3g (float)\n",
-        e.path().filename().c_str(), rows.size(), scene.runs, scene.rgb_float, scene.rgb_half,
-        scene.de00);
+        "%s: tables %s, reference.csv %zu rows, %d runs; largest |driver - reference| %.3g "
+        "(RGBA32F), %.3g (RGBA16F); ΔE2000 difference %.3g (%.3g float files as RGBA16F)\n",
+        e.path().filename().c_str(), files_half ? "half" : "float", rows.size(), scene.runs,
+        scene.rgb_float, scene.rgb_half, scene.de00, scene.de00_rounded);
     runs += scene.runs;
   }
   EXPECT_GT(runs, 0);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace fl::analysis {
 
@@ -33,14 +34,25 @@ MatrixXd sampled_matrix(const std::vector<std::vector<double>>& functions) {
   return b;
 }
 
-// The upper triangle of the QR factor of `stack` (its first `cols` rows; zero rows when shorter).
-MatrixXd triangular_factor(const MatrixXd& stack) {
-  const Eigen::Index n = stack.cols();
+// The upper triangle of the QR factor of `a` (its first `cols` rows; zero rows when shorter), by
+// Householder reflections one column at a time. Eigen's HouseholderQR applies its reflections in
+// blocks, as matrix products whose blocking it sizes from the CPU's cache sizes (read with cpuid),
+// so its sums run in another order, and round differently, on a CPU with other caches; a
+// reflection applied to the remaining columns is a matrix-vector product, summed in the same order
+// on every CPU.
+MatrixXd triangular_factor(MatrixXd a) {
+  const Eigen::Index n = a.cols(), k = std::min(a.rows(), n);
+  VectorXd workspace(n);
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const Eigen::Index below = a.rows() - j;
+    double tau = 0, beta = 0;
+    a.col(j).tail(below).makeHouseholderInPlace(tau, beta);
+    a(j, j) = beta;
+    a.bottomRightCorner(below, n - j - 1)
+        .applyHouseholderOnTheLeft(a.col(j).tail(below - 1), tau, workspace.data());
+  }
   MatrixXd r = MatrixXd::Zero(n, n);
-  if (stack.rows() == 0) return r;
-  Eigen::HouseholderQR<MatrixXd> qr(stack);
-  const Eigen::Index k = std::min(stack.rows(), n);
-  r.topRows(k) = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
+  r.topRows(k) = a.topRows(k).triangularView<Eigen::Upper>();
   return r;
 }
 
@@ -75,14 +87,14 @@ void ResidualStack::add(const CurveRows& rows) {
     impl_->residual_energy += w * res.squaredNorm();
     stack.row(m + i) = std::sqrt(w) * res.transpose();
   }
-  impl_->r = triangular_factor(stack);
+  impl_->r = triangular_factor(std::move(stack));
 }
 
 void ResidualStack::merge(const ResidualStack& other) {
   const Eigen::Index m = impl_->r.cols();
   MatrixXd stack(2 * m, m);
   stack << impl_->r, other.impl_->r;
-  impl_->r = triangular_factor(stack);
+  impl_->r = triangular_factor(std::move(stack));
   impl_->total_energy += other.impl_->total_energy;
   impl_->residual_energy += other.impl_->residual_energy;
 }

@@ -37,7 +37,30 @@ double pow5(double x) {
 
 }  // namespace
 
+double texel_coordinate(TexelPlacement placement, double x, int texels) {
+  return placement == TexelPlacement::Endpoints ? x * (texels - 1) : x * texels - 0.5;
+}
+
 LutGrid dfg_grid(int size) {
+  check_size(size);
+  LutGrid g;
+  g.size = size;
+  for (int i = 0; i < size; ++i) {
+    const double x = static_cast<double>(i) / (size - 1);
+    g.nov.push_back(std::max(x, std::cos(kLtcMaxThetaRad)));
+    g.perceptual_roughness.push_back(x);
+    g.alpha.push_back(ltc_alpha_at(x));
+  }
+  g.placement = TexelPlacement::Endpoints;
+  g.convention = fmt::format(
+      "endpoints: nov = max(i/{0}, cos(1.57)), perceptual_roughness = j/{0}, alpha = "
+      "max(perceptual_roughness^2, {1:g}); sample at uv = (nov, perceptual_roughness)*({0}/{2}) + "
+      "0.5/{2}",
+      size - 1, kLtcMinAlpha, size);
+  return g;
+}
+
+LutGrid filament_dfg_grid(int size) {
   check_size(size);
   LutGrid g;
   g.size = size;
@@ -47,6 +70,7 @@ LutGrid dfg_grid(int size) {
     g.perceptual_roughness.push_back(c);
     g.alpha.push_back(c * c);
   }
+  g.placement = TexelPlacement::Centres;
   g.convention = fmt::format(
       "texel centres: nov = (i + 0.5)/{0}, perceptual_roughness = (j + 0.5)/{0}, alpha = "
       "perceptual_roughness^2",

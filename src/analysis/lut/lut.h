@@ -30,20 +30,39 @@ constexpr int kLutSamples = 8192;
 // 1).
 constexpr double kLtcMinAlpha = 1e-5;
 
+// Where a table's N texels sit on an axis x in [0, 1], and so where a bilinear read of x lands.
+enum class TexelPlacement {
+  // Texel k holds x = k/(N − 1): the first and last texels hold the axis's ends exactly. A shader
+  // reads uv = x·(N − 1)/N + ½/N (texel k's centre is (k + ½)/N).
+  Endpoints,
+  // Texel k holds x = (k + ½)/N (Filament's DFG convention): a shader reads uv = x, and a read
+  // within half a texel of either end clamps to the edge texel, half a texel inside the axis.
+  Centres,
+};
+// The texel coordinate (0: the first texel, N − 1: the last; unclamped) a read of x lands on.
+double texel_coordinate(TexelPlacement placement, double x, int texels);
+
 // The axes of a table. Cells are stored roughness-major: cell(i_nov, j_roughness) = cells[j·size +
-// i].
+// i]. `nov` and `perceptual_roughness` hold what each texel holds along its axis; a table an engine
+// of another layout ships may have more texels on one axis than the other.
 struct LutGrid {
   int size = 0;
-  std::vector<double> nov;                   // per i
-  std::vector<double> perceptual_roughness;  // per j
-  std::vector<double> alpha;                 // per j: the GGX α used for the cell
-  std::string convention;                    // one line for file headers
+  std::vector<double> nov;                               // per i
+  std::vector<double> perceptual_roughness;              // per j
+  std::vector<double> alpha;                             // per j: the GGX α used for the cell
+  TexelPlacement placement = TexelPlacement::Endpoints;  // on both axes
+  std::string convention;                                // one line for file headers
   int index(int i_nov, int j_roughness) const { return j_roughness * size + i_nov; }
 };
 
-// Filament's DFG texture convention: texel centres, nov = (i + ½)/N and perceptual roughness
-// (j + ½)/N, α = roughness². Bilinear lookup at uv = (n·v, roughness) then needs no remapping.
+// The DFG and energy textures: endpoints over (n·v, perceptual roughness), n·v = i/(N − 1) (θ
+// capped at 1.57 rad, as ltc_grid), roughness j/(N − 1), α = max(roughness², kLtcMinAlpha), so
+// roughness 0 and 1 and n·v 1 are read exactly. Shaders read uv = (n·v, roughness)·(N − 1)/N + ½/N.
 LutGrid dfg_grid(int size);
+// Filament's DFG texture convention (`lut dfg --layout filament`, as its cmgen tool writes it):
+// texel centres, nov = (i + ½)/N and perceptual roughness (j + ½)/N, α = roughness²; read at
+// uv = (n·v, roughness) with no remapping.
+LutGrid filament_dfg_grid(int size);
 // Heitz's LTC convention (fitLTC.cpp): endpoints, x_i = i/(N − 1) with n·v = 1 − x² (θ capped at
 // 1.57 rad), perceptual roughness j/(N − 1), α = max(roughness², kLtcMinAlpha). Shaders look up
 // uv = (roughness, √(1 − n·v))·(N − 1)/N + ½/N.

@@ -49,20 +49,23 @@ struct Bilinear {
   int i0, i1, j0, j1;
   double fx, fy;
 };
-Bilinear bilinear(double x, double y, int size) {
-  auto axis = [size](double t, int& k0, int& k1, double& f) {
-    t = std::clamp(t, 0.0, static_cast<double>(size - 1));
-    k0 = std::min(static_cast<int>(t), size - 2);
-    k1 = k0 + 1;
-    f = t - k0;
-  };
+void bilinear_axis(double t, int texels, int& k0, int& k1, double& f) {
+  t = std::clamp(t, 0.0, static_cast<double>(texels - 1));
+  k0 = std::min(static_cast<int>(t), texels - 2);
+  k1 = k0 + 1;
+  f = t - k0;
+}
+// The read of `grid` at axis positions (x along i, y along j) in [0, 1].
+Bilinear bilinear(const LutGrid& grid, double x, double y) {
+  const int ni = static_cast<int>(grid.nov.size()),
+            nj = static_cast<int>(grid.perceptual_roughness.size());
   Bilinear b{};
-  axis(x, b.i0, b.i1, b.fx);
-  axis(y, b.j0, b.j1, b.fy);
+  bilinear_axis(texel_coordinate(grid.placement, x, ni), ni, b.i0, b.i1, b.fx);
+  bilinear_axis(texel_coordinate(grid.placement, y, nj), nj, b.j0, b.j1, b.fy);
   return b;
 }
 
-// Texels of one table, integrated on first use; values rounded to float as the files store them.
+// Texels of one table, integrated on first use and stored as the engine's textures store them.
 template <class Cell, class Integrate>
 class TexelCache {
  public:
@@ -88,29 +91,30 @@ class TexelCache {
   std::map<std::pair<int, int>, Cell> cells_;
 };
 
-double as_stored(double v) {
-  return static_cast<double>(static_cast<float>(v));
+// Half-float rounding of a float: 11 significant bits, ties to even; below 2⁻¹⁴ the subnormal
+// spacing 2⁻²⁴.
+double round_to_half(float f) {
+  const double v = f;
+  if (v == 0.0 || !std::isfinite(v)) return v;
+  int e = 0;
+  std::frexp(v, &e);  // |v| in [2^(e − 1), 2^e)
+  const double spacing = std::ldexp(1.0, std::max(e, -13) - 11);
+  return std::nearbyint(v / spacing) * spacing;
 }
 
-// Texels as the engine tables store them.
-DfgTexel as_stored(DfgTexel t) {
-  for (double& c : t.v) c = as_stored(c);
-  return t;
-}
-GgxMoments as_stored(GgxMoments m) {
-  for (double& c : m.v) c = as_stored(c);
-  return m;
+template <class Cell>
+Cell stored(TexelStorage s, Cell c) {
+  for (double& v : c.v) v = stored_texel(s, v);
+  return c;
 }
 
-// Texel coordinates of a point: DFG texel centres (i + ½)/N over n·v and roughness; LTC endpoints
-// i/(N − 1) over √(1 − n·v) and roughness.
-Bilinear dfg_read(const ShadingPoint& p) {
-  const int n = kEngineLutSize;
-  return bilinear(p.nov * n - 0.5, p.roughness * n - 0.5, n);
+// Texel coordinates of a point: the DFG over (n·v, roughness), the LTC moments over
+// (√(1 − n·v), roughness).
+Bilinear dfg_read(const EngineTables& t, const ShadingPoint& p) {
+  return bilinear(t.dfg, p.nov, p.roughness);
 }
-Bilinear ltc_read(const ShadingPoint& p) {
-  const int n = kEngineLutSize;
-  return bilinear(std::sqrt(std::max(0.0, 1.0 - p.nov)) * (n - 1), p.roughness * (n - 1), n);
+Bilinear ltc_read(const EngineTables& t, const ShadingPoint& p) {
+  return bilinear(t.ltc, std::sqrt(std::max(0.0, 1.0 - p.nov)), p.roughness);
 }
 
 template <class Fn>
@@ -136,14 +140,37 @@ void add_truth_weight(std::vector<double>& nodes, double cos_theta, double weigh
 
 }  // namespace
 
+const char* texel_storage_name(TexelStorage s) {
+  switch (s) {
+    case TexelStorage::Float:
+      return "float";
+    case TexelStorage::Half:
+      return "half";
+    case TexelStorage::Unorm16:
+      return "unorm16";
+  }
+  return "?";
+}
+
+double stored_texel(TexelStorage s, double v) {
+  switch (s) {
+    case TexelStorage::Float:
+      return static_cast<float>(v);
+    case TexelStorage::Half:
+      return round_to_half(static_cast<float>(v));
+    case TexelStorage::Unorm16:
+      return std::nearbyint(std::clamp(v, 0.0, 1.0) * 65535.0) / 65535.0;
+  }
+  return v;
+}
+
+EngineTables engine_tables(int size, TexelStorage storage) {
+  return {dfg_grid(size), ltc_grid(size), storage};
+}
+
 namespace {
 
-// Fills in the truth weights and the table reads of points whose angles are set.
-void complete_points(std::vector<ShadingPoint>& points, int threads);
-
-}  // namespace
-
-std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads) {
+std::vector<ShadingPoint> points_at(const std::vector<double>& roughness) {
   std::vector<ShadingPoint> points;
   for (double r : roughness)
     for (double deg : kShadingViewDeg) {
@@ -155,12 +182,77 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
       p.mirror = r == 0.0;
       points.push_back(std::move(p));
     }
-  complete_points(points, threads);
+  return points;
+}
+
+// The point's lobe: its weights on the truth curve's nodes and its exact integrals.
+void integrate_point(ShadingPoint& p, const std::vector<brdf::DiskPoint>& disk) {
+  p.truth_weights.assign(kTruthCurveSize, 0.0);
+  if (p.mirror) {
+    add_truth_weight(p.truth_weights, p.nov, 1.0);
+    return;
+  }
+  for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) {
+    if (s.weight != 0.0) add_truth_weight(p.truth_weights, s.voh, s.weight / kLutSamples);
+  });
+  p.dfg_exact = integrate_dfg(p.nov, p.alpha, disk);
+  p.ltc_exact = integrate_moments(p.nov, p.alpha, disk);
+}
+
+}  // namespace
+
+namespace {
+
+// Fills in the truth weights, the exact integrals and the table reads of points whose angles are
+// set.
+void complete_points(std::vector<ShadingPoint>& points, int threads, const EngineTables& tables) {
+  // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
+  const auto disk = lobe_disk_points(kLutSamples);
+  const auto dfg_cell = [&](double nov, double alpha) {
+    return stored(tables.storage, integrate_dfg(nov, alpha, disk));
+  };
+  const auto ltc_cell = [&](double nov, double alpha) {
+    return stored(tables.storage, integrate_moments(nov, alpha, disk));
+  };
+  TexelCache<DfgTexel, decltype(dfg_cell)> dfg(tables.dfg, dfg_cell);
+  TexelCache<GgxMoments, decltype(ltc_cell)> ltc(tables.ltc, ltc_cell);
+  for (const auto& p : points) {
+    if (p.mirror) continue;
+    for_texels(dfg_read(tables, p), [&](int i, int j, double) { dfg.request(i, j); });
+    for_texels(ltc_read(tables, p), [&](int i, int j, double) { ltc.request(i, j); });
+  }
+  dfg.compute(threads);
+  ltc.compute(threads);
+  parallel_for(
+      points.size(),
+      [&](size_t k) {
+        auto& p = points[k];
+        integrate_point(p, disk);
+        if (p.mirror) return;
+        for_texels(dfg_read(tables, p), [&](int i, int j, double w) {
+          const auto& c = dfg.at(i, j);
+          for (size_t t = 0; t < fresnel::kTermCount; ++t) p.dfg.v[t] += w * c.v[t];
+        });
+        for_texels(ltc_read(tables, p), [&](int i, int j, double w) {
+          const auto& c = ltc.at(i, j);
+          for (size_t t = 0; t < fresnel::kTermCount; ++t) p.ltc.v[t] += w * c.v[t];
+        });
+      },
+      threads);
+}
+
+}  // namespace
+
+std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads,
+                                         const EngineTables& tables) {
+  std::vector<ShadingPoint> points = points_at(roughness);
+  complete_points(points, threads, tables);
   return points;
 }
 
 std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
-                                            bool mirror_at_zero, int threads) {
+                                            bool mirror_at_zero, int threads,
+                                            const EngineTables& tables) {
   std::vector<ShadingPoint> points;
   for (const auto& a : at) {
     ShadingPoint p;
@@ -171,55 +263,9 @@ std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
     p.mirror = mirror_at_zero && a.roughness == 0.0;
     points.push_back(std::move(p));
   }
-  complete_points(points, threads);
+  complete_points(points, threads, tables);
   return points;
 }
-
-namespace {
-
-void complete_points(std::vector<ShadingPoint>& points, int threads) {
-  // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
-  const auto disk = lobe_disk_points(kLutSamples);
-  const auto dfg_cell = [&disk](double nov, double alpha) {
-    return as_stored(integrate_dfg(nov, alpha, disk));
-  };
-  const auto ltc_cell = [&disk](double nov, double alpha) {
-    return as_stored(integrate_moments(nov, alpha, disk));
-  };
-  TexelCache<DfgTexel, decltype(dfg_cell)> dfg(dfg_grid(kEngineLutSize), dfg_cell);
-  TexelCache<GgxMoments, decltype(ltc_cell)> ltc(ltc_grid(kEngineLutSize), ltc_cell);
-  for (const auto& p : points) {
-    if (p.mirror) continue;
-    for_texels(dfg_read(p), [&](int i, int j, double) { dfg.request(i, j); });
-    for_texels(ltc_read(p), [&](int i, int j, double) { ltc.request(i, j); });
-  }
-  dfg.compute(threads);
-  ltc.compute(threads);
-  parallel_for(
-      points.size(),
-      [&](size_t k) {
-        auto& p = points[k];
-        p.truth_weights.assign(kTruthCurveSize, 0.0);
-        if (p.mirror) {
-          add_truth_weight(p.truth_weights, p.nov, 1.0);
-          return;
-        }
-        for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) {
-          if (s.weight != 0.0) add_truth_weight(p.truth_weights, s.voh, s.weight / kLutSamples);
-        });
-        for_texels(dfg_read(p), [&](int i, int j, double w) {
-          const auto& c = dfg.at(i, j);
-          for (size_t t = 0; t < fresnel::kTermCount; ++t) p.dfg.v[t] += w * c.v[t];
-        });
-        for_texels(ltc_read(p), [&](int i, int j, double w) {
-          const auto& c = ltc.at(i, j);
-          for (size_t t = 0; t < fresnel::kTermCount; ++t) p.ltc.v[t] += w * c.v[t];
-        });
-      },
-      threads);
-}
-
-}  // namespace
 
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points) {
@@ -246,29 +292,31 @@ namespace {
 
 // The lobe's integral of each of the tables' terms at a point (the norm is the term 1's); a
 // mirror's lobe is its one direction.
-fresnel::TermValues lobe_integrals(bool ibl, const ShadingPoint& p) {
+fresnel::TermValues lobe_integrals(bool ibl, const ShadingPoint& p, Integrals integrals) {
   if (p.mirror) {  // the lobe is the one direction v·h = n·v: each term at n·v
     fresnel::TermValues at_nov;
     const double m = 1.0 - p.nov, m5 = m * m * m * m * m;
     for (const auto& t : fresnel::kTermRegistry) at_nov[t.term] = t.kernel(p.nov, m, m5);
     return at_nov;
   }
-  return ibl ? fresnel::dfg_term_integrals(p.dfg) : static_cast<const fresnel::TermValues&>(p.ltc);
+  const bool exact = integrals == Integrals::Exact;
+  if (ibl) return fresnel::dfg_term_integrals(exact ? p.dfg_exact : p.dfg);
+  return exact ? p.ltc_exact : p.ltc;
 }
 
 // F(n·v) × the lobe's Fresnel-free integral: how an engine shades a model no table holds.
 color::Rgb shading_at_nov(Model m, const std::vector<double>& params, Lighting lighting,
-                          const ShadingPoint& p) {
-  return lobe_integrals(lighting == Lighting::Ibl, p)[fresnel::Term::One] *
+                          const ShadingPoint& p, Integrals integrals = Integrals::Tables) {
+  return lobe_integrals(lighting == Lighting::Ibl, p, integrals)[fresnel::Term::One] *
          fresnel::model_spec(m).evaluate(p.nov, params.data(), false);
 }
 
 }  // namespace
 
 color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weights,
-                                Lighting lighting, const ShadingPoint& p) {
+                                Lighting lighting, const ShadingPoint& p, Integrals integrals) {
   if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
-  const auto lobe = lobe_integrals(lighting == Lighting::Ibl, p);
+  const auto lobe = lobe_integrals(lighting == Lighting::Ibl, p, integrals);
   color::Rgb out{};
   for (int c = 0; c < 3; ++c) {
     const auto& w = weights[c];
@@ -279,15 +327,25 @@ color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weight
 }
 
 color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
-                          const ShadingPoint& p) {
+                          const ShadingPoint& p, Integrals integrals) {
   if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
   const auto& spec = fresnel::model_spec(m);
   if (p.mirror) return spec.evaluate(p.nov, params.data(), false);  // no table: F(n·v)
   if (!lighting_support(m, lighting).fresnel_pre_integrated)
-    return shading_at_nov(m, params, lighting, p);
+    return shading_at_nov(m, params, lighting, p, integrals);
   std::array<fresnel::TableTerms, 3> w;
   for (int c = 0; c < 3; ++c) w[c] = spec.table_terms(params.data(), c);
-  return engine_shading_terms(w, lighting, p);
+  return engine_shading_terms(w, lighting, p, integrals);
+}
+
+std::vector<double> table_de00(const Context& ctx, Model m, const std::vector<double>& params,
+                               Lighting lighting, const std::vector<ShadingPoint>& points) {
+  std::vector<double> out;
+  for (const auto& p : points)
+    out.push_back(
+        color::ciede2000(ctx.rgb_to_lab(engine_shading(m, params, lighting, p, Integrals::Exact)),
+                         ctx.rgb_to_lab(engine_shading(m, params, lighting, p))));
+  return out;
 }
 
 std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<color::Rgb>& truth,

@@ -213,7 +213,7 @@ void add_scene_options(Plan& p, const std::vector<MaterialStudy>& studies,
 }  // namespace
 
 Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<MaterialStudy>& studies,
-               const PlanCosts& costs) {
+               const PlanCosts& costs, int lut_size) {
   Plan p;
   p.scene = scene;
   p.space = ctx.settings().space;
@@ -232,6 +232,7 @@ Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<Materia
   for (const auto& m : p.materials) chosen.push_back(m.model);
   p.luts = needed_luts(scene, chosen);
   add_scene_options(p, studies, candidates);
+  choose_plan_tables(p, ctx, studies, lut_size);
   for (const auto& spec : fresnel::model_specs())
     if (!scene_gpu_instructions(scene, costs.gpu, spec.model) || !costs.cpu.ns_per_eval(spec.model))
       p.unmeasured.push_back(spec.name);

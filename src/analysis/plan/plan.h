@@ -17,6 +17,7 @@
 // Scene file: spectral/scene_file.h. Defaults: max_de00 1.0, space --space, lighting punctual,
 // roughness kDefaultRoughness (roughness 0 is a mirror: analysis/lut/rendered.h). Relative file
 // paths are taken relative to the scene file's folder when they exist there.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -125,9 +126,10 @@ struct SceneCost {
 // Lexicographic: instructions, texture fetches, table bytes, variants; unmeasured after measured.
 bool scene_cost_less(const SceneCost& a, const SceneCost& b);
 
-// The bytes of a table texture as an engine uploads it: 64² texels × the components holding its
-// table channels (lut_textures) × 2 (half floats).
-long lut_texture_bytes(const std::string& texture);
+// The bytes of a table texture as an engine uploads it: size² texels × the components holding its
+// table channels (lut_textures) × 2 (half floats) or 4 (floats).
+long lut_texture_bytes(const std::string& texture, int size = kEngineLutSize,
+                       TexelStorage storage = TexelStorage::Half);
 
 // A partition of the scene's materials (indices into the scene's materials).
 struct Grouping {
@@ -186,6 +188,17 @@ struct PlanLut {
 // (fresnel::PreIntegration). Punctual lights need no table.
 std::vector<PlanLut> needed_luts(const Scene& scene, const std::vector<fresnel::Model>& models);
 
+// The tables the chosen option reads, at the size and storage its budget allows.
+struct PlanTables {
+  int size = kEngineLutSize;  // texels per axis
+  TexelStorage storage = TexelStorage::Float;
+  long bytes = 0;         // every texture the option reads (lut_texture_bytes)
+  double worst_de00 = 0;  // the option's worst error as rendered from these tables
+  bool forced = false;    // the size was given (--lut-size), not chosen
+};
+// The sizes `plan` considers, each in half and float storage.
+inline constexpr std::array<int, 4> kPlanLutSizes{16, 32, 64, 128};
+
 struct Plan {
   Scene scene;
   std::string space;
@@ -194,12 +207,21 @@ struct Plan {
   std::vector<SceneOption> scene_options;  // every option considered
   size_t chosen = 0;                       // the recommended one (choose_scene_option)
   std::vector<PlanLut> scene_luts;         // the tables the chosen option's shaders read
+  PlanTables tables;                       // their size and storage
   const SceneOption& scene_choice() const { return scene_options.at(chosen); }
   std::vector<std::string> unmeasured;  // models without a CPU or GPU cost for the scene's lighting
 };
 // The tables material k of the chosen option reads (none for a mirror or under punctual lights).
 std::vector<PlanLut> material_luts(const Plan& plan, size_t k);
+// The options are weighed with the 64² float tables. The tables are then chosen for the chosen
+// option: of every size in kPlanLutSizes (only `lut_size` when it is not 0) in half and float, the
+// fewest bytes with which every material's error as rendered stays within the larger of its
+// budget and its error with the 64² float tables; at a forced size none may qualify, and the
+// lower worst error is taken.
 Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<MaterialStudy>& studies,
-               const PlanCosts& costs);
+               const PlanCosts& costs, int lut_size = 0);
+// Sets plan.tables (see make_plan).
+void choose_plan_tables(Plan& plan, const Context& ctx, const std::vector<MaterialStudy>& studies,
+                        int lut_size);
 
 }  // namespace fl::analysis

@@ -80,11 +80,12 @@ void add_at_nov(Table& t, const Context& ctx, const ReferenceMaterial& m, Lighti
 }
 
 // fresnel_NAME_ibl / _area at every (n·v, roughness) against the lobe's spectral integral.
-void add_lobe(Table& t, const Context& ctx, const ReferenceMaterial& m, Lighting l) {
+void add_lobe(Table& t, const Context& ctx, const ReferenceMaterial& m, Lighting l,
+              const EngineTables& tables) {
   std::vector<NovRoughness> at;
   for (double r : reference_roughness(m.roughness))
     for (double nov : reference_novs()) at.push_back({nov, r});
-  const auto points = shading_points_at(at, false);
+  const auto points = shading_points_at(at, false, 0, tables);
   const auto truth = lobe_truth(ctx, *m.material, points);
   for (size_t k = 0; k < points.size(); ++k)
     add_row(t, ctx, m, l, false, points[k].nov, points[k].roughness,
@@ -94,7 +95,7 @@ void add_lobe(Table& t, const Context& ctx, const ReferenceMaterial& m, Lighting
 }  // namespace
 
 Table reference_table(const Context& ctx, const std::vector<ReferenceMaterial>& materials,
-                      const std::vector<Lighting>& lightings) {
+                      const std::vector<Lighting>& lightings, const EngineTables& tables) {
   Table t;
   t.name = "reference";
   t.title = "Reference values for a port: the shipped functions from the shipped tables";
@@ -105,7 +106,7 @@ Table reference_table(const Context& ctx, const std::vector<ReferenceMaterial>& 
       if (l == Lighting::Punctual || m.mirror)
         add_at_nov(t, ctx, m, l);
       else
-        add_lobe(t, ctx, m, l);
+        add_lobe(t, ctx, m, l, tables);
     }
   return t;
 }
@@ -119,11 +120,13 @@ Table plan_reference(const Context& ctx, const std::vector<MaterialStudy>& studi
       materials.push_back({studies.at(k).material, c.model, c.params, c.roughness,
                            p.scene.materials.at(k).mirror()});
     }
-  return reference_table(ctx, materials, p.scene.lightings());
+  return reference_table(ctx, materials, p.scene.lightings(),
+                         engine_tables(p.tables.size, p.tables.storage));
 }
 
 Table model_reference(const Context& ctx, const std::vector<LoadedMaterial>& materials,
-                      fresnel::Model model, Lighting lighting, std::vector<double> roughness) {
+                      fresnel::Model model, Lighting lighting, std::vector<double> roughness,
+                      const EngineTables& tables) {
   if (roughness.empty()) roughness.assign(kDefaultRoughness.begin(), kDefaultRoughness.end());
   StudyOptions options;
   options.fit = false;
@@ -134,7 +137,7 @@ Table model_reference(const Context& ctx, const std::vector<LoadedMaterial>& mat
         std::all_of(roughness.begin(), roughness.end(), [](double r) { return r == 0; });
     refs.push_back({&materials[k], model, studies[k].result(model).derived, roughness, mirror});
   }
-  return reference_table(ctx, refs, {lighting});
+  return reference_table(ctx, refs, {lighting}, tables);
 }
 
 }  // namespace fl::analysis

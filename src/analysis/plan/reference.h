@@ -33,16 +33,19 @@ struct ReferenceMaterial {
 // The rows of each material under each lighting: material, model, parameters ("f0_r=0.955 …",
 // each rounded to kPlanParamDecimals, the values the rows are computed with), lighting, function,
 // nov, roughness (empty for punctual lights and mirrors), engine_r/g/b, truth_r/g/b, de00.
+// The engine reads `tables`.
 Table reference_table(const Context& ctx, const std::vector<ReferenceMaterial>& materials,
-                      const std::vector<Lighting>& lightings);
+                      const std::vector<Lighting>& lightings, const EngineTables& tables);
 
 // The plan's chosen option: each material with its model and parameters (as materials.json writes
-// them); studies[k] is the scene's material k.
+// them), the engine reading the plan's tables (their size and storage); studies[k] is the scene's
+// material k.
 Table plan_reference(const Context& ctx, const std::vector<MaterialStudy>& studies, const Plan& p);
 
 // `shader MODEL --reference MATERIAL...`: the model's derived parameters for each material under
-// one lighting, at `roughness` (empty: kDefaultRoughness).
+// one lighting, at `roughness` (empty: kDefaultRoughness), the engine reading `tables`.
 Table model_reference(const Context& ctx, const std::vector<LoadedMaterial>& materials,
-                      fresnel::Model model, Lighting lighting, std::vector<double> roughness);
+                      fresnel::Model model, Lighting lighting, std::vector<double> roughness,
+                      const EngineTables& tables);
 
 }  // namespace fl::analysis

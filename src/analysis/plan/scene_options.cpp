@@ -38,12 +38,12 @@ bool scene_cost_less(const SceneCost& a, const SceneCost& b) {
   return compare_cost(a, b) < 0;
 }
 
-long lut_texture_bytes(const std::string& texture) {
+long lut_texture_bytes(const std::string& texture, int size, TexelStorage storage) {
   for (const auto& t : lut_textures()) {
     if (texture != t.name) continue;
     long components = 0;
     for (const auto& c : t.channels) components += static_cast<long>(std::strlen(c.components));
-    return static_cast<long>(kEngineLutSize) * kEngineLutSize * components * 2;
+    return static_cast<long>(size) * size * components * (storage == TexelStorage::Float ? 4 : 2);
   }
   throw std::logic_error("no lookup table texture " + texture);
 }

@@ -198,14 +198,14 @@ std::string table_function(const ModelSpec& s, Lighting l) {
                      what, s.name, ibl ? "dfg" : "ltc", texels, param_list(s, true), body);
 }
 
-// The uv a lighting's lookup samples its textures at: the DFG textures on their texel centres (no
-// remapping), the LTC ones on Heitz's endpoints, remapped to the texel centres of a table of
-// kLtcSizeMacro texels per axis.
+// The uv a lighting's lookup samples its textures at: both tables hold their axes' ends in their
+// edge texels, so the axis position x maps to x·(N − 1)/N + ½/N for a table of N texels per axis:
+// the DFG ones over (n·v, roughness), the LTC ones over (roughness, √(1 − n·v)).
 std::string lookup_uv(Lighting l) {
-  if (l == Lighting::Ibl) return "vec2(nov, perceptual_roughness)";
+  const bool ibl = l == Lighting::Ibl;
   return fmt::format(
-      "vec2(perceptual_roughness, sqrt(1.0 - nov)) * (({0} - 1.0) / {0}) + 0.5 / {0}",
-      kLtcSizeMacro);
+      "{1} * (({0} - 1.0) / {0}) + 0.5 / {0}", ibl ? kDfgSizeMacro : kLtcSizeMacro,
+      ibl ? "vec2(nov, perceptual_roughness)" : "vec2(perceptual_roughness, sqrt(1.0 - nov))");
 }
 
 // vec3 fresnel_NAME_ibl(sampler2D dfg_lut, ..., float nov, float perceptual_roughness, vec3 f0,
@@ -222,12 +222,13 @@ std::string entry_signature(const ModelSpec& s, Lighting l, ShaderLanguage lang)
                      translate(param_list(s, true), lang));
 }
 
-// The LTC size macro, defined unless the including code defined it.
-std::string ltc_size_define(int lut_size) {
+// A table's size macro, defined unless the including code defined it.
+std::string size_define(Lighting l, int lut_size) {
+  const bool ibl = l == Lighting::Ibl;
   return fmt::format(
-      "// The LTC tables' texels per axis (`fresnel-lab lut ltc --size {1}`); define {0} before "
+      "// The {2} tables' texels per axis (`fresnel-lab lut {3} --size {1}`); define {0} before "
       "this code for another size.\n#ifndef {0}\n#define {0} {1}.0\n#endif\n",
-      kLtcSizeMacro, lut_size);
+      ibl ? kDfgSizeMacro : kLtcSizeMacro, lut_size, ibl ? "DFG" : "LTC", ibl ? "dfg" : "ltc");
 }
 
 // The texture reads: GLSL sampler2D / HLSL Texture2D + SamplerState, at the table's uv convention.
@@ -235,13 +236,13 @@ std::string lookup_function(const ModelSpec& s, Lighting l, ShaderLanguage lang,
   const bool ibl = l == Lighting::Ibl;
   const auto textures = sampled_textures(s, l);
   const std::string comment =
-      ibl ? "// Split sum: multiplies the prefiltered environment. dfg_lut: `fresnel-lab lut dfg "
-            "--out dfg.exr`\n// (texel centres over n·v and perceptual roughness: no uv "
-            "remapping), bilinear, clamp to edge.\n"
-          : ltc_size_define(lut_size) +
-                "// Multiplies the LTC polygon integral (ltc_1: M⁻¹). ltc_2: `fresnel-lab lut ltc "
-                "--out ltc.exr`\n// (endpoints over perceptual roughness and √(1 − n·v)), "
-                "bilinear, clamp to edge.\n";
+      size_define(l, lut_size) +
+      (ibl ? "// Split sum: multiplies the prefiltered environment. dfg_lut: `fresnel-lab lut dfg "
+             "--out dfg.exr`\n// (endpoints over n·v and perceptual roughness), bilinear, clamp to "
+             "edge.\n"
+           : "// Multiplies the LTC polygon integral (ltc_1: M⁻¹). ltc_2: `fresnel-lab lut ltc "
+             "--out ltc.exr`\n// (endpoints over perceptual roughness and √(1 − n·v)), "
+             "bilinear, clamp to edge.\n");
   const bool glsl = lang == ShaderLanguage::Glsl;
   std::string reads, texels;
   for (size_t k = 0; k < textures.size(); ++k) {

@@ -31,8 +31,11 @@ ShaderLanguage shader_language_from_name(
 // The name of the function an engine calls for model m under lighting l.
 std::string shader_function_name(fresnel::Model m, Lighting l);
 
-// The macro holding the LTC tables' size (texels per axis, a float) that the area lookup maps its
-// uv with; shader_code defines it from `lut_size` unless the including code defined it first.
+// The macros holding the DFG and LTC tables' sizes (texels per axis, a float) that the IBL and area
+// lookups map their uv with (both tables hold their axes' ends in their edge texels:
+// uv = x·(N − 1)/N + ½/N); shader_code defines each from `lut_size` unless the including code
+// defined it first.
+inline constexpr const char* kDfgSizeMacro = "FRESNEL_LAB_DFG_SIZE";
 inline constexpr const char* kLtcSizeMacro = "FRESNEL_LAB_LTC_SIZE";
 
 // Self-contained code for model m under each of `lightings`: the helpers it calls (once), the

@@ -34,6 +34,8 @@ RenderedCandidate candidate(const Context& ctx, const ModelResult& r, ParameterS
   c.punctual_rms = punctual_rms;
   c.ibl = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Ibl, points));
   c.area = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Area, points));
+  c.ibl_table = error_stats(table_de00(ctx, r.model, c.params, Lighting::Ibl, points));
+  c.area_table = error_stats(table_de00(ctx, r.model, c.params, Lighting::Area, points));
   for (size_t w = 0; w < kProjectedWays.size(); ++w) {
     c.ibl_ways[w] = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Ibl, points,
                                               kProjectedWays[w]))
@@ -181,9 +183,9 @@ std::vector<std::string> accuracy_notes(const Context& ctx) {
                   "values of cos θ, linear interpolation).",
                   kTruthCurveSize),
       fmt::format(
-          "Engine: the {0}² tables as `lut` writes them, read bilinearly (DFG at (n·v, roughness) "
-          "on texel "
-          "centres; LTC moments at (roughness, √(1 − n·v)) on endpoints). `tables`: the Fresnel "
+          "Engine: the {0}² tables as `lut` writes them (32-bit floats), read bilinearly (DFG at "
+          "(n·v, roughness), LTC moments at (roughness, √(1 − n·v)), both on endpoints: the edge "
+          "texels hold the axes' ends). `tables`: the Fresnel "
           "term is "
           "pre-integrated, a·n + b·f + c·l with F = a + b(1 − μ)⁵ + cμ(1 − μ)⁶ (Schlick: F0·dfg1 + "
           "dfg2; "
@@ -193,7 +195,9 @@ std::vector<std::string> accuracy_notes(const Context& ctx) {
           kEngineLutSize),
       "curve_rms_de00: the curve's RMS ΔE2000 over the angles, what punctual lights render. rms "
       "and max: over the "
-      "shading points. The lobe's shape (LTC matrix, prefiltered environment) is the same for "
+      "shading points. ibl_table and area_table: the tables' own error, the same shading from the "
+      "tables against from the exact integrals at each point (RMS). The lobe's shape (LTC matrix, "
+      "prefiltered environment) is the same for "
       "every model and not "
       "part of these errors.",
       "ibl_nv, ibl_hoffman, ibl_basis (and area_…): every model rendered three ways whatever "
@@ -228,12 +232,14 @@ Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& s
                {"ibl"},
                {"ibl_rms_de00", 3},
                {"ibl_max_de00", 3},
+               {"ibl_table_rms_de00", 3},
                {"ibl_nv_rms_de00", 3},
                {"ibl_hoffman_rms_de00", 3},
                {"ibl_basis_rms_de00", 3},
                {"area"},
                {"area_rms_de00", 3},
                {"area_max_de00", 3},
+               {"area_table_rms_de00", 3},
                {"area_nv_rms_de00", 3},
                {"area_hoffman_rms_de00", 3},
                {"area_basis_rms_de00", 3}};
@@ -248,9 +254,10 @@ Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& s
       t.rows.push_back({m.name, std::string(spectral::to_string(m.material_class)),
                         std::string(fresnel::model_spec(c.model).name),
                         std::string(parameter_set_name(c.set)), c.punctual_rms,
-                        approximation(c.model, Lighting::Ibl), c.ibl.rms, c.ibl.max, c.ibl_ways[0],
-                        c.ibl_ways[1], c.ibl_ways[2], approximation(c.model, Lighting::Area),
-                        c.area.rms, c.area.max, c.area_ways[0], c.area_ways[1], c.area_ways[2]});
+                        approximation(c.model, Lighting::Ibl), c.ibl.rms, c.ibl.max,
+                        c.ibl_table.rms, c.ibl_ways[0], c.ibl_ways[1], c.ibl_ways[2],
+                        approximation(c.model, Lighting::Area), c.area.rms, c.area.max,
+                        c.area_table.rms, c.area_ways[0], c.area_ways[1], c.area_ways[2]});
   }
   if (!per_metal.empty())
     t.reading = fmt::format(

@@ -19,6 +19,8 @@ struct RenderedCandidate {
   std::vector<double> params;
   double punctual_rms = 0;
   ErrorStats ibl, area;  // as the model's own shader renders it (EngineWay::Native)
+  // The tables' own share: the same shading from the tables against from the exact integrals.
+  ErrorStats ibl_table, area_table;
   // RMS ΔE2000 under ibl and area the three ways any model can be rendered, in kProjectedWays
   // order: at n·v, projected on Hoffman's span, projected on the basis.
   std::array<double, 3> ibl_ways{}, area_ways{};
