@@ -47,9 +47,10 @@ void add_shader_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--lang", r->lang, "glsl or hlsl")->capture_default_str();
   sub->add_option("--lighting", r->lighting, "punctual, ibl (DFG table) or area (LTC moments)")
       ->capture_default_str();
-  sub->add_option("--size", r->size,
-                  "texels per axis of the tables it samples (`lut --size`; the LTC uv depends on "
-                  "it)")
+  sub->add_option(
+         "--size", r->size,
+         "texels per axis of the tables it samples (`lut --size`; the DFG and LTC uv depend on "
+         "it)")
       ->capture_default_str();
   sub->add_flag("--standalone", r->standalone,
                 "a complete fragment shader: #version 450 core (GLSL), the include and an entry "

@@ -212,16 +212,20 @@ std::string encode_exr(const ExrImage& image) {
     if (const auto& c = image.chromaticities)
       Imf::addChromaticities(header, Imf::Chromaticities({(*c)[0], (*c)[1]}, {(*c)[2], (*c)[3]},
                                                          {(*c)[4], (*c)[5]}, {(*c)[6], (*c)[7]}));
+    // OpenEXR writes a channel from a slice of its own type: half channels from half values.
+    std::vector<Imath::half> halves;
+    if (image.half) halves.assign(image.pixels.begin(), image.pixels.end());
+    const Imf::PixelType type = image.half ? Imf::HALF : Imf::FLOAT;
     Imf::FrameBuffer fb;
-    const size_t x_stride = sizeof(float) * nc;
+    const size_t x_stride = (image.half ? sizeof(Imath::half) : sizeof(float)) * nc;
     const size_t y_stride = x_stride * image.width;
     for (size_t c = 0; c < nc; ++c) {
-      // A half channel is filled from the float slice by OpenEXR's float-to-half conversion.
-      header.channels().insert(image.channels[c],
-                               Imf::Channel(image.half ? Imf::HALF : Imf::FLOAT));
+      header.channels().insert(image.channels[c], Imf::Channel(type));
       // OpenEXR only reads through the slice base pointer when writing.
-      char* base = reinterpret_cast<char*>(const_cast<float*>(image.pixels.data() + c));
-      fb.insert(image.channels[c], Imf::Slice(Imf::FLOAT, base, x_stride, y_stride));
+      char* base = image.half
+                       ? reinterpret_cast<char*>(halves.data() + c)
+                       : reinterpret_cast<char*>(const_cast<float*>(image.pixels.data() + c));
+      fb.insert(image.channels[c], Imf::Slice(type, base, x_stride, y_stride));
     }
     Imf::OutputFile out(stream, header);
     out.setFrameBuffer(fb);

@@ -214,10 +214,11 @@ struct Plan {
 // The tables material k of the chosen option reads (none for a mirror or under punctual lights).
 std::vector<PlanLut> material_luts(const Plan& plan, size_t k);
 // The options are weighed with the 64² float tables. The tables are then chosen for the chosen
-// option: of every size in kPlanLutSizes (only `lut_size` when it is not 0) in half and float, the
-// fewest bytes with which every material's error as rendered stays within the larger of its
-// budget and its error with the 64² float tables; at a forced size none may qualify, and the
-// lower worst error is taken.
+// option: of every size in kPlanLutSizes (only `lut_size` when it is not 0; under area lights none
+// below 64², since the LTC matrix's own accuracy is not part of the rendered error) in half and
+// float, the fewest bytes with which every material's error as rendered stays within the larger
+// of its budget and its error with the 64² float tables; at a forced size none may qualify, and
+// the lower worst error is taken.
 Plan make_plan(const Scene& scene, const Context& ctx, const std::vector<MaterialStudy>& studies,
                const PlanCosts& costs, int lut_size = 0);
 // Sets plan.tables (see make_plan).

@@ -14,11 +14,14 @@ struct TableConfig {
   long bytes;
 };
 
-// Every size (or the forced one) in half and float, fewest bytes first (ties: half first).
+// Every size (or the forced one) in half and float, fewest bytes first (ties: half first). Under
+// area lights no size below kEngineLutSize: the LTC matrix (ltc_1), the lobe's shape, is fitted
+// per texel, and its accuracy is not part of the rendered error the budget weighs.
 std::vector<TableConfig> table_configs(const Plan& p, int lut_size) {
   std::vector<TableConfig> out;
   for (int size : kPlanLutSizes) {
     if (lut_size != 0 && size != lut_size) continue;
+    if (lut_size == 0 && p.scene.area && size < kEngineLutSize) continue;
     for (const auto storage : {TexelStorage::Half, TexelStorage::Float}) {
       long bytes = 0;
       for (const auto& l : p.scene_luts) bytes += lut_texture_bytes(l.name, size, storage);
