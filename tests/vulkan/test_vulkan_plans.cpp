@@ -135,7 +135,13 @@ TEST(VulkanPlans, EveryExampleSceneIncludeMatchesItsReference) {
         << folder << ": made by the CTest fixture Vulkan.plan_" << e.path().stem().string();
     const auto materials = plan_materials(folder);
     const auto plan = nlohmann::json::parse(read_text_file(folder + "/plan.json"));
-    const bool files_half = plan.contains("lut_tables") && plan["lut_tables"]["storage"] == "half";
+    const auto& shader = plan["scene_shader"];
+    const bool has_tables = shader.contains("lut_tables");
+    const bool files_half = has_tables && shader["lut_tables"]["storage"] == "half";
+    const std::string tables = has_tables
+                                   ? fmt::format("{}² {}", shader["lut_tables"]["size"].get<int>(),
+                                                 shader["lut_tables"]["storage"].get<std::string>())
+                                   : "none";
     const auto rows = csv_records(read_text_file(folder + "/reference.csv"));
     EXPECT_FALSE(rows.empty()) << folder;
     Totals scene;
@@ -148,8 +154,8 @@ TEST(VulkanPlans, EveryExampleSceneIncludeMatchesItsReference) {
     std::printf(
         "%s: tables %s, reference.csv %zu rows, %d runs; largest |driver - reference| %.3g "
         "(RGBA32F), %.3g (RGBA16F); ΔE2000 difference %.3g (%.3g float files as RGBA16F)\n",
-        e.path().filename().c_str(), files_half ? "half" : "float", rows.size(), scene.runs,
-        scene.rgb_float, scene.rgb_half, scene.de00, scene.de00_rounded);
+        e.path().filename().c_str(), tables.c_str(), rows.size(), scene.runs, scene.rgb_float,
+        scene.rgb_half, scene.de00, scene.de00_rounded);
     runs += scene.runs;
   }
   EXPECT_GT(runs, 0);
