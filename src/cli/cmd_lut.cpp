@@ -5,6 +5,7 @@
 #include <chrono>
 #include <memory>
 
+#include "analysis/pipeline/context.h"
 #include "cli/app.h"
 #include "fresnel/table_terms.h"
 #include "jobs/lut_files.h"
@@ -29,6 +30,20 @@ analysis::LutProgress progress_printer(const GlobalOptions& g, const std::string
 
 using LutRun = report::Output (*)(const report::LutRequest&, const analysis::LutProgress&);
 
+// After the files: the error as rendered of the tables just written (the tables' own share, over
+// the catalog's metals), unless quiet.
+void report_table_error(const GlobalOptions& g, const report::LutRequest& r,
+                        analysis::Lighting lighting, const std::string& what) {
+  if (g.quiet) return;
+  const auto ctx = make_context(g);
+  const auto ms = analysis::load_catalog(ctx);
+  analysis::StudyOptions derived_only;
+  derived_only.fit = false;
+  derived_only.method_errors = false;
+  const auto studies = analysis::study_materials(ctx, ms, derived_only);
+  progress(g, what + ": " + report::table_error_line(ctx, studies, r, lighting));
+}
+
 CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, const char* name,
                              const std::string& help, const char* out_help, LutRun run,
                              std::shared_ptr<report::LutRequest> r) {
@@ -47,8 +62,16 @@ CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, 
          "patterns); default float")
       ->check(CLI::IsMember({"float", "half"}, CLI::ignore_case));
   const std::string what = std::string("lut ") + name;
-  sub->callback([&g, &selected, r, run, what] {
-    selected = [&g, r, run, what] { return write_output(g, run(*r, progress_printer(g, what))); };
+  const std::string table = name;
+  sub->callback([&g, &selected, r, run, what, table] {
+    selected = [&g, r, run, what, table] {
+      const int status = write_output(g, run(*r, progress_printer(g, what)));
+      if (status == 0 && table == "dfg" && r->layout == "split-sum")
+        report_table_error(g, *r, analysis::Lighting::Ibl, what);
+      if (status == 0 && (table == "ltc" || table == "ltc-moments"))
+        report_table_error(g, *r, analysis::Lighting::Area, what);
+      return status;
+    };
   });
   return sub;
 }

@@ -14,8 +14,8 @@ namespace {
 constexpr size_t kColumn = 128;
 
 // R(λ) at cosθ for n relative indices, eta_kappa interleaved (η₀, κ₀, η₁, κ₁, ...), each divided
-// by eta_outside: a column loop (FL_VECTOR_CLONES), each lane rounding as the scalar kernel does.
-FL_VECTOR_CLONES void reflectance_column(double cos_theta, const double* eta_kappa,
+// by eta_outside: a column loop (FL_FLATTEN), each lane rounding as the scalar kernel does.
+FL_FLATTEN void reflectance_column(double cos_theta, const double* eta_kappa,
                                          double eta_outside, size_t n, double* __restrict out) {
   for (size_t i = 0; i < n; ++i)
     out[i] = fresnel_conductor<double>(cos_theta, eta_kappa[2 * i] / eta_outside,

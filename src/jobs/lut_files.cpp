@@ -9,6 +9,7 @@
 #include "analysis/ltc/ltc_table.h"
 #include "analysis/lut/energy.h"
 #include "analysis/lut/lut_layout.h"
+#include "analysis/tables/table_layouts.h"
 #include "documents/c_header.h"
 #include "documents/table_formats.h"
 #include "fresnel/table_terms.h"
@@ -615,6 +616,21 @@ Output energy_lut(const LutRequest& request, const analysis::LutProgress& progre
                           : texture_bytes(energy_texture(t), ext,
                                           {symbol, lut_command("energy", r, symbol)}, r.half);
   return one_file("lut energy", r.out, std::move(bytes));
+}
+
+std::string table_error_line(const analysis::Context& ctx,
+                             const std::vector<analysis::MaterialStudy>& studies,
+                             const LutRequest& r, analysis::Lighting lighting) {
+  const int size = r.size ? r.size : kDefaultSize;
+  const auto storage = r.half ? analysis::TexelStorage::Half : analysis::TexelStorage::Float;
+  const auto e =
+      analysis::table_error_summary(ctx, studies, analysis::engine_tables(size, storage), lighting);
+  return fmt::format(
+      "as rendered from these {}² {} tables under {}, over the catalog's {} metals: the tables' "
+      "own error (against the exact lobe integrals), median RMS ΔE2000 Schlick {:.4f}, basis4 "
+      "{:.4f} (largest {:.4f})",
+      size, analysis::texel_storage_name(storage), analysis::lighting_name(lighting), e.metals,
+      e.schlick_median, e.basis4_median, e.basis4_max);
 }
 
 }  // namespace fl::report

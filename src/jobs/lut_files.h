@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "analysis/lut/lut.h"
+#include "analysis/lut/rendered.h"
+#include "analysis/study/study.h"
 #include "io/writer.h"
 
 namespace fl::report {
@@ -56,5 +58,11 @@ Output energy_lut(const LutRequest& request, const analysis::LutProgress& progre
 // Filament's layout as texel values, 3 per texel in file order (the half floats are these rounded).
 std::vector<float> filament_dfg_values(const analysis::DfgTable& table,
                                        const std::vector<double>& sheen);
+
+// One line on the error as rendered of the tables `r` describes, under `lighting`, over the metals
+// of `studies` (the catalog's): the tables' own error (analysis::table_error_summary).
+std::string table_error_line(const analysis::Context& ctx,
+                             const std::vector<analysis::MaterialStudy>& studies,
+                             const LutRequest& r, analysis::Lighting lighting);
 
 }  // namespace fl::report

@@ -136,7 +136,7 @@ struct Directions {
 };
 
 // The GGX half: l = reflect(v, h) for h drawn from the visible normals at each disk point.
-FL_VECTOR_CLONES Directions ggx_half(const brdf::Vec3& view, double alpha,
+FL_FLATTEN Directions ggx_half(const brdf::Vec3& view, double alpha,
                                      const std::vector<brdf::DiskPoint>& disk) {
   Directions d(disk.size());
   const brdf::Vec3 v = view;
@@ -151,7 +151,7 @@ FL_VECTOR_CLONES Directions ggx_half(const brdf::Vec3& view, double alpha,
 }
 
 // The LTC half: sample_ltc_lobe at each point, from its clamped-cosine direction.
-FL_VECTOR_CLONES Directions ltc_half(const brdf::Vec3& view, double alpha, const LtcLobe& ltc,
+FL_FLATTEN Directions ltc_half(const brdf::Vec3& view, double alpha, const LtcLobe& ltc,
                                      const std::vector<brdf::Vec3>& cosine) {
   Directions d(cosine.size());
   const brdf::Vec3 v = view;
@@ -168,7 +168,7 @@ FL_VECTOR_CLONES Directions ltc_half(const brdf::Vec3& view, double alpha, const
 // One half's balance-heuristic terms for a lobe: with the LTC density d_ltc of each direction and
 // q = p_vndf + d_ltc, |ρ cos − n_D d_ltc|³ / (n q) of the error and (ρ cos)³ / (n q) of the lobe's
 // norm, both 0 where q ≤ 0.
-FL_VECTOR_CLONES void l3_terms(const LtcLobe& ltc, const Directions& d, double n, double magnitude,
+FL_FLATTEN void l3_terms(const LtcLobe& ltc, const Directions& d, double n, double magnitude,
                                double* error, double* norm) {
   const LtcLobe lobe = ltc;
 #pragma GCC ivdep
@@ -206,7 +206,7 @@ struct SampleTerms {
   std::vector<double> x, y, z, q, weight, lobe3;
   explicit SampleTerms(size_t n) : x(n), y(n), z(n), q(n), weight(n), lobe3(n) {}
 };
-FL_VECTOR_CLONES void sample_terms(const LtcFrame& f, const LtcParams& p, const Directions& d,
+FL_FLATTEN void sample_terms(const LtcFrame& f, const LtcParams& p, const Directions& d,
                                    double count, SampleTerms& out) {
   const LtcFrame frame = f;
   const LtcParams proposal = p;
@@ -268,7 +268,7 @@ LtcColumns ltc_columns(const LtcProblem& pr) {
 
 // Residual k = d √|d| w with d = target − n_D D_LTC (ltc_density with θ = p = (m11, m22, m13,
 // m31)).
-FL_VECTOR_CLONES void ltc_residuals(double magnitude, const double* p, LtcColumns& c) {
+FL_FLATTEN void ltc_residuals(double magnitude, const double* p, LtcColumns& c) {
   const double inv_beta = 1.0 / (p[0] - p[2] * p[3]), inv_m22 = 1.0 / p[1];
   const double p0 = p[0], p2 = p[2], p3 = p[3];
   const size_t n = c.x.size();
@@ -293,7 +293,7 @@ FL_VECTOR_CLONES void ltc_residuals(double magnitude, const double* p, LtcColumn
 // ∂L = 2 (o_x ∂u + o_z ∂t)/β − 2 (o_x² + o_z²) ∂β/β − 2 o_y² ∂m22/m22, where (∂u, ∂t, ∂β, ∂m22) is
 // (0, z, 1, 0) for m11, (0, 0, 0, 1) for m22, (−z, 0, −m31, 0) for m13 and (0, −x, −m13, 0) for
 // m31; and ∂r/∂D = −1.5 √|d| w n_D.
-FL_VECTOR_CLONES void ltc_jacobian(double magnitude, const double* p, const LtcColumns& c,
+FL_FLATTEN void ltc_jacobian(double magnitude, const double* p, const LtcColumns& c,
                                    double* jac) {
   const double inv_beta = 1.0 / (p[0] - p[2] * p[3]), inv_m22 = 1.0 / p[1];
   const double p2 = p[2], p3 = p[3];

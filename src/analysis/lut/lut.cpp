@@ -117,7 +117,7 @@ std::vector<brdf::DiskPoint> lobe_disk_points(int samples) {
   return points;
 }
 
-FL_VECTOR_CLONES void lobe_samples(const LobeView& view, const brdf::DiskPoint* points,
+FL_FLATTEN void lobe_samples(const LobeView& view, const brdf::DiskPoint* points,
                                    size_t count, LobeSampleBlock& out) {
   const LobeView local =
       view;  // a local copy: its reads cannot fault, so the loop runs branch-free
@@ -171,7 +171,7 @@ namespace {
 struct MomentTerms {
   double term[fresnel::kTermCount][kLobeBlock], dir_x[kLobeBlock], dir_z[kLobeBlock];
 };
-FL_VECTOR_CLONES void moment_terms(const LobeSampleBlock& b, size_t count, MomentTerms& t) {
+FL_FLATTEN void moment_terms(const LobeSampleBlock& b, size_t count, MomentTerms& t) {
   for (size_t k = 0; k < count; ++k) {
     const double w = b.weight[k], voh = b.voh[k];
     const double m1 = 1.0 - voh;

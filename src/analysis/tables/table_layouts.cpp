@@ -76,7 +76,8 @@ struct LayoutErrors {
 };
 
 LayoutErrors layout_errors(const Context& ctx, const std::vector<const MaterialStudy*>& metals,
-                           const std::vector<ShadingPoint>& points) {
+                           const std::vector<ShadingPoint>& points,
+                           Lighting lighting = Lighting::Ibl) {
   const auto schlick = fresnel::model_from_name("schlick").model;
   const auto basis4 = fresnel::model_from_name("basis4").model;
   LayoutErrors e;
@@ -85,9 +86,9 @@ LayoutErrors layout_errors(const Context& ctx, const std::vector<const MaterialS
   parallel_for(metals.size(), [&](size_t k) {
     const auto& s = *metals[k];
     e.schlick[k] =
-        error_stats(table_de00(ctx, schlick, s.result(schlick).derived, Lighting::Ibl, points)).rms;
+        error_stats(table_de00(ctx, schlick, s.result(schlick).derived, lighting, points)).rms;
     e.basis4[k] =
-        error_stats(table_de00(ctx, basis4, s.result(basis4).derived, Lighting::Ibl, points)).rms;
+        error_stats(table_de00(ctx, basis4, s.result(basis4).derived, lighting, points)).rms;
   });
   return e;
 }
@@ -99,7 +100,22 @@ double largest(const std::vector<double>& v) {
   return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
 }
 
+std::vector<const MaterialStudy*> metals_of(const std::vector<MaterialStudy>& studies) {
+  std::vector<const MaterialStudy*> metals;
+  for (const auto& s : studies)
+    if (s.material->material.material_class == spectral::MaterialClass::Metal) metals.push_back(&s);
+  return metals;
+}
+
 }  // namespace
+
+TableErrorSummary table_error_summary(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                                      const EngineTables& tables, Lighting lighting) {
+  const auto metals = metals_of(studies);
+  const std::vector<double> roughness(kDefaultRoughness.begin(), kDefaultRoughness.end());
+  const auto e = layout_errors(ctx, metals, shading_points(roughness, 0, tables), lighting);
+  return {static_cast<int>(metals.size()), median(e.schlick), median(e.basis4), largest(e.basis4)};
+}
 
 Table table_layouts_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
   Table t;
@@ -108,14 +124,12 @@ Table table_layouts_table(const Context& ctx, const std::vector<MaterialStudy>& 
   t.columns = {{"layout"},
                {"texels"},
                {"storage"},
-               {"schlick_median_de00", 3},
-               {"schlick_max_de00", 3},
-               {"basis4_median_de00", 3},
-               {"basis4_max_de00", 3},
+               {"schlick_median_de00", 4},
+               {"schlick_max_de00", 4},
+               {"basis4_median_de00", 4},
+               {"basis4_max_de00", 4},
                {"source"}};
-  std::vector<const MaterialStudy*> metals;
-  for (const auto& s : studies)
-    if (s.material->material.material_class == spectral::MaterialClass::Metal) metals.push_back(&s);
+  const auto metals = metals_of(studies);
   const std::vector<double> roughness(kDefaultRoughness.begin(), kDefaultRoughness.end());
   for (const auto& layout : table_layouts()) {
     const auto points = shading_points(roughness, 0, layout.tables);

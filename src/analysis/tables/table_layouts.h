@@ -30,6 +30,16 @@ LutGrid cmgen_dfg_grid(int size);
 // roughness on texel centres, α = roughness², 16-bit unsigned normalized (G16R16).
 LutGrid ue4_dfg_grid();
 
+// The tables' own error of `tables` under `lighting` over the metals of `studies`: per metal the
+// RMS over lut-accuracy's shading points; the median of Schlick's and of basis4's (derived), and
+// basis4's largest.
+struct TableErrorSummary {
+  int metals = 0;
+  double schlick_median = 0, basis4_median = 0, basis4_max = 0;
+};
+TableErrorSummary table_error_summary(const Context& ctx, const std::vector<MaterialStudy>& studies,
+                                      const EngineTables& tables, Lighting lighting);
+
 // `table lut-layouts`: per layout, the median and largest tables' own RMS ΔE2000 of Schlick and
 // basis4 (derived) over the metals of `studies`.
 Table table_layouts_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
