@@ -113,8 +113,8 @@ shader() {
     shows "$out/shader.hlsl" "fresnel_$copy"
 }
 lut() {
-  "$cli" -q lut dfg --out "$out/dfg.csv" --size 8 --samples 64 &&
-    "$cli" -q lut ltc-moments --out "$out/ltc_moments.csv" --size 8 --samples 64 &&
+  "$cli" -q lut dfg --out "$out/dfg.csv" --size 8 --samples 256 &&
+    "$cli" -q lut ltc-moments --out "$out/ltc_moments.csv" --size 8 --samples 256 &&
     "$cli" -q table lut-accuracy gold > "$out/lut-accuracy.md" &&
     shows "$out/lut-accuracy.md" "$copy"
 }

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "color/rgb_space.h"
 #include "fresnel_lab_version.h"
 #include "util/errors.h"
+#include "util/truncated.h"
 
 namespace fl::cli {
 
@@ -32,15 +34,21 @@ const char* const kMaterialsHelp =
 
 std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g,
                                                 const analysis::Context& ctx,
-                                                const std::vector<std::string>& specs) {
+                                                const std::vector<std::string>& specs,
+                                                std::vector<std::string>* skipped,
+                                                bool allow_empty) {
   analysis::LoadPolicy policy;
   policy.min_coverage = g.min_coverage >= 0 ? g.min_coverage : analysis::kDefaultMinCoverage;
+  policy.skip_named = g.skip_unusable;
   auto set = analysis::load_materials(ctx, specs, policy);
   print_warnings(g, set.materials);
-  for (const auto& s : set.skipped) progress(g, fmt::format("skipped {}: {}", s.spec, s.reason));
+  for (const auto& s : set.skipped) {
+    progress(g, fmt::format("skipped {}: {}", s.spec, s.reason));
+    if (skipped) skipped->push_back(s.spec + ": " + s.reason);
+  }
   if (!set.skipped.empty())
     progress(g, fmt::format("skipped {} of {} materials", set.skipped.size(), set.requested));
-  if (set.materials.empty())
+  if (set.materials.empty() && !allow_empty)
     throw InputError("no material left to work on (every one was skipped)");
   return std::move(set.materials);
 }
@@ -75,11 +83,35 @@ std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const st
   };
 }
 
-void require_output_folder(const std::string& path) {
-  const auto folder = std::filesystem::path(path).parent_path();
-  std::error_code ec;
-  if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
-    throw InputError(path, 0, "the folder " + folder.string() + " does not exist");
+CLI::Validator non_empty() {
+  return CLI::Validator(
+      [](std::string& s) { return s.empty() ? std::string("is empty") : std::string(); }, "TEXT",
+      "non-empty");
+}
+
+CLI::Validator finite_range(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& s) -> std::string {
+        double x = 0;
+        if (!CLI::detail::lexical_cast(s, x) || !std::isfinite(x) || x < lo || x > hi)
+          return fmt::format("'{}' is not a number from {:g} to {:g}", s, lo, hi);
+        return {};
+      },
+      fmt::format("[{:g} - {:g}]", lo, hi), "finite range");
+}
+
+CLI::Validator output_location() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        if (path.empty()) return "is empty: name the output";
+        try {
+          require_output_folder(path);
+        } catch (const InputError& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "PATH", "output location");
 }
 
 void emit(const GlobalOptions& g, const std::string& out, const std::string& text) {
@@ -148,16 +180,20 @@ void add_global_options(CLI::App& app, GlobalOptions& g) {
   app.add_option("--space", s.space,
                  "working space: acescg, lin_rec709, aces2065-1, lin_rec2020, lin_p3d65 (or a "
                  "space of --ocio-config)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(non_empty());
   app.add_option(
-      "--illuminant", s.illuminant,
-      "D50, D55, D60, D65, D75, A, E, or Dnnnn (daylight at nnnn K); default: the working space's "
-      "reference "
-      "white (D60 for acescg and aces2065-1, D65 for lin_rec709, lin_rec2020, lin_p3d65)");
+         "--illuminant", s.illuminant,
+         "D50, D55, D60, D65, D75, A, E, or Dnnnn (daylight at nnnn K); default: the working "
+         "space's "
+         "reference "
+         "white (D60 for acescg and aces2065-1, D65 for lin_rec709, lin_rec2020, lin_p3d65)")
+      ->check(non_empty());
   app.add_option("--angles", s.angles, "incidence-angle samples over [0°, 90°]")
       ->capture_default_str();
   app.add_option("--adaptation", s.adaptation, "chromatic adaptation: bradford, cat02, none")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(non_empty());
   app.add_option("--step-nm", s.step_nm, "spectral step, 5 or 1 nm (360-830 nm)")
       ->capture_default_str();
   app.add_option("--ocio-config", s.ocio_config,
@@ -171,23 +207,31 @@ void add_global_options(CLI::App& app, GlobalOptions& g) {
                  "space whose matrix it has, else D65)");
   app.add_option("--display", s.view.display,
                  "OpenColorIO display of every picture (default: sRGB; with --ocio-config, any the "
-                 "config has)");
+                 "config has)")
+      ->check(non_empty());
   app.add_option("--view", s.view.view,
                  "OpenColorIO view of renders, flips and contact sheets (default: ACES 1.0 - SDR "
-                 "Video; without a config also Un-tone-mapped)");
+                 "Video, or with --ocio-config the config's default view of the display; without "
+                 "a config also Un-tone-mapped)")
+      ->check(non_empty());
   app.add_option("--reflectance-view", s.reflectance_view,
                  "OpenColorIO view of reflectance colours: strips and swatches (default: "
-                 "Un-tone-mapped, reflectance 1 as display white)");
+                 "Un-tone-mapped, reflectance 1 as display white)")
+      ->check(non_empty());
   app.add_option("--exposure", s.view.exposure_ev,
                  "stops applied to renders before the view (EXRs, tables and every ΔE2000 stay "
                  "scene-linear)")
       ->capture_default_str();
   app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
   app.add_option("--min-coverage", g.min_coverage,
-                 "refuse (one material) or skip (several) materials whose data covers less than "
-                 "this share of the visible range, weighted by the illuminant x ybar (0-1; default "
-                 "0.99: a material measured over part of the visible is mostly extrapolation)")
-      ->check(CLI::Range(0.0, 1.0));
+                 "refuse materials named explicitly, skip pages matched by a glob, whose data "
+                 "covers less than this share of the visible range, weighted by the illuminant x "
+                 "ybar (0-1; default 0.99: a material measured over part of the visible is mostly "
+                 "extrapolation)")
+      ->check(finite_range(0.0, 1.0));
+  app.add_flag("--skip-unusable", g.skip_unusable,
+               "skip (with the reason) a material named explicitly that cannot be read or is "
+               "below --min-coverage, instead of refusing the command");
 }
 
 }  // namespace
@@ -205,6 +249,7 @@ int run(int argc, char** argv) {
   s.paths = default_paths(g.locations);
   s.ocio_config = default_ocio_config();
   g.label_font = label_font_file();
+  report::install_termination_handler();
 
   add_global_options(app, g);
 
@@ -223,7 +268,7 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     fmt::print(stderr, "fresnel-lab: error: {} (see fresnel-lab --help)\n",
-               unknown_command(argc, argv).value_or(e.what()));
+               truncated(unknown_command(argc, argv).value_or(e.what()), kMaxErrorLine));
     return 2;
   }
   if (!selected) throw InputError("no command given (see --help)");

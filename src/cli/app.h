@@ -16,6 +16,7 @@ struct GlobalOptions {
   bool quiet = false;            // no progress or warnings on stderr
   analysis::BlendOptions blend;  // `table blend` options
   double min_coverage = -1;      // --min-coverage (negative: not given)
+  bool skip_unusable = false;    // --skip-unusable: skip explicitly named unusable materials
   Locations locations;           // where the tool's data were found (cli/locations.h)
   // The label font's file ($FRESNEL_LAB_FONT; empty: DejaVu Sans). A command that draws text
   // loads it into the report::LabelFont it passes to the drawing.
@@ -48,9 +49,14 @@ analysis::Context make_context(const GlobalOptions& g);
 void print_warnings(const GlobalOptions& g, const std::vector<analysis::LoadedMaterial>& ms);
 // MATERIALS (catalog names, database pages, page globs, files; none: the catalog) loaded under
 // --min-coverage, their warnings and the skipped ones printed.
+// `skipped` (if given) collects "SPEC: reason" of each skipped material, for a document's
+// provenance. InputError when every material is skipped, unless allow_empty (a caller loading in
+// parts checks the whole).
 std::vector<analysis::LoadedMaterial> load_many(const GlobalOptions& g,
                                                 const analysis::Context& ctx,
-                                                const std::vector<std::string>& specs);
+                                                const std::vector<std::string>& specs,
+                                                std::vector<std::string>* skipped = nullptr,
+                                                bool allow_empty = false);
 // The help text of a MATERIALS argument.
 extern const char* const kMaterialsHelp;
 // Study progress "<what>done/total materials": a live counter on a terminal, one line when stderr
@@ -63,9 +69,16 @@ std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const st
 // `text` on standard output when `out` is empty, else written to the file `out` atomically
 // (complete or not at all; InputError when its folder does not exist).
 void emit(const GlobalOptions& g, const std::string& out, const std::string& text);
-// InputError unless the folder that would hold the output file `path` exists (outputs never
-// create folders a typo named).
-void require_output_folder(const std::string& path);
+// The writer's rule for where outputs go (io/writer.h): the folder that holds `path` exists and
+// is writable.
+using report::require_output_folder;
+// The check of every --out and --plot option, run while the command line is parsed (before any
+// work): not empty, and require_output_folder.
+CLI::Validator output_location();
+// A number option's check: finite (NaN and infinities refused) and in [lo, hi].
+CLI::Validator finite_range(double lo, double hi);
+// A text option's check: not empty.
+CLI::Validator non_empty();
 // Writes out.files (all or nothing), then prints out.messages; returns exit status 0.
 int write_output(const GlobalOptions& g, const report::Output& out);
 

@@ -26,7 +26,9 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto a = std::make_shared<Args>();
   sub->add_option("GLOB", a->globs,
                   "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
-  sub->add_option("--out", a->out, "output folder (created if missing)")->required();
+  sub->add_option("--out", a->out, "output folder (created if missing; its parent must exist)")
+      ->required()
+      ->check(output_location());
   sub->add_option("--terms", a->options.data_terms, "data-driven terms (K = 2 + terms)")
       ->capture_default_str()
       ->check(CLI::Range(1, 8));
@@ -44,8 +46,9 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto set =
           analysis::load_materials(ctx, globs, policy, periodic_progress(g, "basis: reading "));
       if (set.materials.empty()) throw InputError("basis: no page covers the visible range");
-      const auto basis =
+      auto basis =
           analysis::build_basis(ctx, set, a->options, periodic_progress(g, "basis: building "));
+      basis.min_coverage = policy.min_coverage;
       std::string command = "fresnel-lab";
       if (g.min_coverage >= 0) command += fmt::format(" --min-coverage {:g}", g.min_coverage);
       command += " basis";
@@ -56,7 +59,7 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
         command += fmt::format(" --degree {}", a->options.poly_degree);
       auto files = report::basis_files(ctx, basis, command);
       for (auto& f : files) f.first = a->out + "/" + f.first;
-      report::write_files_atomic(files);
+      report::write_files_atomic(files, a->out);
       progress(g,
                fmt::format(
                    "basis: {} of {} pages, {} skipped; wrote {} files to {} ({:.1f} s)",

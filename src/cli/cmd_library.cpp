@@ -69,7 +69,8 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
   sub->add_option("--out", a->out,
                   "output folder, replaced as a whole (new, empty, or one `library` wrote)")
-      ->required();
+      ->required()
+      ->check(output_location());
   sub->add_option("--class", a->cls, "metal (conductors, from the data), dielectric or all")
       ->capture_default_str();
   sub->add_flag("--strict", a->strict,
@@ -117,7 +118,8 @@ std::vector<analysis::ConsensusRequest> requests_of(const GlobalOptions& g,
 }  // namespace
 
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
-                      const report::PresetFormat& format, bool openpbr, const std::string& out) {
+                      const report::PresetFormat& format, bool openpbr, const std::string& out,
+                      double roughness) {
   const bool document = format.kind != report::PresetKind::Table;
   if (!out.empty()) require_output_folder(out);
   const auto requests = requests_of(g, specs);
@@ -131,7 +133,9 @@ int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
                 : analysis::presets_table(ctx, c.set.studies);
     analysis::add_uncertainty_columns(t, c.set);
   }
-  emit(g, out, report::preset_document(format, {ctx, c.set.studies, t}));
+  analysis::ExportOptions exported;
+  exported.roughness = roughness;
+  emit(g, out, report::preset_document(format, {ctx, c.set.studies, t, exported}));
   return 0;
 }
 

@@ -49,7 +49,7 @@ CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, 
                              std::shared_ptr<report::LutRequest> r) {
   auto* sub = lut.add_subcommand(name, help);
   sub->add_option("--size", r->size, "cells per axis (N×N; default 64)");
-  sub->add_option("--out", r->out, out_help)->required();
+  sub->add_option("--out", r->out, out_help)->required()->check(output_location());
   sub->add_option("--samples", r->samples, "quasi-Monte Carlo samples per cell")
       ->capture_default_str();
   sub->add_option("--threads", r->threads, "worker threads (0: all cores)")->capture_default_str();
@@ -120,11 +120,26 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "factor), FILE_3.exr, ... (the other table terms' moments) and FILE.csv; FILE.h writes "
       "FILE_1.h, FILE_2.h, ... (C/C++ headers of the same textures); FILE.csv writes the CSV only",
       report::ltc_lut, std::make_shared<report::LutRequest>());
-  add_lut_subcommand(*lut, g, selected, "energy",
-                     "Kulla-Conty energy compensation on the DFG grid: E(n·v, roughness) = ∫ρ cos "
-                     "and E_avg(roughness) = 2∫E(μ)μ dμ",
-                     "output file: .exr or .h (a C/C++ header; R = E, G = E_avg), or .csv",
-                     report::energy_lut, std::make_shared<report::LutRequest>());
+  auto energy = std::make_shared<report::LutRequest>();
+  auto* energy_cmd = add_lut_subcommand(
+      *lut, g, selected, "energy",
+      "Kulla-Conty energy compensation on the DFG grid: E(n·v, roughness) = ∫ρ cos and "
+      "E_avg(roughness) = 2∫E(μ)μ dμ; with --dielectric, the same with the exact dielectric "
+      "Fresnel reflectance F(v·h, η) in the integral, per η-slice",
+      "output file: .exr or .h (a C/C++ header; R = E, G = E_avg; --dielectric: an atlas of "
+      "η-slices, RGBA = E_F(η), E_F,avg(η), E_F(1/η), E_F,avg(1/η)), or .csv",
+      report::energy_lut, energy);
+  auto* dielectric = energy_cmd->add_flag(
+      "--dielectric", energy->dielectric,
+      "the dielectric table: E_F(n·v, roughness, η) = ∫F(v·h, η) ρ cos "
+      "(reflection only) and its average, at η and 1/η, for K slices uniform in "
+      "F0^¼ from F0 = 0 (η = 1) to 0.25 (η = 3)");
+  energy_cmd
+      ->add_option("--slices", energy->slices,
+                   "with --dielectric: η-slices, a square number from 4 to 64 (the atlas is "
+                   "√K × √K tiles)")
+      ->capture_default_str()
+      ->needs(dielectric);
 }
 
 }  // namespace fl::cli

@@ -76,6 +76,7 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
     }
   }();
   const auto ms = analysis::load_scene_materials(ctx, scene);
+  for (const auto& note : scene.notes) progress(g, "note: " + note);
   print_warnings(g, ms);
   const auto studies = analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
   progress(g, "plan: choosing the shaders and the tables' size");
@@ -122,9 +123,11 @@ void add_plan_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   add_shader_options(sub, a->shader);
   sub->add_option("--out", a->out,
                   "write everything the engine needs into this folder: the shader includes, the "
-                  "tables they read, materials.json, README.md, the plan and its figure");
+                  "tables they read, materials.json, README.md, the plan and its figure")
+      ->check(output_location());
   sub->add_option("--plot", a->plot,
-                  "also draw the options' cost against error (FILE.png, FILE.svg or FILE.pdf)");
+                  "also draw the options' cost against error (FILE.png, FILE.svg or FILE.pdf)")
+      ->check(output_location());
   sub->callback([&g, &selected, a] { selected = [&g, a] { return run_plan(g, *a); }; });
 }
 

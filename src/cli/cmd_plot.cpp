@@ -26,7 +26,8 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
   sub->add_option("--out", r->out,
                   std::string(out_help) +
                       "; with several materials '{name}' in it is replaced by each one's name")
-      ->required();
+      ->required()
+      ->check(output_location());
   sub->callback([&g, &selected, r] {
     selected = [&g, r] {
       report::check_plot_request(*r);
@@ -115,7 +116,8 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "output .exr (PNGs are written beside it); with several materials '{name}' in it "
                   "is replaced by each "
                   "one's name")
-      ->required();
+      ->required()
+      ->check(output_location());
   sub->callback([&g, &selected, r, size] {
     if (!r->compare.empty() && size->count() == 0) r->settings.size_px = report::kCompareSizePx;
     selected = [&g, r] {

@@ -36,7 +36,8 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "--measure", a->measure,
       "time the batched kernels now instead of reading the costs file (not reproducible)");
   sub->add_option("--plot", a->plot,
-                  "also write the error-against-cost plot to this file (.png, .svg or .pdf)");
+                  "also write the error-against-cost plot to this file (.png, .svg or .pdf)")
+      ->check(output_location());
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
       const auto f = report::format_from_name(a->format);

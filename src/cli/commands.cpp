@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -6,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/consensus/trusted.h"
 #include "analysis/tables/table_registry.h"
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
@@ -30,7 +32,8 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected);    //
 
 // `presets --consensus`: cli/cmd_library.cpp.
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
-                      const report::PresetFormat& format, bool openpbr, const std::string& out);
+                      const report::PresetFormat& format, bool openpbr, const std::string& out,
+                      double roughness);
 void add_consensus_command(CLI::App& app, GlobalOptions& g, Runner& selected);
 
 namespace {
@@ -106,9 +109,18 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
 
 // The presets of `specs` in `format` (documents/preset_formats.h).
 std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& specs,
-                             const report::PresetFormat& format, bool openpbr, int basis_terms) {
+                             const report::PresetFormat& format, bool openpbr, int basis_terms,
+                             double roughness) {
   const auto ctx = make_context(g);
-  const auto ms = load_many(g, ctx, specs);
+  analysis::ExportOptions options;
+  options.roughness = roughness;
+  const auto named = analysis::named_materials(ctx, specs, [&](const std::vector<std::string>& s) {
+    return load_many(g, ctx, s, &options.skipped, true);
+  });
+  if (named.materials.empty())
+    throw InputError("no material left to work on (every one was skipped)");
+  for (const auto& note : named.notes) progress(g, note);
+  const auto& ms = named.materials;
   if (format.kind != report::PresetKind::Table) {
     // Documents use the derived parameters only: no fits.
     analysis::StudyOptions derived_only;
@@ -117,13 +129,18 @@ std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& s
         analysis::study_materials(ctx, ms, derived_only, study_progress(g, "deriving: "));
     if (format.kind == report::PresetKind::MaterialX && !report::materialx_space(ctx).note.empty())
       progress(g, "presets: " + report::materialx_space(ctx).note);
-    return report::preset_document(format, {ctx, studies, analysis::Table{}});
+    return report::preset_document(format, {ctx, studies, analysis::Table{}, options});
   }
   const auto studies = analysis::study_materials(ctx, ms, analysis::presets_study_options(openpbr),
                                                  study_progress(g, "fitting: "));
-  const auto t = openpbr ? analysis::openpbr_table(ctx, studies)
-                         : analysis::presets_table(ctx, studies, basis_terms);
-  return report::preset_document(format, {ctx, studies, t});
+  auto t = openpbr ? analysis::openpbr_table(ctx, studies)
+                   : analysis::presets_table(ctx, studies, basis_terms);
+  for (const auto& m : ms)
+    if (!m.resolved.empty()) t.notes.push_back(m.resolved);
+  if (!options.skipped.empty())
+    t.notes.push_back(
+        fmt::format("skipped {}: {}", options.skipped.size(), fmt::join(options.skipped, "; ")));
+  return report::preset_document(format, {ctx, studies, t, options});
 }
 
 void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
@@ -133,11 +150,15 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
     std::string format = "csv", shader, out;
     bool openpbr = false;
     int basis = 0;  // 0: not given
+    double roughness = analysis::kDefaultExportRoughness;
     std::vector<std::string> materials, consensus;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("MATERIALS", a->materials,
-                  std::string(kMaterialsHelp) + "; default: the catalog");
+                  std::string(kMaterialsHelp) +
+                      "; a metal's short name (gold, Ti) gives the element's trusted value: the "
+                      "consensus of its bulk pages where enough agree, else the recommended page; "
+                      "default: the catalog (the talk's pages)");
   sub->add_option("--format", a->format,
                   "csv, md, json, mtlx (a MaterialX document) or gltf (glTF 2.0 materials)")
       ->capture_default_str();
@@ -146,11 +167,17 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--shader", a->shader,
                   "mtlx only: generalized_schlick (default), open_pbr_surface or standard_surface");
   sub->add_option("--out", a->out,
-                  "write to FILE (atomically: complete or not at all) instead of standard output");
+                  "write to FILE (atomically: complete or not at all) instead of standard output")
+      ->check(output_location());
   sub->add_option("--basis", a->basis,
                   "csv, md, json: the coefficients of basis3, basis4 (default) or basis5 (K = 3, "
                   "4, 5)")
       ->check(CLI::Range(3, 5));
+  sub->add_option("--roughness", a->roughness,
+                  "mtlx, gltf: every material's perceptual roughness (specular_roughness, "
+                  "roughnessFactor; alpha = r^2 for the generalized Schlick BSDF)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   sub->add_option("--consensus", a->consensus,
                   "consensus presets instead, with their uncertainty: an element ('Au', 'gold'), a "
                   "page glob, or NAME=GLOB[,GLOB...] (repeatable; docs/consensus.md)");
@@ -160,17 +187,16 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
       if (!a->materials.empty())
         throw InputError("presets: name MATERIALS or --consensus, not both");
       selected = [&g, a, format] {
-        return consensus_presets(g, a->consensus, *format, a->openpbr, a->out);
+        return consensus_presets(g, a->consensus, *format, a->openpbr, a->out, a->roughness);
       };
       return;
     }
     if (a->basis != 0 && (format->kind != report::PresetKind::Table || a->openpbr))
       throw InputError("presets: --basis applies to the csv, md and json presets only");
-    if (!a->out.empty()) require_output_folder(a->out);
     selected = [&g, a, format] {
       emit(g, a->out,
            preset_documents(g, a->materials, *format, a->openpbr,
-                            a->basis != 0 ? a->basis : analysis::kPresetBasisTerms));
+                            a->basis != 0 ? a->basis : analysis::kPresetBasisTerms, a->roughness));
       return 0;
     };
   });
@@ -193,7 +219,9 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand("reproduce",
                                  "every table as DIR/NAME.csv and DIR/NAME.md, plus DIR/README.md");
   auto out = std::make_shared<std::string>();
-  sub->add_option("--out", *out, "output folder (created if missing)")->required();
+  sub->add_option("--out", *out, "output folder (created if missing; its parent must exist)")
+      ->required()
+      ->check(output_location());
   auto no_figures = std::make_shared<bool>(false);
   sub->add_flag("--no-figures", *no_figures,
                 "skip DIR/figures/ (colour strips and curve plots per material)");
@@ -209,7 +237,7 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
           in, font ? &*font : nullptr, [&g](const std::string& line) { progress(g, line); },
           lookdev_sheets(*out));
       for (auto& f : files) f.first = *out + "/" + f.first;
-      report::write_files_atomic(files);
+      report::write_files_atomic(files, *out);
       progress(g, fmt::format("reproduce: wrote {} files to {}", files.size(), *out));
       return 0;
     };

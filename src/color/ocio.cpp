@@ -259,9 +259,10 @@ DisplayTransform::DisplayTransform(const SpaceLibrary& spaces, const std::string
   if (!std::isfinite(vs.exposure_ev) || std::abs(vs.exposure_ev) > 32)
     throw InputError("--exposure must be between -32 and 32 stops");
   auto impl = std::make_shared<Impl>();
-  // Without a config, or with neither named: the built-in display and view; with a config, a
-  // missing one is the config's default display, or its default view of the display.
-  const bool builtin = spaces.is_builtin() || (vs.display.empty() && vs.view.empty());
+  // Without a config the built-in display and view; with a config, a missing one is the config's
+  // default display, or its default view of the display (ViewSettings::builtin_unless_named aside).
+  const bool builtin =
+      spaces.is_builtin() || (vs.builtin_unless_named && vs.display.empty() && vs.view.empty());
   const auto* config = spaces.impl_->config.get();
   std::string display = vs.display, view = vs.view;
   if (display.empty()) display = builtin ? kBuiltinDisplay : config->getDefaultDisplay();

@@ -75,18 +75,22 @@ inline constexpr const char* kAcesSdrView = "ACES 1.0 - SDR Video";
 inline constexpr const char* kUntonemappedView = "Un-tone-mapped";
 
 // Which OpenColorIO display and view turn scene-linear values into pictures for eyes, and an
-// exposure (stops) applied in scene-linear before the view. Empty display and view: the built-in
-// display sRGB through `builtin_view` (one of the built-in views above).
+// exposure (stops) applied in scene-linear before the view. Without a config, an empty display or
+// view is the built-in display sRGB or `builtin_view` (one of the built-in views above). With a
+// config, an empty one is the config's default display, or its default view of the display;
+// except that with `builtin_unless_named` (the reflectance view) neither named means the built-in
+// display and `builtin_view`.
 struct ViewSettings {
   std::string display, view;
   double exposure_ev = 0;
   std::string builtin_view = kAcesSdrView;
+  bool builtin_unless_named = false;
 };
 
 // A display/view transform from a working space of a SpaceLibrary, built once (OCIO processor)
 // and applied to many images. With the built-in library only the built-in display and views
 // exist; with a config, a display and view it defines (OCIO DisplayViewTransform from the
-// working space), or the built-in default when neither is given. InputError for an unknown one.
+// working space), its defaults for those not given (ViewSettings). InputError for an unknown one.
 class DisplayTransform {
  public:
   DisplayTransform(const SpaceLibrary& spaces, const std::string& working_space,

@@ -74,8 +74,24 @@ Json dielectric(const analysis::ShadingPreset& p, const color::Rgb& f0, Json& ex
   return Json{{"pbrMetallicRoughness", std::move(pbr)}, {"extensions", std::move(ext)}};
 }
 
+// A consensus material's basis: its pages, their spread and each channel's range (working space).
+Json consensus_extras(const analysis::ConsensusBasis& b, const std::string& space) {
+  if (b.pages == 1) return Json{{"pages", 1}, {"single_page", true}};
+  return Json{{"pages", b.pages},
+              {"single_page", false},
+              {"f0_de00_median", b.f0_median},
+              {"f0_de00_max", b.f0_max},
+              {"f82_de00_median", b.f82_median},
+              {"f82_de00_max", b.f82_max},
+              {"f0_lo", rgb_array(b.f0_lo)},
+              {"f0_hi", rgb_array(b.f0_hi)},
+              {"f82_lo", rgb_array(b.f82_lo)},
+              {"f82_hi", rgb_array(b.f82_hi)},
+              {"bounds_space", space}};  // the bounds stay in the working space
+}
+
 Json material(const analysis::Context& ctx, const GltfSpace& space,
-              const analysis::MaterialStudy& s, std::set<std::string>& used) {
+              const analysis::MaterialStudy& s, double roughness, std::set<std::string>& used) {
   const auto p = analysis::shading_preset(ctx, s);
   const color::Rgb f0 = space.converted ? color::transform_rgb(space.from_working, p.f0) : p.f0;
   const auto& c = s.material->coverage;
@@ -85,6 +101,10 @@ Json material(const analysis::Context& ctx, const GltfSpace& space,
               {"coverage_k", c.k},  // NaN (written as null) without k data
               {"extrapolated", c.extrapolated}};
   if (c.extrapolated) extras["uncovered"] = c.uncovered;
+  if (s.material->consensus)
+    extras["consensus"] = consensus_extras(*s.material->consensus, ctx.settings().space);
+  if (!s.material->resolved.empty()) extras["resolved"] = s.material->resolved;
+  if (p.metal_form) extras["dielectric_form_de00"] = p.dielectric_form_de00;
   Json m{{"name", s.material->material.name}};
   if (p.metal) {
     auto base = stored_color(ctx, space, "f0", f0);
@@ -95,6 +115,7 @@ Json material(const analysis::Context& ctx, const GltfSpace& space,
   } else {
     m.update(dielectric(p, f0, extras, used));
   }
+  m["pbrMetallicRoughness"]["roughnessFactor"] = roughness;
   m["extras"] = {{"fresnelLab", std::move(extras)}};
   return m;
 }
@@ -102,11 +123,13 @@ Json material(const analysis::Context& ctx, const GltfSpace& space,
 }  // namespace
 
 std::string presets_gltf(const analysis::Context& ctx,
-                         const std::vector<analysis::MaterialStudy>& studies) {
+                         const std::vector<analysis::MaterialStudy>& studies,
+                         const analysis::ExportOptions& options) {
   const GltfSpace space = gltf_space(ctx);
   std::set<std::string> used;
   Json materials = Json::array();
-  for (const auto& s : studies) materials.push_back(material(ctx, space, s, used));
+  for (const auto& s : studies)
+    materials.push_back(material(ctx, space, s, options.roughness, used));
   const std::string policy = fmt::format(
       "Colours outside [0, 1] by more than {:g} cannot be stored: the colour of [0, 1]^3 nearest "
       "in ΔE2000 is, and the "
@@ -123,11 +146,18 @@ std::string presets_gltf(const analysis::Context& ctx,
                  {"coverage_policy", kCoveragePolicy},
                  {"out_of_range_policy", policy}}}}}}}};
   if (space.converted) doc["asset"]["extras"]["fresnelLab"]["colour_space"] = space.note;
+  doc["asset"]["extras"]["fresnelLab"]["roughness"] =
+      fmt::format("perceptual roughness {:g} (alpha {:g}) for every material", options.roughness,
+                  options.roughness * options.roughness);
+  if (!options.skipped.empty()) doc["asset"]["extras"]["fresnelLab"]["skipped"] = options.skipped;
   if (!used.empty())
     doc["extensionsUsed"] = Json(std::vector<std::string>(used.begin(), used.end()));
   doc["materials"] = std::move(materials);
   return write_json(doc, [](const std::string& key) {
-    return key == "de00_stored" || key.rfind("coverage", 0) == 0 ? 4 : 6;
+    return key == "de00_stored" || key.rfind("coverage", 0) == 0 ||
+                   key.find("_de00") != std::string::npos
+               ? 4
+               : 6;
   });
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "analysis/study/study.h"
+#include "analysis/tables/shading_presets.h"
 
 namespace fl::report {
 
@@ -17,9 +18,12 @@ namespace fl::report {
 // base colour (no diffuse). A factor outside [0, 1] is stored through analysis::into_unit_range;
 // each material's extras give the true value, the out_of_range list and the ΔE2000 the stored
 // colour costs at normal incidence. Every material's extras also state its data source, coverage
-// (n and k, each alone), whether it is extrapolated and where (asset.extras explain these).
+// (n and k, each alone), whether it is extrapolated and where (asset.extras explain these), a
+// consensus' pages and spread, and what a short name resolved to. Every material has
+// roughnessFactor options.roughness; asset.extras list the materials a glob skipped.
 inline constexpr double kSpecularColorMin = 1e-3;
 std::string presets_gltf(const analysis::Context& ctx,
-                         const std::vector<analysis::MaterialStudy>& studies);
+                         const std::vector<analysis::MaterialStudy>& studies,
+                         const analysis::ExportOptions& options = {});
 
 }  // namespace fl::report

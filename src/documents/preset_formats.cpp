@@ -64,9 +64,9 @@ std::string preset_document(const PresetFormat& f, const PresetSource& in) {
     case PresetKind::Table:
       return render(in.table, f.table_format);
     case PresetKind::MaterialX:
-      return presets_materialx(in.ctx, in.studies, f.shader);
+      return presets_materialx(in.ctx, in.studies, f.shader, in.options);
     case PresetKind::Gltf:
-      return presets_gltf(in.ctx, in.studies);
+      return presets_gltf(in.ctx, in.studies, in.options);
   }
   return {};
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/study/study.h"
+#include "analysis/tables/shading_presets.h"
 #include "analysis/tables/table.h"
 #include "documents/materialx.h"
 #include "documents/table_formats.h"
@@ -41,6 +42,7 @@ struct PresetSource {
   const analysis::Context& ctx;
   const std::vector<analysis::MaterialStudy>& studies;
   const analysis::Table& table;
+  analysis::ExportOptions options = {};  // MaterialX and glTF
 };
 std::string preset_document(const PresetFormat& f, const PresetSource& in);
 

@@ -98,6 +98,27 @@ std::string to_csv(const analysis::Table& t) {
   return out;
 }
 
+namespace {
+
+// A cell's text in a Markdown table row: '|' escaped, and a line break (a catalog name may hold
+// one) a space, since a row is one line.
+std::string markdown_cell(const std::string& text) {
+  std::string s;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
+    if (ch == '|')
+      s += "\\|";
+    else if (ch == '\r' || ch == '\n') {
+      if (ch == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      s += ' ';
+    } else
+      s += ch;
+  }
+  return s;
+}
+
+}  // namespace
+
 std::string to_markdown(const analysis::Table& t, int level) {
   std::string out = std::string(level, '#') + " " + t.title + "\n\n";
   if (!t.reading.empty()) out += t.reading + "\n\n";
@@ -112,10 +133,7 @@ std::string to_markdown(const analysis::Table& t, int level) {
   for (const auto& row : t.rows) {
     out += "|";
     for (size_t c = 0; c < row.size(); ++c) {
-      std::string s = cell_text(row[c], t.columns[c], "n/a");
-      for (size_t p = s.find('|'); p != std::string::npos; p = s.find('|', p + 2))
-        s.replace(p, 1, "\\|");
-      out += " " + s + " |";
+      out += " " + markdown_cell(cell_text(row[c], t.columns[c], "n/a")) + " |";
     }
     out += "\n";
   }

@@ -44,18 +44,27 @@ Rule gauss_legendre_rule() {
 
 }  // namespace
 
-color::Rgb hemispherical_average_of(const std::function<color::Rgb(double)>& f, int panels) {
+std::vector<AverageNode> hemispherical_average_nodes(int panels, double mu_lo, double mu_hi) {
   static const Rule rule = gauss_legendre_rule();
-  color::Rgb sum{};
+  // s = 1 − √(1 − μ): the panels' variable (0 and 1 at μ = 0 and 1).
+  const double s_lo = 1.0 - std::sqrt(1.0 - mu_lo), s_span = 1.0 - std::sqrt(1.0 - mu_hi) - s_lo;
+  std::vector<AverageNode> nodes;
+  nodes.reserve(static_cast<size_t>(panels) * kNodes);
   for (int panel = 0; panel < panels; ++panel) {
-    const double s0 = static_cast<double>(panel) / panels, half = 0.5 / panels;
+    const double s0 = s_lo + s_span * panel / panels, half = 0.5 * s_span / panels;
     for (int k = 0; k < kNodes; ++k) {
       const double s = s0 + half * (rule.x[k] + 1.0);
       const double mu = 1.0 - (1.0 - s) * (1.0 - s);
       const double dmu_ds = 2.0 * (1.0 - s);
-      sum = sum + (2.0 * mu * dmu_ds * half * rule.w[k]) * f(mu);
+      nodes.push_back({mu, 2.0 * mu * dmu_ds * half * rule.w[k]});
     }
   }
+  return nodes;
+}
+
+color::Rgb hemispherical_average_of(const std::function<color::Rgb(double)>& f, int panels) {
+  color::Rgb sum{};
+  for (const auto& node : hemispherical_average_nodes(panels)) sum = sum + node.weight * f(node.mu);
   return sum;
 }
 

@@ -18,6 +18,15 @@ color::Rgb hemispherical_average_quadrature(Model m, const std::vector<double>& 
 // 2∫₀¹ f(μ) μ dμ per channel of any curve, by the same rule on `panels` panels (32 for the models'
 // kernels; a smooth curve such as the spectral ground truth needs far fewer).
 color::Rgb hemispherical_average_of(const std::function<color::Rgb(double)>& f, int panels = 32);
+// The rule of hemispherical_average_of: 2∫₀¹ f(μ) μ dμ ≈ Σ weight·f(mu) over the nodes, in
+// order; for integrands that share work between curves (several at each μ). Over [mu_lo, mu_hi]
+// instead, the same panels between the ends' s = 1 − √(1 − μ): an integrand with a kink (the
+// critical angle of total internal reflection) integrates on either side of it.
+struct AverageNode {
+  double mu, weight;
+};
+std::vector<AverageNode> hemispherical_average_nodes(int panels = 32, double mu_lo = 0.0,
+                                                     double mu_hi = 1.0);
 // Whether hemispherical_average uses the unit's closed form for these parameters.
 bool average_in_closed_form(Model m, const std::vector<double>& params);
 

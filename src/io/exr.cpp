@@ -242,8 +242,9 @@ void write_exr_atomic(const std::string& path, const ExrImage& image) {
 
 namespace {
 
-// The header's string and float attributes and its chromaticities, into `image`.
-void copy_attributes(const Imf::Header& header, ExrImage& image) {
+// The header's string and float attributes and its chromaticities, into `image`. Chromaticities
+// with a NaN or an infinity say nothing about the pixels' space: an InputError, not a guess.
+void copy_attributes(const Imf::Header& header, ExrImage& image, const std::string& path) {
   for (auto it = header.begin(); it != header.end(); ++it) {
     if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
       image.string_attributes.emplace_back(it.name(), s->value());
@@ -254,6 +255,11 @@ void copy_attributes(const Imf::Header& header, ExrImage& image) {
     const auto& c = Imf::chromaticities(header);
     image.chromaticities = std::array<float, 8>{c.red.x,  c.red.y,  c.green.x, c.green.y,
                                                 c.blue.x, c.blue.y, c.white.x, c.white.y};
+    for (const float v : *image.chromaticities)
+      if (!std::isfinite(v))
+        throw InputError(path, 0,
+                         "the chromaticities attribute holds a NaN or an infinity: the file's "
+                         "colour space is unknown (write finite chromaticities, or none)");
   }
 }
 
@@ -286,7 +292,7 @@ ExrImage read_exr(const std::string& path) {
     Imf::InputFile in(stream);
     image.width = static_cast<int>(width);
     image.height = static_cast<int>(height);
-    copy_attributes(header, image);
+    copy_attributes(header, image, path);
     const size_t nc = image.channels.size();
     image.pixels.assign(static_cast<size_t>(image.width) * image.height * nc, 0.0f);
     Imf::FrameBuffer fb;

@@ -4,59 +4,107 @@
 #include <unistd.h>
 
 #include <cctype>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
+#include "io/staging.h"
 #include "util/errors.h"
 
 namespace fl::report {
 
 namespace {
 
-// Writes `content` to a temporary file beside `path`; returns its name.
-std::string write_temporary(const std::string& path, const std::string& content) {
-  namespace fs = std::filesystem;
-  const fs::path p(path);
-  std::error_code ec;
-  if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
-  if (fs::is_directory(p, ec))
-    throw InputError(path, 0, "is a directory, cannot write a file there");
-  const std::string tmp = fmt::format("{}.tmp.{}", path, static_cast<long>(::getpid()));
-  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path, 0, "cannot write (folder missing or not writable)");
-  out << content;
-  out.close();
-  if (!out) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(fmt::format("{}: write failed", path));
+namespace fs = std::filesystem;
+
+// The folder `path` names, "." for a bare name; "out/" is the folder "out".
+fs::path folder_of(const std::string& path) {
+  fs::path p = fs::path(path).lexically_normal();
+  if (!p.has_filename()) p = p.parent_path();
+  return p.has_parent_path() ? p.parent_path() : fs::path(".");
+}
+
+// The deepest folder holding every file of `files` (absolute).
+fs::path common_folder(const Files& files) {
+  fs::path common;
+  for (size_t i = 0; i < files.size(); ++i) {
+    const fs::path f = fs::absolute(folder_of(files[i].first)).lexically_normal();
+    if (i == 0) {
+      common = f;
+      continue;
+    }
+    fs::path shared;
+    for (auto a = common.begin(), b = f.begin(); a != common.end() && b != f.end() && *a == *b;
+         ++a, ++b)
+      shared /= *a;
+    common = shared;
   }
-  return tmp;
+  return common;
+}
+
+// Writes `files` (absolute paths under `root`) into the staging folder `stage` at the same
+// relative paths; every file's error names its user path.
+void stage_files(const fs::path& root, const fs::path& stage, const Files& files) {
+  std::error_code ec;
+  for (const auto& [path, bytes] : files) {
+    const fs::path rel = fs::absolute(path).lexically_normal().lexically_relative(root);
+    if (rel.empty() || *rel.begin() == "..")
+      throw std::runtime_error(fmt::format("{}: outside the output folder", path));
+    if (fs::is_directory(path, ec))
+      throw InputError(path, 0, "is a directory, cannot write a file there");
+    fs::create_directories((stage / rel).parent_path(), ec);
+    staging::write_checked(stage / rel, bytes, path);
+  }
 }
 
 }  // namespace
 
-void write_files_atomic(const Files& files) {
-  // The temporaries are written in file order; on a failure every one written is removed.
-  std::vector<std::string> temps(files.size());
+void require_output_folder(const std::string& path) {
+  const fs::path folder = folder_of(path);
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw InputError(path, 0,
+                     fmt::format("the folder {} does not exist (outputs never create folders)",
+                                 folder.string()));
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw InputError(path, 0, fmt::format("the folder {} is not writable", folder.string()));
+}
+
+void write_files_atomic(const Files& files, const std::string& out_folder) {
+  if (files.empty()) return;
+  std::error_code ec;
+  bool created = false;
+  if (!out_folder.empty()) {
+    require_output_folder(out_folder);
+    if (!fs::exists(out_folder, ec)) created = fs::create_directory(out_folder, ec);
+  } else {
+    for (const auto& f : files) require_output_folder(f.first);
+  }
+  const fs::path root =
+      out_folder.empty() ? common_folder(files) : fs::absolute(out_folder).lexically_normal();
+  staging::HoldSignals hold;
+  {
+    staging::FolderLock lock(root);
+    staging::recover(root);
+  }
+  const std::string suffix = staging::unique_suffix();
+  const fs::path stage = root / (staging::kStaging + suffix),
+                 committed = root / (staging::kCommitted + suffix);
   try {
-    for (size_t i = 0; i < files.size(); ++i)
-      temps[i] = write_temporary(files[i].first, files[i].second);
+    fs::create_directory(stage);
+    stage_files(root, stage, files);
   } catch (...) {
-    for (const auto& t : temps)
-      if (!t.empty()) std::remove(t.c_str());
+    fs::remove_all(stage, ec);
+    if (created) fs::remove(out_folder, ec);
     throw;
   }
-  for (size_t i = 0; i < files.size(); ++i) {
-    std::error_code ec;
-    std::filesystem::rename(temps[i], files[i].first, ec);
-    if (ec) {
-      for (size_t j = i; j < temps.size(); ++j) std::remove(temps[j].c_str());
-      throw std::runtime_error(fmt::format("{}: cannot move the finished file into place: {}",
-                                           files[i].first, ec.message()));
-    }
+  staging::FolderLock lock(root);
+  fs::rename(stage, committed, ec);  // the commit point
+  if (ec) {
+    fs::remove_all(stage, ec);
+    throw std::runtime_error(
+        fmt::format("{}: cannot move the finished files into place", file_list(files)));
   }
+  staging::move_in(committed, root);
 }
 
 void write_file_atomic(const std::string& path, const std::string& content) {
@@ -64,7 +112,7 @@ void write_file_atomic(const std::string& path, const std::string& content) {
 }
 
 void require_replaceable_folder(const std::string& folder, const std::string& marker) {
-  namespace fs = std::filesystem;
+  require_output_folder(folder);
   std::error_code ec;
   if (!fs::exists(folder, ec)) return;
   if (!fs::is_directory(folder, ec)) throw InputError(folder, 0, "exists and is not a folder");
@@ -77,27 +125,41 @@ void require_replaceable_folder(const std::string& folder, const std::string& ma
 
 void replace_folder_atomic(const std::string& folder, const Files& files,
                            const std::string& marker) {
-  namespace fs = std::filesystem;
   require_replaceable_folder(folder, marker);
-  fs::path target = fs::path(folder).lexically_normal();
+  fs::path target = fs::absolute(folder).lexically_normal();
   if (!target.has_filename()) target = target.parent_path();  // "out/" is the folder "out"
-  const std::string suffix = fmt::format(".{}", static_cast<long>(::getpid()));
-  const fs::path fresh = target.string() + ".new" + suffix, old = target.string() + ".old" + suffix;
+  const fs::path parent = target.parent_path();
+  const std::string pid = std::to_string(static_cast<long>(::getpid()));
+  const fs::path fresh = target.string() + ".new." + pid, ready = target.string() + ".ready." + pid,
+                 old = target.string() + ".old." + pid;
+  staging::HoldSignals hold;
+  {
+    staging::FolderLock lock(parent);
+    staging::recover(parent);
+  }
   std::error_code ec;
-  fs::remove_all(fresh, ec);
   try {
-    Files inside{{(fresh / marker).string(), ""}};
-    for (const auto& [path, bytes] : files) inside.emplace_back((fresh / path).string(), bytes);
-    write_files_atomic(inside);
+    fs::create_directory(fresh);
+    Files inside{{(fs::path(folder) / marker).string(), ""}};
+    for (const auto& [path, bytes] : files)
+      inside.emplace_back((fs::path(folder) / path).string(), bytes);
+    stage_files(target, fresh, inside);
   } catch (...) {
     fs::remove_all(fresh, ec);
     throw;
   }
+  staging::FolderLock lock(parent);
+  fs::rename(fresh, ready, ec);  // the commit point
+  if (ec) {
+    fs::remove_all(fresh, ec);
+    throw std::runtime_error(fmt::format("{}: cannot move the finished folder into place", folder));
+  }
   const bool had_old = fs::exists(target, ec);
   if (had_old) fs::rename(target, old);
-  fs::rename(fresh, target, ec);
+  fs::rename(ready, target, ec);
   if (ec) {
     if (had_old) fs::rename(old, target);
+    fs::remove_all(ready, ec);
     throw std::runtime_error(
         fmt::format("{}: cannot move the finished folder into place: {}", folder, ec.message()));
   }
@@ -112,7 +174,7 @@ std::string file_list(const Files& files) {
 }
 
 std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
+  std::string ext = fs::path(path).extension().string();
   for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   return ext;
 }

@@ -167,9 +167,12 @@ std::pair<std::string, std::string> consensus_fact(const analysis::Table& t, siz
   const std::string kind = text("kind"), detail = text("kind_detail");
   if (kind == "consensus")
     return {"consensus",
-            fmt::format("{}; spread F0 {:.2f} / {:.2f}, F82 {:.2f} / {:.2f} ΔE2000 (median / max)",
+            fmt::format("{}; spread F0 {:.2f} / {:.2f}, F82 {:.2f} / {:.2f} ΔE2000 (median / "
+                        "max); the pages' F0 from ({}) to ({}), F82 from ({}) to ({})",
                         detail, number("spread_f0_de00_median"), number("spread_f0_de00_max"),
-                        number("spread_f82_de00_median"), number("spread_f82_de00_max"))};
+                        number("spread_f82_de00_median"), number("spread_f82_de00_max"),
+                        text("spread_f0_lo"), text("spread_f0_hi"), text("spread_f82_lo"),
+                        text("spread_f82_hi"))};
   std::string value = kind + (detail.empty() ? "" : " " + detail);
   if (!std::isnan(number("consensus_f0_de00")))
     value += fmt::format("; from the consensus F0 {:.2f}, F82 {:.2f} ΔE2000",

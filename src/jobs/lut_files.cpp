@@ -14,19 +14,22 @@
 #include "documents/table_formats.h"
 #include "fresnel/table_terms.h"
 #include "io/exr.h"
+#include "jobs/lut_texture.h"
 #include "util/errors.h"
 
 namespace fl::report {
-namespace {
+namespace lut_files {
 
-constexpr int kDefaultSize = 64;
-
-// The request with its size (default_size when 0), checked.
+// The request with its size (default_size when not given), checked.
 LutRequest sized(LutRequest r, int default_size) {
-  if (r.size == 0) r.size = default_size;
+  if (r.size == LutRequest::kSizeNotGiven) r.size = default_size;
   if (r.size < 2 || r.size > 4096)
     throw InputError(fmt::format("--size {} out of range (2 to 4096)", r.size));
-  if (r.samples < 1) throw InputError(fmt::format("--samples {} must be positive", r.samples));
+  if (r.samples < kMinLutSamples)
+    throw InputError(
+        fmt::format("--samples {} is below {}: fewer samples per cell leave the table visibly "
+                    "wrong ({} samples: DFG values off by up to 4e-3)",
+                    r.samples, kMinLutSamples, kMinLutSamples));
   if (r.threads < 0)
     throw InputError(fmt::format("--threads {} must be 0 (all) or positive", r.threads));
   return r;
@@ -42,13 +45,6 @@ analysis::Column col(const char* name) {
 }
 
 // Texture-axis attributes shared by every EXR written here.
-struct Axes {
-  std::string x_axis;
-  double x_min, x_max;
-  std::string y_axis;
-  double y_min, y_max;
-};
-constexpr const char* kRoughnessAxis = "perceptual_roughness";
 
 ExrImage texture(const std::string& table, int size, std::vector<std::string> channels,
                  const Axes& a, const std::string& grid, const std::string& channel_text) {
@@ -150,11 +146,17 @@ std::string texture_bytes(ExrImage img, const std::string& ext, CHeader header, 
 
 // "fresnel-lab lut NAME --size N [...]": what wrote a header.
 std::string lut_command(const char* name, const LutRequest& r, const std::string& symbol) {
-  return fmt::format("fresnel-lab lut {} --size {}{}{} --symbol {}", name, r.size,
-                     std::string(name) == "dfg" && r.layout != "split-sum" ? " --layout " + r.layout
-                                                                           : std::string(),
-                     r.half ? " --storage half" : "", symbol);
+  return fmt::format(
+      "fresnel-lab lut {} --size {}{}{}{} --symbol {}", name, r.size,
+      std::string(name) == "dfg" && r.layout != "split-sum" ? " --layout " + r.layout
+                                                            : std::string(),
+      r.dielectric ? fmt::format(" --dielectric --slices {}", r.slices) : std::string(),
+      r.half ? " --storage half" : "", symbol);
 }
+
+}  // namespace lut_files
+using namespace lut_files;
+namespace {
 
 // ----- dfg
 
@@ -607,6 +609,7 @@ ExrImage energy_texture(const analysis::EnergyTable& t) {
 }  // namespace
 
 Output energy_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+  if (request.dielectric) return dielectric_energy_lut(request, progress);
   const LutRequest r = sized(request, kDefaultSize);
   const std::string ext = output_extension(r.out, {".exr", ".csv", ".h"});
   const std::string symbol = header_symbol(r, ext, "fresnel_lab_energy");

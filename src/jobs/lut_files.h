@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/lut/energy.h"
 #include "analysis/lut/lut.h"
 #include "analysis/lut/rendered.h"
 #include "analysis/study/study.h"
@@ -22,16 +23,26 @@ DfgLayout dfg_layout_from_name(
 // Filament's DFG_LUT_SIZE: the table its engine compiles in (128 × 128 RGB16F).
 inline constexpr int kFilamentDfgSize = 128;
 
+// The fewest quasi-Monte Carlo samples per cell `lut` takes: fewer leave a table visibly wrong.
+// Measured: a 16² DFG table at 256 samples is off by up to 3.9e-3 from 8192 samples, at 1024 by
+// 1.1e-3 (docs/engines.md).
+inline constexpr int kMinLutSamples = 256;
+
 struct LutRequest {
-  int size = 0;  // cells per axis; 0: 64, or kFilamentDfgSize for the Filament layout
+  static constexpr int kSizeNotGiven = -1;
+  int size = kSizeNotGiven;  // cells per axis; not given: 64, or kFilamentDfgSize for Filament
   std::string out;
   int samples = analysis::kLutSamples;
   int threads = 0;                   // 0: every hardware thread
   std::string layout = "split-sum";  // dfg only
+  // energy only: the dielectric table (E_F(μ, α, η), E_F,avg(α, η)) of `slices` η-slices (a
+  // square number: the slices tile a square atlas) instead of the conductors' E and E_avg.
+  bool dielectric = false;
+  int slices = analysis::kDielectricSlices;
   bool half = false;  // textures as half floats (EXR HALF channels; .h: uint16_t bit patterns)
   // .h output: the C symbol of the first texture's header (a texture after the first adds its
   // suffix, _2, _3, ...); empty: fresnel_lab_dfg, fresnel_lab_dfg_filament, fresnel_lab_ltc,
-  // fresnel_lab_ltc_moments or fresnel_lab_energy.
+  // fresnel_lab_ltc_moments, fresnel_lab_energy or fresnel_lab_energy_dielectric.
   std::string symbol;
 };
 
@@ -55,6 +66,11 @@ Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress 
 // Kulla–Conty's tables (analysis/lut/energy.h) on the DFG grid: out.exr or out.h (R = E(n·v,
 // roughness), G = E_avg(roughness)), or out.csv.
 Output energy_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
+// The dielectric table (analysis/lut/energy.h, dielectric_energy_table) on the DFG grid: out.exr or
+// out.h, a square atlas of √K × √K tiles of N × N texels, slice k in tile (k mod √K, k div √K),
+// RGBA = E_F(η_k), E_F,avg(η_k), E_F(1/η_k), E_F,avg(1/η_k); or out.csv (a row per slice and
+// cell). energy_lut with request.dielectric calls it.
+Output dielectric_energy_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // Filament's layout as texel values, 3 per texel in file order (the half floats are these rounded).
 std::vector<float> filament_dfg_values(const analysis::DfgTable& table,
                                        const std::vector<double>& sheen);

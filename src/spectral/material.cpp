@@ -291,12 +291,13 @@ std::optional<Material> find_in_catalog(const std::string& spec, const DataPaths
 Material read_material_file(const std::string& spec, const DataPaths& paths) {
   Material m;
   m.origin = Material::Origin::File;
-  m.key = spec;
   m.name = fs::path(spec).stem().string();
   if (ascii_lower(fs::path(spec).extension().string()) ==
       ".spd")  // NAME.eta.spd or NAME.k.spd: NAME
     m.name = fs::path(m.name).stem().string();
-  m.source = spec;
+  m.key = m.name;
+  m.file = spec;
+  m.source = fs::path(spec).is_absolute() ? fs::path(spec).filename().string() : spec;
   const auto ext = ascii_lower(fs::path(spec).extension().string());
   if (ext == ".yml" || ext == ".yaml") {
     // A catalog entry has 'class'; a database file has 'DATA'.

@@ -15,11 +15,14 @@ const char* to_string(MaterialClass c);
 struct Material {
   enum class Origin { Catalog, Page, File, Consensus };  // Consensus: analysis/consensus
   Origin origin = Origin::Catalog;
-  std::string key;   // catalog file stem ("gold"), or the argument it was loaded from
+  std::string key;   // catalog file stem ("gold"), a file's stem ("Cu"), or the page
   std::string name;  // display name ("Gold")
   std::vector<std::string> aliases;  // other names that select a catalog entry ("Au", "aluminium")
   MaterialClass material_class = MaterialClass::Metal;
-  std::string source;     // database page, file path or "constant n=…"
+  // Database page, file path (as given when relative, the file's name when absolute: no path of
+  // the user's machine in a published output) or "constant n=…".
+  std::string source;
+  std::string file;       // a file material's path as given (tells two files of one name apart)
   std::string reference;  // citation of the data
   std::string book_name;  // a page's book in the database's catalog ("Au (Gold)"), if listed
   std::string section;    // a page's catalog section ("Experimental data: thin film"), if listed

@@ -42,17 +42,23 @@ struct Header {
 };
 
 // Lower-case ASCII words of a column name; µ (U+00B5), μ (U+03BC) become u and λ (U+03BB) lambda.
+// A byte 0xB5 that continues no UTF-8 sequence is Windows-1252's (and Latin-1's) µ: also u.
 std::vector<std::string> name_words(std::string_view name) {
   std::string s;
+  int continuation = 0;  // bytes still owed to the UTF-8 sequence being read
   for (size_t i = 0; i < name.size(); ++i) {
     const auto c = static_cast<unsigned char>(name[i]);
     const auto next = i + 1 < name.size() ? static_cast<unsigned char>(name[i + 1]) : 0;
-    if ((c == 0xC2 && next == 0xB5) || (c == 0xCE && next == 0xBC))
+    if ((c == 0xC2 && next == 0xB5) || (c == 0xCE && next == 0xBC)) {
       s += 'u', ++i;
-    else if (c == 0xCE && next == 0xBB)
+    } else if (c == 0xCE && next == 0xBB) {
       s += " lambda ", ++i;
-    else
-      s += std::isalnum(c) ? static_cast<char>(std::tolower(c)) : ' ';
+    } else if (c >= 0x80 && c < 0xC0 && continuation > 0) {
+      s += ' ', --continuation;
+    } else {
+      continuation = c >= 0xF0 ? 3 : c >= 0xE0 ? 2 : c >= 0xC0 ? 1 : 0;
+      s += c == 0xB5 ? 'u' : std::isalnum(c) ? static_cast<char>(std::tolower(c)) : ' ';
+    }
   }
   std::vector<std::string> words;
   for (auto w : split_fields(s, " ")) words.emplace_back(w);
@@ -157,7 +163,10 @@ Header parse_header(const std::string& file, int line, std::string_view text) {
   h.line = line;
   h.separator = separator_of(text);
   std::vector<std::string> fields;
-  for (auto& f : split_line(text, h.separator)) {
+  auto split = split_line(text, h.separator);
+  if (split.size() > 1 && split.back().empty())
+    split.pop_back();  // "wl,n,k,": a trailing separator
+  for (auto& f : split) {
     if (unit_only(f) && !fields.empty())
       fields.back() += " " + f;
     else
@@ -215,19 +224,20 @@ std::optional<std::string> decimal_comma_form(std::string_view field) {
   return out;
 }
 
-// parse_finite with decimal commas; InputError when the file has used the other mark before.
+// parse_finite with decimal commas; InputError when `dm`'s file (or column: `scope`) has used the
+// other mark before.
 bool parse_number(std::string_view raw, DecimalMark& dm, const std::string& file, int line,
-                  double& v) {
+                  double& v, const char* scope = "file") {
   const auto field = trim(raw);
   const auto comma_form = decimal_comma_form(field);
   const char mark = comma_form ? ',' : field.find('.') != std::string_view::npos ? '.' : 0;
   if (!parse_finite(comma_form ? std::string_view(*comma_form) : field, v)) return false;
   if (mark && dm.mark && mark != dm.mark)
     throw InputError(file, line,
-                     fmt::format("'{}' has a decimal {} but line {} has a decimal {}: a file must "
+                     fmt::format("'{}' has a decimal {} but line {} has a decimal {}: a {} must "
                                  "use one decimal mark ('1,234' could be a thousands separator)",
                                  field, mark == ',' ? "comma" : "point", dm.line,
-                                 dm.mark == ',' ? "comma" : "point"));
+                                 dm.mark == ',' ? "comma" : "point", scope));
   if (mark && !dm.mark) dm = {mark, line};
   return true;
 }
@@ -236,6 +246,10 @@ struct Section {
   Header header;
   std::vector<TabulatedRow> rows;  // as read; TabulatedRows judges them in wavelength order
   bool epsilon = false;            // the n and k columns hold ε1 and ε2 (WVASE's E1E2)
+  // Between semicolons a comma separates no thousands in numbers of this kind, so there each
+  // column keeps its own mark ("300.9;1,4;1,679": the wavelength with a point, n and k with
+  // commas).
+  DecimalMark column_marks[3];  // wavelength, n, k
 };
 
 // A data row: its first field is a number, split as the line's own separator suggests or, for
@@ -299,10 +313,14 @@ std::string not_a_number(const std::string& column, const std::string& field) {
 void add_table_row(Section& s, DecimalMark& dm, const std::string& file, int line,
                    std::string_view text) {
   const Header& h = s.header;
-  const auto f = split_line(text, h.separator);
+  auto f = split_line(text, h.separator);
+  if (f.size() == h.columns.size() + 1 && f.back().empty()) f.pop_back();  // "400,0.5,2.1,"
   const auto field = [&](int c) { return c < static_cast<int>(f.size()) ? f[c] : std::string(); };
+  const bool by_column = h.separator == Separator::Semicolon;
+  const auto mark = [&](int i) -> DecimalMark& { return by_column ? s.column_marks[i] : dm; };
+  const char* scope = by_column ? "column" : "file";
   double v[3] = {0, 0, 0};  // wavelength, n, k
-  if (!parse_number(field(h.wavelength), dm, file, line, v[0]))
+  if (!parse_number(field(h.wavelength), mark(0), file, line, v[0], scope))
     throw InputError(file, line, not_a_number(h.columns[h.wavelength].name, field(h.wavelength)));
   const double lambda_nm = row_lambda_nm(s, file, line, v[0]);
   const auto defect = [&](std::string problem) {
@@ -313,8 +331,9 @@ void add_table_row(Section& s, DecimalMark& dm, const std::string& file, int lin
                               h.separator == Separator::Comma && f.size() > h.columns.size()
                                   ? " (with decimal commas, separate the columns with ';' or tabs)"
                                   : ""));
-  for (const auto& [c, out] : {std::pair{h.n, &v[1]}, std::pair{h.k, &v[2]}})
-    if (c >= 0 && !parse_number(field(c), dm, file, line, *out))
+  for (int i : {1, 2})
+    if (const int c = i == 1 ? h.n : h.k;
+        c >= 0 && !parse_number(field(c), mark(i), file, line, v[i], scope))
       return defect(not_a_number(h.columns[c].name, field(c)));
   if (s.epsilon) n_k_from_epsilon(v[1], v[2], v[1], v[2]);
   s.rows.push_back({line, lambda_nm, v[1], v[2], ""});
@@ -518,7 +537,20 @@ struct Token {
   std::string text;
 };
 
-// Every field after the first `skip_lines` non-empty, non-comment lines, with its line.
+// The values of a SOPRA line: separated by whitespace or ';', where a field "0,5" is a decimal
+// comma ("2 0,3 0,8 100", "1,4;1,679"); any other comma separates values ("1.4,1.679", "0.5, 2").
+void sopra_fields(std::string_view t, int line, std::vector<Token>& out) {
+  for (auto f : split_fields(t, " \t;")) {
+    if (auto decimal = decimal_comma_form(f)) {
+      out.push_back({line, std::move(*decimal)});
+      continue;
+    }
+    for (auto v : split_fields(f, ",")) out.push_back({line, std::string(v)});
+  }
+}
+
+// Every field after the first `skip_lines` non-empty, non-comment lines, with its line; with
+// `delimiters` null, the fields of SOPRA lines (sopra_fields).
 std::vector<Token> tokens(std::string_view text, size_t skip_lines, const char* delimiters) {
   std::vector<Token> out;
   int line = 0;
@@ -528,6 +560,10 @@ std::vector<Token> tokens(std::string_view text, size_t skip_lines, const char* 
     const auto t = trim(raw);
     if (t.empty() || t[0] == '#') continue;
     if (seen++ < skip_lines) continue;
+    if (!delimiters) {
+      sopra_fields(t, line, out);
+      continue;
+    }
     for (auto f : split_fields(t, delimiters)) out.push_back({line, std::string(f)});
   }
   return out;
@@ -552,7 +588,7 @@ struct SopraHeader {
 };
 
 SopraHeader sopra_header(const std::string& path, std::string_view text) {
-  const auto t = tokens(text, 0, " \t;,");
+  const auto t = tokens(text, 0, nullptr);
   SopraHeader h;
   std::vector<double> v;
   for (const auto& tok : t) {
@@ -602,11 +638,11 @@ std::string sopra_count_problem(const SopraHeader& h, size_t found) {
 
 OpticalConstants read_sopra_nk(const std::string& path, const UsedRange& used) {
   const std::string text = read_text_file(path);
-  const auto first = tokens(text, 0, " \t;,");
+  const auto first = tokens(text, 0, nullptr);
   double x;
   if (first.empty() || !parse_finite(first.front().text, x)) return read_nk_table(path, used);
   const SopraHeader h = sopra_header(path, text);
-  const auto values = tokens(text, 1, " \t;,");
+  const auto values = tokens(text, 1, nullptr);
   const size_t points = static_cast<size_t>(h.intervals) + 1;
   if (values.size() != 2 * points)
     throw InputError(path, values.empty() ? h.line : values.back().line,

@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "spectral/text_file.h"
 #include "spectral/yaml_file.h"
 #include "util/errors.h"
 #include "util/suggest.h"
+#include "util/truncated.h"
 
 namespace fl::spectral {
 namespace {
@@ -37,6 +40,25 @@ std::vector<const YamlNode*> scalar_or_items(const YamlNode& v) {
   else if (v.is_sequence())
     for (const auto& x : v.items()) items.push_back(&x);
   return items;
+}
+
+// `values` without repeats (first occurrences, in order); a note when some were dropped, and an
+// InputError when more than kMaxSceneRoughnessValues remain.
+std::vector<double> distinct_roughness(const std::string& path, int line,
+                                       const std::vector<double>& values,
+                                       std::vector<std::string>& notes) {
+  std::vector<double> out;
+  for (const double r : values)
+    if (std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
+  if (std::ssize(out) > kMaxSceneRoughnessValues)
+    throw InputError(path, line,
+                     fmt::format("{} distinct roughness values, more than the {} a scene allows "
+                                 "(docs/engines.md): sample the range more coarsely",
+                                 out.size(), kMaxSceneRoughnessValues));
+  if (out.size() != values.size())
+    notes.push_back(fmt::format("{}:{}: {} repeated roughness values merged", path, line,
+                                values.size() - out.size()));
+  return out;
 }
 
 // A roughness or a list of them, each in [0, 1] (0: a mirror).
@@ -103,6 +125,51 @@ void read_lighting(const std::string& path, const YamlNode& v, int line, SceneFi
   }
 }
 
+// The text of a material's entry's line numbers: "2, 3, 4" (the first 5, then "...").
+std::string line_list(const std::vector<int>& lines) {
+  std::string out;
+  for (size_t i = 0; i < lines.size() && i < 5; ++i)
+    out += (i ? ", " : "") + std::to_string(lines[i]);
+  return lines.size() > 5 ? out + ", ..." : out;
+}
+
+// Entries naming the same material merged into the first (roughness joined, groups agreeing),
+// each merge noted; then the limits checked.
+void merge_materials(SceneFile& s) {
+  std::vector<SceneFileMaterial> merged;
+  std::vector<std::vector<int>> lines;
+  for (auto& m : s.materials) {
+    const auto it = std::find_if(merged.begin(), merged.end(),
+                                 [&](const SceneFileMaterial& x) { return x.spec == m.spec; });
+    if (it == merged.end()) {
+      merged.push_back(std::move(m));
+      lines.push_back({merged.back().line});
+      continue;
+    }
+    if (it->group != m.group)
+      throw InputError(s.path, m.line,
+                       fmt::format("'{}' is listed again (first at line {}) with another group",
+                                   truncated(m.spec), it->line));
+    it->roughness.insert(it->roughness.end(), m.roughness.begin(), m.roughness.end());
+    lines[static_cast<size_t>(it - merged.begin())].push_back(m.line);
+  }
+  for (size_t i = 0; i < merged.size(); ++i) {
+    if (lines[i].size() > 1)
+      s.notes.push_back(fmt::format("{}: '{}' listed {} times (lines {}): merged into one", s.path,
+                                    truncated(merged[i].spec), lines[i].size(),
+                                    line_list(lines[i])));
+    if (!merged[i].roughness.empty())
+      merged[i].roughness =
+          distinct_roughness(s.path, merged[i].line, merged[i].roughness, s.notes);
+  }
+  if (std::ssize(merged) > kMaxSceneMaterials)
+    throw InputError(s.path, merged[kMaxSceneMaterials].line,
+                     fmt::format("{} distinct materials, more than the {} a scene allows "
+                                 "(docs/engines.md): split the scene",
+                                 merged.size(), kMaxSceneMaterials));
+  s.materials = std::move(merged);
+}
+
 }  // namespace
 
 SceneFile read_scene_file(const std::string& path) {
@@ -139,7 +206,7 @@ SceneFile read_scene_file(const std::string& path) {
     } else if (key == "lighting") {
       read_lighting(path, v, line, s);
     } else if (key == "roughness") {
-      s.roughness = roughness_list(path, v, line);
+      s.roughness = distinct_roughness(path, line, roughness_list(path, v, line), s.notes);
     } else {
       throw InputError(
           path, line,
@@ -150,6 +217,7 @@ SceneFile read_scene_file(const std::string& path) {
   if (!have_materials)
     throw InputError(path, 1,
                      "missing 'materials' (a list of material names, database pages or files)");
+  merge_materials(s);
   return s;
 }
 

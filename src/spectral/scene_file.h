@@ -16,6 +16,11 @@
 
 namespace fl::spectral {
 
+// A scene's limits, which keep `plan` within seconds (docs/engines.md): distinct materials (after
+// merging repeated entries and expanding page globs) and distinct roughness values per list.
+constexpr int kMaxSceneMaterials = 64;
+constexpr int kMaxSceneRoughnessValues = 8;
+
 struct SceneFileMaterial {
   std::string spec;               // as written
   int line = 0;                   // 1-based line in the scene file
@@ -31,12 +36,16 @@ struct SceneFile {
   int space_line = 0;
   bool punctual = false, ibl = false, area = false;  // the lighting listed
   std::vector<double> roughness;                     // empty: not given
+  std::vector<std::string> notes;  // what was merged ("'gold' listed 3 times (lines 2, 3, 4): ...")
 };
 
 // InputError naming the file and line for a missing file, a directory, an empty file, invalid
 // YAML, an unknown key, an empty or non-string material list, an unknown lighting, a budget
 // that is not a positive number, a roughness outside [0, 1], or a group that is not a
-// non-empty string.
+// non-empty string; more than kMaxSceneMaterials distinct materials or kMaxSceneRoughnessValues
+// distinct roughness values in a list. A material named again (the same text) is merged into its
+// first entry (roughness lists joined; its groups must agree) and a repeated roughness value
+// dropped, each merge with a note.
 SceneFile read_scene_file(const std::string& path);
 
 }  // namespace fl::spectral

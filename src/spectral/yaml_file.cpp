@@ -48,6 +48,12 @@ class YamlBuilder {
         node(root);
         break;
       }
+    if (event_.type == YAML_STREAM_END_EVENT) return root;
+    // A second document would be silently dropped: refused instead.
+    for (next(); event_.type != YAML_STREAM_END_EVENT; next())
+      if (event_.type == YAML_DOCUMENT_START_EVENT)
+        throw YamlError(static_cast<int>(event_.start_mark.line),
+                        "a second YAML document ('---'): a file holds one document");
     return root;
   }
 

@@ -51,12 +51,12 @@ class YamlNode {
   std::vector<std::pair<YamlNode, YamlNode>> fields_;
 };
 
-// The first document of `text` (a null node when there is none). A syntax error is a YamlError at
-// the line libyaml found it, its message libyaml's ("did not find expected ',' or '}'"); so is text
-// that is not UTF-8, a map that repeats a key (YAML requires unique keys; libyaml does not check),
-// collections nested deeper than kMaxYamlDepth, and a document of more than
-// kMaxYamlNodes nodes once its aliases are copied (a few aliases of aliases can stand for
-// billions).
+// The one document of `text` (a null node when there is none; a second document is a YamlError). A
+// syntax error is a YamlError at the line libyaml found it, its message libyaml's ("did not find
+// expected ',' or '}'"); so is text that is not UTF-8, a map that repeats a key (YAML requires
+// unique keys; libyaml does not check), collections nested deeper than kMaxYamlDepth, and a
+// document of more than kMaxYamlNodes nodes once its aliases are copied (a few aliases of aliases
+// can stand for billions).
 inline constexpr int kMaxYamlDepth = 1000;
 inline constexpr size_t kMaxYamlNodes = 1'000'000;
 YamlNode parse_yaml(std::string_view text);

@@ -153,6 +153,7 @@ TEST_P(BadInput, ExitsWithStatus2AndOneLineNamingTheFile) {
     writes_output = false;
   } else if (c.command == "render-env") {  // environment maps
     file = kBadDir + "/" + c.reader + "/" + c.file;
+    fs::create_directories(out_dir);  // an output's folder must exist
     args = "--materials " + quote(empty_catalog) + " render " + quote(kGoodDir + "/nk_no_k.csv") +
            " --env " + quote(file) + " --size 9 --samples 1 --out " + quote(out_dir / "r.exr");
   } else if (c.command == "plan") {  // scene files
@@ -219,6 +220,7 @@ TEST(SpecialInputs, FifoAndDevicesAreRefusedWithoutReading) {
             std::string::npos);
   const fs::path fifo_exr = s.dir / "pipe.exr";
   ASSERT_EQ(::mkfifo(fifo_exr.c_str(), 0600), 0);
+  fs::create_directories(s.dir / "out");  // an output's folder must exist
   EXPECT_NE(refused(run_cli(s.dir, "render gold --env " + quote(fifo_exr) + " --out " +
                                        quote(s.dir / "out/r.exr")))
                 .find(fifo_exr.string() + ": is a FIFO"),

@@ -113,7 +113,7 @@ TEST(ForgivingCli, LowCoverageRefusedUnlessLowered) {
 }
 
 // Every material of a document has a name of its own: a page named twice is kept once, and two
-// files with one name are told apart, with a warning.
+// files with one name are told apart by one suffix in every format, with a warning.
 TEST(ForgivingCli, DocumentNamesAreUnique) {
   test::TempDir tmp;
   const std::string a = tmp.file("a/Cu.csv", "lambda_nm,n,k\n350,0.3,3\n850,0.3,5\n");
@@ -125,14 +125,14 @@ TEST(ForgivingCli, DocumentNamesAreUnique) {
   EXPECT_NE(r.err.find("skipped main/Au/nk/Johnson: named more than once: kept once"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("another material is already named 'Cu': this one is 'Cu (2)'"),
+  EXPECT_NE(r.err.find("another material is already named 'Cu': this one is 'Cu_2'"),
             std::string::npos)
       << r.err;
   std::vector<std::string> names;
   for (std::size_t at = r.out.find("\"name\": \""); at != std::string::npos;
        at = r.out.find("\"name\": \"", at + 1))
     names.push_back(r.out.substr(at + 9, r.out.find('"', at + 9) - at - 9));
-  EXPECT_EQ(names, (std::vector<std::string>{"main/Au/nk/Johnson", "Cu", "Cu (2)"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"main/Au/nk/Johnson", "Cu", "Cu_2"}));
 }
 
 // library --out replaces its folder as a whole: no stale file of an earlier run survives, and a

@@ -117,7 +117,7 @@ TEST(MaterialsCli, GlobsExpandToSortedPagesAndAGlobMatchingNothingIsAnError) {
 }
 
 // main/Au/nk/Ordal measures 667 nm and up: its gold is held grey below. Every output says so.
-TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesOneAndSkipsMany) {
+TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesNamedMaterials) {
   const auto r =
       run_command(cli() + " -q --min-coverage 0 presets main/Au/nk/Ordal main/Au/nk/Johnson");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -142,11 +142,17 @@ TEST(MaterialsCli, CoverageIsDataAndMinCoverageRefusesOneAndSkipsMany) {
       std::string::npos)
       << one.err;
   EXPECT_EQ(one.out, "");
+  // Named among others, it is still refused; --skip-unusable skips it with the reason.
   const auto many =
       run_command(cli() + " --min-coverage 0.9 presets main/Au/nk/Ordal main/Au/nk/Johnson");
-  ASSERT_EQ(many.status, 0) << many.err;
-  EXPECT_EQ(csv_records(many.out).size(), 1u);
-  EXPECT_NE(many.err.find("skipped main/Au/nk/Ordal: covers 0.004"), std::string::npos) << many.err;
+  EXPECT_EQ(many.status, 2);
+  EXPECT_EQ(many.out, "");
+  const auto skipped = run_command(
+      cli() + " --min-coverage 0.9 --skip-unusable presets main/Au/nk/Ordal main/Au/nk/Johnson");
+  ASSERT_EQ(skipped.status, 0) << skipped.err;
+  EXPECT_EQ(csv_records(skipped.out).size(), 1u);
+  EXPECT_NE(skipped.err.find("skipped main/Au/nk/Ordal: covers 0.004"), std::string::npos)
+      << skipped.err;
 }
 
 TEST(MaterialsCli, CurveOverSeveralMaterialsNamesEachRowsMaterial) {
@@ -354,7 +360,7 @@ TEST(MaterialsCli, ConsensusOfThreePagesIsTheMiddleOneWithTheirSpreadAndTheModel
   const auto rows = csv_records(c.out);
   ASSERT_EQ(rows.size(), 1u);
   const auto& r = rows[0];
-  EXPECT_EQ(r.at("material"), "main/M/consensus");
+  EXPECT_EQ(r.at("material"), "Metallium");  // the book's common name, "M (Metallium)"
   EXPECT_EQ(r.at("page_kind"), "consensus");
   EXPECT_EQ(r.at("pages_used"), "3");
   EXPECT_EQ(r.at("recommended"), "main/M/nk/B");

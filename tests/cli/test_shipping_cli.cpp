@@ -81,7 +81,9 @@ TEST(ShippingCli, TableHeadersCompileTogetherAsCAndCxx) {
         "dfg --symbol my_dfg" + small + "mine.h'", "ltc-moments" + small + "moments.h'",
         "ltc-moments" + small + "moments.csv'", "ltc" + small + "ltc.h'",
         "ltc" + small + "ltc.csv'", "energy" + small + "energy.h'",
-        "energy" + small + "energy.csv'", "dfg --layout filament" + small + "filament.h'"}) {
+        "energy" + small + "energy.csv'", "dfg --layout filament" + small + "filament.h'",
+        "energy --dielectric --slices 4" + small + "dielectric.h'",
+        "energy --dielectric --slices 4" + small + "dielectric.csv'"}) {
     const auto r = test::run_command(lut(args));
     ASSERT_EQ(r.status, 0) << args << ": " << r.err;
   }
@@ -94,7 +96,8 @@ TEST(ShippingCli, TableHeadersCompileTogetherAsCAndCxx) {
                                     {"fresnel_lab_ltc_1", "ltc_1.h"},
                                     {"fresnel_lab_ltc_2", "ltc_2.h"},
                                     {"fresnel_lab_ltc_3", "ltc_3.h"},
-                                    {"fresnel_lab_energy", "energy.h"}};
+                                    {"fresnel_lab_energy", "energy.h"},
+                                    {"fresnel_lab_energy_dielectric", "dielectric.h"}};
   const Header half{"fresnel_lab_dfg_filament", "filament.h"};
   const std::string src = dir.file("tables.c", program(headers, half));
   // Two headers and nothing using them: no unused-variable warning either.
@@ -119,7 +122,8 @@ TEST(ShippingCli, TableHeadersCompileTogetherAsCAndCxx) {
   // The printed texel 0 of every header against the first row of its table's CSV.
   std::map<std::string, std::vector<double>> want;
   const auto dfg = first_row(d + "dfg.csv"), moments = first_row(d + "moments.csv"),
-             ltc = first_row(d + "ltc.csv"), energy = first_row(d + "energy.csv");
+             ltc = first_row(d + "ltc.csv"), energy = first_row(d + "energy.csv"),
+             dielectric = first_row(d + "dielectric.csv");
   auto put = [&](const std::string& symbol, size_t k, const std::string& value) {
     auto& v = want[symbol];
     if (v.size() <= k) v.resize(k + 1, NAN);
@@ -139,13 +143,17 @@ TEST(ShippingCli, TableHeadersCompileTogetherAsCAndCxx) {
   for (size_t k = 0; k < 4; ++k) put("fresnel_lab_ltc_1", k, ltc.at(matrix[k]));
   put("fresnel_lab_energy", 0, energy.at("e"));
   put("fresnel_lab_energy", 1, energy.at("e_avg"));
+  const char* dielectric_channels[] = {"e", "e_avg", "e_inside", "e_avg_inside"};
+  for (size_t k = 0; k < 4; ++k)
+    put("fresnel_lab_energy_dielectric", k, dielectric.at(dielectric_channels[k]));
 
   std::istringstream lines(outputs[0]);
   size_t checked = 0;
   for (std::string name; lines >> name;) {
     int size = 0, channels = 0;
     lines >> size >> channels;
-    EXPECT_EQ(size, 4) << name;
+    // The dielectric table's atlas: 2 × 2 tiles of 4².
+    EXPECT_EQ(size, name == "fresnel_lab_energy_dielectric" ? 8 : 4) << name;
     if (name == half.symbol) {
       unsigned bits = 0;
       lines >> bits;
@@ -242,7 +250,7 @@ double defined(const std::string& text, const std::string& name) {
 TEST(ShippingCli, ShaderSizeIsTheTableSize) {
   test::TempDir dir;
   const std::string d = dir.path() + "/";
-  auto r = test::run_command(lut("ltc-moments --size 32 --samples 16 --out '" + d + "m.h'"));
+  auto r = test::run_command(lut("ltc-moments --size 32 --samples 256 --out '" + d + "m.h'"));
   ASSERT_EQ(r.status, 0) << r.err;
   const double table = defined(test::read_text_file(d + "m.h"), "FRESNEL_LAB_LTC_MOMENTS_SIZE");
   EXPECT_EQ(table, 32);
@@ -251,7 +259,7 @@ TEST(ShippingCli, ShaderSizeIsTheTableSize) {
   EXPECT_EQ(defined(r.out, "FRESNEL_LAB_LTC_SIZE"), table);
   EXPECT_FALSE(std::regex_search(r.out, std::regex(R"(\b64\b)"))) << r.out;
 
-  r = test::run_command(lut("energy --samples 16 --out '" + d + "e.h'"));
+  r = test::run_command(lut("energy --samples 256 --out '" + d + "e.h'"));
   ASSERT_EQ(r.status, 0) << r.err;
   const double default_table = defined(test::read_text_file(d + "e.h"), "FRESNEL_LAB_ENERGY_SIZE");
   r = test::run_command(test::cli() + " -q shader basis4 --lighting area");
@@ -266,7 +274,8 @@ TEST(ShippingCli, BadRequestsExitTwo) {
        {" shader f82 --lighting area --size 1", " shader f82 --harness --standalone",
         " shader f82 --lang hlsl --harness", " lut dfg --size 4 --symbol 9lives --out x.h",
         " lut dfg --size 4 --symbol good --out x.csv", " lut energy --size 4 --out x.inc",
-        " plan x.yaml --shader --size 0"}) {
+        " lut energy --dielectric --size 4 --slices 5 --out x.csv",
+        " lut energy --slices 4 --out x.csv", " plan x.yaml --shader --size 0"}) {
     const auto r = test::run_command("cd '" + dir.path() + "' && " + test::cli() + args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
   }

@@ -71,3 +71,27 @@ TEST(DisplayTransform, UnknownViewIsAnInputError) {
 
 }  // namespace
 }  // namespace fl::color
+
+namespace fl::color {
+namespace {
+
+// With a config and no --display or --view, pictures use the config's default display and its
+// default view (the test config's sRGB has one view, Raw: ACES2065-1 unchanged); the reflectance
+// view keeps the built-in Un-tone-mapped unless one is named.
+TEST(DisplayTransform, ConfigDefaultViewIsHonoured) {
+  const auto lib =
+      SpaceLibrary::from_config(std::string(FL_TESTS_DIR) + "/good_input/ocio/studio.ocio");
+  const DisplayTransform pictures(lib, "ACES2065-1", {});
+  EXPECT_EQ(pictures.display_and_view(), "display sRGB, view Raw");
+  const auto v = through(pictures, 0.25f, 0.5f, 0.75f);
+  EXPECT_NEAR(v[0], 0.25f, 1e-6);
+  EXPECT_NEAR(v[2], 0.75f, 1e-6);
+  ViewSettings reflectance;
+  reflectance.builtin_view = kUntonemappedView;
+  reflectance.builtin_unless_named = true;
+  EXPECT_EQ(DisplayTransform(lib, "ACES2065-1", reflectance).display_and_view(),
+            "display sRGB, view Un-tone-mapped");
+}
+
+}  // namespace
+}  // namespace fl::color

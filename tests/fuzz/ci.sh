@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 runs=${1:-20000} build=${FUZZ_BUILD:-build-fuzz}
-targets=(ri_yaml nk_csv wvase_mat catalog scene ocio exr_env)
+targets=(ri_yaml nk_csv sopra_nk wvase_mat catalog scene ocio exr_env)
 start=$(date +%s)
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)

@@ -2,12 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "io/exr.h"
 #include "test_util.h"
+#include "util/errors.h"
 
 namespace fl::report {
 namespace {
@@ -40,6 +43,36 @@ TEST(Exr, RoundTripKeepsFloatsAndAttributes) {
   EXPECT_NE(has_float, back.float_attributes.end());
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(tmp.path()), {}),
             1);  // no temporary left
+}
+
+// Chromaticities with a NaN (or all NaN) name no colour space: refused, not matched to one.
+TEST(Exr, NanChromaticitiesAreRefused) {
+  test::TempDir tmp;
+  ExrImage img;
+  img.width = 2;
+  img.height = 1;
+  img.channels = {"B", "G", "R"};
+  img.pixels.assign(6, 0.5f);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (const auto& c :
+       {std::array<float, 8>{nan, nan, nan, nan, nan, nan, nan, nan},
+        std::array<float, 8>{0.64f, 0.33f, 0.3f, 0.6f, 0.15f, 0.06f, nan, 0.329f}}) {
+    img.chromaticities = c;
+    const auto path = tmp.path() + "/nan.exr";
+    write_exr_atomic(path, img);
+    try {
+      read_exr(path);
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("the chromaticities attribute holds a NaN"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  img.chromaticities =
+      std::array<float, 8>{0.64f, 0.33f, 0.3f, 0.6f, 0.15f, 0.06f, 0.3127f, 0.329f};
+  write_exr_atomic(tmp.path() + "/ok.exr", img);
+  EXPECT_EQ(read_exr(tmp.path() + "/ok.exr").chromaticities, img.chromaticities);
 }
 
 }  // namespace

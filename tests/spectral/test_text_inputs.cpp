@@ -251,6 +251,39 @@ TEST(TextInputs, WvaseMatFiles) {
             std::string::npos);
 }
 
+// The exports people have: a semicolon table whose wavelengths use a decimal point and whose n, k
+// use decimal commas (each column keeps one mark), a trailing separator on every line, a
+// Windows-1252 µm (the byte 0xB5), and SOPRA with decimal commas (the header's too).
+TEST(TextInputs, SpreadsheetAndLocaleExports) {
+  test::TempDir tmp;
+  expect_reference_data(
+      read_optical_file(tmp.file("a.csv",
+                                 "wavelength_nm;n;k\n400.0;0,5;2,0\n500.0;0,6;2,5\n"
+                                 "700.0;0,8;3,5\n")),
+      "semicolon, mixed marks");
+  expect_reference_data(
+      read_optical_file(tmp.file("b.csv", "wl,n,k,\n0.4,0.5,2.0,\n0.5,0.6,2.5,\n0.7,0.8,3.5,\n")),
+      "trailing separator");
+  expect_reference_data(
+      read_optical_file(tmp.file("c.txt",
+                                 "Wavelength (\xB5m)\tn\tk\n0.4\t0.5\t2.0\n0.5\t0.6\t2.5\n"
+                                 "0.7\t0.8\t3.5\n")),
+      "Windows-1252 micro sign");
+  expect_reference_data(
+      read_optical_file(tmp.file("d.nk", "2 0,4 0,7 3\n0,5 2,0\n0,6 2,5\n0,7 3,0\n0,8 3,5\n")),
+      "SOPRA, decimal commas");
+  expect_reference_data(
+      read_optical_file(tmp.file("e.nk", "4 400 700 3\n0.5, 2.0\n0.6,2.5\n0,7;3,0\n0.8 3.5\n")),
+      "SOPRA, commas between values");
+  // 0xB5 continuing a UTF-8 character ("õ" is C3 B5) is no micro sign: "wõ" is no wavelength.
+  EXPECT_NE(error_of(tmp.file("f.csv", "w\xC3\xB5,n,k\n0.4,0.5,2.0\n")).find("is not a wavelength"),
+            std::string::npos);
+  // In one column the marks must agree.
+  EXPECT_NE(error_of(tmp.file("g.csv", "wavelength_nm;n;k\n400;0,5;2,0\n500;0.6;2,5\n"))
+                .find("a column must use one decimal mark"),
+            std::string::npos);
+}
+
 // SOPRA's count is of intervals: a file listing as many pairs as the count says is one short.
 TEST(TextInputs, SopraCountOfIntervalsIsExplained) {
   test::TempDir tmp;

@@ -116,6 +116,7 @@ struct PageProjection {
   bool stacked = true;  // part of the construction (f0 ≥ kBasisMinF0)
   std::vector<double> rms_reflectance;  // K = 2..2 + data_terms, then the Hoffman span
   std::vector<double> rms_de2000;
+  Coverage coverage;  // how much of the visible range the page measures (the rest is held)
 };
 
 struct FresnelBasis {
@@ -127,7 +128,12 @@ struct FresnelBasis {
   std::vector<PageProjection> pages;
   std::vector<SkippedMaterial> skipped;
   int requested = 0;
+  double min_coverage = 0;  // the coverage the pages were read under (LoadPolicy::min_coverage)
 };
+
+// The provenance of the basis's data, for every output: the pages' --min-coverage, how many
+// extrapolate (hold a nearest measured value somewhere in 360–830 nm) and the lowest coverage.
+std::string basis_coverage_note(const FresnelBasis& b);
 
 // The basis of the loaded pages (in their order; the skipped ones are listed). `progress` gets
 // (done, total): the pages stacked, then the pages projected.

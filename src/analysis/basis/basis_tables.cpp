@@ -163,7 +163,7 @@ Table basis_projection_table(const Context& ctx, const FresnelBasis& b) {
       "projected per channel (least squares over the angles). f0_below_...: the pages left out "
       "of the construction (gases, whose curve is a spike at grazing that no basis follows); "
       "metal and dielectric exclude them, all includes them.";
-  t.notes = {setting_note(ctx),
+  t.notes = {setting_note(ctx), basis_coverage_note(b),
              "Quantiles interpolate linearly between order statistics (Hyndman & Fan type 7)."};
   return t;
 }
@@ -176,14 +176,35 @@ Table basis_pages_table(const FresnelBasis& b) {
   const auto labels = set_labels(b);
   for (const auto& l : labels) t.columns.push_back({"refl_rms_" + l, 5});
   for (const auto& l : labels) t.columns.push_back({"de2000_" + l, 4});
+  for (const char* c : {"coverage", "coverage_n", "coverage_k"}) t.columns.push_back({c, 4});
+  t.columns.push_back({"extrapolated"});
   for (const auto& p : b.pages) {
     std::vector<Cell> row = {p.page, std::string(spectral::to_string(p.material_class)), p.f0,
                              std::string(p.stacked ? "yes" : "no")};
     for (double v : p.rms_reflectance) row.push_back(v);
     for (double v : p.rms_de2000) row.push_back(v);
+    const auto& c = p.coverage;
+    row.insert(row.end(), {c.both, c.n, c.k, std::string(c.extrapolated ? "yes" : "no")});
     t.rows.push_back(std::move(row));
   }
+  t.notes = {basis_coverage_note(b)};
   return t;
+}
+
+std::string basis_coverage_note(const FresnelBasis& b) {
+  int held = 0;
+  const PageProjection* lowest = nullptr;
+  for (const auto& p : b.pages) {
+    held += p.coverage.extrapolated;
+    if (!lowest || p.coverage.both < lowest->coverage.both) lowest = &p;
+  }
+  return fmt::format(
+      "Pages read with --min-coverage {:g}: {} of {} extrapolate (hold the nearest measured value "
+      "somewhere in 360-830 nm; coverage: the share measured, weighted by the illuminant x "
+      "ybar){}.",
+      b.min_coverage, held, b.pages.size(),
+      lowest ? fmt::format("; lowest coverage {:.4f} ({})", lowest->coverage.both, lowest->page)
+             : "");
 }
 
 }  // namespace fl::analysis

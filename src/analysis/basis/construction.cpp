@@ -152,6 +152,7 @@ PageProjection project_page(const Context& ctx, const LoadedMaterial& page, cons
   PageProjection out{page.material.source, page.material.material_class,
                      weighted_f0(page.ior, w, eta_outside)};
   out.stacked = out.f0 >= kBasisMinF0;
+  out.coverage = page.coverage;
   CurveRows rows;
   rows.samples = static_cast<int>(mu.size());
   add_page_rows(page.ior, w, mu, eta_outside, rows);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -94,16 +95,11 @@ spectral::ComplexIorSpectrum consensus_ior(
   return out;
 }
 
-namespace {
-
-// "Au (Gold)" → "gold".
 std::string common_name(const std::string& book_name) {
   const auto open = book_name.find('('), close = book_name.rfind(')');
   if (open == std::string::npos || close == std::string::npos || close < open) return {};
   return ascii_lower(book_name.substr(open + 1, close - open - 1));
 }
-
-}  // namespace
 
 ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::string& spec) {
   if (const auto eq = spec.find('='); eq != std::string::npos) {
@@ -111,7 +107,7 @@ ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::
     const std::string globs = spec.substr(eq + 1);
     for (const auto glob : spectral::split_fields(globs, ",")) r.globs.emplace_back(glob);
     if (r.name.empty() || r.globs.empty())
-      throw InputError(fmt::format("--consensus '{}': expected NAME=GLOB[,GLOB...]", spec));
+      throw InputError(fmt::format("consensus group '{}': expected NAME=GLOB[,GLOB...]", spec));
     return r;
   }
   if (spectral::is_glob(spec) || spec.find('/') != std::string::npos) return {spec, {spec}};
@@ -121,9 +117,10 @@ ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::
     if (page.rfind("main/", 0) == 0 &&
         (ascii_lower(e.book) == want || common_name(e.book_name) == want))
       return {"main/" + e.book, {"main/" + e.book + "/**"}};
-  throw InputError(fmt::format(
-      "--consensus '{}': no book of the main shelf has that symbol or name in {}/catalog-nk.yml",
-      spec, paths.database));
+  throw InputError(
+      fmt::format("consensus group '{}': no book of the main shelf has that symbol or name in "
+                  "{}/catalog-nk.yml",
+                  spec, paths.database));
 }
 
 std::vector<GroupPages> page_groups(const std::vector<MaterialStudy>& pages) {
@@ -138,6 +135,12 @@ std::vector<GroupPages> page_groups(const std::vector<MaterialStudy>& pages) {
 }
 
 namespace {
+
+// "gold" → "Gold".
+std::string display_name(std::string name) {
+  if (!name.empty()) name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+  return name;
+}
 
 std::string page_name(const std::string& page) {
   return std::filesystem::path(page).filename().string();
@@ -160,15 +163,24 @@ LoadedMaterial consensus_material(const Context& ctx, const GroupPages& g) {
     out.coverage.both = std::min(out.coverage.both, s->material->coverage.both);
     out.coverage.n = std::min(out.coverage.n, s->material->coverage.n);
     out.coverage.k = std::min(out.coverage.k, s->material->coverage.k);
+    if (s->material->coverage.extrapolated) {
+      out.coverage.extrapolated = true;
+      out.coverage.uncovered += (out.coverage.uncovered.empty() ? "" : "; ") +
+                                page_name(s->material->material.source) + ": " +
+                                s->material->coverage.uncovered;
+    }
   }
   out.ior = consensus_ior(iors, ctx.settings().eta_outside);
   auto& m = out.material;
   m.origin = spectral::Material::Origin::Consensus;
-  m.key = g.name + "/consensus";
-  m.name = g.name + "/consensus";
   m.source = g.name + "/consensus";
   m.book_name = g.pages.front()->material->material.book_name;
-  m.section = fmt::format("consensus of {} bulk page{}", iors.size(), iors.size() == 1 ? "" : "s");
+  // An element's consensus carries the element's common name ("Gold", key "gold").
+  const std::string common = g.name.rfind("main/", 0) == 0 ? common_name(m.book_name) : "";
+  m.key = common.empty() ? m.source : common;
+  m.name = common.empty() ? m.source : display_name(common);
+  m.section = iors.size() == 1 ? "a single bulk page, not a consensus"
+                               : fmt::format("consensus of {} bulk pages", iors.size());
   m.reference = "per-wavelength median of R(0°) and R(arccos 1/7) over " + names;
   m.material_class = spectral::MaterialClass::Metal;
   return out;
@@ -289,8 +301,13 @@ ConsensusSet build_consensus(const Context& ctx, const std::vector<GroupPages>& 
       kept.push_back(&g);
   for (const auto* g : kept) set.materials.push_back(consensus_material(ctx, *g));
   set.studies = study_materials(ctx, set.materials, options, progress);
-  for (size_t i = 0; i < kept.size(); ++i)
+  for (size_t i = 0; i < kept.size(); ++i) {
     set.groups.push_back(summarize(ctx, *kept[i], set.studies[i]));
+    const auto& g = set.groups.back();
+    set.materials[i].consensus =
+        ConsensusBasis{g.used,  g.f0_median, g.f0_max, g.f82_median, g.f82_max,
+                       g.f0_lo, g.f0_hi,     g.f82_lo, g.f82_hi};
+  }
   return set;
 }
 
@@ -311,12 +328,12 @@ RequestedConsensus consensus_for(const Context& ctx, const std::vector<Consensus
         g.pages.push_back(&s);
     if (g.pages.empty())
       throw InputError(fmt::format(
-          "--consensus '{}': no metal page covering the visible range matches", r.name));
+          "consensus group '{}': no metal page covering the visible range matches", r.name));
     if (std::none_of(g.pages.begin(), g.pages.end(),
                      [](const MaterialStudy* s) { return used_for_consensus(*s); }))
       throw InputError(
-          fmt::format("--consensus '{}': none of its {} metal pages is a bulk measurement", r.name,
-                      g.pages.size()));
+          fmt::format("consensus group '{}': none of its {} metal pages is a bulk measurement",
+                      r.name, g.pages.size()));
     groups.push_back(std::move(g));
   }
   out.set = build_consensus(ctx, groups, options);

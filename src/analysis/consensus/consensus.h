@@ -51,6 +51,8 @@ struct ConsensusRequest {
 };
 // InputError for an element the catalog does not know.
 ConsensusRequest consensus_request(const spectral::DataPaths& paths, const std::string& spec);
+// The common name of a book of the database's catalog: "Au (Gold)" → "gold" (empty: none).
+std::string common_name(const std::string& book_name);
 
 struct PageDistance {
   const MaterialStudy* page = nullptr;

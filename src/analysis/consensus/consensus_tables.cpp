@@ -40,7 +40,9 @@ std::string outlier_list(const ConsensusGroup& g) {
 }
 
 const char* kUncertaintyNote =
-    "Uncertainty: pages_used bulk measurements covering the visible range; f0_de00_median/max, "
+    "Uncertainty: basis: consensus, or single page (one bulk measurement: not a consensus, its "
+    "spread unknown); pages_used bulk measurements covering the visible range; "
+    "f0_de00_median/max, "
     "f82_de00_median/max: ΔE2000 of their F0 (F82) colours from the consensus'; *_lo/*_hi: each "
     "channel's range over them. Outliers: a page beyond the bulk pages' median distance + 3 × "
     "1.4826 "
@@ -51,7 +53,8 @@ const char* kUncertaintyNote =
 }  // namespace
 
 void add_uncertainty_columns(Table& t, const ConsensusSet& set) {
-  t.columns.insert(t.columns.end(), {{"pages_used", 0},
+  t.columns.insert(t.columns.end(), {{"basis"},
+                                     {"pages_used", 0},
                                      {"f0_de00_median", 3},
                                      {"f0_de00_max", 3},
                                      {"f82_de00_median", 3},
@@ -66,7 +69,8 @@ void add_uncertainty_columns(Table& t, const ConsensusSet& set) {
     const auto& g = set.groups[i];
     auto& row = t.rows[i];
     row.insert(row.end(),
-               {static_cast<long long>(g.used), g.f0_median, g.f0_max, g.f82_median, g.f82_max});
+               {std::string(g.used == 1 ? "single page" : "consensus"),
+                static_cast<long long>(g.used), g.f0_median, g.f0_max, g.f82_median, g.f82_max});
     for (const auto* range : {&g.f0_lo, &g.f0_hi, &g.f82_lo, &g.f82_hi, &g.g_lo, &g.g_hi})
       for (int c = 0; c < 3; ++c) row.push_back((*range)[c]);
     row.insert(row.end(), {g.recommended, g.recommended_de00, static_cast<long long>(g.outliers),

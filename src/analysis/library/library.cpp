@@ -139,7 +139,14 @@ void add_consensus_columns(Table& t, const std::vector<MaterialStudy>& studies,
                                      {"spread_f0_de00_median", 3},
                                      {"spread_f0_de00_max", 3},
                                      {"spread_f82_de00_median", 3},
-                                     {"spread_f82_de00_max", 3}});
+                                     {"spread_f82_de00_max", 3},
+                                     {"spread_f0_lo"},
+                                     {"spread_f0_hi"},
+                                     {"spread_f82_lo"},
+                                     {"spread_f82_hi"}});
+  const auto rgb = [](const color::Rgb& v) {
+    return fmt::format("{:.4f} {:.4f} {:.4f}", v.r, v.g, v.b);
+  };
   for (size_t i = 0; i < studies.size(); ++i) {
     const auto& m = studies[i].material->material;
     auto& row = t.rows[i];
@@ -148,16 +155,18 @@ void add_consensus_columns(Table& t, const std::vector<MaterialStudy>& studies,
       if (set.studies[c].material == studies[i].material) g = &set.groups[c];
     if (g) {
       row.insert(row.end(), {std::string("consensus"), m.section, NAN, NAN, std::string(),
-                             std::string(), g->f0_median, g->f0_max, g->f82_median, g->f82_max});
+                             std::string(), g->f0_median, g->f0_max, g->f82_median, g->f82_max,
+                             rgb(g->f0_lo), rgb(g->f0_hi), rgb(g->f82_lo), rgb(g->f82_hi)});
       continue;
     }
     const auto* d = find_distance(set, studies[i]);
-    row.insert(row.end(), {m.origin == spectral::Material::Origin::Page
-                               ? std::string(spectral::to_string(m.page_class.kind))
-                               : std::string(),
-                           m.page_class.detail, d ? d->f0_de00 : NAN, d ? d->f82_de00 : NAN,
-                           std::string(d ? (d->outlier ? "yes" : "no") : ""),
-                           d ? d->reason : std::string(), NAN, NAN, NAN, NAN});
+    row.insert(row.end(),
+               {m.origin == spectral::Material::Origin::Page
+                    ? std::string(spectral::to_string(m.page_class.kind))
+                    : std::string(),
+                m.page_class.detail, d ? d->f0_de00 : NAN, d ? d->f82_de00 : NAN,
+                std::string(d ? (d->outlier ? "yes" : "no") : ""), d ? d->reason : std::string(),
+                NAN, NAN, NAN, NAN, std::string(), std::string(), std::string(), std::string()});
   }
 }
 
@@ -202,10 +211,13 @@ Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   if (consensus) {
     t.notes.push_back(
         "kind: the page's kind from the database catalog (docs/consensus.md); consensus rows "
-        "(GROUP/consensus) are the per-wavelength median of the group's bulk pages' reflectance at "
+        "(source GROUP/consensus, named by the element's common name) are the per-wavelength "
+        "median of the group's bulk pages' reflectance at "
         "0° and arccos(1/7); consensus_f0_de00, consensus_f82_de00: a page's ΔE2000 from its "
         "group's consensus; spread_*: a consensus row's uncertainty, the median and largest "
-        "distance of its bulk pages.");
+        "distance of its bulk pages, and the lowest and highest F0 and F82 of each channel over "
+        "them (r g b, working space); kind_detail says how many pages, a single page being no "
+        "consensus.");
     t.notes.push_back(fmt::format(
         "outlier: beyond the bulk pages' median distance + {:g} × {:g} × MAD and beyond {:g} "
         "ΔE2000, in F0 or F82.",

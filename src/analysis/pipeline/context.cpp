@@ -52,7 +52,7 @@ std::optional<color::SpaceWhite> space_white(const Settings& s, const spectral::
 namespace {
 
 color::ViewSettings reflectance_view(const Settings& s) {
-  return {s.view.display, s.reflectance_view, 0.0, color::kUntonemappedView};
+  return {s.view.display, s.reflectance_view, 0.0, color::kUntonemappedView, true};
 }
 
 }  // namespace

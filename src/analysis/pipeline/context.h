@@ -1,6 +1,7 @@
 #pragma once
 // The colorimetric setting of a run (docs/conventions.md, "Colorimetry") and the ground-truth
 // machinery built on it.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,11 +90,21 @@ struct Coverage {
 };
 Coverage coverage_of(const Context& ctx, const spectral::SampledIor& s);
 
+// What a consensus material rests on (analysis/consensus): its bulk pages and their spread around
+// it, the ΔE2000 of their F0 and F82 from the consensus' and each channel's range over them.
+struct ConsensusBasis {
+  int pages = 0;  // 1: a single page, not a consensus
+  double f0_median = 0, f0_max = 0, f82_median = 0, f82_max = 0;
+  color::Rgb f0_lo, f0_hi, f82_lo, f82_hi;
+};
+
 struct LoadedMaterial {
   spectral::Material material;
   spectral::ComplexIorSpectrum ior;
   std::vector<std::string> warnings;  // the reader's and the sampling's, one line each
   Coverage coverage;
+  std::optional<ConsensusBasis> consensus;  // a consensus material's basis
+  std::string resolved;  // why a short name ("gold") gave this material (analysis/consensus)
 };
 LoadedMaterial load_material(const Context& ctx, spectral::Material m);
 std::vector<LoadedMaterial> load_catalog(const Context& ctx);

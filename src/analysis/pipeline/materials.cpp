@@ -45,21 +45,26 @@ std::string coverage_reason(const LoadedMaterial& m, double min_coverage) {
                      m.coverage.both, min_coverage, m.coverage.uncovered);
 }
 
-// Why the class and coverage filters leave `m` out (empty: kept); `single` refuses instead.
-std::string filtered_out(const LoadedMaterial& m, const LoadPolicy& p, bool single) {
+// Why the class and coverage filters leave `m` out (empty: kept); `named` (a material named
+// explicitly, not by a glob) refuses instead unless the policy skips named materials.
+std::string filtered_out(const LoadedMaterial& m, const LoadPolicy& p, bool named) {
   if (p.only && m.material.material_class != *p.only)
     return fmt::format("class {} (the data's), not {}",
                        spectral::to_string(m.material.material_class),
                        spectral::to_string(*p.only));
   if (m.coverage.both >= p.min_coverage) return {};
-  if (single) throw InputError(m.material.source, 0, coverage_reason(m, p.min_coverage));
+  if (named && !p.skip_named)
+    throw InputError(
+        m.material.file.empty() ? m.material.source : m.material.file, 0,
+        coverage_reason(m, p.min_coverage) +
+            " (named explicitly: lower --min-coverage, or --skip-unusable to skip it)");
   return coverage_reason(m, p.min_coverage);
 }
 
 // Adds a loaded material or its reason to be left out, in order.
 void add(MaterialSet& set, LoadedMaterial m, const std::string& spec, const LoadPolicy& p,
-         bool single) {
-  const std::string why = filtered_out(m, p, single);
+         bool named) {
+  const std::string why = filtered_out(m, p, named);
   if (why.empty())
     set.materials.push_back(std::move(m));
   else
@@ -68,19 +73,20 @@ void add(MaterialSet& set, LoadedMaterial m, const std::string& spec, const Load
 
 // Every material of a document gets a name of its own: the same page or file named twice (a glob
 // and an explicit name) is kept once; two different materials with one name or key (Cu.csv in two
-// folders) are told apart by a numbered suffix on the later one, " (2)" and "_2", with a warning.
+// folders) are told apart by the same numbered suffix on the later one's name and key, "_2", with
+// a warning, so every format calls it the same.
 void make_names_unique(MaterialSet& set) {
   std::vector<LoadedMaterial> kept;
   std::set<std::string> sources, names, keys;
   for (auto& m : set.materials) {
     auto& mat = m.material;
-    if (!sources.insert(mat.source).second) {
+    if (!sources.insert(mat.file.empty() ? mat.source : mat.file).second) {
       set.skipped.push_back({mat.key, "named more than once: kept once"});
       continue;
     }
     const std::string first_name = mat.name;
     for (int n = 2; names.count(ascii_lower(mat.name)); ++n)
-      mat.name = fmt::format("{} ({})", first_name, n);
+      mat.name = fmt::format("{}_{}", first_name, n);
     const std::string first_key = mat.key;
     for (int n = 2; keys.count(ascii_lower(mat.key)); ++n)
       mat.key = fmt::format("{}_{}", first_key, n);
@@ -125,14 +131,15 @@ MaterialSet load_materials(const Context& ctx, const std::vector<std::string>& s
   parallel_for_all(
       requests.size(),
       [&](size_t i) {
-        slots[i] = load_request(ctx, requests[i], !requests[i].pattern.empty() && !policy.strict);
+        const bool glob = !requests[i].pattern.empty();
+        slots[i] = load_request(ctx, requests[i], glob ? !policy.strict : policy.skip_named);
         done.add(1);
       },
       policy.threads);
-  const bool single = requests.size() == 1 && requests.front().pattern.empty();
   for (size_t i = 0; i < slots.size(); ++i) {
     if (slots[i].material)
-      add(set, std::move(*slots[i].material), requests[i].spec, policy, single);
+      add(set, std::move(*slots[i].material), requests[i].spec, policy,
+          requests[i].pattern.empty());
     else
       set.skipped.push_back({requests[i].spec, slots[i].reason});
   }

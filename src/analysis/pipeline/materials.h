@@ -15,12 +15,14 @@ namespace fl::analysis {
 constexpr double kDefaultMinCoverage = 0.99;
 
 struct LoadPolicy {
-  // Coverage::both below this: an InputError for a single named material, skipped (with the
-  // reason) when there are several.
+  // Coverage::both below this: an InputError for a material named explicitly (not matched by a
+  // glob) unless skip_named; a glob's page is skipped with the reason.
   double min_coverage = kDefaultMinCoverage;
   // A page matched by a glob that cannot be read is skipped with its reason unless strict. A
-  // material named on its own is always an error when it cannot be read.
+  // material named explicitly that cannot be read or is below min_coverage is an InputError
+  // unless skip_named (then skipped with its reason, as a glob's page).
   bool strict = false;
+  bool skip_named = false;
   std::optional<spectral::MaterialClass>
       only;         // keep this class only (others skipped, with the reason)
   int threads = 0;  // 0: every hardware thread

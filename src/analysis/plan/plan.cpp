@@ -1,5 +1,7 @@
 #include "analysis/plan/plan.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -10,6 +12,7 @@
 #include "fresnel/registered_models.h"
 #include "spectral/scene_file.h"
 #include "util/errors.h"
+#include "util/truncated.h"
 
 namespace fl::analysis {
 
@@ -59,26 +62,60 @@ Scene read_scene(const std::string& path) {
   s.punctual = f.punctual || (!f.ibl && !f.area);
   s.ibl = f.ibl;
   s.area = f.area;
+  s.notes = f.notes;
   return s;
 }
 
-std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, Scene& scene) {
-  std::vector<LoadedMaterial> out;
-  std::vector<SceneMaterial> expanded;
+namespace {
+
+// The scene's entries with their page globs expanded, a page given twice merged into its first
+// entry; InputError past spectral::kMaxSceneMaterials.
+std::vector<std::pair<SceneMaterial, bool>> expand_scene(const Context& ctx, Scene& scene) {
+  std::vector<std::pair<SceneMaterial, bool>> out;  // (material, a database page of a glob)
   const auto& paths = ctx.settings().paths;
   for (const auto& m : scene.materials) {
     try {
       for (const auto& r : spectral::expand_materials({m.spec}, paths)) {
-        out.push_back(load_material(ctx, r.pattern.empty()
-                                             ? spectral::resolve_material(r.spec, paths)
-                                             : spectral::read_database_page(r.spec, paths)));
-        expanded.push_back({r.spec, m.line, m.roughness, m.group});
+        const auto it = std::find_if(out.begin(), out.end(),
+                                     [&](const auto& x) { return x.first.spec == r.spec; });
+        if (it == out.end()) {
+          out.push_back({{r.spec, m.line, m.roughness, m.group}, !r.pattern.empty()});
+          continue;
+        }
+        auto& rs = it->first.roughness;
+        for (const double x : m.roughness)
+          if (std::find(rs.begin(), rs.end(), x) == rs.end()) rs.push_back(x);
+        scene.notes.push_back(fmt::format("{}:{}: '{}' is also given at line {}: merged",
+                                          scene.path, m.line, truncated(r.spec), it->first.line));
       }
     } catch (const InputError& e) {
       throw InputError(scene.path, m.line, e.what());
     }
+    if (std::ssize(out) > spectral::kMaxSceneMaterials)
+      throw InputError(scene.path, m.line,
+                       fmt::format("more than {} materials once page globs are expanded, the "
+                                   "most a scene allows (docs/engines.md): split the scene",
+                                   spectral::kMaxSceneMaterials));
   }
-  scene.materials = std::move(expanded);
+  return out;
+}
+
+}  // namespace
+
+std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, Scene& scene) {
+  const auto expanded = expand_scene(ctx, scene);
+  std::vector<LoadedMaterial> out;
+  const auto& paths = ctx.settings().paths;
+  scene.materials.clear();
+  for (const auto& [m, page] : expanded) {
+    try {
+      out.push_back(load_material(ctx, page ? spectral::read_database_page(m.spec, paths)
+                                            : spectral::resolve_material(m.spec, paths)));
+    } catch (const InputError& e) {
+      throw InputError(scene.path, m.line, e.what());
+    }
+    scene.materials.push_back(m);
+  }
   return out;
 }
 

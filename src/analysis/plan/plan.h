@@ -46,6 +46,7 @@ struct Scene {
   int space_line = 0;
   bool punctual = false, ibl = false, area = false;
   std::vector<double> roughness;            // the scene's default
+  std::vector<std::string> notes;           // the reader's merges (spectral::SceneFile::notes)
   std::vector<Lighting> lightings() const;  // punctual, ibl, area order
 };
 
@@ -55,7 +56,9 @@ Scene read_scene(const std::string& path);
 // Resolves and loads the scene's materials (a page glob gives every page it matches); a material
 // that cannot be resolved is an InputError naming the scene file and the line of the material.
 // A page glob's pages replace its entry in scene.materials (each with the entry's line and
-// roughness), so that the materials and the scene's entries stay one to one.
+// roughness), so that the materials and the scene's entries stay one to one; a page that two
+// entries give is loaded once (roughness joined, a note added), and more than
+// spectral::kMaxSceneMaterials pages in all is an InputError, before any is loaded.
 std::vector<LoadedMaterial> load_scene_materials(const Context& ctx, Scene& scene);
 
 // The costs a plan weighs.

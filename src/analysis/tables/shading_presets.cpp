@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "color/lab.h"
+#include "fresnel/exact.h"
 #include "fresnel/media.h"
 
 namespace fl::analysis {
@@ -34,6 +35,20 @@ bool is_clear(const LoadedMaterial& m) {
                      [](const auto& n) { return n.imag() <= kClearKappa; });
 }
 
+// Kernel: the larger ΔE2000 of F0 and F82 of a grey dielectric of real index eta (Fresnel's
+// equations, Born & Wolf §1.5.2) against the spectral values. Grey: RGB (v, v, v) is the
+// working space's white scaled to luminance v.
+double dielectric_form_de00(const Context& ctx, double eta, const color::Rgb& f0,
+                            const color::Rgb& f82) {
+  const double r0 = fresnel::fresnel_conductor(1.0, eta, 0.0);
+  const double r82 = fresnel::fresnel_conductor(1.0 / 7.0, eta, 0.0);
+  const auto de = [&](const color::Rgb& v, double grey) {
+    return color::ciede2000<double>(ctx.rgb_to_lab(v),
+                                    ctx.rgb_to_lab(color::Rgb{grey, grey, grey}));
+  };
+  return std::max(de(f0, r0), de(f82, r82));
+}
+
 }  // namespace
 
 ShadingPreset shading_preset(const Context& ctx, const MaterialStudy& study) {
@@ -44,9 +59,14 @@ ShadingPreset shading_preset(const Context& ctx, const MaterialStudy& study) {
   p.f0 = study.derived.f0;
   p.f82_tint = study.derived.f82_tint;
   p.edge_tint = study.derived.g_refl_eta;
+  if (p.metal) return p;
   // RGB (1, 1, 1) is the space's white with Y = 1, so Y of a colour is the middle row of RGB → XYZ.
   const double f0_y = (ctx.space().rgb_to_xyz * p.f0).Y;
-  if (!p.metal) p.ior = fresnel::ior_from_f0(f0_y);
+  p.ior = fresnel::ior_from_f0(f0_y);
+  if (p.clear) return p;
+  p.dielectric_form_de00 = dielectric_form_de00(ctx, p.ior, p.f0, study.derived.f82);
+  p.metal_form = p.dielectric_form_de00 > kDielectricFormMaxDe00;
+  p.metal = p.metal_form;
   return p;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Presets for renderers' shading models (OpenPBR, Autodesk Standard Surface, glTF 2.0, MaterialX's
 // generalized Schlick BSDF), and the out-of-range policy every exported value follows.
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,12 +11,14 @@
 
 namespace fl::analysis {
 
-// Out-of-range policy. A reflectance-like value (F0, F82, the F82 tint, Gulbrandsen's g, a base or
-// specular colour) below 0 or above 1 by more than kOutOfRangeTolerance is flagged, by name, in the
-// out_of_range column (CSV, Markdown, JSON) or attribute (MaterialX, glTF extras). Formats that can
-// hold such values keep them unclamped; glTF, which cannot, stores into_unit_range() and reports
-// its ΔE2000 cost. The tolerance is rounding noise: Gulbrandsen's g of a lossless dielectric is 0
-// analytically and comes out of the spectral quadrature within 2e-5 of it.
+// Out-of-range policy (one for every format). A reflectance-like value (F0, F82, the F82 tint,
+// Gulbrandsen's g, a base or specular colour) below 0 or above 1 by more than kOutOfRangeTolerance
+// is flagged, by name, in the out_of_range column (CSV, Markdown, JSON) or attribute (MaterialX
+// doc, glTF extras). The tables are data and keep the spectral value unclamped; every colour a
+// renderer reads (MaterialX inputs, glTF factors) is stored in [0, 1], as into_unit_range(), with
+// the true value and the ΔE2000 the stored colour costs beside it. The tolerance is rounding noise:
+// Gulbrandsen's g of a lossless dielectric is 0 analytically and comes out of the spectral
+// quadrature within 2e-5 of it.
 inline constexpr double kOutOfRangeTolerance = 1e-4;
 bool out_of_range(double v);
 
@@ -31,9 +34,20 @@ std::string out_of_range_list(const NamedValues& values);
 // surface).
 inline constexpr double kClearKappa = 1e-4;
 
+// Representation. A metal by the data is exported as a metal. A clear dielectric as a dielectric
+// (its transmission matters). An opaque dielectric (an absorbing semiconductor: Si, Ge, GaAs) is
+// exported as a dielectric only when a dielectric of one real index reproduces its spectral F0 and
+// F82 within kDielectricFormMaxDe00 (the larger of the two ΔE2000); otherwise as a metal, whose F0
+// (base colour) and F82 tint reproduce both exactly and keep F0's hue.
+inline constexpr double kDielectricFormMaxDe00 = 1.0;
+
 struct ShadingPreset {
   const LoadedMaterial* material = nullptr;
   bool metal = false, clear = false;
+  bool metal_form = false;  // exported as a metal although the data is a dielectric
+  // The larger of the F0 and F82 ΔE2000 of the one-index dielectric form against the spectral
+  // values (opaque dielectrics; NaN otherwise).
+  double dielectric_form_de00 = NAN;
   color::Rgb f0, f82_tint, edge_tint;  // edge tint: Gulbrandsen's g from (F0, Refl. η)
   // Dielectrics: the real index (relative to the outside medium) whose normal-incidence
   // reflectance ((η − 1)/(η + 1))² is the luminance Y of F0, so a renderer's scalar IOR reflects
@@ -41,6 +55,15 @@ struct ShadingPreset {
   double ior = 1.5;
 };
 ShadingPreset shading_preset(const Context& ctx, const MaterialStudy& study);
+
+// What renderer documents (MaterialX, glTF) are written with: the perceptual roughness r of every
+// material (α = r²; OpenPBR's and Standard Surface's specular_roughness, glTF's roughnessFactor,
+// the generalized Schlick BSDF's roughness α = r²), and the materials a glob skipped with why.
+inline constexpr double kDefaultExportRoughness = 0.3;
+struct ExportOptions {
+  double roughness = kDefaultExportRoughness;
+  std::vector<std::string> skipped;  // "SPEC: reason", one per skipped material
+};
 
 // OpenPBR Surface (v1.1): metals base_metalness 1, base_color F0, specular_color the F82 tint;
 // dielectrics base_metalness 0, specular_ior η, specular_color white, transmission_weight 1 when
