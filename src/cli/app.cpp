@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "color/rgb_space.h"
 #include "fresnel_lab_version.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 #include "util/truncated.h"
 
 namespace fl::cli {
@@ -150,22 +152,74 @@ std::string version_text() {
   return fmt::format("fresnel-lab {} (commit {})", FRESNEL_LAB_VERSION, FRESNEL_LAB_COMMIT);
 }
 
-// The first word that is neither an option nor an option's value, when it names no command.
-std::optional<std::string> unknown_command(int argc, char** argv) {
+// Where the command line points in the command tree: the commands it names, outermost first
+// (`fresnel-lab`, `lut`, `dfg`), and an "unknown ... command" message with the nearest name when a
+// word stands where a subcommand is required.
+struct CommandPath {
+  std::vector<const CLI::App*> apps;
+  std::optional<std::string> unknown;
+};
+
+// Whether `arg` (an option) takes the next word as its value, in `app` or the program.
+bool takes_value(const CLI::App& app, const CLI::App& program, const std::string& arg) {
+  if (arg.find('=') != std::string::npos) return false;          // --name=value
+  if (arg.rfind("--", 0) != 0 && arg.size() != 2) return false;  // -abc: flags or -xVALUE
+  for (const CLI::App* a : {&app, &program})
+    if (const auto* opt = a->get_option_no_throw(arg)) return opt->get_type_size_min() > 0;
+  return false;
+}
+
+CommandPath command_path(const CLI::App& program, int argc, char** argv) {
+  CommandPath path{{&program}, std::nullopt};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "-q" || a == "--quiet" || a == "-h" || a == "--help") continue;
+    const CLI::App& here = *path.apps.back();
     if (a.rfind("-", 0) == 0) {
-      if (a.find('=') == std::string::npos) ++i;  // every other global option takes a value
+      if (takes_value(here, program, a)) ++i;
       continue;
     }
-    for (const auto& c : commands())
-      if (a == c.name) return std::nullopt;
-    std::string known;
-    for (const auto& c : commands()) known += (known.empty() ? "" : ", ") + std::string(c.name);
-    return fmt::format("unknown command '{}' (expected one of: {})", a, known);
+    const auto subs = here.get_subcommands([](const CLI::App*) { return true; });
+    if (subs.empty()) break;  // a leaf command: the rest are its arguments
+    const auto it = std::find_if(subs.begin(), subs.end(),
+                                 [&](const CLI::App* s) { return s->get_name() == a; });
+    if (it != subs.end()) {
+      path.apps.push_back(*it);
+      continue;
+    }
+    if (here.get_require_subcommand_min() == 0) break;
+    std::vector<NameChoice> choices;
+    for (const auto* s : subs) choices.push_back({s->get_name(), {}});
+    const std::string what = path.apps.size() == 1 ? "command" : here.get_name() + " command";
+    path.unknown = unknown_name_message(what, a, choices);
+    break;
   }
-  return std::nullopt;
+  return path;
+}
+
+// "fresnel-lab lut dfg": the commands of a path.
+std::string command_words(const CommandPath& path) {
+  std::string words;
+  for (const auto* a : path.apps) words += (words.empty() ? "" : " ") + a->get_name();
+  return words;
+}
+
+// The help footer of every subcommand: the program's options, which every command accepts.
+std::string global_options_footer(const CLI::App& program) {
+  std::string text = "Global options (before or after the command; fresnel-lab --help):\n";
+  for (const auto* opt : program.get_options()) {
+    const std::string name = opt->get_name(false, true);
+    if (name.find("help") != std::string::npos || name.find("version") != std::string::npos)
+      continue;
+    text += fmt::format("  {:<22}{}\n", name, opt->get_description());
+  }
+  return text;
+}
+
+void add_footer(CLI::App& app, const std::string& footer) {
+  for (auto* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    sub->footer(footer);
+    add_footer(*sub, footer);
+  }
 }
 
 // The options every command shares, into g (whose defaults are set).
@@ -258,6 +312,7 @@ int run(int argc, char** argv) {
   app.fallthrough();
   Runner selected;
   for (const auto& c : commands()) c.add(app, g, selected);
+  add_footer(app, global_options_footer(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -267,8 +322,9 @@ int run(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "fresnel-lab: error: {} (see fresnel-lab --help)\n",
-               truncated(unknown_command(argc, argv).value_or(e.what()), kMaxErrorLine));
+    const auto path = command_path(app, argc, argv);
+    fmt::print(stderr, "fresnel-lab: error: {} (see {} --help)\n",
+               truncated(path.unknown.value_or(e.what()), kMaxErrorLine), command_words(path));
     return 2;
   }
   if (!selected) throw InputError("no command given (see --help)");

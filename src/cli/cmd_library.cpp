@@ -12,6 +12,7 @@
 #include "documents/table_formats.h"
 #include "jobs/library_files.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 
 namespace fl::cli {
 
@@ -45,28 +46,34 @@ namespace {
 constexpr const char* kLibraryMarker = ".fresnel-lab-library";
 
 std::optional<spectral::MaterialClass> class_option(const std::string& name) {
-  if (name == "metal") return spectral::MaterialClass::Metal;
-  if (name == "dielectric") return spectral::MaterialClass::Dielectric;
-  if (name == "all") return std::nullopt;
-  throw InputError(fmt::format("--class must be metal, dielectric or all, not '{}'", name));
+  const std::vector<NameChoice> choices = {
+      {"metal", {"metals", "conductor"}}, {"dielectric", {"dielectrics"}}, {"all", {}}};
+  const auto match = match_name(name, choices);
+  if (!match) throw InputError("--class: " + unknown_name_message("class", name, choices));
+  if (*match == "metal") return spectral::MaterialClass::Metal;
+  if (*match == "dielectric") return spectral::MaterialClass::Dielectric;
+  return std::nullopt;
 }
 
 }  // namespace
 
 void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand("library",
-                                 "presets of every database page matching globs (default: every "
-                                 "conductor page covering the visible range): "
-                                 "every model derived and fitted, quality flags, CSV/MD/JSON, "
-                                 "MaterialX, glTF, spread table, gallery");
+  auto* sub =
+      app.add_subcommand("library",
+                         "presets of every database page matching MATERIALS (default: every "
+                         "conductor page covering the visible range): "
+                         "every model derived and fitted, quality flags, CSV/MD/JSON, "
+                         "MaterialX, glTF, spread table, gallery");
   struct Args {
     std::vector<std::string> globs;
     std::string out, cls = "metal";
     bool strict = false, no_gallery = false;
   };
   auto a = std::make_shared<Args>();
-  sub->add_option("GLOB", a->globs,
-                  "page globs ('main/*/nk/*'; * within a path segment, ** across; default '**')");
+  sub->add_option("MATERIALS", a->globs,
+                  "database pages (main/Au/nk/Johnson), page globs ('main/*/nk/*'; * within a "
+                  "path segment, ** across; default '**'), catalog names (gold) or files (as for "
+                  "presets); those not of --class are skipped with the reason");
   sub->add_option("--out", a->out,
                   "output folder, replaced as a whole (new, empty, or one `library` wrote)")
       ->required()

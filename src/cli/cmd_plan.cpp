@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -85,8 +87,16 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
   if (!a.plot.empty() || !a.out.empty()) font.emplace(g.label_font);
   if (!a.plot.empty()) report::write_drawing(a.plot, report::plan_plot(p), *font);
   if (!a.out.empty()) {
+    std::map<std::string, std::function<void(int, int)>> bars;  // one labelled bar per table
+    const auto table_progress = [&](const std::string& table, int done, int total) {
+      auto& bar = bars[table];
+      if (!bar) bar = periodic_progress(g, "plan: " + table + " cells ", 2);
+      bar(done, total);
+    };
     report::replace_folder_atomic(
-        a.out, report::plan_files(p, costs, analysis::plan_reference(ctx, studies, p), *font),
+        a.out,
+        report::plan_files(p, costs, analysis::plan_reference(ctx, studies, p), *font, 0,
+                           table_progress),
         report::kPlanMarker);
     progress(g, fmt::format("plan: wrote {} ({})", a.out, p.scene_choice().name));
     return 0;

@@ -60,7 +60,7 @@ namespace {
 // render's lighting: an EXR environment, its colour space, rotation and exposure.
 void add_environment_options(CLI::App& sub, report::RenderRequest& r) {
   sub.add_option("--env", r.env,
-                 "a latitude-longitude OpenEXR environment (default: the analytic sky)");
+                 "a latitude-longitude OpenEXR environment (default: the analytic neutral studio)");
   sub.add_option(
       "--env-space", r.env_space,
       "the environment's colour space (default: its chromaticities attribute, else lin_rec709)");
@@ -78,7 +78,7 @@ void add_environment_options(CLI::App& sub, report::RenderRequest& r) {
 void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub =
       app.add_subcommand("render",
-                         "a GGX sphere under an analytic sky and key light or a "
+                         "a GGX sphere in an analytic neutral studio with a key light or a "
                          "latitude-longitude EXR environment: FILE.exr and "
                          "FILE.png; with a model also FILE.truth.png and the ΔE2000 heat "
                          "map FILE.de2000.png; with --compare the truth "

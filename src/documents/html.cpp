@@ -21,7 +21,8 @@ input[type=search]{font:inherit;padding:4px 8px;width:320px;max-width:90%;border
 .count{color:#666;margin-left:10px}
 .gallery{display:grid;grid-template-columns:repeat(auto-fill,minmax(min(290px,100%),1fr));gap:12px;margin-top:12px}
 .card{background:#fff;border:1px solid #ddd;border-radius:6px;padding:10px 12px;min-width:0}.card[hidden]{display:none}
-.card h3{margin:0;font-size:16px}.cls{color:#777;font-weight:normal;font-size:13px;margin-left:6px}
+.card h3{margin:0;font-size:16px}.cls{color:#777;font-weight:normal;font-size:13px;margin-left:6px;display:inline-block;white-space:nowrap;overflow-wrap:normal}
+#groups{display:flex;flex-direction:column}.group{margin-top:18px}.group[hidden]{display:none}.group>h3{margin:0;font-size:17px;border-bottom:1px solid #ddd;padding-bottom:2px}.gallery[data-src]{min-height:120px}
 .src{color:#666;font-size:12px;word-break:break-all}
 .strip{height:20px;border-radius:3px;margin:8px 0 2px;border:1px solid #555;box-shadow:0 0 0 3px #808080}.strip-axis{display:flex;justify-content:space-between;font-size:11px;color:#888}
 .sws{margin:8px 0 6px;padding:5px 8px;display:inline-block;border-radius:4px;background:repeating-conic-gradient(#6e6e6e 0 25%,#8c8c8c 0 50%) 0 0/10px 10px}
@@ -119,12 +120,32 @@ constexpr const char* kScript = R"JS(
     });
     select(parseInt(flip.getAttribute('data-model'), 10));
   }
-  document.querySelectorAll('th').forEach(function (th) { th.addEventListener('click', function () { sortBy(th); }); });
-  document.querySelectorAll('input[data-table]').forEach(function (i) {
-    i.addEventListener('input', function () { filterRows(i); });
+  function setupTables(root) {
+    root.querySelectorAll('th').forEach(function (th) { th.addEventListener('click', function () { sortBy(th); }); });
+    root.querySelectorAll('input[data-table]').forEach(function (i) {
+      i.addEventListener('input', function () { filterRows(i); });
+    });
+  }
+  setupTables(document);
+  // A table kept in a script beside the page is loaded when its section is first opened.
+  window.flTable = function (id, html) {
+    var box = document.getElementById(id);
+    box.innerHTML = html;
+    box.removeAttribute('data-src');
+    setupTables(box);
+  };
+  document.querySelectorAll('details.tbl').forEach(function (d) {
+    d.addEventListener('toggle', function () {
+      var box = d.querySelector('[data-src]');
+      if (!d.open || !box || box.hasAttribute('data-loading')) return;
+      box.setAttribute('data-loading', '');
+      var s = document.createElement('script');
+      s.src = box.getAttribute('data-src');
+      document.body.appendChild(s);
+    });
   });
   var g = document.getElementById('gallery-filter');
-  if (g) g.addEventListener('input', function () { filterGallery(g); });
+  if (g && !document.getElementById('gallery-index')) g.addEventListener('input', function () { filterGallery(g); });
   document.querySelectorAll('.flip').forEach(setupFlip);
 })();
 )JS";
@@ -194,19 +215,21 @@ std::string figures_html(const std::vector<std::pair<std::string, std::string>>&
   return s;
 }
 
-std::string search_text(const GalleryEntry& e) {
-  std::string s = e.name + " " + e.material_class + " " + e.source;
+}  // namespace
+
+std::string gallery_search_text(const GalleryEntry& e) {
+  std::string s = e.name + " " + e.material_class + " " + e.kind + " " + e.source;
+  for (const auto& k : e.keywords) s += " " + k;
   for (const auto& f : e.flags) s += " " + f;
-  for (const auto& [label, value] : e.facts) s += " " + label + " " + value;
   return s;
 }
 
-std::string card_html(const GalleryEntry& e) {
+std::string gallery_card_html(const GalleryEntry& e) {
   std::string s = fmt::format(
       "<article class=\"card\" id=\"m-{}\" data-search=\"{}\"><h3>{}<span "
       "class=\"cls\">{}</span></h3>"
       "<div class=\"src\">{}</div>",
-      html_escape(e.key), html_escape(search_text(e)), html_escape(e.name),
+      html_escape(e.key), html_escape(gallery_search_text(e)), html_escape(e.name),
       html_escape(e.material_class), html_escape(e.source));
   if (!e.strip.empty())
     s += fmt::format(
@@ -242,8 +265,6 @@ std::string card_html(const GalleryEntry& e) {
   s += "</article>\n";
   return s;
 }
-
-}  // namespace
 
 std::string html_escape(const std::string& text) {
   std::string out;
@@ -310,12 +331,61 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries) {
       "materials</span>\n"
       "<div class=\"gallery\">\n",
       entries.size());
-  for (const auto& e : entries) s += card_html(e);
+  for (const auto& e : entries) s += gallery_card_html(e);
   s += "</div>\n";
   return s;
 }
 
+using Files = std::vector<std::pair<std::string, std::string>>;
+
+namespace {
+
+// The tables section; with `folder`, a table larger than kInlineTableBytes is left to a script
+// FOLDER/NAME.js (added to `scripts`) that the page loads when the table's section is opened.
+std::string tables_section(const HtmlReport& r, const std::string& folder, Files* scripts) {
+  std::string s = "<section id=\"tables\"><h2>Tables</h2>\n";
+  for (const auto& t : r.tables) {
+    std::string body = table_html(t, "table-" + t.name, 3);
+    if (!folder.empty() && body.size() > kInlineTableBytes) {
+      const std::string path = folder + "/" + t.name + ".js", id = "tb-" + t.name;
+      scripts->emplace_back(path, "flTable(" + js_string(id) + ", " + js_string(body) + ");\n");
+      body = fmt::format("<div id=\"{}\" data-src=\"{}\">loading…</div>", html_escape(id),
+                         html_escape(path));
+    }
+    s += fmt::format(
+        "<details class=\"tbl\" id=\"t-{0}\"><summary>{0} <span class=\"sum\">{1} rows</span>"
+        "</summary>\n{2}</details>\n",
+        html_escape(t.name), t.rows.size(), body);
+  }
+  return s + "</section>\n";
+}
+
+}  // namespace
+
+std::string js_string(const std::string& text) {
+  std::string out = "\"";
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"' || c == '\\')
+      out += std::string("\\") + c;
+    else if (c == '\n')
+      out += "\\n";
+    else if (c == '/' && i > 0 && text[i - 1] == '<')
+      out += "\\/";  // "</script>" must not end the script element
+    else if (static_cast<unsigned char>(c) < 0x20)
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
+    else
+      out += c;
+  }
+  return out + "\"";
+}
+
 std::string html_report(const HtmlReport& r) {
+  return html_report_files(r, "").front().second;
+}
+
+Files html_report_files(const HtmlReport& r, const std::string& folder) {
+  Files scripts;
   std::string s = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
       "<meta name=\"viewport\" content=\"width=device-width, "
@@ -336,8 +406,10 @@ std::string html_report(const HtmlReport& r) {
     for (const auto& line : r.summary) s += "<li>" + inline_markdown(line) + "</li>\n";
     s += "</ul></section>\n";
   }
-  if (!r.gallery.empty())
-    s += "<section id=\"gallery\"><h2>Gallery</h2>\n" + gallery_html(r.gallery) + "</section>\n";
+  if (!r.gallery_fragment.empty() || !r.gallery.empty())
+    s += "<section id=\"gallery\"><h2>Gallery</h2>\n" +
+         (r.gallery_fragment.empty() ? gallery_html(r.gallery) : r.gallery_fragment) +
+         "</section>\n";
   if (!r.figures.empty())
     s += "<section id=\"figures\"><h2>Figures</h2>\n" + figures_html(r.figures) + "</section>\n";
   if (!r.lookdev.empty()) {
@@ -345,16 +417,14 @@ std::string html_report(const HtmlReport& r) {
     if (!r.lookdev_reading.empty()) s += "<p>" + inline_markdown(r.lookdev_reading) + "</p>\n";
     s += "<div class=\"sheets\">\n" + figures_html(r.lookdev) + "</div></section>\n";
   }
-  s += "<section id=\"tables\"><h2>Tables</h2>\n";
-  for (const auto& t : r.tables)
-    s += fmt::format(
-        "<details class=\"tbl\" id=\"t-{0}\"><summary>{0} <span class=\"sum\">{1} rows</span>"
-        "</summary>\n{2}</details>\n",
-        html_escape(t.name), t.rows.size(), table_html(t, "table-" + t.name, 3));
-  s += "</section>\n</main>\n<script>";
+  s += tables_section(r, folder, &scripts);
+  s += "</main>\n<script>";
   s += kScript;
+  s += r.gallery_script;
   s += "</script>\n</body></html>\n";
-  return s;
+  Files out{{"index.html", std::move(s)}};
+  for (auto& f : scripts) out.push_back(std::move(f));
+  return out;
 }
 
 }  // namespace fl::report

@@ -33,6 +33,10 @@ struct Flip {
 struct GalleryEntry {
   std::string key;  // unique; the card's anchor
   std::string name, material_class, source;
+  std::string kind;  // what the entry is ("bulk", "thin film", "consensus", "catalog", "file")
+  // Other names the search finds it by: its element's symbol and common name, catalog aliases.
+  std::vector<std::string> keywords;
+  std::string group;        // the element it is grouped under (grouped_gallery), e.g. "Au (Gold)"
   std::vector<Rgb8> strip;  // ground truth display colours at equally spaced angles 0°…90°
   Rgb8 f0, f82;             // display colours of F0 and F82
   std::vector<std::string> flags;
@@ -41,8 +45,13 @@ struct GalleryEntry {
   Flip flip;                                                 // none when flip.image is empty
 };
 
-// The gallery: a search box (matching name, class, source, flags and facts) and one card per entry.
+// The gallery: a search box (gallery_search_text) and one card per entry.
 std::string gallery_html(const std::vector<GalleryEntry>& entries);
+// What the search matches a card by: name, class, kind, source, keywords and flags (not the
+// facts, whose wording every card shares).
+std::string gallery_search_text(const GalleryEntry& e);
+// One card (an <article>).
+std::string gallery_card_html(const GalleryEntry& e);
 
 struct HtmlReport {
   std::string title;
@@ -57,9 +66,25 @@ struct HtmlReport {
   // (caption, image path): look-dev contact sheets shown after the figures, each opening full size.
   std::vector<std::pair<std::string, std::string>> lookdev;
   std::string lookdev_reading;  // Markdown paragraph above the sheets (may be empty)
+  // A prepared gallery section (grouped_gallery's html) shown instead of `gallery`, and the script
+  // that runs it, when not empty.
+  std::string gallery_fragment, gallery_script;
 };
 
-// The whole page. The same report gives the same bytes.
+// The whole page, every table in it. The same report gives the same bytes.
 std::string html_report(const HtmlReport& report);
+
+// Tables larger than this are left out of a page written with html_report_files.
+inline constexpr size_t kInlineTableBytes = 256 * 1024;
+
+// The page as ("index.html", bytes) followed by the scripts beside it: each table larger than
+// kInlineTableBytes in FOLDER/NAME.js, which the page loads when the table's section is first
+// opened (so a library of thousands of rows opens as fast as a small one). Paths relative to the
+// page.
+std::vector<std::pair<std::string, std::string>> html_report_files(const HtmlReport& report,
+                                                                   const std::string& folder);
+
+// `text` as a JavaScript string literal, safe inside a <script> element and in a .js file.
+std::string js_string(const std::string& text);
 
 }  // namespace fl::report

@@ -8,16 +8,21 @@
 #include "analysis/tables/shading_presets.h"
 #include "analysis/tables/tables.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 
 namespace fl::report {
 
 MaterialxShader materialx_shader_from_name(const std::string& name) {
-  if (name == "generalized_schlick") return MaterialxShader::GeneralizedSchlick;
-  if (name == "open_pbr_surface") return MaterialxShader::OpenPbrSurface;
-  if (name == "standard_surface") return MaterialxShader::StandardSurface;
-  throw InputError(fmt::format(
-      "--shader must be generalized_schlick, open_pbr_surface or standard_surface, not '{}'",
-      name));
+  // MaterialX's node names; the short names people say for them are aliases.
+  const std::vector<NameChoice> choices = {
+      {"generalized_schlick", {"generalised_schlick", "generalized_schlick_bsdf"}},
+      {"open_pbr_surface", {"openpbr", "open_pbr"}},
+      {"standard_surface", {"autodesk_standard_surface"}}};
+  const auto match = match_name(name, choices);
+  if (!match) throw InputError("--shader: " + unknown_name_message("shader", name, choices));
+  if (*match == "open_pbr_surface") return MaterialxShader::OpenPbrSurface;
+  if (*match == "standard_surface") return MaterialxShader::StandardSurface;
+  return MaterialxShader::GeneralizedSchlick;
 }
 
 const char* to_string(MaterialxShader s) {

@@ -354,7 +354,7 @@ void add_sheet_row(Drawing& dr, const ContactSheet& s, size_t r, double scale,
   const std::string labels[3] = {
       "ground truth (spectral)", row.label,
       fmt::format("ΔE2000: mean {:.2f}, max {:.2f}", row.mean_de2000, row.max_de2000)};
-  for (int c = 0; c < 3; ++c) {
+  for (int c = r == 0 ? 0 : 1; c < 3; ++c) {  // the truth once, in the first row
     const Point p = sheet_tile(s, r, c);
     dr.add(Text{
         p.x, double(top + 15), labels[c],
@@ -362,7 +362,7 @@ void add_sheet_row(Drawing& dr, const ContactSheet& s, size_t r, double scale,
                          (c == 2 ? size + kHeatBarGap : sheet_column(s) + kSheetGap) - 4, font),
         c == 2 ? kGreyInk : kInk});
   }
-  dr.add(Picture{int(sheet_tile(s, r, 0).x), int(sheet_tile(s, r, 0).y), s.truth});
+  if (r == 0) dr.add(Picture{int(sheet_tile(s, r, 0).x), int(sheet_tile(s, r, 0).y), s.truth});
   dr.add(Picture{int(sheet_tile(s, r, 1).x), int(sheet_tile(s, r, 1).y), row.render});
   dr.add(Picture{int(sheet_tile(s, r, 2).x), int(sheet_tile(s, r, 2).y),
                  heatmap_image(row.de2000, size, size, scale)});

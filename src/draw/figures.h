@@ -32,9 +32,9 @@ double heatmap_scale(const std::vector<double>& de);
 // The map's pixels: inferno(ΔE / scale), light grey where there is no surface.
 Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale);
 
-// A flip comparison on one page: per model a row of three square tiles — the ground truth render,
-// the model's render and its ΔE2000 heat map — with one colour bar for every row (the scale is
-// heatmap_scale over all rows, so rows compare).
+// A flip comparison on one page: per model a row of the model's render and its ΔE2000 heat map,
+// the ground truth render once, left of the first row (column 0), with one colour bar for every row
+// (the scale is heatmap_scale over all rows, so rows compare).
 struct ContactSheetRow {
   std::string label;  // the model (and its parameter set)
   Image8 render;      // display codes, the truth's size

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "draw/figures.h"
 
@@ -29,17 +30,30 @@ Drawing frame_drawing(const Image8& render) {
   return dr;
 }
 
-// `size`, or smaller (down to 7 px) so that `text` fits in `width` pixels.
+// `size` (at least kFlipMinTextPx), or smaller down to kFlipMinTextPx so that `text` fits in
+// `width` pixels.
 double fitted(const std::string& text, double size, double width, const LabelFont& font) {
-  return text_size_to_fit(text, size, 7.0, width, font);
+  return text_size_to_fit(text, std::max(size, kFlipMinTextPx), kFlipMinTextPx, width, font);
 }
 
-void add_band(Drawing& dr, int top, const std::string& label, const std::string& detail,
-              const LabelFont& font) {
+// The first of `variants` (longest first) that fits `width` at kFlipMinTextPx or more, at the
+// size it fits; the last one when none does.
+std::pair<std::string, double> legible(const std::vector<std::string>& variants, double size,
+                                       double width, const LabelFont& font) {
+  for (const auto& v : variants) {
+    const double px = fitted(v, size, width, font);
+    if (text_width_px(v, px, font) <= width) return {v, px};
+  }
+  return {variants.back(), kFlipMinTextPx};
+}
+
+void add_band(Drawing& dr, int top, const std::vector<std::string>& label,
+              const std::vector<std::string>& detail, const LabelFont& font) {
   const double fs = text_size(dr.width), x = dr.width / 2.0, room = dr.width - 8.0;
-  dr.add(Text{x, top + 1.4 * fs, label, fitted(label, fs, room, font), kLabel, Align::Center});
-  dr.add(Text{x, top + 2.8 * fs, detail, fitted(detail, fs * 0.9, room, font), kDetail,
-              Align::Center});
+  const auto [l, l_px] = legible(label, fs, room, font);
+  const auto [d, d_px] = legible(detail, fs * 0.9, room, font);
+  dr.add(Text{x, top + 1.4 * fs, l, l_px, kLabel, Align::Center});
+  dr.add(Text{x, top + 2.8 * fs, d, d_px, kDetail, Align::Center});
 }
 
 // A horizontal ramp `width` × `height`: colour(t) for t from 0 at the left to 1 at the right.
@@ -70,12 +84,13 @@ Image8 cropped(const Image8& image, int margin) {
 // below.
 struct Panel {
   Image8 image, bar;
-  std::string caption, low, middle, high;
+  std::vector<std::string> caption;  // longest first: the first that fits legibly is set
+  std::string low, middle, high;
 };
 void add_panel(Drawing& dr, const Panel& p, int x, int y, const LabelFont& font) {
   const double fs = text_size(dr.width), w = p.image.width;
-  dr.add(Text{x + w / 2, y - 0.6 * fs, p.caption, fitted(p.caption, fs, w, font), kLabel,
-              Align::Center});
+  const auto [caption, caption_px] = legible(p.caption, fs, w, font);
+  dr.add(Text{x + w / 2, y - 0.6 * fs, caption, caption_px, kLabel, Align::Center});
   dr.add(Picture{x, y, p.image});
   const int bar_y = y + p.image.height + static_cast<int>(0.6 * fs);
   dr.add(Picture{x, bar_y, p.bar});
@@ -91,21 +106,30 @@ void add_panel(Drawing& dr, const Panel& p, int x, int y, const LabelFont& font)
 
 }  // namespace
 
-Image8 flip_frame(const Image8& render, const std::string& label, const std::string& detail,
-                  const LabelFont& font) {
+Drawing flip_frame_drawing(const Image8& render, const std::string& label,
+                           const std::string& detail, const LabelFont& font) {
   Drawing dr = frame_drawing(render);
   dr.add(Picture{0, 0, render});
-  add_band(dr, render.height, label, detail, font);
-  return rasterize(dr, font);
+  add_band(dr, render.height, {label}, {detail}, font);
+  return dr;
 }
 
-Image8 signed_difference(const Image8& truth, const Image8& model) {
-  if (truth.width != model.width || truth.height != model.height)
+Image8 flip_frame(const Image8& render, const std::string& label, const std::string& detail,
+                  const LabelFont& font) {
+  return rasterize(flip_frame_drawing(render, label, detail, font), font);
+}
+
+Image8 signed_difference(const DisplayValues& truth, const DisplayValues& model) {
+  if (truth.width != model.width || truth.height != model.height ||
+      truth.rgb.size() != model.rgb.size() ||
+      truth.rgb.size() != 3 * static_cast<size_t>(truth.width) * truth.height)
     throw std::invalid_argument("signed_difference: images differ in size");
   Image8 d(truth.width, truth.height);
-  for (size_t k = 0; k < d.pixels.size(); ++k)
-    d.pixels[k] = static_cast<std::uint8_t>(std::clamp(
-        128 + kFlipDifferenceGain * (int(model.pixels[k]) - int(truth.pixels[k])), 0, 255));
+  for (size_t k = 0; k < d.pixels.size(); ++k) {
+    const double codes = 255.0 * (double(model.rgb[k]) - double(truth.rgb[k]));
+    d.pixels[k] = static_cast<std::uint8_t>(
+        std::clamp(std::lround(128 + kFlipDifferenceGain * codes), 0L, 255L));
+  }
   return d;
 }
 
@@ -124,34 +148,46 @@ Image8 half_size(const Image8& image) {
   return h;
 }
 
-Image8 flip_difference_frame(const Image8& truth, const Image8& model,
-                             const std::vector<double>& de2000, double scale,
-                             const std::string& name, const std::string& label,
-                             const LabelFont& font) {
-  Drawing dr = frame_drawing(truth);
+Drawing flip_difference_drawing(const DisplayValues& truth, const DisplayValues& model,
+                                const std::vector<double>& de2000, double scale,
+                                const std::string& name, const std::string& label,
+                                const LabelFont& font) {
+  Drawing dr = frame_drawing(Image8(truth.width, truth.height));
   const int half = truth.width / 2, crop = half / 25, panel = half - 2 * crop;
   const int top = (truth.height - panel) / 2;
   const int bar_h = std::max(4, static_cast<int>(0.6 * text_size(truth.width)));
+  const std::string s = fmt::format("{:g}", scale), r = fmt::format("{}", kFlipDifferenceRange);
   const Panel heat{
       cropped(half_size(heatmap_image(de2000, truth.width, truth.height, scale)), crop),
       ramp(panel, bar_h, [](double t) { return inferno(t); }),
-      "ΔE2000 of " + name,
+      {"ΔE2000 of " + name, "ΔE2000"},
       "0",
-      "ΔE2000",
-      fmt::format("{:g}", scale)};
+      "",
+      s};
   const Panel diff{cropped(half_size(signed_difference(truth, model)), crop),
                    ramp(panel, bar_h, difference_code),
-                   fmt::format("{} − truth, ×{}", name, kFlipDifferenceGain),
-                   fmt::format("−{}", kFlipDifferenceRange),
-                   "equal",
-                   fmt::format("+{} codes", kFlipDifferenceRange)};
+                   {fmt::format("{} − truth, ×{}", name, kFlipDifferenceGain),
+                    fmt::format("difference ×{}", kFlipDifferenceGain)},
+                   "−" + r,
+                   "0",
+                   "+" + r};
   add_panel(dr, heat, crop, top, font);
   add_panel(dr, diff, truth.width - half + crop, top, font);
-  add_band(dr, truth.height, label,
-           fmt::format("ΔE2000 on the sheet's scale 0–{:g}; grey + {} × (model − truth) codes",
-                       scale, kFlipDifferenceGain),
+  const auto gain = kFlipDifferenceGain;
+  add_band(dr, truth.height, {label, name},
+           {fmt::format("ΔE2000 on the sheet's scale 0–{}; grey + {} × (model − truth) in codes", s,
+                        gain),
+            fmt::format("ΔE2000 0–{}; grey + {} × difference in codes", s, gain),
+            fmt::format("ΔE2000 0–{}; {} × difference", s, gain)},
            font);
-  return rasterize(dr, font);
+  return dr;
+}
+
+Image8 flip_difference_frame(const DisplayValues& truth, const DisplayValues& model,
+                             const std::vector<double>& de2000, double scale,
+                             const std::string& name, const std::string& label,
+                             const LabelFont& font) {
+  return rasterize(flip_difference_drawing(truth, model, de2000, scale, name, label, font), font);
 }
 
 }  // namespace fl::report

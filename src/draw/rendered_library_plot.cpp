@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "draw/labels.h"
 #include "draw/plot.h"
 
 namespace fl::report {
@@ -31,8 +32,6 @@ const Series kSeries[] = {{"metal", Lighting::Ibl, {200, 90, 0}, "metals, IBL"},
                           {"metal", Lighting::Area, {250, 170, 80}, "metals, area"},
                           {"dielectric", Lighting::Ibl, {20, 80, 170}, "dielectrics, IBL"},
                           {"dielectric", Lighting::Area, {110, 160, 230}, "dielectrics, area"}};
-const Rgb8 kShaderColours[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},  {214, 39, 40},
-                               {148, 103, 189}, {140, 86, 75},  {227, 119, 194}};
 
 // Axes whose y is log10 of the error.
 Axes panel(double left, double x_min, double x_max) {
@@ -99,20 +98,35 @@ void add_against_k(Drawing& d, const std::vector<RenderedLibraryRow>& rows) {
   d.add(Text{a.left, legend_y + 20, "solid: median over the pages; dashed: p99", 12, kGreyInk});
 }
 
-void add_against_cost(Drawing& d, const std::vector<RenderedLibraryRow>& rows) {
+// Every shader's IBL (filled) and area (hollow) marker in its qualitative colour, named beside its
+// IBL marker (its area marker when it has no IBL cost).
+void add_cost_points(Drawing& d, const Axes& a, const std::vector<RenderedLibraryRow>& rows,
+                     const LabelFont& font) {
+  const auto& shaders = analysis::library_shaders();
+  std::vector<Box> markers;
+  std::vector<PointLabel> labels;
+  std::vector<bool> named(shaders.size(), false);
+  for (const bool ibl_pass : {true, false})
+    for (const auto& r : rows) {
+      if (r.page_class != "all" || !r.gpu || (r.lighting == Lighting::Ibl) != ibl_pass) continue;
+      const auto k = static_cast<size_t>(r.shader - shaders.data());
+      const Point p = at(a, r.gpu->instructions, r.median);
+      d.add(Circle{p.x, p.y, 6, qualitative_colour(k), ibl_pass ? 0.0 : 2.0});
+      markers.push_back({p.x - 6, p.y - 6, 12, 12});
+      if (!named[k]) labels.push_back({p, r.shader->name, qualitative_colour(k)});
+      named[k] = true;
+    }
+  for (auto& shape :
+       place_labels(labels, markers, {a.left + 2, a.top + 2, a.width - 4, a.height - 4}, 12, font))
+    d.shapes.push_back(std::move(shape));
+}
+
+void add_against_cost(Drawing& d, const std::vector<RenderedLibraryRow>& rows,
+                      const LabelFont& font) {
   const Axes a = panel(kRightPanel, 0, 25);
   add_panel(d, a, {0, 5, 10, 15, 20, 25}, "Every shader against its GPU cost, all pages",
             "SPIR-V instructions (bench/gpu_costs.csv)");
-  const auto& shaders = analysis::library_shaders();
-  for (const auto& r : rows) {
-    if (r.page_class != "all" || !r.gpu) continue;
-    const Rgb8 colour =
-        kShaderColours[static_cast<size_t>(r.shader - shaders.data()) % std::size(kShaderColours)];
-    const Point p = at(a, r.gpu->instructions, r.median);
-    const bool ibl = r.lighting == Lighting::Ibl;
-    d.add(Circle{p.x, p.y, 6, colour, ibl ? 0.0 : 2.0});
-    if (ibl) d.add(Text{p.x, p.y - 10, r.shader->name, 12, colour, Align::Center});
-  }
+  add_cost_points(d, a, rows, font);
   const double y = a.top + a.height + 62;
   d.add(Circle{a.left + 6, y - 4, 6, kGreyInk, 0});
   d.add(Text{a.left + 18, y, "IBL (split-sum DFG)", 12, kInk});
@@ -123,12 +137,12 @@ void add_against_cost(Drawing& d, const std::vector<RenderedLibraryRow>& rows) {
 
 }  // namespace
 
-Drawing rendered_library_plot(const std::vector<RenderedLibraryRow>& rows) {
+Drawing rendered_library_plot(const std::vector<RenderedLibraryRow>& rows, const LabelFont& font) {
   Drawing d;
   d.width = kWidth;
   d.height = kHeight;
   add_against_k(d, rows);
-  add_against_cost(d, rows);
+  add_against_cost(d, rows, font);
   return d;
 }
 

@@ -10,7 +10,10 @@ namespace fl::report {
 
 // Left: the basis projections' median (solid) and p99 (dashed) page RMS ΔE2000 against K = 2..5,
 // per class and lighting. Right: every shader with a measured GPU cost over all pages, median
-// against SPIR-V instructions (filled: IBL, hollow: area lights). Both error axes log scale.
-Drawing rendered_library_plot(const std::vector<analysis::RenderedLibraryRow>& rows);
+// against SPIR-V instructions (filled: IBL, hollow: area lights), one qualitative colour per shader
+// and each shader named beside its marker where no label can cover another (draw/labels.h). Both
+// error axes log scale; labels set in `font`.
+Drawing rendered_library_plot(const std::vector<analysis::RenderedLibraryRow>& rows,
+                              const LabelFont& font);
 
 }  // namespace fl::report

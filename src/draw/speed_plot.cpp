@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "draw/labels.h"
 #include "draw/plot.h"
 #include "io/writer.h"
 
@@ -13,12 +14,9 @@ namespace fl::report {
 namespace {
 
 constexpr int kWidth = 960, kHeight = 560;
-constexpr double kLeft = 90, kRight = 660, kTop = 50, kBottom = 480;
+constexpr double kLeft = 90, kRight = 760, kTop = 50, kBottom = 480;
 constexpr double kMarkerRadius = 6, kFloorDe = 1e-3;  // errors below the floor are drawn at it
 const Rgb8 kFrame{60, 60, 60}, kGrid{225, 225, 225}, kFront{90, 90, 90};
-// One colour per model (model_specs() order), distinguishable on white.
-const Rgb8 kModelColours[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
-                              {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127}};
 
 // A log-scale axis range covering [lo, hi], its ends on 1-2-5 values.
 struct LogAxis {
@@ -101,8 +99,8 @@ void add_speed_axes(Drawing& d, const SpeedAxes& a) {
              Align::Center, true});
 }
 
-// The Pareto front, cheapest first, as a staircase.
-void add_pareto_front(Drawing& d, const SpeedAxes& a, const std::vector<analysis::SpeedRow>& rows) {
+// The Pareto front, cheapest first, as the points of a staircase.
+std::vector<Point> front_points(const SpeedAxes& a, const std::vector<analysis::SpeedRow>& rows) {
   std::vector<analysis::SpeedRow> front;
   for (const auto& r : rows)
     if (r.pareto) front.push_back(r);
@@ -110,27 +108,29 @@ void add_pareto_front(Drawing& d, const SpeedAxes& a, const std::vector<analysis
     return p.ns_per_eval != q.ns_per_eval ? p.ns_per_eval < q.ns_per_eval
                                           : p.median_rms_de00 > q.median_rms_de00;
   });
-  Polyline line{{}, kFront, 2.0, {}};
+  std::vector<Point> points;
   for (size_t i = 0; i < front.size(); ++i) {
     const Point p = a.map(*front[i].ns_per_eval, front[i].median_rms_de00);
-    if (i > 0) line.points.push_back({p.x, line.points.back().y});
-    line.points.push_back(p);
+    if (i > 0) points.push_back({p.x, points.back().y});
+    points.push_back(p);
   }
-  if (line.points.size() > 1) d.add(std::move(line));
+  return points;
 }
 
+void add_pareto_front(Drawing& d, const std::vector<Point>& front) {
+  if (front.size() > 1) d.add(Polyline{front, kFront, 2.0, {}});
+}
+
+// One qualitative colour per model, in model_specs() order.
 Rgb8 model_colour(fresnel::Model m) {
-  const auto& specs = fresnel::model_specs();
-  const auto k =
-      std::find_if(specs.begin(), specs.end(), [&](const auto& s) { return s.model == m; }) -
-      specs.begin();
-  return kModelColours[static_cast<size_t>(k) % std::size(kModelColours)];
+  return qualitative_colour(static_cast<size_t>(m.index()));
 }
 
 Circle marker(Point p, Rgb8 colour, bool filled) {
   return {p.x, p.y, kMarkerRadius, colour, filled ? 0.0 : 2.0};
 }
 
+// What the marker styles mean; the models are named beside their markers.
 void add_speed_legend(Drawing& d) {
   const double lx = kRight + 30;
   double y = kTop + 7;
@@ -139,17 +139,44 @@ void add_speed_legend(Drawing& d) {
     d.add(Text{lx + 18, y + 5, label, 13, kInk});
     y += 24;
   };
-  for (const auto& s : fresnel::model_specs())
-    entry(marker({lx + 6, y}, model_colour(s.model), true), s.name);
-  y += 10;
-  entry(marker({lx + 6, y}, kFront, true), "fitted parameters");
-  entry(marker({lx + 6, y}, kFront, false), "derived parameters");
+  entry(marker({lx + 6, y}, kFront, true), "fitted");
+  entry(marker({lx + 6, y}, kFront, false), "derived");
   entry(Polyline{{{lx - 1, y}, {lx + 13, y}}, kFront, 2.0, {}}, "Pareto front");
+}
+
+// Each model's name beside its fitted marker (its derived one when it has no fit), clear of every
+// marker and of the front's steps.
+void add_model_labels(Drawing& d, const SpeedAxes& a, const std::vector<analysis::SpeedRow>& rows,
+                      const std::vector<Point>& front, const LabelFont& font) {
+  std::vector<Box> markers;
+  for (size_t i = 1; i < front.size(); ++i) {
+    const Point p = front[i - 1], q = front[i];
+    markers.push_back({std::min(p.x, q.x) - 1.5, std::min(p.y, q.y) - 1.5, std::abs(q.x - p.x) + 3,
+                       std::abs(q.y - p.y) + 3});
+  }
+  for (const auto& r : rows) {
+    const Point p = a.map(*r.ns_per_eval, r.median_rms_de00);
+    markers.push_back(
+        {p.x - kMarkerRadius, p.y - kMarkerRadius, 2 * kMarkerRadius, 2 * kMarkerRadius});
+  }
+  std::vector<PointLabel> labels;
+  for (const auto& s : fresnel::model_specs()) {
+    const analysis::SpeedRow* at = nullptr;
+    for (const auto& r : rows)
+      if (r.model == s.model && (!at || (r.fitted && !at->fitted))) at = &r;
+    if (at)
+      labels.push_back(
+          {a.map(*at->ns_per_eval, at->median_rms_de00), s.name, model_colour(s.model)});
+  }
+  for (auto& shape :
+       place_labels(labels, markers, {kLeft + 2, kTop + 2, kRight - kLeft - 4, kBottom - kTop - 4},
+                    12, font))
+    d.shapes.push_back(std::move(shape));
 }
 
 }  // namespace
 
-Drawing speed_plot(const std::vector<analysis::SpeedRow>& all_rows) {
+Drawing speed_plot(const std::vector<analysis::SpeedRow>& all_rows, const LabelFont& font) {
   // Only the rows with a measured CPU cost have a place on the cost axis.
   std::vector<analysis::SpeedRow> rows;
   std::copy_if(all_rows.begin(), all_rows.end(), std::back_inserter(rows),
@@ -159,9 +186,11 @@ Drawing speed_plot(const std::vector<analysis::SpeedRow>& all_rows) {
   d.height = kHeight;
   const SpeedAxes a = speed_axes(rows);
   add_speed_axes(d, a);
-  add_pareto_front(d, a, rows);
+  const auto front = front_points(a, rows);
+  add_pareto_front(d, front);
   for (const auto& r : rows)
     d.add(marker(a.map(*r.ns_per_eval, r.median_rms_de00), model_colour(r.model), r.fitted));
+  add_model_labels(d, a, rows, front, font);
   add_speed_legend(d);
   return d;
 }
@@ -169,7 +198,7 @@ Drawing speed_plot(const std::vector<analysis::SpeedRow>& all_rows) {
 void write_speed_plot(const std::string& path, const std::vector<analysis::SpeedRow>& rows,
                       const LabelFont& font) {
   const FileType type = file_type(path);
-  write_file_atomic(path, encode(speed_plot(rows), type, font));
+  write_file_atomic(path, encode(speed_plot(rows, font), type, font));
 }
 
 }  // namespace fl::report

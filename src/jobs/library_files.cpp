@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 
 #include "analysis/render/figure_data.h"
 #include "analysis/tables/spread.h"
 #include "analysis/tables/tables.h"
+#include "documents/grouped_gallery.h"
 #include "documents/html.h"
 #include "documents/preset_formats.h"
 #include "documents/table_formats.h"
@@ -14,10 +16,16 @@
 #include "jobs/pictures.h"
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
+#include "util/errors.h"
 #include "util/parallel.h"
+#include "util/suggest.h"
 
 namespace fl::report {
 namespace {
+
+// The cards index.html sets in the page (whole groups, at least this many: a first screen at
+// 1280 px, 4 columns of 2 rows, and the next); the other groups load as they near the screen.
+constexpr size_t kFirstScreenCards = 12;
 
 // The ground truth's colour from 0° to 90° (3 samples per degree), 24 pixels tall.
 constexpr int kStripSamples = 270, kStripHeight = 24;
@@ -150,8 +158,9 @@ std::string readme(const analysis::Context& ctx, const analysis::Library& lib,
   if (gallery) md += "- [gallery.md](gallery.md): a colour strip per page\n";
   md +=
       "- [index.html](index.html): the library as a searchable gallery (colour strip, F0 and F82 "
-      "swatches, flags) "
-      "and every table above, sortable and filterable\n";
+      "swatches, kind, flags) grouped by element, and every table above, sortable and filterable; "
+      "`cards/` holds the groups' cards the page loads as they near the screen, `tables/` the "
+      "large tables it loads when they are opened\n";
   return md;
 }
 
@@ -181,11 +190,102 @@ std::pair<std::string, std::string> consensus_fact(const analysis::Table& t, siz
   return {"kind", value};
 }
 
-// index.html: a gallery card per page (strip, F0/F82 swatches, flags, coverage, errors),
-// searchable, then the library, spread and skipped tables, sortable and filterable.
-std::string library_page(const analysis::Context& ctx, const analysis::Library& lib,
-                         const analysis::Table& t, const std::vector<analysis::Table>& tables,
-                         const std::string& command) {
+// A main-shelf page's book ("Au" of main/Au/nk/Johnson, and of the consensus main/Au/consensus);
+// empty for other shelves, catalog entries and files.
+std::string main_book(const spectral::Material& m) {
+  if (m.origin != spectral::Material::Origin::Page &&
+      m.origin != spectral::Material::Origin::Consensus)
+    return {};
+  if (m.source.rfind("main/", 0) != 0) return {};
+  return m.source.substr(5, m.source.find('/', 5) - 5);
+}
+
+// A book's name as the catalog gives it, its markup removed ("Al<sub>2</sub>O<sub>3</sub> (...)"
+// → "Al2O3 (...)").
+std::string plain(const std::string& book_name) {
+  std::string out;
+  bool tag = false;
+  for (const char c : book_name) {
+    if (c == '<' || c == '>')
+      tag = c == '<';
+    else if (!tag)
+      out += c;
+  }
+  return out;
+}
+
+// "Au (Gold)" → "gold".
+std::string common_name(const std::string& book_name) {
+  const auto open = book_name.find('('), close = book_name.rfind(')');
+  if (open == std::string::npos || close == std::string::npos || close < open) return {};
+  return ascii_lower(book_name.substr(open + 1, close - open - 1));
+}
+
+// Per book of the main shelf, the names and aliases of the catalog entries measured on it
+// ("Al": Aluminum, aluminium, Al).
+std::map<std::string, std::vector<std::string>> catalog_names_by_book(
+    const analysis::Context& ctx) {
+  std::map<std::string, std::vector<std::string>> out;
+  std::vector<spectral::Material> catalog;
+  try {
+    catalog = spectral::read_catalog(ctx.settings().paths);
+  } catch (const InputError&) {
+    return out;  // no catalog: the search keeps the database's names
+  }
+  for (const auto& m : catalog) {
+    if (m.source.rfind("main/", 0) != 0) continue;
+    const std::string book = m.source.substr(5, m.source.find('/', 5) - 5);
+    auto& names = out[book];
+    names.push_back(m.name);
+    names.insert(names.end(), m.aliases.begin(), m.aliases.end());
+  }
+  return out;
+}
+
+// The cards' groups (their book, the element for the main shelf: "Au (Gold)"), kinds and search
+// keywords (the element's symbol, common name and catalog names and aliases), the cards ordered by
+// group: the main shelf's books first, alphabetically, then the other books, then catalog
+// entries and files.
+void group_cards(const analysis::Context& ctx, const analysis::Library& lib,
+                 const analysis::Table& t, std::vector<GalleryEntry>& cards) {
+  std::map<std::string, std::string> main_names;  // consensus rows take their book's name
+  for (const auto& st : lib.rows)
+    if (const auto& m = st.material->material; !m.book_name.empty() && !main_book(m).empty())
+      main_names.emplace(main_book(m), plain(m.book_name));
+  const auto catalog = catalog_names_by_book(ctx);
+  const int kind = analysis::column_index(t, "kind");
+  std::vector<std::pair<std::string, size_t>> order;  // (sort key, card)
+  for (size_t i = 0; i < cards.size(); ++i) {
+    const auto& m = lib.rows[i].material->material;
+    const std::string book = main_book(m);
+    auto& c = cards[i];
+    c.kind = std::get<std::string>(t.rows[i][kind]);
+    c.group = !book.empty() && main_names.count(book) ? main_names[book]
+              : !m.book_name.empty()                  ? plain(m.book_name)
+              : !book.empty()                         ? book
+                                                      : "catalog entries and files";
+    const bool page = m.origin == spectral::Material::Origin::Page ||
+                      m.origin == spectral::Material::Origin::Consensus;
+    order.emplace_back((!page ? "2" : book.empty() ? "1" : "0") + ascii_lower(c.group), i);
+    if (!page) continue;
+    const auto symbol = c.group.substr(0, c.group.find(" ("));
+    c.keywords = {symbol, common_name(c.group)};
+    if (const auto it = catalog.find(book); it != catalog.end())
+      c.keywords.insert(c.keywords.end(), it->second.begin(), it->second.end());
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<GalleryEntry> sorted;
+  for (const auto& [key, i] : order) sorted.push_back(std::move(cards[i]));
+  cards = std::move(sorted);
+}
+
+// index.html, its card scripts and its large tables' scripts: a gallery card per page (strip,
+// F0/F82 swatches, flags, coverage, errors) grouped by element, searchable, then the library,
+// spread and skipped tables, sortable and filterable.
+Files library_page(const analysis::Context& ctx, const analysis::Library& lib,
+                   const analysis::Table& t, const std::vector<analysis::Table>& tables,
+                   const std::string& command) {
   HtmlReport page;
   page.title = "Fresnel Lab preset library";
   page.intro = {"Generated by `" + command +
@@ -193,6 +293,7 @@ std::string library_page(const analysis::Context& ctx, const analysis::Library& 
                     "ground truth (ΔE2000) and each page's flags. The same tables are in CSV, "
                     "Markdown and JSON beside this page.",
                 analysis::setting_note(ctx)};
+  std::vector<GalleryEntry> cards;
   for (size_t i = 0; i < lib.rows.size(); ++i) {
     const auto& st = lib.rows[i];
     auto card = study_card(ctx, st, row_flags(t, i));
@@ -203,13 +304,19 @@ std::string library_page(const analysis::Context& ctx, const analysis::Library& 
         {"coverage",
          fmt::format("{:.4f}{}", c.both, c.uncovered.empty() ? "" : " (" + c.uncovered + ")")});
     card.facts.insert(card.facts.begin(), consensus_fact(t, i));
-    page.gallery.push_back(std::move(card));
+    cards.push_back(std::move(card));
   }
+  group_cards(ctx, lib, t, cards);
+  auto gallery = grouped_gallery(cards, kFirstScreenCards, "cards");
+  page.gallery_fragment = std::move(gallery.html);
+  page.gallery_script = std::move(gallery.script);
   page.tables = tables;
   page.links = {{"README.md", "README.md"},
                 {"library.json", "library.json"},
                 {"library.mtlx", "library.mtlx"}};
-  return html_report(page);
+  Files files = html_report_files(page, "tables");
+  for (auto& f : gallery.files) files.push_back(std::move(f));
+  return files;
 }
 
 }  // namespace
@@ -234,11 +341,12 @@ Files library_files(const analysis::Context& ctx, const analysis::Library& lib, 
     files.emplace_back(c->name + ".md", to_markdown(*c));
   }
   if (with_gallery) files.emplace_back("gallery.md", gallery(ctx, lib, t, files));
-  files.emplace_back("index.html", library_page(ctx, lib, t,
-                                                {t, consensus, kinds, spread,
-                                                 analysis::skip_reasons_table(lib.set.skipped),
-                                                 analysis::skipped_table(lib.set.skipped)},
-                                                command));
+  for (auto& f :
+       library_page(ctx, lib, t,
+                    {t, consensus, kinds, spread, analysis::skip_reasons_table(lib.set.skipped),
+                     analysis::skipped_table(lib.set.skipped)},
+                    command))
+    files.push_back(std::move(f));
   files.emplace_back("README.md", readme(ctx, lib, t, command, with_gallery));
   return files;
 }

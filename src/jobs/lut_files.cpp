@@ -16,6 +16,7 @@
 #include "io/exr.h"
 #include "jobs/lut_texture.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 
 namespace fl::report {
 namespace lut_files {
@@ -454,9 +455,10 @@ std::string ltc_fit_message(const analysis::LtcTable& t) {
 }  // namespace
 
 DfgLayout dfg_layout_from_name(const std::string& name) {
-  if (name == "split-sum") return DfgLayout::SplitSum;
-  if (name == "filament") return DfgLayout::Filament;
-  throw InputError(fmt::format("--layout must be split-sum or filament, not '{}'", name));
+  const std::vector<NameChoice> choices = {{"split-sum", {"splitsum"}}, {"filament", {}}};
+  const auto match = match_name(name, choices);
+  if (!match) throw InputError("--layout: " + unknown_name_message("layout", name, choices));
+  return *match == "filament" ? DfgLayout::Filament : DfgLayout::SplitSum;
 }
 
 std::vector<float> filament_dfg_values(const analysis::DfgTable& t,
@@ -492,13 +494,29 @@ Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress)
       r, ext, layout == DfgLayout::Filament ? "fresnel_lab_dfg_filament" : "fresnel_lab_dfg");
   const auto grid = layout == DfgLayout::Filament ? analysis::filament_dfg_grid(r.size)
                                                   : analysis::dfg_grid(r.size);
-  const auto opts = lut_options(r, progress);
+  // Filament's layout integrates two tables (GGX, then sheen): one bar over both, never restarting.
+  const int stages = layout == DfgLayout::Filament ? 2 : 1;
+  const auto stage = [&](int k) -> analysis::LutProgress {
+    if (!progress) return {};
+    return
+        [&progress, k, stages](int done, int total) { progress(k * total + done, stages * total); };
+  };
+  auto opts = lut_options(r, stage(0));
   const auto t = analysis::dfg_table(grid, opts);
-  if (layout == DfgLayout::SplitSum && ext != ".csv") return split_sum_textures(r, ext, symbol, t);
+  if (layout == DfgLayout::SplitSum && ext != ".csv") {
+    Output o = split_sum_textures(r, ext, symbol, t);
+    if (r.headers && ext == ".exr") {
+      LutRequest h = r;
+      h.out = std::filesystem::path(r.out).replace_extension(".h").string();
+      for (auto& f : split_sum_textures(h, ".h", symbol, t).files) o.files.push_back(std::move(f));
+    }
+    return o;
+  }
   std::string bytes;
   if (layout == DfgLayout::SplitSum) {
     bytes = split_sum_csv(t);
   } else {
+    opts.progress = stage(1);
     const auto sheen = analysis::sheen_dfg_table(grid, opts);
     const auto values = filament_values(t, sheen);
     if (ext == ".csv")
@@ -544,15 +562,18 @@ Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress)
     const std::filesystem::path out(r.out);
     const auto stem = (out.parent_path() / out.stem()).string();
     const CHeader header{symbol, lut_command("ltc", r, symbol)};
-    auto add = [&](const std::string& texture, const ExrImage& img) {
-      CHeader h = header;
-      h.symbol += suffix(texture);
-      o.files.emplace_back(stem + suffix(texture) + ext, texture_bytes(img, ext, h, r.half));
-    };
-    add("ltc_1", matrix_texture(t));
     const auto names = analysis::term_texture_names(false);
     const auto images = moment_textures(t);
-    for (size_t k = 0; k < names.size(); ++k) add(names[k], images[k]);
+    for (const std::string e : {ext, std::string(".h")}) {
+      if (e != ext && !(r.headers && ext == ".exr")) continue;
+      auto add = [&](const std::string& texture, const ExrImage& img) {
+        CHeader h = header;
+        h.symbol += suffix(texture);
+        o.files.emplace_back(stem + suffix(texture) + e, texture_bytes(img, e, h, r.half));
+      };
+      add("ltc_1", matrix_texture(t));
+      for (size_t k = 0; k < names.size(); ++k) add(names[k], images[k]);
+    }
     if (ext == ".exr") o.files.emplace_back(stem + ".csv", ltc_csv(t));
     o.messages.push_back("lut ltc: wrote " + file_list(o.files));
   }
@@ -624,7 +645,7 @@ Output energy_lut(const LutRequest& request, const analysis::LutProgress& progre
 std::string table_error_line(const analysis::Context& ctx,
                              const std::vector<analysis::MaterialStudy>& studies,
                              const LutRequest& r, analysis::Lighting lighting) {
-  const int size = r.size ? r.size : kDefaultSize;
+  const int size = r.size > 0 ? r.size : kDefaultSize;
   const auto storage = r.half ? analysis::TexelStorage::Half : analysis::TexelStorage::Float;
   const auto e =
       analysis::table_error_summary(ctx, studies, analysis::engine_tables(size, storage), lighting);

@@ -39,7 +39,8 @@ struct LutRequest {
   // square number: the slices tile a square atlas) instead of the conductors' E and E_avg.
   bool dielectric = false;
   int slices = analysis::kDielectricSlices;
-  bool half = false;  // textures as half floats (EXR HALF channels; .h: uint16_t bit patterns)
+  bool half = false;     // textures as half floats (EXR HALF channels; .h: uint16_t bit patterns)
+  bool headers = false;  // .exr output: each texture also as a C header beside it (FILE.h, ...)
   // .h output: the C symbol of the first texture's header (a texture after the first adds its
   // suffix, _2, _3, ...); empty: fresnel_lab_dfg, fresnel_lab_dfg_filament, fresnel_lab_ltc,
   // fresnel_lab_ltc_moments, fresnel_lab_energy or fresnel_lab_energy_dielectric.

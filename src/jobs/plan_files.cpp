@@ -24,7 +24,7 @@ namespace {
 
 // The table textures the chosen option reads, as `lut dfg` and `lut ltc` write them at the plan's
 // size and storage: each as EXR and as a C header.
-Files table_files(const analysis::Plan& p, int threads) {
+Files table_files(const analysis::Plan& p, int threads, const TableProgress& progress) {
   std::set<std::string> needed;
   bool dfg = false, ltc = false;
   for (const auto& l : p.scene_luts) {
@@ -40,16 +40,18 @@ Files table_files(const analysis::Plan& p, int threads) {
       if (needed.count(exr)) out.emplace_back(file.string(), bytes);
     }
   };
-  const bool half = p.tables.storage == analysis::TexelStorage::Half;
-  for (const char* ext : {".exr", ".h"}) {
-    const auto request = [&](const char* stem) {
-      LutRequest r{p.tables.size, stem + std::string(ext), analysis::kLutSamples, threads};
-      r.half = half;
-      return r;
-    };
-    if (dfg) keep(dfg_lut(request("dfg")));
-    if (ltc) keep(ltc_lut(request("ltc")));
-  }
+  const auto labelled = [&progress](const std::string& table) -> analysis::LutProgress {
+    if (!progress) return {};
+    return [&progress, table](int done, int total) { progress(table, done, total); };
+  };
+  const auto request = [&](const char* out) {
+    LutRequest r{p.tables.size, out, analysis::kLutSamples, threads};
+    r.half = p.tables.storage == analysis::TexelStorage::Half;
+    r.headers = true;
+    return r;
+  };
+  if (dfg) keep(dfg_lut(request("dfg.exr"), labelled("DFG table")));
+  if (ltc) keep(ltc_lut(request("ltc.exr"), labelled("LTC table")));
   return out;
 }
 
@@ -178,8 +180,9 @@ std::string plan_readme(const analysis::Plan& p) {
 
 }  // namespace
 Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs,
-                 const analysis::Table& reference, const LabelFont& font, int threads) {
-  Files out = table_files(p, threads);
+                 const analysis::Table& reference, const LabelFont& font, int threads,
+                 const TableProgress& progress) {
+  Files out = table_files(p, threads, progress);
   std::set<std::string> includes;
   for (const auto& g : p.scene_choice().groups) {
     if (!includes.insert(plan_include_name(p, g, "glsl")).second) continue;

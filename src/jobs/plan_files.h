@@ -11,6 +11,7 @@
 //                    writes them at 64² (jobs/lut_files)
 //   reference.csv    the functions' expected values for testing a port (analysis/plan/reference.h)
 //   plan.md, plan.json, pareto.svg   the plan and its options' figure (draw/plan_plot)
+#include <functional>
 #include <string>
 
 #include "analysis/plan/plan.h"
@@ -22,9 +23,14 @@ namespace fl::report {
 // The marker replace_folder_atomic leaves in a folder `plan --out` made.
 inline constexpr const char* kPlanMarker = ".fresnel-lab-plan";
 
+// Progress of the tables plan_files integrates: (table, cells done, cells in all), table being
+// "DFG table" or "LTC table".
+using TableProgress = std::function<void(const std::string& table, int done, int total)>;
+
 // Paths relative to the output folder; `reference` is analysis::plan_reference's table; `font` sets
 // the figure's labels. `threads` for the tables (0: every hardware thread).
 Files plan_files(const analysis::Plan& plan, const analysis::PlanCosts& costs,
-                 const analysis::Table& reference, const LabelFont& font, int threads = 0);
+                 const analysis::Table& reference, const LabelFont& font, int threads = 0,
+                 const TableProgress& progress = {});
 
 }  // namespace fl::report

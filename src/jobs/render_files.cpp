@@ -18,6 +18,7 @@
 #include "io/webp.h"
 #include "jobs/pictures.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 
 namespace fl::report {
 namespace {
@@ -66,7 +67,8 @@ struct Scene {
 Scene render_scene(const analysis::Context& ctx, const RenderRequest& r) {
   if (r.env.empty())
     return {analysis::default_environment(),
-            "analytic sky + 18 deg key-light disc containing the view axis (default_environment)",
+            "analytic neutral studio + 18 deg key-light disc containing the view axis "
+            "(default_environment)",
             {}};
   auto env = load_environment(ctx, r.env, r.env_space, r.env_rotate_deg, r.env_exposure_ev);
   Scene s{std::move(env.map),
@@ -210,8 +212,14 @@ ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedM
 // The truth frame's second line names the view, or for a dielectric that it shows the reflection
 // only.
 std::vector<Image8> flip_frames(const ContactSheet& sheet, const analysis::MaterialRender& images,
-                                double scale, const color::DisplayTransform& view, bool reflection,
-                                const LabelFont& font) {
+                                double scale, const color::DisplayTransform& view,
+                                analysis::Backdrop backdrop, const LabelFont& font) {
+  const bool reflection = backdrop == analysis::Backdrop::ReflectionOnMidGrey;
+  const auto values = [&](const analysis::SphereImage& img) {
+    return DisplayValues{img.width, img.height,
+                         analysis::sphere_display_values(view, img, backdrop)};
+  };
+  const DisplayValues truth_values = values(images.truth);
   std::vector<Image8> frames;
   const Image8 truth =
       flip_frame(sheet.truth, "ground truth (spectral)",
@@ -223,8 +231,8 @@ std::vector<Image8> flip_frames(const ContactSheet& sheet, const analysis::Mater
     frames.push_back(flip_frame(
         row.render, row.label,
         fmt::format("ΔE2000 mean {:.2f}, max {:.2f}", row.mean_de2000, row.max_de2000), font));
-    frames.push_back(flip_difference_frame(sheet.truth, row.render, row.de2000, scale, name,
-                                           row.label + ": difference", font));
+    frames.push_back(flip_difference_frame(truth_values, values(images.models[i].image), row.de2000,
+                                           scale, name, row.label + ": difference", font));
   }
   return frames;
 }
@@ -248,7 +256,8 @@ Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial
         encode(heatmap_drawing(mr.de2000, mr.image.width, mr.image.height, title, font, scale),
                FileType::Png, font));
   }
-  const auto frames = flip_frames(sheet, images, scale, ctx.display(), reflection_only(m), font);
+  const auto frames = flip_frames(sheet, images, scale, ctx.display(),
+                                  analysis::backdrop_for(m.material.material_class), font);
   if (r.flip == "gif")
     files.emplace_back(base + ".flip.gif", encode_gif(frames, kFlipDelayMs / 10));
   else
@@ -295,7 +304,8 @@ void check_render_request(const RenderRequest& r) {
   render_model(r);
   if (!r.compare.empty()) parse_models(r.compare);
   if (r.flip != "webp" && r.flip != "gif")
-    throw InputError(fmt::format("--flip {} unknown (webp or gif)", r.flip));
+    throw InputError("--flip: " +
+                     unknown_name_message("flip format", r.flip, {{"webp", {}}, {"gif", {}}}));
 }
 
 bool render_draws_labels(const RenderRequest& r) {

@@ -83,7 +83,8 @@ std::string report_page(const analysis::Context& ctx,
     page.intro.push_back(fmt::format(
         "Flips: click a sphere to toggle between the ground truth and the selected model; hover a "
         "model to preview it. "
-        "GGX roughness {:g} under the analytic sky and key light, {} px, derived parameters. "
+        "GGX roughness {:g} in the analytic neutral studio with its key light, {} px, derived "
+        "parameters. "
         "Dielectrics: {}.",
         kFlipRoughness, kFlipSizePx, analysis::kReflectionOnlyNote));
   page.gallery = catalog_gallery(ctx, studies, presets, figures, flips);
@@ -136,7 +137,9 @@ std::vector<Flip> add_figures(analysis::TableInputs& in, const LabelFont& font, 
   files.emplace_back(
       kRenderedLibraryPlot,
       encode(rendered_library_plot(analysis::rendered_library_rows(
-                 in.rendered_library(), analysis::load_gpu_costs(ctx.settings().paths.gpu_costs))),
+                                       in.rendered_library(),
+                                       analysis::load_gpu_costs(ctx.settings().paths.gpu_costs)),
+                                   font),
              FileType::Png, font));
   auto pictures = reproduce_figures(ctx, studies, font);
   auto flip_files = reproduce_flips(ctx, studies);

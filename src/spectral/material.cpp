@@ -250,20 +250,58 @@ std::vector<std::pair<std::string, std::vector<std::string>>> catalog_names(
   return out;
 }
 
-// " (did you mean 'X'?)" for an unknown material: the nearest catalog name, or for a page path the
-// nearest page on the same shelf and book ("main/Au/nk/Johnston", "main/Au/Johnson").
+// `folder`'s entry spelled `name` ignoring ASCII case ("AU" finds "Au"), if any.
+std::optional<std::string> entry_ignoring_case(const std::string& folder, const std::string& name) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(folder, ec))
+    if (ascii_lower(e.path().filename().string()) == ascii_lower(name))
+      return e.path().filename().string();
+  return std::nullopt;
+}
+
+// The catalog entries one of whose names has `word` as a whole word ("glass" in "glass_bk7"), as
+// " (did you mean one of 'a', 'b'?)", or "" when none has.
+std::string entries_with_word(const std::string& word,
+                              const std::vector<std::vector<std::string>>& entries) {
+  std::vector<std::string> found;
+  const std::string want = ascii_lower(word);
+  for (const auto& names : entries)
+    for (const auto& n : names) {
+      std::string folded = ascii_lower(n);
+      for (char& c : folded) c = c == '-' || c == ' ' ? '_' : c;
+      if (folded.rfind(want + "_", 0) == 0 || folded.ends_with("_" + want) ||
+          folded.find("_" + want + "_") != std::string::npos) {
+        found.push_back(names.front());
+        break;
+      }
+    }
+  if (found.empty()) return "";
+  std::string list;
+  for (const auto& f : found) list += (list.empty() ? "'" : ", '") + f + "'";
+  return " (did you mean one of " + list + "?)";
+}
+
+// " (did you mean 'X'?)" for an unknown material: the catalog entries with the word in their names
+// ("glass"), else the nearest catalog name, or for a page path the nearest page on the same shelf
+// and book, whose folders may be typed in any case ("main/AU/nk/Johnson", "main/Au/Johnson").
 std::string material_hint(const std::string& spec, const DataPaths& paths) {
   std::vector<std::string> candidates;
   std::error_code ec;
   if (spec.find('/') == std::string::npos) {
-    if (fs::is_directory(paths.materials, ec))
-      for (const auto& [file, names] : catalog_names(paths.materials))
-        candidates.insert(candidates.end(), names.begin(), names.end());
+    if (!fs::is_directory(paths.materials, ec)) return "";
+    std::vector<std::vector<std::string>> entries;
+    for (auto& [file, names] : catalog_names(paths.materials)) {
+      candidates.insert(candidates.end(), names.begin(), names.end());
+      entries.push_back(std::move(names));
+    }
+    if (auto word = entries_with_word(spec, entries); !word.empty()) return word;
   } else {
     const auto first = spec.find('/'), second = spec.find('/', first + 1);
-    const std::string book = spec.substr(0, second);
-    if (fs::is_directory(paths.database + "/data/" + book, ec))
-      candidates = list_pages(paths.database, book);
+    const auto shelf = entry_ignoring_case(paths.database + "/data", spec.substr(0, first));
+    const auto book = shelf ? entry_ignoring_case(paths.database + "/data/" + *shelf,
+                                                  spec.substr(first + 1, second - first - 1))
+                            : std::nullopt;
+    if (book) candidates = list_pages(paths.database, *shelf + "/" + *book);
   }
   return did_you_mean(spec, candidates);
 }

@@ -67,6 +67,12 @@ class YamlBuilder {
     if (parser_.error == YAML_MEMORY_ERROR) throw std::bad_alloc();
     std::string what = parser_.problem ? parser_.problem : "syntax error";
     if (parser_.context) what = std::string(parser_.context) + ", " + what;
+    // A tab where YAML expects indentation or a token: libyaml's "found character that cannot
+    // start any token" names neither the character nor the rule.
+    const size_t at = parser_.problem_mark.index;
+    if (parser_.error == YAML_SCANNER_ERROR && at < text_.size() && text_[at] == '\t')
+      what = "a tab at column " + std::to_string(parser_.problem_mark.column + 1) +
+             ": YAML indents with spaces, not tabs";
     // The reader (bad UTF-8, control bytes) gives a byte offset, not a mark.
     int line = static_cast<int>(parser_.problem_mark.line);
     if (parser_.error == YAML_READER_ERROR) {

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "analysis/render/render.h"
+#include "color/rgb_space.h"
 #include "quadrature.h"
 #include "util/errors.h"
 
@@ -53,6 +54,33 @@ LatLongImage test_sky(int w, int h) {
     return color::Rgb{0.2 + 0.6 * t, 0.3 + 0.3 * t,
                       0.9 - 0.5 * t + 0.1 * std::sin(2 * kPi * x / w)};
   });
+}
+
+// The default environment is a neutral studio: its mean radiance over every direction, and over
+// the upper hemisphere a sphere reflects above its horizon, has the chromaticity of the working
+// space's white. ACEScg's primaries and its white (D60, x 0.32168, y 0.33767) are those published
+// in ACES S-2014-004; a tinted sky (a blue zenith of an outdoor scene) would put
+// the mean off white, and gold reflecting it olive.
+TEST(Environment, DefaultIsANeutralStudio) {
+  constexpr double kChromaticityTol = 1e-3;  // a third of a just-noticeable step of white
+  const auto env = analysis::default_environment();
+  const auto to_xyz = color::rgb_to_xyz_from_primaries({0.713, 0.293}, {0.165, 0.830},
+                                                       {0.128, 0.044}, {0.32168, 0.33767});
+  for (const double theta_end : {kPi, kPi / 2}) {
+    double mean[3];
+    for (int c = 0; c < 3; ++c)
+      mean[c] = test::integrate_sphere(
+          [&](double x, double y, double z) {
+            const auto l = analysis::environment_radiance(env, Vec3{x, z, y});  // quadrature z: up
+            return c == 0 ? l.r : c == 1 ? l.g : l.b;
+          },
+          theta_end);
+    const auto xyz = to_xyz * color::Rgb{mean[0], mean[1], mean[2]};
+    const double sum = xyz.X + xyz.Y + xyz.Z;
+    EXPECT_GT(mean[1], 0.1 * theta_end) << theta_end;  // lit, not black
+    EXPECT_NEAR(xyz.X / sum, 0.32168, kChromaticityTol) << theta_end;
+    EXPECT_NEAR(xyz.Y / sum, 0.33767, kChromaticityTol) << theta_end;
+  }
 }
 
 TEST(Environment, OrientationIsOpenExrsLatLongMap) {

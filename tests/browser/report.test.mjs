@@ -2,13 +2,16 @@
 // puppeteer-core): the page loads with no console errors, failed requests or network access; a
 // table sorts when its header is clicked; the gallery search narrows the cards; a flip toggles a
 // sphere between the truth and a model. Saves a screenshot. With --library, the page of a preset
-// library: the library table sorts, the search narrows the cards to one metal's pages (no flips).
+// library: the library table sorts; the first screen holds a few element groups and scrolling
+// loads the rest; the search finds an element's pages by symbol ("Au"), common name ("gold") and
+// alias ("aluminium") and kinds by name ("consensus"); class labels stay on one line; the page's
+// bytes and load times are printed (not asserted: timings are not tests).
 // At 1280 and 390 px wide the page does not overflow horizontally; with --top PREFIX the top of the
 // page at each width is saved as PREFIX-1280.png and PREFIX-390.png. The report (not the library)
 // opens with its summary, shows η on dielectric cards and, with --lookdev, the look-dev sheets.
 //   node report.test.mjs --html DIR/index.html --screenshot FILE.png [--top PREFIX] [--library]
 //        [--lookdev] [--chromium PATH]
-import { existsSync } from 'node:fs';
+import { existsSync, statSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
 import puppeteer from 'puppeteer-core';
 
@@ -52,7 +55,8 @@ async function tableSorts(page) {
   const table = library ? 'library' : 'schlick';
   // A DOM click: images loading above the table move it between a scroll and a mouse click.
   await page.$eval(`#t-${table} > summary`, (s) => s.click());
-  const header = await page.$(`#table-${table} thead th:nth-child(4)`);
+  // A large table is loaded from its script when its section opens.
+  const header = await page.waitForSelector(`#table-${table} thead th:nth-child(4)`, { timeout: 30000 });
   const name = await header.evaluate((th) => th.textContent.trim());
   const before = await column(page, `table-${table}`, name);
   await header.click();
@@ -65,6 +69,56 @@ async function tableSorts(page) {
         `a second click sorts it descending (${desc[0]} first)`);
   const state = await header.evaluate((th) => th.getAttribute('aria-sort'));
   check(state === 'descending', `the header shows the order (aria-sort=${state})`);
+}
+
+// The names of the cards shown after typing `query` into the gallery search, once every group
+// the search shows has loaded its cards.
+async function search(page, query) {
+  await page.$eval('#gallery-filter', (g, q) => { g.value = q; g.dispatchEvent(new Event('input')); }, query);
+  await page.waitForFunction(() => document.querySelectorAll('.group:not([hidden]) .gallery[data-src]').length === 0,
+                             { timeout: 20000 });
+  const names = await page.$$eval('.card', (cards) => cards.filter((c) => !c.hidden && !c.closest('[hidden]'))
+    .map((c) => ({ id: c.id, name: c.querySelector('h3').firstChild.textContent, cls: c.querySelector('.cls').textContent,
+                   kind: Array.from(c.querySelectorAll('.facts dt')).map((d) => d.textContent) })));
+  const count = await page.$eval('#gallery-count', (e) => e.textContent);
+  return { names, count };
+}
+
+// A library page as it loads, before anything scrolls: a few groups' cards, the rest left to load
+// as they near the screen.
+async function firstScreen(page) {
+  const at = await page.evaluate(() => ({
+    cards: document.querySelectorAll('.card').length,
+    index: JSON.parse(document.getElementById('gallery-index').textContent).length,
+    lazy: document.querySelectorAll('.gallery[data-src]').length,
+    groups: Array.from(document.querySelectorAll('.group > h3')).map((h) => h.firstChild.textContent.trim()),
+  }));
+  check(at.lazy > 0 && at.cards < at.index, `the first screen holds ${at.cards} of ${at.index} cards; ${at.lazy} groups load later (groups: ${at.groups.join(', ')})`);
+  return at;
+}
+
+// The search finds an element by symbol, common name and alias, kinds by their name only;
+// scrolling down loads every group.
+async function libraryGallery(page, at) {
+  for (const [query, book] of [['gold', 'main/Au/'], ['Au', 'main/Au/'], ['aluminium', 'main/Al/']]) {
+    const r = await search(page, query);
+    const pages = await page.evaluate((b) => JSON.parse(document.getElementById('gallery-index').textContent)
+      .filter((e) => e[0].startsWith('m-' + b.replace(/\//g, '_'))).length, book);
+    const all = r.names.every((n) => n.id.startsWith('m-' + book.replace(/\//g, '_')));
+    check(r.names.length > 1 && all && r.names.length === pages, `search "${query}" shows ${r.names.length} cards, the ${pages} of ${book} ("${r.count}"; ${r.names.slice(0, 4).map((n) => n.name).join(', ')}, …)`);
+    console.log(`search ${query}: ${r.count}; ${r.names.map((n) => n.name).join(', ')}`);
+  }
+  const c = await search(page, 'consensus');
+  check(c.names.length > 0 && c.names.length < at.index / 4 && c.names.every((n) => n.kind.includes('consensus')),
+        `search "consensus" shows the ${c.names.length} consensus cards only ("${c.count}")`);
+  await search(page, '');
+  await page.evaluate(() => window.scrollTo(0, document.scrollingElement.scrollHeight));
+  await page.waitForFunction(() => { window.scrollTo(0, document.scrollingElement.scrollHeight); return document.querySelectorAll('.gallery[data-src]').length === 0; },
+                             { timeout: 20000, polling: 200 });
+  const loaded = await page.$$eval('.card', (cards) => cards.length);
+  check(loaded === at.index, `scrolling down loads every group (${loaded} of ${at.index} cards)`);
+  const labels = await page.$$eval('.card .cls', (ls) => ls.map((l) => l.getClientRects().length));
+  check(labels.every((n) => n === 1), `every class label sits on one line (${labels.length} labels)`);
 }
 
 async function galleryFilters(page) {
@@ -187,8 +241,20 @@ async function main() {
       i.loading = 'eager';
       return i.decode().catch(() => {});
     })));
+    if (library) {
+      const t = await page.evaluate(() => {
+        const n = performance.getEntriesByType('navigation')[0];
+        const paint = performance.getEntriesByType('paint').find((p) => p.name === 'first-contentful-paint');
+        return { dcl: n.domContentLoadedEventEnd, load: n.loadEventEnd, fcp: paint ? paint.startTime : NaN };
+      });
+      const bytes = statSync(html).size;
+      console.log(`first screen at 1280 px: index.html ${bytes} bytes, first contentful paint ${t.fcp.toFixed(0)} ms, ` +
+                  `DOMContentLoaded ${t.dcl.toFixed(0)} ms, load ${t.load.toFixed(0)} ms`);
+    }
+    const first = library ? await firstScreen(page) : null;
     await tableSorts(page);
-    await galleryFilters(page);
+    if (library) await libraryGallery(page, first);
+    else await galleryFilters(page);
     if (!library) await flipToggles(page);
     if (!library) await structure(page);
     await widths(page);

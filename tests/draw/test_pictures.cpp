@@ -553,7 +553,7 @@ TEST(Figures, CurveAndSpeedFiguresHaveTheirSizes) {
   std::vector<analysis::SpeedRow> rows{
       {fresnel::model_of<fresnel::models::Schlick>, false, 0.5, 1.6, 3.0, false},
       {fresnel::model_of<fresnel::models::F82>, true, 1.5, 0.6, 2.0, true}};
-  const auto speed = draw_png(report::speed_plot(rows), font);
+  const auto speed = draw_png(report::speed_plot(rows, font), font);
   EXPECT_EQ(speed.width, 960);
   EXPECT_EQ(speed.height, 560);
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <variant>
 
 #include "draw/flip.h"
 #include "io/gif.h"
@@ -78,21 +79,59 @@ TEST(Webp, LosslessFramesLoopForeverDelaysAndSameBytes) {
   EXPECT_THROW(report::decode_webp("RIFF0000WEBPjunk", "x.webp"), InputError);
 }
 
-// The difference frame's arithmetic: 128 + 32 × (model − truth) per channel, clamped; the panels'
-// 2 × 2 means rounded half up.
+// The difference frame's arithmetic: 128 + 32 × 255 × (model − truth) per channel of the
+// display-encoded floats, rounded and clamped; the panels' 2 × 2 means rounded half up. A
+// difference under half a code, which rounding both images to codes would show as 0 or ±32, stays
+// near mid grey.
 TEST(FlipFrames, SignedDifferenceAndHalfSize) {
-  Image8 truth(2, 2, Rgb8{100, 100, 100}), model(2, 2, Rgb8{103, 100, 90});
-  model.set(1, 1, {255, 0, 116});
-  model.set(1, 0, {101, 99, 100});
+  const auto values = [](std::vector<float> rgb) { return report::DisplayValues{2, 2, rgb}; };
+  const float t = 0.5f, code = 1.0f / 255;
+  const auto truth = values(std::vector<float>(12, t));
+  const auto model = values({t + 3 * code, t, t - 10 * code,       // +3, 0, −10 codes
+                             t + code, t - code, t,                // ±1 code
+                             t + 0.2f * code, t - 0.3f * code, t,  // under half a code
+                             1.0f, 0.0f, t + 16 * code});          // clips
   const Image8 d = report::signed_difference(truth, model);
-  EXPECT_EQ(d.at(0, 0), (Rgb8{224, 128, 0}));   // +3 → 128 + 96, 0 → 128, −10 clips
-  EXPECT_EQ(d.at(1, 1), (Rgb8{255, 0, 255}));   // +155, −100 and +16 clip
-  EXPECT_EQ(d.at(1, 0), (Rgb8{160, 96, 128}));  // ±1 code: a step of 32
+  EXPECT_EQ(d.at(0, 0), (Rgb8{224, 128, 0}));
+  EXPECT_EQ(d.at(1, 0), (Rgb8{160, 96, 128}));
+  EXPECT_EQ(d.at(0, 1), (Rgb8{134, 118, 128}));  // 128 + 6.4 and 128 − 9.6, rounded
+  EXPECT_EQ(d.at(1, 1), (Rgb8{255, 0, 255}));
   const Image8 h = report::half_size(d);
   ASSERT_EQ(h.width, 1);
-  EXPECT_EQ(h.at(0, 0), (Rgb8{(2 * 224 + 160 + 255 + 2) / 4, (2 * 128 + 96 + 0 + 2) / 4,
-                              (0 + 0 + 128 + 255 + 2) / 4}));
-  EXPECT_THROW(report::signed_difference(truth, Image8(3, 2)), std::invalid_argument);
+  EXPECT_EQ(h.at(0, 0), (Rgb8{(224 + 160 + 134 + 255 + 2) / 4, (128 + 96 + 118 + 0 + 2) / 4,
+                              (0 + 128 + 128 + 255 + 2) / 4}));
+  EXPECT_THROW(report::signed_difference(truth, report::DisplayValues{3, 2, {}}),
+               std::invalid_argument);
+}
+
+// Captions stay legible at every frame size: at the GIF's 256 px as at 512 px, every text of a
+// difference frame and of a model frame is at least kFlipMinTextPx and, measured in the font, fits
+// inside the frame (a long model name gives way to a shorter wording rather than to 5 px text).
+TEST(FlipFrames, CaptionsLegibleAtEverySize) {
+  const report::LabelFont font;
+  for (const int size : {256, 512}) {
+    const report::DisplayValues grey{size, size, std::vector<float>(3 * size * size, 0.5f)};
+    const std::vector<double> de(static_cast<size_t>(size) * size, 0.5);
+    const std::string name = "generalized_schlick";
+    const auto diff = report::flip_difference_drawing(grey, grey, de, 2.0, name,
+                                                      name + " (rendered): difference", font);
+    const auto frame = report::flip_frame_drawing(Image8(size, size), name + " (rendered)",
+                                                  "ΔE2000 mean 0.42, max 1.87", font);
+    int texts = 0;
+    for (const auto* d : {&diff, &frame})
+      for (const auto& shape : d->shapes)
+        if (const auto* t = std::get_if<report::Text>(&shape)) {
+          ++texts;
+          EXPECT_GE(t->size_px, report::kFlipMinTextPx) << size << ": " << t->utf8;
+          const double w = report::text_width_px(t->utf8, t->size_px, font);
+          const double left = t->align == report::Align::Left    ? t->x
+                              : t->align == report::Align::Right ? t->x - w
+                                                                 : t->x - w / 2;
+          EXPECT_GE(left, 0) << size << ": " << t->utf8;
+          EXPECT_LE(left + w, size) << size << ": " << t->utf8;
+        }
+    EXPECT_EQ(texts, 12) << size;  // 2 band lines + 2 × (caption + 3 ramp labels); 2 band lines
+  }
 }
 
 // A sky: a smooth two-dimensional gradient from warm grey at the bottom to blue at the top, with

@@ -50,7 +50,8 @@ TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
       const auto p = report::sheet_tile(s, r, col);
       return img.at(int(p.x) + dx, int(p.y) + dy);
     };
-    EXPECT_EQ(at(0, n / 2, n / 2), (Rgb8{10, 200, 10}));
+    // The truth once, left of the first row; the later rows' first column stays empty.
+    EXPECT_EQ(at(0, n / 2, n / 2), (r == 0 ? Rgb8{10, 200, 10} : Rgb8{255, 255, 255}));
     EXPECT_EQ(at(1, n / 2, n / 2), s.rows[r].render.at(0, 0));
     EXPECT_EQ(at(2, n / 2, n / 2), report::inferno(s.rows[r].de2000[1] / scale));
     EXPECT_EQ(at(2, n - 1, n - 1), report::inferno(s.rows[r].de2000[1] / scale));
@@ -58,6 +59,10 @@ TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
   EXPECT_EQ(img.at(int(report::sheet_tile(s, 0, 2).x), int(report::sheet_tile(s, 0, 2).y)),
             (Rgb8{235, 235, 235}));
   EXPECT_GT(report::sheet_tile(s, 1, 0).y, report::sheet_tile(s, 0, 0).y + n);
+  int truth_pixels = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) truth_pixels += img.at(x, y) == Rgb8{10, 200, 10};
+  EXPECT_EQ(truth_pixels, n * n);  // one truth tile on the sheet
 }
 
 // Tiles narrower than their labels: every label of a row ends before the next one begins, as the
@@ -245,7 +250,8 @@ TEST(RenderCli, FlipFormats) {
   EXPECT_EQ(decoded.delays_cs, std::vector<int>(3, 90));
   const auto bad = run("png");
   EXPECT_EQ(bad.status, 2);
-  EXPECT_EQ(bad.err, "fresnel-lab: error: --flip png unknown (webp or gif)\n");
+  EXPECT_EQ(bad.err,
+            "fresnel-lab: error: --flip: unknown flip format 'png' (expected webp or gif)\n");
   EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/g.flip.png"));
 }
 

@@ -163,7 +163,8 @@ void add_consensus_columns(Table& t, const std::vector<MaterialStudy>& studies,
     row.insert(row.end(),
                {m.origin == spectral::Material::Origin::Page
                     ? std::string(spectral::to_string(m.page_class.kind))
-                    : std::string(),
+                : m.origin == spectral::Material::Origin::Catalog ? std::string("catalog")
+                                                                  : std::string("file"),
                 m.page_class.detail, d ? d->f0_de00 : NAN, d ? d->f82_de00 : NAN,
                 std::string(d ? (d->outlier ? "yes" : "no") : ""), d ? d->reason : std::string(),
                 NAN, NAN, NAN, NAN, std::string(), std::string(), std::string(), std::string()});
@@ -210,9 +211,10 @@ Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studie
       "reader dropped or merged outside 360-830 nm.");
   if (consensus) {
     t.notes.push_back(
-        "kind: the page's kind from the database catalog (docs/consensus.md); consensus rows "
-        "(source GROUP/consensus, named by the element's common name) are the per-wavelength "
-        "median of the group's bulk pages' reflectance at "
+        "kind: the page's kind from the database catalog (docs/consensus.md), catalog for a "
+        "catalog entry, file for a file; consensus rows (source GROUP/consensus, named by the "
+        "element's common name) are the per-wavelength median of the group's bulk pages' "
+        "reflectance at "
         "0° and arccos(1/7); consensus_f0_de00, consensus_f82_de00: a page's ΔE2000 from its "
         "group's consensus; spread_*: a consensus row's uncertainty, the median and largest "
         "distance of its bulk pages, and the lowest and highest F0 and F82 of each channel over "

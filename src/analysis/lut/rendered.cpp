@@ -13,6 +13,7 @@
 #include "fresnel/registered_models.h"
 #include "util/errors.h"
 #include "util/parallel.h"
+#include "util/suggest.h"
 
 namespace fl::analysis {
 
@@ -31,9 +32,15 @@ const char* lighting_name(Lighting l) {
 }
 
 Lighting lighting_from_name(const std::string& name) {
+  std::vector<NameChoice> choices;
   for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area})
-    if (name == lighting_name(l)) return l;
-  throw InputError(fmt::format("unknown lighting '{}' (expected punctual, ibl or area)", name));
+    choices.push_back({lighting_name(l), {}});
+  choices[1].aliases = {"dfg", "split-sum"};
+  choices[2].aliases = {"ltc"};
+  if (const auto match = match_name(name, choices))
+    for (Lighting l : {Lighting::Punctual, Lighting::Ibl, Lighting::Area})
+      if (*match == lighting_name(l)) return l;
+  throw InputError(unknown_name_message("lighting", name, choices));
 }
 
 const fresnel::LightingSupport& lighting_support(Model m, Lighting l) {

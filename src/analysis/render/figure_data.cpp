@@ -135,6 +135,11 @@ bool reflection_only(spectral::MaterialClass c) {
 
 std::vector<std::uint8_t> sphere_display(const color::DisplayTransform& view,
                                          const SphereImage& img, Backdrop backdrop) {
+  return codes(sphere_display_values(view, img, backdrop));
+}
+
+std::vector<float> sphere_display_values(const color::DisplayTransform& view,
+                                         const SphereImage& img, Backdrop backdrop) {
   std::vector<float> working(img.rgb.size());
   for (size_t k = 0; k < img.alpha.size(); ++k)
     for (int c = 0; c < 3; ++c)
@@ -142,7 +147,7 @@ std::vector<std::uint8_t> sphere_display(const color::DisplayTransform& view,
           img.rgb[3 * k + c] +
           (backdrop == Backdrop::Dark ? (1.0f - img.alpha[k]) * kDarkBackdrop : kMidGreyBackdrop);
   view.apply(working);
-  return codes(working);
+  return working;
 }
 
 }  // namespace fl::analysis

@@ -107,8 +107,12 @@ bool reflection_only(spectral::MaterialClass c);
 inline constexpr const char* kReflectionOnlyNote =
     "reflection only (no transmission), added over mid grey 0.18";
 
-// A render on `backdrop` passed through `view` (an OCIO display and view), as 8-bit codes (3 per
-// pixel, the render's layout).
+// A render on `backdrop` passed through `view` (an OCIO display and view), as display-encoded
+// floats in [0, 1] (3 per pixel, the render's layout), before any rounding to codes.
+std::vector<float> sphere_display_values(const color::DisplayTransform& view,
+                                         const SphereImage& img,
+                                         Backdrop backdrop = Backdrop::Dark);
+// sphere_display_values as 8-bit codes.
 std::vector<std::uint8_t> sphere_display(const color::DisplayTransform& view,
                                          const SphereImage& img,
                                          Backdrop backdrop = Backdrop::Dark);

@@ -240,9 +240,9 @@ std::vector<SphereImage> render_with(const S& light, const std::vector<const Fre
 
 Environment default_environment() {
   Environment e;
-  e.zenith = {0.15, 0.25, 0.55};
-  e.horizon = {0.60, 0.60, 0.60};
-  e.ground = {0.08, 0.07, 0.06};
+  e.zenith = {0.80, 0.80, 0.80};
+  e.horizon = {0.40, 0.40, 0.40};
+  e.ground = {0.05, 0.05, 0.05};
   e.key_direction = brdf::normalize(Vec3{-0.15, 0.20, 1.0});
   e.key_half_angle_deg = 18.0;
   e.key_radiance = {1.0, 1.0, 1.0};

@@ -7,7 +7,7 @@
 // odd image size the centre pixel's sample point is exactly (0, 0): normal = view = +z.
 //
 // Analytic environment (radiance in working-space RGB, documented in default_environment()):
-//   sky: for directions above the horizon, horizon colour → zenith colour as √(d.y);
+//   studio: for directions above the horizon, horizon colour → zenith colour as √(d.y);
 //   ground: below the horizon, horizon/2 → ground colour within 7° of the horizon, then constant;
 //   key light: a disc of uniform radiance and half-angle δ around key_direction, replacing the sky
 //   inside it. key_direction is tilted by less than δ from +z, so the mirror reflection of the
@@ -40,8 +40,10 @@ struct Environment {
   color::Rgb key_radiance;
 };
 
-// zenith (0.15, 0.25, 0.55), horizon (0.60, 0.60, 0.60), ground (0.08, 0.07, 0.06); key light
-// radiance (1, 1, 1) — the working space's white — of half-angle 18° around
+// A neutral studio: every radiance a multiple of the working space's white (1, 1, 1), so that
+// the environment lends no colour of its own and metals show theirs (silver warmer than aluminium,
+// gold yellow above the horizon as below). An overhead softbox gradient, zenith 0.80, falling to
+// 0.40 at the horizon; a dark grey floor 0.05; a key light of radiance 1 and half-angle 18° around
 // normalize(−0.15, 0.20, 1) (14.0° up-left of the view axis).
 Environment default_environment();
 

@@ -9,6 +9,7 @@
 #include "analysis/lut/lut_layout.h"
 #include "fresnel/registered_models.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 
 namespace fl::analysis {
 
@@ -16,9 +17,10 @@ using fresnel::Model;
 using fresnel::ModelSpec;
 
 ShaderLanguage shader_language_from_name(const std::string& name) {
-  if (name == "glsl") return ShaderLanguage::Glsl;
-  if (name == "hlsl") return ShaderLanguage::Hlsl;
-  throw InputError(fmt::format("unknown shader language '{}' (expected glsl or hlsl)", name));
+  const std::vector<NameChoice> choices = {{"glsl", {}}, {"hlsl", {}}};
+  const auto match = match_name(name, choices);
+  if (!match) throw InputError(unknown_name_message("shader language", name, choices));
+  return *match == "glsl" ? ShaderLanguage::Glsl : ShaderLanguage::Hlsl;
 }
 
 std::string shader_function_name(Model m, Lighting l) {
@@ -452,9 +454,10 @@ std::string shader_text(const ShaderRequest& r) {
   check_lut_size(r.size);
   if (r.harness) return shader_cost_harness(model, lighting);
   ShaderDocument d{lang, r.size, r.standalone, {}, {}};
-  d.command = fmt::format("fresnel-lab shader {} --lang {} --lighting {} --size {}{}",
-                          fresnel::model_spec(model).name, r.lang, lighting_name(lighting), r.size,
-                          r.standalone ? " --standalone" : "");
+  d.command =
+      fmt::format("fresnel-lab shader {} --lang {} --lighting {} --size {}{}",
+                  fresnel::model_spec(model).name, lang == ShaderLanguage::Glsl ? "glsl" : "hlsl",
+                  lighting_name(lighting), r.size, r.standalone ? " --standalone" : "");
   return shader_document(model, {lighting}, d);
 }
 
