@@ -248,8 +248,10 @@ async function main() {
         return { dcl: n.domContentLoadedEventEnd, load: n.loadEventEnd, fcp: paint ? paint.startTime : NaN };
       });
       const bytes = statSync(html).size;
-      console.log(`first screen at 1280 px: index.html ${bytes} bytes, first contentful paint ${t.fcp.toFixed(0)} ms, ` +
-                  `DOMContentLoaded ${t.dcl.toFixed(0)} ms, load ${t.load.toFixed(0)} ms`);
+      // Informational: a timing the browser did not record (null from NaN) prints as n/a.
+      const ms = (v) => (typeof v === 'number' && Number.isFinite(v) ? v.toFixed(0) : 'n/a');
+      console.log(`first screen at 1280 px: index.html ${bytes} bytes, first contentful paint ${ms(t.fcp)} ms, ` +
+                  `DOMContentLoaded ${ms(t.dcl)} ms, load ${ms(t.load)} ms`);
     }
     const first = library ? await firstScreen(page) : null;
     await tableSorts(page);

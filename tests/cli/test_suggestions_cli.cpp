@@ -70,7 +70,7 @@ TEST(Suggestions, EnumerationsInAnyCase) {
   ASSERT_EQ(shortname.status, 0) << shortname.err;
   EXPECT_EQ(shortname.out, node.out);
   test::TempDir tmp;
-  const std::string lut = " lut dfg --size 8 --samples 16 --out '" + tmp.path();
+  const std::string lut = " lut dfg --size 8 --samples 256 --out '" + tmp.path();
   ASSERT_EQ(run_command(cli() + " -q" + lut + "/a.inc' --layout filament").status, 0);
   const auto f = run_command(cli() + " -q" + lut + "/b.inc' --layout Filament");
   ASSERT_EQ(f.status, 0) << f.err;
@@ -105,7 +105,7 @@ TEST(Suggestions, SubcommandHelp) {
 // (the second table does not restart at 0 %), ending at 100 % once.
 TEST(Suggestions, FilamentProgressNeverRestarts) {
   test::TempDir tmp;
-  const auto r = run_command(cli() + " lut dfg --layout filament --size 16 --samples 16 --out '" +
+  const auto r = run_command(cli() + " lut dfg --layout filament --size 16 --samples 256 --out '" +
                              tmp.path() + "/d.inc'");
   ASSERT_EQ(r.status, 0) << r.err;
   const std::regex line(R"(lut dfg: +(\d+)%)");
