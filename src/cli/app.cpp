@@ -223,6 +223,27 @@ void add_footer(CLI::App& app, const std::string& footer) {
 }
 
 // The options every command shares, into g (whose defaults are set).
+// The display and views of every picture.
+void add_picture_options(CLI::App& app, analysis::Settings& s) {
+  app.add_option("--display", s.view.display,
+                 "OpenColorIO display of every picture (default: sRGB; with --ocio-config, any the "
+                 "config has)")
+      ->check(non_empty());
+  app.add_option("--view", s.view.view,
+                 "OpenColorIO view of renders, flips and contact sheets (default: ACES 1.0 - SDR "
+                 "Video, or with --ocio-config the config's default view of the display; without "
+                 "a config also Un-tone-mapped)")
+      ->check(non_empty());
+  app.add_option("--reflectance-view", s.reflectance_view,
+                 "OpenColorIO view of reflectance colours: strips and swatches (default: "
+                 "Un-tone-mapped, reflectance 1 as display white)")
+      ->check(non_empty());
+  app.add_option("--exposure", s.view.exposure_ev,
+                 "stops applied to renders before the view (EXRs, tables and every ΔE2000 stay "
+                 "scene-linear)")
+      ->capture_default_str();
+}
+
 void add_global_options(CLI::App& app, GlobalOptions& g) {
   auto& s = g.settings;
   app.add_option(
@@ -259,23 +280,7 @@ void add_global_options(CLI::App& app, GlobalOptions& g) {
                  "white of the --space colour space of the config: ACES or an illuminant name "
                  "(default: the built-in "
                  "space whose matrix it has, else D65)");
-  app.add_option("--display", s.view.display,
-                 "OpenColorIO display of every picture (default: sRGB; with --ocio-config, any the "
-                 "config has)")
-      ->check(non_empty());
-  app.add_option("--view", s.view.view,
-                 "OpenColorIO view of renders, flips and contact sheets (default: ACES 1.0 - SDR "
-                 "Video, or with --ocio-config the config's default view of the display; without "
-                 "a config also Un-tone-mapped)")
-      ->check(non_empty());
-  app.add_option("--reflectance-view", s.reflectance_view,
-                 "OpenColorIO view of reflectance colours: strips and swatches (default: "
-                 "Un-tone-mapped, reflectance 1 as display white)")
-      ->check(non_empty());
-  app.add_option("--exposure", s.view.exposure_ev,
-                 "stops applied to renders before the view (EXRs, tables and every ΔE2000 stay "
-                 "scene-linear)")
-      ->capture_default_str();
+  add_picture_options(app, s);
   app.add_flag("-q,--quiet", g.quiet, "no progress or warnings on stderr");
   app.add_option("--min-coverage", g.min_coverage,
                  "refuse materials named explicitly, skip pages matched by a glob, whose data "

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "analysis/plan/plan.h"
+#include "analysis/plan/reference.h"
 #include "cli/app.h"
 #include "documents/plan_report.h"
 #include "draw/plan_plot.h"
@@ -92,8 +93,11 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
       if (!bar) bar = periodic_progress(g, "plan: " + table + " cells ", 2);
       bar(done, total);
     };
-    report::replace_folder_atomic(a.out, report::plan_files(p, costs, *font, 0, table_progress),
-                                  report::kPlanMarker);
+    report::replace_folder_atomic(
+        a.out,
+        report::plan_files(p, costs, analysis::plan_reference(ctx, studies, p), *font, 0,
+                           table_progress),
+        report::kPlanMarker);
     progress(g, fmt::format("plan: wrote {} ({})", a.out, p.scene_choice().name));
     return 0;
   }

@@ -3,13 +3,42 @@
 
 #include <memory>
 
+#include "analysis/plan/reference.h"
 #include "analysis/shader/shader.h"
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
+#include "documents/table_formats.h"
+#include "fresnel/registered_models.h"
+#include "util/errors.h"
 
 namespace fl::cli {
 
-void add_shader_command(CLI::App& app, GlobalOptions&, Runner& selected) {
+namespace {
+
+// `--reference MATERIAL... [--roughness R...]`: the reference values instead of the shader.
+struct ReferenceArgs {
+  std::vector<std::string> materials;
+  std::vector<double> roughness;
+};
+
+int print_reference(const GlobalOptions& g, const analysis::ShaderRequest& r,
+                    const ReferenceArgs& a) {
+  const auto model = fresnel::model_from_name(r.model).model;
+  analysis::check_lut_size(r.size);
+  const auto lighting = analysis::lighting_from_name(r.lighting);
+  for (double x : a.roughness)
+    if (!(x >= 0.0 && x <= 1.0))
+      throw InputError(fmt::format("--roughness {} out of range (0 to 1)", x));
+  const auto ctx = make_context(g);
+  const auto ms = load_many(g, ctx, a.materials);
+  fmt::print("{}", report::to_csv(analysis::model_reference(ctx, ms, model, lighting, a.roughness,
+                                                            analysis::engine_tables(r.size))));
+  return 0;
+}
+
+}  // namespace
+
+void add_shader_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand("shader",
                                  "a self-describing shader include for a Fresnel model, with the "
                                  "lookup-table read under ibl and area");
@@ -30,8 +59,19 @@ void add_shader_command(CLI::App& app, GlobalOptions&, Runner& selected) {
                 "a GLSL compute shader around the function, inputs from a uniform block (what "
                 "scripts/gpu_costs.sh "
                 "compiles and counts)");
-  sub->callback([&selected, r] {
-    selected = [r] {
+  auto ref = std::make_shared<ReferenceArgs>();
+  sub->add_option("--reference", ref->materials,
+                  "MATERIAL...: instead of the shader, reference values for testing a port (CSV: "
+                  "the function's expected RGB from the default tables with each material's "
+                  "derived parameters, the spectral truth, their ΔE2000); " +
+                      std::string(kMaterialsHelp));
+  sub->add_option("--roughness", ref->roughness,
+                  "with --reference: perceptual roughness values (default 0.2 0.4 0.6 0.8 1; the "
+                  "tables' edges 0 and 1 are added)");
+  sub->callback([&selected, &g, r, ref] {
+    selected = [&g, r, ref] {
+      if (!ref->materials.empty()) return print_reference(g, *r, *ref);
+      if (!ref->roughness.empty()) throw InputError("--roughness needs --reference");
       fmt::print("{}", analysis::shader_text(*r));
       return 0;
     };

@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "analysis/lut/lut_layout.h"
+#include "analysis/plan/reference.h"
 #include "documents/json.h"
 #include "documents/table_formats.h"
 #include "fresnel/registered_models.h"
@@ -16,7 +17,7 @@ namespace {
 
 using analysis::Lighting;
 
-constexpr int kParamDecimals = 6, kErrorDecimals = 3, kCostDecimals = 2;
+constexpr int kParamDecimals = analysis::kPlanParamDecimals, kErrorDecimals = 3, kCostDecimals = 2;
 
 std::vector<std::string> lighting_list(const analysis::Scene& s) {
   std::vector<std::string> out;

@@ -15,8 +15,8 @@ constexpr size_t kColumn = 128;
 
 // R(λ) at cosθ for n relative indices, eta_kappa interleaved (η₀, κ₀, η₁, κ₁, ...), each divided
 // by eta_outside: a column loop (FL_FLATTEN), each lane rounding as the scalar kernel does.
-FL_FLATTEN void reflectance_column(double cos_theta, const double* eta_kappa,
-                                         double eta_outside, size_t n, double* __restrict out) {
+FL_FLATTEN void reflectance_column(double cos_theta, const double* eta_kappa, double eta_outside,
+                                   size_t n, double* __restrict out) {
   for (size_t i = 0; i < n; ++i)
     out[i] = fresnel_conductor<double>(cos_theta, eta_kappa[2 * i] / eta_outside,
                                        eta_kappa[2 * i + 1] / eta_outside);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "analysis/lut/lut_layout.h"
+#include "analysis/plan/reference.h"
 #include "analysis/shader/shader.h"
 #include "documents/plan_report.h"
 #include "documents/table_formats.h"
@@ -147,6 +148,21 @@ std::string readme_materials(const analysis::Plan& p) {
   return s;
 }
 
+std::string readme_reference() {
+  return fmt::format(
+      "\n## Testing a port\n\n`reference.csv` holds, per material and lighting, what the "
+      "include's function returns from these tables with these parameters (`engine_r`, `_g`, "
+      "`_b`, linear RGB), the spectral truth there (`truth_…`: the GGX lobe integrated with the "
+      "measured Fresnel term) and their ΔE2000 (`de00`). Rows of `function` `fresnel_NAME` are the "
+      "model at cos θ = `nov` (punctual lights, mirrors); `fresnel_NAME_ibl` and `_area` rows are "
+      "the function called at (`nov`, `roughness`): the materials' roughness values and the "
+      "tables' edges 0 and 1, n·v from {:g} to 1. Call your port's function at each row with the "
+      "material's parameters (`materials.json`, or the row's `parameters`) and the tables "
+      "uploaded as their files store them (bilinear, clamp to edge), and expect the `engine_` "
+      "values within 2e-4 per channel (1e-3 if you upload 32-bit tables as half floats).\n",
+      analysis::kReferenceMinNov);
+}
+
 std::string plan_readme(const analysis::Plan& p) {
   const auto& sc = p.scene_choice();
   std::string s = fmt::format(
@@ -159,12 +175,13 @@ std::string plan_readme(const analysis::Plan& p) {
                               : "over budget: " + join_text(sc.failing),
       format_number(sc.worst_de00, 3), format_number(sc.median_de00, 3),
       format_number(p.scene.max_de00, 3));
-  return s + readme_shaders(p) + readme_tables(p) + readme_materials(p);
+  return s + readme_shaders(p) + readme_tables(p) + readme_materials(p) + readme_reference();
 }
 
 }  // namespace
-Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs, const LabelFont& font,
-                 int threads, const TableProgress& progress) {
+Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs,
+                 const analysis::Table& reference, const LabelFont& font, int threads,
+                 const TableProgress& progress) {
   Files out = table_files(p, threads, progress);
   std::set<std::string> includes;
   for (const auto& g : p.scene_choice().groups) {
@@ -181,6 +198,7 @@ Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs, cons
     }
   }
   out.emplace_back("materials.json", plan_materials_json(p));
+  out.emplace_back("reference.csv", to_csv(reference));
   out.emplace_back("plan.md", plan_markdown(p, costs));
   out.emplace_back("plan.json", plan_json(p));
   out.emplace_back("pareto.svg", encode(plan_plot(p), FileType::Svg, font));

@@ -9,6 +9,7 @@
 //                    scene's lightings: analysis/shader)
 //   dfg.exr, dfg_2.exr, ltc_1.exr, ltc_2.exr, ...   the table textures the variants read, as `lut`
 //                    writes them at 64² (jobs/lut_files)
+//   reference.csv    the functions' expected values for testing a port (analysis/plan/reference.h)
 //   plan.md, plan.json, pareto.svg   the plan and its options' figure (draw/plan_plot)
 #include <functional>
 #include <string>
@@ -26,9 +27,10 @@ inline constexpr const char* kPlanMarker = ".fresnel-lab-plan";
 // "DFG table" or "LTC table".
 using TableProgress = std::function<void(const std::string& table, int done, int total)>;
 
-// Paths relative to the output folder; `font` sets the figure's labels. `threads` for the tables
-// (0: every hardware thread).
+// Paths relative to the output folder; `reference` is analysis::plan_reference's table; `font` sets
+// the figure's labels. `threads` for the tables (0: every hardware thread).
 Files plan_files(const analysis::Plan& plan, const analysis::PlanCosts& costs,
-                 const LabelFont& font, int threads = 0, const TableProgress& progress = {});
+                 const analysis::Table& reference, const LabelFont& font, int threads = 0,
+                 const TableProgress& progress = {});
 
 }  // namespace fl::report

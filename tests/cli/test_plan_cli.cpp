@@ -194,7 +194,8 @@ TEST(PlanCli, OutFolderForEveryExampleScene) {
     const auto r =
         test::run_command(test::cli() + " -q plan '" + e.path().string() + "' --out '" + out + "'");
     ASSERT_EQ(r.status, 0) << e.path() << ": " << r.err;
-    for (const char* f : {"README.md", "materials.json", "plan.md", "plan.json", "pareto.svg"})
+    for (const char* f :
+         {"README.md", "materials.json", "reference.csv", "plan.md", "plan.json", "pareto.svg"})
       EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << e.path() << " " << f;
     const auto plan = nlohmann::json::parse(slurp(out + "/plan.json"));
     for (const auto& lut : plan["scene_shader"]["luts"])

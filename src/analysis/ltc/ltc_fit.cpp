@@ -137,7 +137,7 @@ struct Directions {
 
 // The GGX half: l = reflect(v, h) for h drawn from the visible normals at each disk point.
 FL_FLATTEN Directions ggx_half(const brdf::Vec3& view, double alpha,
-                                     const std::vector<brdf::DiskPoint>& disk) {
+                               const std::vector<brdf::DiskPoint>& disk) {
   Directions d(disk.size());
   const brdf::Vec3 v = view;
   const brdf::GgxVndfSampler vndf(v, alpha);
@@ -152,7 +152,7 @@ FL_FLATTEN Directions ggx_half(const brdf::Vec3& view, double alpha,
 
 // The LTC half: sample_ltc_lobe at each point, from its clamped-cosine direction.
 FL_FLATTEN Directions ltc_half(const brdf::Vec3& view, double alpha, const LtcLobe& ltc,
-                                     const std::vector<brdf::Vec3>& cosine) {
+                               const std::vector<brdf::Vec3>& cosine) {
   Directions d(cosine.size());
   const brdf::Vec3 v = view;
   const LtcLobe lobe = ltc;
@@ -169,7 +169,7 @@ FL_FLATTEN Directions ltc_half(const brdf::Vec3& view, double alpha, const LtcLo
 // q = p_vndf + d_ltc, |ρ cos − n_D d_ltc|³ / (n q) of the error and (ρ cos)³ / (n q) of the lobe's
 // norm, both 0 where q ≤ 0.
 FL_FLATTEN void l3_terms(const LtcLobe& ltc, const Directions& d, double n, double magnitude,
-                               double* error, double* norm) {
+                         double* error, double* norm) {
   const LtcLobe lobe = ltc;
 #pragma GCC ivdep
   for (size_t k = 0; k < d.size(); ++k) {
@@ -207,7 +207,7 @@ struct SampleTerms {
   explicit SampleTerms(size_t n) : x(n), y(n), z(n), q(n), weight(n), lobe3(n) {}
 };
 FL_FLATTEN void sample_terms(const LtcFrame& f, const LtcParams& p, const Directions& d,
-                                   double count, SampleTerms& out) {
+                             double count, SampleTerms& out) {
   const LtcFrame frame = f;
   const LtcParams proposal = p;
 #pragma GCC ivdep
@@ -293,8 +293,7 @@ FL_FLATTEN void ltc_residuals(double magnitude, const double* p, LtcColumns& c) 
 // ∂L = 2 (o_x ∂u + o_z ∂t)/β − 2 (o_x² + o_z²) ∂β/β − 2 o_y² ∂m22/m22, where (∂u, ∂t, ∂β, ∂m22) is
 // (0, z, 1, 0) for m11, (0, 0, 0, 1) for m22, (−z, 0, −m31, 0) for m13 and (0, −x, −m13, 0) for
 // m31; and ∂r/∂D = −1.5 √|d| w n_D.
-FL_FLATTEN void ltc_jacobian(double magnitude, const double* p, const LtcColumns& c,
-                                   double* jac) {
+FL_FLATTEN void ltc_jacobian(double magnitude, const double* p, const LtcColumns& c, double* jac) {
   const double inv_beta = 1.0 / (p[0] - p[2] * p[3]), inv_m22 = 1.0 / p[1];
   const double p2 = p[2], p3 = p[3];
   const size_t n = c.x.size();

@@ -117,8 +117,8 @@ std::vector<brdf::DiskPoint> lobe_disk_points(int samples) {
   return points;
 }
 
-FL_FLATTEN void lobe_samples(const LobeView& view, const brdf::DiskPoint* points,
-                                   size_t count, LobeSampleBlock& out) {
+FL_FLATTEN void lobe_samples(const LobeView& view, const brdf::DiskPoint* points, size_t count,
+                             LobeSampleBlock& out) {
   const LobeView local =
       view;  // a local copy: its reads cannot fault, so the loop runs branch-free
   for (size_t k = 0; k < count; ++k) {

@@ -208,9 +208,11 @@ void integrate_point(ShadingPoint& p, const std::vector<brdf::DiskPoint>& disk) 
 
 }  // namespace
 
-std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads,
-                                         const EngineTables& tables) {
-  std::vector<ShadingPoint> points = points_at(roughness);
+namespace {
+
+// Fills in the truth weights, the exact integrals and the table reads of points whose angles are
+// set.
+void complete_points(std::vector<ShadingPoint>& points, int threads, const EngineTables& tables) {
   // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
   const auto disk = lobe_disk_points(kLutSamples);
   const auto dfg_cell = [&](double nov, double alpha) {
@@ -244,6 +246,31 @@ std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, i
         });
       },
       threads);
+}
+
+}  // namespace
+
+std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads,
+                                         const EngineTables& tables) {
+  std::vector<ShadingPoint> points = points_at(roughness);
+  complete_points(points, threads, tables);
+  return points;
+}
+
+std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
+                                            bool mirror_at_zero, int threads,
+                                            const EngineTables& tables) {
+  std::vector<ShadingPoint> points;
+  for (const auto& a : at) {
+    ShadingPoint p;
+    p.roughness = a.roughness;
+    p.nov = a.nov;
+    p.view_deg = std::acos(std::clamp(a.nov, 0.0, 1.0)) * 180.0 / std::numbers::pi;
+    p.alpha = ltc_alpha_at(a.roughness);
+    p.mirror = mirror_at_zero && a.roughness == 0.0;
+    points.push_back(std::move(p));
+  }
+  complete_points(points, threads, tables);
   return points;
 }
 

@@ -70,6 +70,16 @@ struct ShadingPoint {
 // Every roughness × kShadingViewDeg, the engine reading `tables`.
 std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads = 0,
                                          const EngineTables& tables = engine_tables());
+// Points at given (n·v, roughness), view_deg = acos(n·v), the engine reading `tables`. With
+// mirror_at_zero false, roughness 0 reads the tables like any other roughness (what a shader's
+// _ibl and _area functions compute when called there; the truth is the lobe of α =
+// ltc_alpha_at(0)) instead of being a mirror.
+struct NovRoughness {
+  double nov = 1, roughness = 0;
+};
+std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
+                                            bool mirror_at_zero = true, int threads = 0,
+                                            const EngineTables& tables = engine_tables());
 
 // Where the engine's lobe integrals come from: the tables (as shipped), or the exact integrals at
 // the point (what a table of infinite resolution and precision would give).

@@ -116,9 +116,7 @@ const std::vector<TableSpec>& table_specs() {
        "every model (derived, fitted, fitted to the render) as rendered under IBL (DFG) and area "
        "lights (LTC moments) against brute-force spectral integration",
        [](TableInputs& in) { return lut_accuracy_table(in.ctx, in.studies(), in.lut_points()); }},
-      {"lut-layouts",
-       "DFG table layouts (ours at several sizes, texel centres against endpoints, half against "
-       "float; Filament's cmgen; UE4's 128×32): the tables' own error under IBL over the metals",
+      {"lut-layouts", "DFG table layouts (size, placement, storage; Filament's, UE4's): own error",
        [](TableInputs& in) { return table_layouts_table(in.ctx, in.studies()); }, false},
       {"rendered-library",
        "rendered error of the shippable pre-integrated shaders (Schlick, F82, the basis at K = 2 "
