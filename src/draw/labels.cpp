@@ -45,8 +45,7 @@ Point nearest_on(const Box& b, Point p) {
 }  // namespace
 
 Rgb8 qualitative_colour(size_t k) {
-  if (k >= kQualitativeColours) throw std::out_of_range("more series than qualitative colours");
-  return kPalette[k];
+  return kPalette[k % kQualitativeColours];
 }
 
 Rgb8 label_ink(Rgb8 c) {

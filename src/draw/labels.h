@@ -11,8 +11,9 @@
 namespace fl::report {
 
 // Ten qualitative colours (Tableau 10 with its grey replaced by a dark teal, which no axis or
-// front line uses), each distinct from the others in hue or lightness; series k takes colour k.
-// std::out_of_range past the tenth: a plot with more series needs a larger palette, not a repeat.
+// front line uses), each distinct from the others in hue or lightness; series k takes colour
+// k mod 10. Past the tenth series the colours repeat, and the series' direct labels tell them apart
+// (a new model added to the registry still plots).
 Rgb8 qualitative_colour(size_t k);
 inline constexpr size_t kQualitativeColours = 10;
 
