@@ -1,5 +1,7 @@
 #pragma once
-// The pieces every `lut` table's files share (jobs/lut_files.cpp defines them): the request's
+// The pieces every `lut` table's files share (jobs/lut_files.cpp defines them; the DFG's files are
+// there too, the LTC's in lut_ltc_files.cpp, the energy tables' in lut_energy_files.cpp and
+// lut_energy_dielectric.cpp): the request's
 // checks, the texture and its attributes, CSV columns, header symbols and the command line a
 // header names.
 #include <string>
@@ -8,6 +10,7 @@
 #include "analysis/lut/lut.h"
 #include "analysis/tables/table.h"
 #include "documents/c_header.h"
+#include "fresnel/table_terms.h"
 #include "io/exr.h"
 #include "io/writer.h"
 #include "jobs/lut_files.h"
@@ -43,6 +46,16 @@ Output one_file(const std::string& what, const std::string& path, std::string by
 std::string header_symbol(const LutRequest& r, const std::string& ext, const char* default_symbol);
 // A texture as EXR bytes, or as a C header for `.h` output; half floats when `half`.
 std::string texture_bytes(ExrImage img, const std::string& ext, CHeader header, bool half);
+// The table terms a texture holds (analysis::term_texture_names), in registry order.
+std::vector<const fresnel::TermSpec*> texture_terms(bool dfg, const std::string& texture);
+std::string upper(std::string s);
+// The EXR channels of a texture's terms: their components, upper case.
+std::vector<std::string> exr_channels(bool dfg, const std::string& texture);
+// A texture's suffix after its table's name: dfg_2 → _2, ltc_1 → _1.
+std::string suffix(const std::string& texture);
+// Where texture number k (0, 1, ...) of a table goes when the table is written to `out`: out
+// itself for the first, else STEM + the texture's suffix (dfg_2 → STEM_2.exr, or STEM_2.h).
+std::string texture_path(const std::string& out, const std::string& texture, size_t k);
 // "fresnel-lab lut NAME --size N [...]": what wrote a header.
 std::string lut_command(const char* name, const LutRequest& r, const std::string& symbol);
 
