@@ -10,6 +10,15 @@
 
 namespace fl::test::vk {
 
+// The driver against the CPU model reading the texels in the same storage (analysis::EngineTables),
+// absolute in linear RGB: the driver's single-precision arithmetic and filtering (8-bit bilinear
+// weights, as some GPUs filter, would exceed these); half tables also the conversion of the
+// filtered half texels.
+inline constexpr double kFloatTolerance = 2e-4;
+inline constexpr double kHalfTolerance = 1e-3;
+// ΔE2000 of the driver's output against the truth, against the CPU model's per point.
+inline constexpr double kDe00Tolerance = 0.005;
+
 // Per invocation, kernel_inputs' record: cos θ (punctual) or n·v, then perceptual roughness, then
 // the model's parameters in its order (each channel parameter as r, g, b; then the shared ones).
 size_t kernel_stride(fresnel::Model m);

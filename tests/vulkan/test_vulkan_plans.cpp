@@ -24,14 +24,11 @@ namespace {
 using analysis::Lighting;
 using analysis::ShaderLanguage;
 
-// As in test_vulkan_shaders.cpp: the driver against the CPU model (reference.csv's engine values,
-// from the texels as the folder's files store them), and the ΔE2000 against the truth recomputed
-// from the driver's RGB against reference.csv's (which rounds it to 4 decimals). Files of floats
-// uploaded as RGBA16F are rounded by the upload, which reference.csv does not model: the RGB is
-// held to kHalfTolerance and the ΔE2000 (up to about 0.009 apart) reported, not checked.
-constexpr double kFloatTolerance = 2e-4;
-constexpr double kHalfTolerance = 1e-3;
-constexpr double kDe00Tolerance = 0.005;
+// The tolerances of shader_kernel.h: the driver against the CPU model (reference.csv's engine
+// values, from the texels as the folder's files store them), and the ΔE2000 against the truth
+// recomputed from the driver's RGB against reference.csv's (which rounds it to 4 decimals). Files
+// of floats uploaded as RGBA16F are rounded by the upload, which reference.csv does not model: the
+// RGB is held to kHalfTolerance and the ΔE2000 (up to about 0.009 apart) reported, not checked.
 
 struct PlanMaterial {
   std::string name, include;

@@ -24,15 +24,8 @@ namespace {
 using analysis::Lighting;
 using analysis::ShaderLanguage;
 
-// The driver against the CPU model reading the texels in the same storage (analysis::EngineTables),
-// absolute in linear RGB: the driver's single-precision arithmetic and filtering (8-bit bilinear
-// weights, as some GPUs filter, would exceed these); half tables also the conversion of the
-// filtered half texels.
-constexpr double kFloatTolerance = 2e-4;
-constexpr double kHalfTolerance = 1e-3;
-// ΔE2000 of the driver's output against the truth, against lut-accuracy's per point (the CPU
-// model's, rendered_de00) from tables of the same storage.
-constexpr double kDe00Tolerance = 0.005;
+// Tolerances: shader_kernel.h. The CPU model's ΔE2000 is lut-accuracy's (rendered_de00), from
+// tables of the same storage.
 
 double tolerance(Storage s) {
   return s == Storage::Half ? kHalfTolerance : kFloatTolerance;
