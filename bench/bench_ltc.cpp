@@ -1,7 +1,7 @@
 // LTC table fits: Ceres (Levenberg–Marquardt, the tool's fitter) against Nelder–Mead (the
-// derivative-free simplex of Heitz's reference fitLTC.cpp) as the solver of fit::fit_ltc_cell, on
-// the same cells, the same objective and the same warm starts. Prints time per table and the mean
-// and max held-out error (LtcCell::fit_error) of both.
+// derivative-free simplex of Heitz's reference fitLTC.cpp) as the solver of analysis::fit_ltc_cell,
+// on the same cells, the same objective and the same warm starts. Prints time per table and the
+// mean and max held-out error (LtcCell::fit_error) of both.
 //   bench_ltc                       16×16 and 64×64
 //   bench_ltc --benchmark_filter=/16
 #include <benchmark/benchmark.h>
@@ -19,9 +19,9 @@
 
 namespace {
 
+using fl::analysis::LtcParams;
+using fl::analysis::LtcProblem;
 using fl::fit::FitResult;
-using fl::fit::LtcParams;
-using fl::fit::LtcProblem;
 
 // Nelder & Mead 1965 with the standard coefficients (reflection 1, expansion 2, contraction ½,
 // shrink ½), on `dim` parameters. Stops when the simplex's values agree to a relative `tolerance`
@@ -95,20 +95,21 @@ std::array<double, N> nelder_mead(const F& f, std::array<double, N> start,
 constexpr double kNelderMeadTolerance = 1e-12;
 constexpr int kNelderMeadMaxEvaluations = 2000;
 
-// The same solve as fit::fit_ltc_ceres (objective, bounds, isotropic handling), by Nelder–Mead.
+// The same solve as analysis::fit_ltc_ceres (objective, bounds, isotropic handling), by
+// Nelder–Mead.
 FitResult fit_ltc_nelder_mead(const LtcProblem& pr, const LtcParams& start, bool isotropic) {
   auto project = [](LtcParams p) {
-    p.m11 = std::clamp(p.m11, fl::fit::kLtcMinScale, fl::fit::kLtcMaxScale);
-    p.m22 = std::clamp(p.m22, fl::fit::kLtcMinScale, fl::fit::kLtcMaxScale);
-    p.m13 = std::clamp(p.m13, -fl::fit::kLtcMaxSkew, fl::fit::kLtcMaxSkew);
-    p.m31 = std::clamp(p.m31, -fl::fit::kLtcMaxSkew, fl::fit::kLtcMaxSkew);
+    p.m11 = std::clamp(p.m11, fl::analysis::kLtcMinScale, fl::analysis::kLtcMaxScale);
+    p.m22 = std::clamp(p.m22, fl::analysis::kLtcMinScale, fl::analysis::kLtcMaxScale);
+    p.m13 = std::clamp(p.m13, -fl::analysis::kLtcMaxSkew, fl::analysis::kLtcMaxSkew);
+    p.m31 = std::clamp(p.m31, -fl::analysis::kLtcMaxSkew, fl::analysis::kLtcMaxSkew);
     return p;
   };
   // Outside the bounds Ceres never goes; a singular or flipped A (m11 − m13 m31 ≤ 0) is infinitely
   // bad.
   auto objective = [&](const LtcParams& p) {
-    return p.m11 - p.m13 * p.m31 > fl::fit::kLtcMinScale * p.m11
-               ? fl::fit::ltc_objective(pr, p)
+    return p.m11 - p.m13 * p.m31 > fl::analysis::kLtcMinScale * p.m11
+               ? fl::analysis::ltc_objective(pr, p)
                : std::numeric_limits<double>::infinity();
   };
   auto step = [](double x) { return x != 0.0 ? 0.1 * std::abs(x) : 0.05; };
@@ -155,8 +156,9 @@ void BM_LtcTableFit(benchmark::State& state, bool use_ceres) {
   options.threads = 1;  // one core per fitter, so the timings compare the solvers
   Summary summary;
   for (auto _ : state) {
-    const auto t = use_ceres ? fl::analysis::fit_ltc_table(size, options, fl::fit::fit_ltc_ceres)
-                             : fl::analysis::fit_ltc_table(size, options, fit_ltc_nelder_mead);
+    const auto t = use_ceres
+                       ? fl::analysis::fit_ltc_table(size, options, fl::analysis::fit_ltc_ceres)
+                       : fl::analysis::fit_ltc_table(size, options, fit_ltc_nelder_mead);
     summary.errors.clear();
     for (const auto& c : t.cells) summary.errors.push_back(c.fit_error);
   }

@@ -277,7 +277,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
     return it == r.end() ? NAN : it->second.ns_per_eval();
   };
   auto num = [](double v, int d) {
-    return std::isfinite(v) ? fl::report::format_number(v, d) : std::string("n/a");
+    return std::isfinite(v) ? fl::documents::format_number(v, d) : std::string("n/a");
   };
   const std::string machine = machine_line();
   // bench/model_costs.csv: what `table speed` and `plan` read.
@@ -296,7 +296,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
                        num(ns(p + "/double/batched"), 3), num(ns(p + "/float/scalar"), 3),
                        num(ns(p + "/double/scalar"), 3));
   }
-  fl::report::write_file_atomic(repo + "/bench/model_costs.csv", csv);
+  fl::io::write_file_atomic(repo + "/bench/model_costs.csv", csv);
 
   std::string md = "# Fresnel Lab benchmarks\n\n";
   md +=
@@ -357,7 +357,7 @@ void write_reports(const std::string& repo, const std::map<std::string, Result>&
       num(bt, 1), num(l, 1), num(l / bt, 2));
   md += fmt::format("- Batched Schlick in float: {} ns per evaluation (target < 1 ns).\n",
                     num(ns("model/schlick/float/batched"), 3));
-  fl::report::write_file_atomic(repo + "/reports/bench.md", md);
+  fl::io::write_file_atomic(repo + "/reports/bench.md", md);
   fmt::print(stderr, "bench_speed: wrote {0}/reports/bench.md and {0}/bench/model_costs.csv\n",
              repo);
 }

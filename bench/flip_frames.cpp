@@ -17,7 +17,7 @@
 
 namespace {
 
-using fl::report::Image8;
+using fl::io::Image8;
 
 // Frames `list` (comma-separated indices) side by side on a white ground, 8 px apart.
 Image8 side_by_side(const std::vector<Image8>& frames, const std::string& list) {
@@ -36,7 +36,8 @@ Image8 side_by_side(const std::vector<Image8>& frames, const std::string& list) 
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace fl::report;
+  using namespace fl::io;
+  using namespace fl::draw;
   if (argc != 3 && argc != 4) {
     fmt::print(stderr, "usage: flip_frames FLIP.webp|FLIP.gif OUT_PREFIX | OUT.png I,J,...\n");
     return 2;

@@ -47,22 +47,22 @@ int main(int argc, char** argv) {
   analysis::StudyOptions options;
   options.fit = false;
   const auto studies = analysis::study_materials(ctx, materials, options);
-  report::HtmlReport page;
+  documents::HtmlReport page;
   page.title = "Database gallery";
   const std::vector<analysis::Table> tables{analysis::presets_table(ctx, studies),
                                             analysis::models_table(ctx, studies)};
   page.tables = tables;
-  page.gallery = report::catalog_gallery(ctx, studies, page.tables[0], false, {});
-  const auto html = report::html_report(page);
-  const auto gallery = report::gallery_html(page.gallery);
-  const auto presets = report::table_html(page.tables[0], "p"),
-             models = report::table_html(page.tables[1], "m");
+  page.gallery = jobs::catalog_gallery(ctx, studies, page.tables[0], false, {});
+  const auto html = documents::html_report(page);
+  const auto gallery = documents::gallery_html(page.gallery);
+  const auto presets = documents::table_html(page.tables[0], "p"),
+             models = documents::table_html(page.tables[1], "m");
   fmt::print(
       "{} pages under {}, {} loaded: index.html {} bytes (gallery {}, presets table {}, models "
       "table {} with {} "
       "rows)\n",
       specs.size(), pages, materials.size(), html.size(), gallery.size(), presets.size(),
       models.size(), page.tables[1].rows.size());
-  if (!out.empty()) report::write_file_atomic(out, html);
+  if (!out.empty()) io::write_file_atomic(out, html);
   return 0;
 }

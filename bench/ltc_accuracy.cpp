@@ -106,7 +106,7 @@ std::string report(const Timing& timing, const LtcReferenceTable& ref, const Ltc
       "- Midpoints: half-way between neighbouring cells in texture coordinates, the LTC a bilinear "
       "lookup gives (the mean of the two cells' texture entries) against the lobe there.\n\n",
       c.heldout_samples);
-  for (const auto& t : tables) s += fl::report::to_markdown(t, 2) + "\n";
+  for (const auto& t : tables) s += fl::documents::to_markdown(t, 2) + "\n";
   s += fmt::format("## Grazing row (θ = 1.57), roughness columns {} to {}\n\n", kFirstColumn,
                    kLastColumn);
   s += grazing_row(timing.table, ref, c) + "\n";
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
     if (out.empty())
       std::fputs(md.c_str(), stdout);
     else
-      fl::report::write_file_atomic(out, md);
+      fl::io::write_file_atomic(out, md);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ltc_accuracy: %s\n", e.what());
     return 2;

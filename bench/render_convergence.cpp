@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/render/environment_file.h"
 #include "analysis/render/render.h"
-#include "io/environment.h"
 #include "jobs/pictures.h"
 
 using namespace fl;
@@ -83,7 +83,7 @@ analysis::MaterialRender timed_render(const analysis::Context& ctx,
   rs.roughness = o.roughness;
   rs.samples = samples;
   const auto t0 = std::chrono::steady_clock::now();
-  auto r = analysis::render_material(ctx, m, light, report::parse_models("schlick,f82,gulbrandsen"),
+  auto r = analysis::render_material(ctx, m, light, jobs::parse_models("schlick,f82,gulbrandsen"),
                                      "derived", rs);
   secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
       "| material | environment | samples | max | p99.9 | seconds (4 images, one pass) "
       "|\n|---|---|---|---|---|---|\n");
   for (const auto& env_name : split(o.envs)) {
-    const auto env = report::load_environment(ctx, o.env_dir + "/" + env_name + ".exr", "", 0, 0);
+    const auto env = analysis::load_environment(ctx, o.env_dir + "/" + env_name + ".exr", "", 0, 0);
     const analysis::SceneLight light = env.map;
     for (const auto& name : split(o.materials)) {
       const auto m = analysis::load_material(ctx, spectral::resolve_material(name, settings.paths));

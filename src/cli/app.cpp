@@ -122,12 +122,12 @@ void emit(const GlobalOptions& g, const std::string& out, const std::string& tex
     return;
   }
   require_output_folder(out);
-  report::write_file_atomic(out, text);
+  io::write_file_atomic(out, text);
   progress(g, "wrote " + out);
 }
 
-int write_output(const GlobalOptions& g, const report::Output& out) {
-  report::write_files_atomic(out.files);
+int write_output(const GlobalOptions& g, const io::Output& out) {
+  io::write_files_atomic(out.files);
   for (const auto& m : out.messages) progress(g, m);
   return 0;
 }
@@ -308,7 +308,7 @@ int run(int argc, char** argv) {
   s.paths = default_paths(g.locations);
   s.ocio_config = default_ocio_config();
   g.label_font = label_font_file();
-  report::install_termination_handler();
+  io::install_termination_handler();
 
   add_global_options(app, g);
 

@@ -19,7 +19,7 @@ struct GlobalOptions {
   bool skip_unusable = false;    // --skip-unusable: skip explicitly named unusable materials
   Locations locations;           // where the tool's data were found (cli/locations.h)
   // The label font's file ($FRESNEL_LAB_FONT; empty: DejaVu Sans). A command that draws text
-  // loads it into the report::LabelFont it passes to the drawing.
+  // loads it into the draw::LabelFont it passes to the drawing.
   std::string label_font;
 };
 
@@ -71,7 +71,7 @@ std::function<void(int, int)> periodic_progress(const GlobalOptions& g, const st
 void emit(const GlobalOptions& g, const std::string& out, const std::string& text);
 // The writer's rule for where outputs go (io/writer.h): the folder that holds `path` exists and
 // is writable.
-using report::require_output_folder;
+using io::require_output_folder;
 // The check of every --out and --plot option, run while the command line is parsed (before any
 // work): not empty, and require_output_folder.
 CLI::Validator output_location();
@@ -80,6 +80,6 @@ CLI::Validator finite_range(double lo, double hi);
 // A text option's check: not empty.
 CLI::Validator non_empty();
 // Writes out.files (all or nothing), then prints out.messages; returns exit status 0.
-int write_output(const GlobalOptions& g, const report::Output& out);
+int write_output(const GlobalOptions& g, const io::Output& out);
 
 }  // namespace fl::cli

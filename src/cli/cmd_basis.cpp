@@ -57,9 +57,9 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
         command += fmt::format(" --terms {}", a->options.data_terms);
       if (a->options.poly_degree != analysis::BasisOptions{}.poly_degree)
         command += fmt::format(" --degree {}", a->options.poly_degree);
-      auto files = report::basis_files(ctx, basis, command);
+      auto files = jobs::basis_files(ctx, basis, command);
       for (auto& f : files) f.first = a->out + "/" + f.first;
-      report::write_files_atomic(files, a->out);
+      io::write_files_atomic(files, a->out);
       progress(g,
                fmt::format(
                    "basis: {} of {} pages, {} skipped; wrote {} files to {} ({:.1f} s)",

@@ -30,11 +30,12 @@ void add_pages_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--format", a->format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
-      const auto f = report::format_from_name(a->format);
+      const auto f = documents::format_from_name(a->format);
       const auto ctx = make_context(g);
-      fmt::print("{}", report::render(analysis::pages_table(
-                                          ctx, a->globs, periodic_progress(g, "pages: reading ")),
-                                      f));
+      fmt::print(
+          "{}",
+          documents::render(
+              analysis::pages_table(ctx, a->globs, periodic_progress(g, "pages: reading ")), f));
       return 0;
     };
   });
@@ -84,7 +85,7 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
                 "fail on the first page that cannot be read instead of skipping it");
   sub->add_flag("--no-gallery", a->no_gallery, "skip gallery.md and its strips/");
   sub->callback([&g, &selected, a] {
-    report::require_replaceable_folder(a->out, kLibraryMarker);
+    io::require_replaceable_folder(a->out, kLibraryMarker);
     selected = [&g, a] {
       analysis::LibraryOptions o;
       o.only = class_option(a->cls);
@@ -100,8 +101,8 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       command += " library";
       for (const auto& glob : o.globs) command += " '" + glob + "'";
       command += " --class " + a->cls + (a->strict ? " --strict" : "");
-      const auto files = report::library_files(ctx, lib, !a->no_gallery, command);
-      report::replace_folder_atomic(a->out, files, kLibraryMarker);
+      const auto files = jobs::library_files(ctx, lib, !a->no_gallery, command);
+      io::replace_folder_atomic(a->out, files, kLibraryMarker);
       progress(
           g,
           fmt::format(
@@ -125,9 +126,9 @@ std::vector<analysis::ConsensusRequest> requests_of(const GlobalOptions& g,
 }  // namespace
 
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
-                      const report::PresetFormat& format, bool openpbr, const std::string& out,
+                      const documents::PresetFormat& format, bool openpbr, const std::string& out,
                       double roughness) {
-  const bool document = format.kind != report::PresetKind::Table;
+  const bool document = format.kind != documents::PresetKind::Table;
   if (!out.empty()) require_output_folder(out);
   const auto requests = requests_of(g, specs);
   const auto ctx = make_context(g);
@@ -142,7 +143,7 @@ int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
   }
   analysis::ExportOptions exported;
   exported.roughness = roughness;
-  emit(g, out, report::preset_document(format, {ctx, c.set.studies, t, exported}));
+  emit(g, out, documents::preset_document(format, {ctx, c.set.studies, t, exported}));
   return 0;
 }
 
@@ -172,11 +173,11 @@ void add_consensus_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
     if ((a->table == "peers") != !a->peers.empty())
       throw InputError("--peers DIR goes with --table peers (and only with it)");
     selected = [&g, a] {
-      const auto f = report::format_from_name(a->format);
+      const auto f = documents::format_from_name(a->format);
       const auto ctx = make_context(g);
       const auto read = periodic_progress(g, "consensus: reading ");
       if (a->table == "peers") {
-        fmt::print("{}", report::render(analysis::peer_table(ctx, a->peers, read), f));
+        fmt::print("{}", documents::render(analysis::peer_table(ctx, a->peers, read), f));
         return 0;
       }
       analysis::StudyOptions derived_only;
@@ -193,7 +194,7 @@ void add_consensus_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto t = a->table == "groups"  ? analysis::consensus_table(ctx, c.set)
                      : a->table == "pages" ? analysis::consensus_pages_table(c.set)
                                            : analysis::outlier_kinds_table(c.set);
-      fmt::print("{}", report::render(t, f));
+      fmt::print("{}", documents::render(t, f));
       return 0;
     };
   });

@@ -28,11 +28,11 @@ analysis::LutProgress progress_printer(const GlobalOptions& g, const std::string
   };
 }
 
-using LutRun = report::Output (*)(const report::LutRequest&, const analysis::LutProgress&);
+using LutRun = io::Output (*)(const jobs::LutRequest&, const analysis::LutProgress&);
 
 // After the files: the error as rendered of the tables just written (the tables' own share, over
 // the catalog's metals), unless quiet.
-void report_table_error(const GlobalOptions& g, const report::LutRequest& r,
+void report_table_error(const GlobalOptions& g, const jobs::LutRequest& r,
                         analysis::Lighting lighting, const std::string& what) {
   if (g.quiet) return;
   const auto ctx = make_context(g);
@@ -41,12 +41,12 @@ void report_table_error(const GlobalOptions& g, const report::LutRequest& r,
   derived_only.fit = false;
   derived_only.method_errors = false;
   const auto studies = analysis::study_materials(ctx, ms, derived_only);
-  progress(g, what + ": " + report::table_error_line(ctx, studies, r, lighting));
+  progress(g, what + ": " + jobs::table_error_line(ctx, studies, r, lighting));
 }
 
 CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, const char* name,
                              const std::string& help, const char* out_help, LutRun run,
-                             std::shared_ptr<report::LutRequest> r) {
+                             std::shared_ptr<jobs::LutRequest> r) {
   auto* sub = lut.add_subcommand(name, help);
   sub->add_option("--size", r->size, "cells per axis (N×N; default 64)");
   sub->add_option("--out", r->out, out_help)->required()->check(output_location());
@@ -91,7 +91,7 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* lut = app.add_subcommand(
       "lut", "pre-integrated GGX lookup tables: dfg | ltc-moments | ltc | energy");
   lut->require_subcommand(1);
-  auto dfg = std::make_shared<report::LutRequest>();
+  auto dfg = std::make_shared<jobs::LutRequest>();
   add_lut_subcommand(*lut, g, selected, "dfg",
                      "the split-sum DFG table over (n·v, perceptual roughness), one channel per "
                      "table term: " +
@@ -101,7 +101,7 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
                      "output file: .exr (RGB per texture: FILE.exr, FILE_2.exr, ...), .csv, .h "
                      "(a C/C++ header per texture: FILE.h, FILE_2.h, ...) or, with --layout "
                      "filament, .inc (Filament's dfg.inc)",
-                     report::dfg_lut, dfg)
+                     jobs::dfg_lut, dfg)
       ->add_option("--layout", dfg->layout,
                    "split-sum (every table term) or filament (Filament's "
                    "multiscatter table: R = ∫Fc ρ "
@@ -111,7 +111,7 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
                      "LTC moments on the LTC grid, one per table term: " + term_channels(false),
                      "output file: .exr (RGB per texture: FILE.exr = n_d, f_d, l_d; FILE_3.exr, "
                      "...), .h (a C/C++ header per texture: FILE.h, FILE_3.h, ...) or .csv",
-                     report::moments_lut, std::make_shared<report::LutRequest>());
+                     jobs::moments_lut, std::make_shared<jobs::LutRequest>());
   add_lut_subcommand(
       *lut, g, selected, "ltc",
       "fit the LTC matrix of every cell with Ceres (Heitz et al. 2016) and write the LTC "
@@ -119,8 +119,8 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "output: FILE.exr writes FILE_1.exr (inverse matrix), FILE_2.exr (n_d, f_d, l_d, sphere form "
       "factor), FILE_3.exr, ... (the other table terms' moments) and FILE.csv; FILE.h writes "
       "FILE_1.h, FILE_2.h, ... (C/C++ headers of the same textures); FILE.csv writes the CSV only",
-      report::ltc_lut, std::make_shared<report::LutRequest>());
-  auto energy = std::make_shared<report::LutRequest>();
+      jobs::ltc_lut, std::make_shared<jobs::LutRequest>());
+  auto energy = std::make_shared<jobs::LutRequest>();
   auto* energy_cmd = add_lut_subcommand(
       *lut, g, selected, "energy",
       "Kulla-Conty energy compensation on the DFG grid: E(n·v, roughness) = ∫ρ cos and "
@@ -128,7 +128,7 @@ void add_lut(CLI::App& app, GlobalOptions& g, Runner& selected) {
       "Fresnel reflectance F(v·h, η) in the integral, per η-slice",
       "output file: .exr or .h (a C/C++ header; R = E, G = E_avg; --dielectric: an atlas of "
       "η-slices, RGBA = E_F(η), E_F,avg(η), E_F(1/η), E_F,avg(1/η)), or .csv",
-      report::energy_lut, energy);
+      jobs::energy_lut, energy);
   auto* dielectric = energy_cmd->add_flag(
       "--dielectric", energy->dielectric,
       "the dielectric table: E_F(n·v, roughness, η) = ∫F(v·h, η) ρ cos "

@@ -61,8 +61,8 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
   const auto& sizes = analysis::kPlanLutSizes;
   if (a.lut_size != 0 && std::find(sizes.begin(), sizes.end(), a.lut_size) == sizes.end())
     throw InputError(fmt::format("--lut-size must be 16, 32, 64 or 128, not {}", a.lut_size));
-  if (!a.plot.empty()) report::file_type(a.plot);  // an unknown extension, before the work
-  if (!a.out.empty()) report::require_replaceable_folder(a.out, report::kPlanMarker);
+  if (!a.plot.empty()) draw::file_type(a.plot);  // an unknown extension, before the work
+  if (!a.out.empty()) io::require_replaceable_folder(a.out, jobs::kPlanMarker);
   auto scene = analysis::read_scene(a.scene);
   const analysis::PlanCosts costs{
       analysis::load_model_costs(given_or(a.costs, g.settings.paths.model_costs)),
@@ -83,9 +83,9 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
   const auto studies = analysis::study_materials(ctx, ms, {}, study_progress(g, "plan: fitting "));
   progress(g, "plan: choosing the shaders and the tables' size");
   const auto p = analysis::make_plan(scene, ctx, studies, costs, a.lut_size);
-  std::optional<report::LabelFont> font;
+  std::optional<draw::LabelFont> font;
   if (!a.plot.empty() || !a.out.empty()) font.emplace(g.label_font);
-  if (!a.plot.empty()) report::write_drawing(a.plot, report::plan_plot(p), *font);
+  if (!a.plot.empty()) draw::write_drawing(a.plot, draw::plan_plot(p), *font);
   if (!a.out.empty()) {
     std::map<std::string, std::function<void(int, int)>> bars;  // one labelled bar per table
     const auto table_progress = [&](const std::string& table, int done, int total) {
@@ -93,18 +93,18 @@ int run_plan(const GlobalOptions& g, const PlanArgs& a) {
       if (!bar) bar = periodic_progress(g, "plan: " + table + " cells ", 2);
       bar(done, total);
     };
-    report::replace_folder_atomic(
-        a.out,
-        report::plan_files(p, costs, analysis::plan_reference(ctx, studies, p), *font, 0,
-                           table_progress),
-        report::kPlanMarker);
+    io::replace_folder_atomic(a.out,
+                              jobs::plan_files(p, costs, analysis::plan_reference(ctx, studies, p),
+                                               *font, 0, table_progress),
+                              jobs::kPlanMarker);
     progress(g, fmt::format("plan: wrote {} ({})", a.out, p.scene_choice().name));
     return 0;
   }
   if (a.shader.shader)
-    fmt::print("{}", report::plan_shader(p, shader));
+    fmt::print("{}", documents::plan_shader(p, shader));
   else
-    fmt::print("{}", a.format == "json" ? report::plan_json(p) : report::plan_markdown(p, costs));
+    fmt::print("{}",
+               a.format == "json" ? documents::plan_json(p) : documents::plan_markdown(p, costs));
   return 0;
 }
 

@@ -12,7 +12,7 @@ namespace {
 void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, const char* name,
                          const char* help, const char* default_models, const char* out_help) {
   auto* sub = plot.add_subcommand(name, help);
-  auto r = std::make_shared<report::PlotRequest>();
+  auto r = std::make_shared<jobs::PlotRequest>();
   r->figure = name;
   r->models = default_models;
   sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
@@ -30,11 +30,11 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
       ->check(output_location());
   sub->callback([&g, &selected, r] {
     selected = [&g, r] {
-      report::check_plot_request(*r);
+      jobs::check_plot_request(*r);
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, r->materials);
-      const report::LabelFont font(g.label_font);
-      return write_output(g, report::plot_outputs(ctx, ms, *r, font));
+      const draw::LabelFont font(g.label_font);
+      return write_output(g, jobs::plot_outputs(ctx, ms, *r, font));
     };
   });
 }
@@ -58,7 +58,7 @@ void add_plot(CLI::App& app, GlobalOptions& g, Runner& selected) {
 namespace {
 
 // render's lighting: an EXR environment, its colour space, rotation and exposure.
-void add_environment_options(CLI::App& sub, report::RenderRequest& r) {
+void add_environment_options(CLI::App& sub, jobs::RenderRequest& r) {
   sub.add_option("--env", r.env,
                  "a latitude-longitude OpenEXR environment (default: the analytic neutral studio)");
   sub.add_option(
@@ -84,7 +84,7 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
                          "map FILE.de2000.png; with --compare the truth "
                          "and every model, heat maps, an animated flip (FILE.flip.webp) and "
                          "a contact sheet (FILE.sheet.png)");
-  auto r = std::make_shared<report::RenderRequest>();
+  auto r = std::make_shared<jobs::RenderRequest>();
   sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
   sub->add_option("--model", r->model,
                   "truth (spectral ground truth) or a model: " + analysis::model_names())
@@ -119,15 +119,15 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
       ->required()
       ->check(output_location());
   sub->callback([&g, &selected, r, size] {
-    if (!r->compare.empty() && size->count() == 0) r->settings.size_px = report::kCompareSizePx;
+    if (!r->compare.empty() && size->count() == 0) r->settings.size_px = jobs::kCompareSizePx;
     selected = [&g, r] {
-      report::check_render_request(*r);
+      jobs::check_render_request(*r);
       r->settings.progress = periodic_progress(g, "render: rows ");
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, r->materials);
-      std::optional<report::LabelFont> font;  // only heat maps and sheets have labels
-      if (report::render_draws_labels(*r)) font.emplace(g.label_font);
-      return write_output(g, report::render_outputs(ctx, ms, *r, font ? &*font : nullptr));
+      std::optional<draw::LabelFont> font;  // only heat maps and sheets have labels
+      if (jobs::render_draws_labels(*r)) font.emplace(g.label_font);
+      return write_output(g, jobs::render_outputs(ctx, ms, *r, font ? &*font : nullptr));
     };
   });
 }

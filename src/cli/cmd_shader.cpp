@@ -31,8 +31,8 @@ int print_reference(const GlobalOptions& g, const analysis::ShaderRequest& r,
       throw InputError(fmt::format("--roughness {} out of range (0 to 1)", x));
   const auto ctx = make_context(g);
   const auto ms = load_many(g, ctx, a.materials);
-  fmt::print("{}", report::to_csv(analysis::model_reference(ctx, ms, model, lighting, a.roughness,
-                                                            analysis::engine_tables(r.size))));
+  fmt::print("{}", documents::to_csv(analysis::model_reference(
+                       ctx, ms, model, lighting, a.roughness, analysis::engine_tables(r.size))));
   return 0;
 }
 

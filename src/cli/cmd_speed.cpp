@@ -40,23 +40,23 @@ void add_speed_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       ->check(output_location());
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
-      const auto f = report::format_from_name(a->format);
-      if (!a->plot.empty()) report::file_type(a->plot);
+      const auto f = documents::format_from_name(a->format);
+      if (!a->plot.empty()) draw::file_type(a->plot);
       const auto costs =
           a->measure ? analysis::measure_model_costs()
                      : analysis::load_model_costs(given_or(a->costs, g.settings.paths.model_costs));
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, a->materials);
-      std::optional<report::LabelFont> font;
+      std::optional<draw::LabelFont> font;
       if (!a->plot.empty()) font.emplace(g.label_font);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
       const auto gpu = analysis::load_gpu_costs(given_or(a->gpu_costs, g.settings.paths.gpu_costs));
       const auto t = analysis::speed_table(ctx, in.studies(), costs, gpu);
       if (!a->plot.empty()) {
-        report::write_speed_plot(a->plot, analysis::speed_rows(in.studies(), costs, gpu), *font);
+        draw::write_speed_plot(a->plot, analysis::speed_rows(in.studies(), costs, gpu), *font);
         progress(g, "speed: wrote " + a->plot);
       }
-      fmt::print("{}", report::render(t, f));
+      fmt::print("{}", documents::render(t, f));
       return 0;
     };
   });

@@ -32,7 +32,7 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected);    //
 
 // `presets --consensus`: cli/cmd_library.cpp.
 int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
-                      const report::PresetFormat& format, bool openpbr, const std::string& out,
+                      const documents::PresetFormat& format, bool openpbr, const std::string& out,
                       double roughness);
 void add_consensus_command(CLI::App& app, GlobalOptions& g, Runner& selected);
 
@@ -44,8 +44,8 @@ void add_materials(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, format] {
     selected = [&g, format] {
-      const auto f = report::format_from_name(*format);
-      fmt::print("{}", report::render(analysis::catalog_table(g.settings.paths), f));
+      const auto f = documents::format_from_name(*format);
+      fmt::print("{}", documents::render(analysis::catalog_table(g.settings.paths), f));
       return 0;
     };
   });
@@ -68,11 +68,11 @@ void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--format", *format, "csv, md or json")->capture_default_str();
   sub->callback([&g, &selected, materials, model, format, params] {
     selected = [&g, materials, model, format, params] {
-      const auto f = report::format_from_name(*format);
+      const auto f = documents::format_from_name(*format);
       analysis::parameter_set_from_name(*params);
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, *materials);
-      fmt::print("{}", report::render(analysis::curve_table(ctx, ms, *model, *params), f));
+      fmt::print("{}", documents::render(analysis::curve_table(ctx, ms, *model, *params), f));
       return 0;
     };
   });
@@ -97,11 +97,11 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->callback([&g, &selected, name, materials, format] {
     selected = [&g, name, materials, format] {
       const auto& spec = analysis::find_table(*name);
-      const auto f = report::format_from_name(*format);
+      const auto f = documents::format_from_name(*format);
       const auto ctx = make_context(g);
       const auto ms = load_many(g, ctx, *materials);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      fmt::print("{}", report::render(spec.build(in), f));
+      fmt::print("{}", documents::render(spec.build(in), f));
       return 0;
     };
   });
@@ -109,7 +109,7 @@ void add_table(CLI::App& app, GlobalOptions& g, Runner& selected) {
 
 // The presets of `specs` in `format` (documents/preset_formats.h).
 std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& specs,
-                             const report::PresetFormat& format, bool openpbr, int basis_terms,
+                             const documents::PresetFormat& format, bool openpbr, int basis_terms,
                              double roughness) {
   const auto ctx = make_context(g);
   analysis::ExportOptions options;
@@ -121,15 +121,16 @@ std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& s
     throw InputError("no material left to work on (every one was skipped)");
   for (const auto& note : named.notes) progress(g, note);
   const auto& ms = named.materials;
-  if (format.kind != report::PresetKind::Table) {
+  if (format.kind != documents::PresetKind::Table) {
     // Documents use the derived parameters only: no fits.
     analysis::StudyOptions derived_only;
     derived_only.fit = false;
     const auto studies =
         analysis::study_materials(ctx, ms, derived_only, study_progress(g, "deriving: "));
-    if (format.kind == report::PresetKind::MaterialX && !report::materialx_space(ctx).note.empty())
-      progress(g, "presets: " + report::materialx_space(ctx).note);
-    return report::preset_document(format, {ctx, studies, analysis::Table{}, options});
+    if (format.kind == documents::PresetKind::MaterialX &&
+        !documents::materialx_space(ctx).note.empty())
+      progress(g, "presets: " + documents::materialx_space(ctx).note);
+    return documents::preset_document(format, {ctx, studies, analysis::Table{}, options});
   }
   const auto studies = analysis::study_materials(ctx, ms, analysis::presets_study_options(openpbr),
                                                  study_progress(g, "fitting: "));
@@ -140,7 +141,7 @@ std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& s
   if (!options.skipped.empty())
     t.notes.push_back(
         fmt::format("skipped {}: {}", options.skipped.size(), fmt::join(options.skipped, "; ")));
-  return report::preset_document(format, {ctx, studies, t, options});
+  return documents::preset_document(format, {ctx, studies, t, options});
 }
 
 void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
@@ -182,7 +183,7 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
                   "consensus presets instead, with their uncertainty: an element ('Au', 'gold'), a "
                   "page glob, or NAME=GLOB[,GLOB...] (repeatable; docs/consensus.md)");
   sub->callback([&g, &selected, a] {
-    const auto* format = &report::preset_format(a->format, a->openpbr, a->shader);
+    const auto* format = &documents::preset_format(a->format, a->openpbr, a->shader);
     if (!a->consensus.empty()) {
       if (!a->materials.empty())
         throw InputError("presets: name MATERIALS or --consensus, not both");
@@ -191,7 +192,7 @@ void add_presets(CLI::App& app, GlobalOptions& g, Runner& selected) {
       };
       return;
     }
-    if (a->basis != 0 && (format->kind != report::PresetKind::Table || a->openpbr))
+    if (a->basis != 0 && (format->kind != documents::PresetKind::Table || a->openpbr))
       throw InputError("presets: --basis applies to the csv, md and json presets only");
     selected = [&g, a, format] {
       emit(g, a->out,
@@ -230,14 +231,14 @@ void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
       const auto ctx = make_context(g);
       const auto ms = analysis::load_catalog(ctx);
       print_warnings(g, ms);
-      std::optional<report::LabelFont> font;  // the figures' labels
+      std::optional<draw::LabelFont> font;  // the figures' labels
       if (!*no_figures) font.emplace(g.label_font);
       analysis::TableInputs in(ctx, ms, g.blend, study_progress(g, "fitting: "));
-      auto files = report::reproduce_files(
+      auto files = jobs::reproduce_files(
           in, font ? &*font : nullptr, [&g](const std::string& line) { progress(g, line); },
           lookdev_sheets(*out));
       for (auto& f : files) f.first = *out + "/" + f.first;
-      report::write_files_atomic(files, *out);
+      io::write_files_atomic(files, *out);
       progress(g, fmt::format("reproduce: wrote {} files to {}", files.size(), *out));
       return 0;
     };

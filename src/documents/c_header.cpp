@@ -8,7 +8,7 @@
 
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 namespace {
 
@@ -18,7 +18,7 @@ std::string upper(std::string s) {
 }
 
 // The texture's attributes as comment lines, "fresnelLab:" left out.
-std::string attribute_lines(const ExrImage& t) {
+std::string attribute_lines(const io::ExrImage& t) {
   auto key = [](const std::string& k) {
     const auto colon = k.find(':');
     return colon == std::string::npos ? k : k.substr(colon + 1);
@@ -30,12 +30,12 @@ std::string attribute_lines(const ExrImage& t) {
 }
 
 // The values, a few texels per line.
-std::string values(const ExrImage& t, bool half) {
+std::string values(const io::ExrImage& t, bool half) {
   const size_t channels = t.channels.size(), per_line = std::max<size_t>(1, 8 / channels);
   std::string s;
   for (size_t k = 0; k < t.pixels.size(); ++k) {
     if (k % (channels * per_line) == 0) s += k ? "\n   " : "   ";
-    s += half ? fmt::format(" 0x{:04x},", half_bits(t.pixels[k]))
+    s += half ? fmt::format(" 0x{:04x},", io::half_bits(t.pixels[k]))
               : fmt::format(" {:.9e}f,", t.pixels[k]);
   }
   return s + "\n";
@@ -54,7 +54,7 @@ void check_c_symbol(const std::string& symbol) {
         symbol));
 }
 
-std::string c_header(const ExrImage& t, const CHeader& h) {
+std::string c_header(const io::ExrImage& t, const CHeader& h) {
   check_c_symbol(h.symbol);
   if (t.width != t.height ||
       t.pixels.size() != static_cast<size_t>(t.width) * t.height * t.channels.size())
@@ -76,4 +76,4 @@ std::string c_header(const ExrImage& t, const CHeader& h) {
   return s + values(t, h.half) + fmt::format("}};\n\n#endif /* {}_H */\n", macro);
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

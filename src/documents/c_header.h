@@ -14,16 +14,16 @@
 
 #include "io/exr.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 struct CHeader {
   std::string symbol;        // a C identifier (check_c_symbol)
   std::string generated_by;  // the command that wrote it, for the first comment line
   bool half = false;  // uint16_t half-float bit patterns (an RGB16F texture) instead of float
 };
-std::string c_header(const ExrImage& texture, const CHeader& header);
+std::string c_header(const io::ExrImage& texture, const CHeader& header);
 
 // InputError unless `symbol` is a C identifier of at most 64 characters.
 void check_c_symbol(const std::string& symbol);
 
-}  // namespace fl::report
+}  // namespace fl::documents

@@ -11,7 +11,7 @@
 #include "color/matrix.h"
 #include "documents/json.h"
 
-namespace fl::report {
+namespace fl::documents {
 namespace {
 
 constexpr const char* kCoveragePolicy =
@@ -161,4 +161,4 @@ std::string presets_gltf(const analysis::Context& ctx,
   });
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

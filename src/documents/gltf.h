@@ -6,7 +6,7 @@
 #include "analysis/study/study.h"
 #include "analysis/tables/shading_presets.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 // glTF's colours are linear Rec.709 (sRGB primaries, D65): colours in any other working space are
 // converted with OpenColorIO's matrix (asset.extras say so), and the ΔE2000 of a stored colour is
@@ -26,4 +26,4 @@ std::string presets_gltf(const analysis::Context& ctx,
                          const std::vector<analysis::MaterialStudy>& studies,
                          const analysis::ExportOptions& options = {});
 
-}  // namespace fl::report
+}  // namespace fl::documents

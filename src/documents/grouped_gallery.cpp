@@ -6,7 +6,7 @@
 
 #include "util/suggest.h"
 
-namespace fl::report {
+namespace fl::documents {
 namespace {
 
 // The page's side: the search over the index, and loading a group's script when its place comes
@@ -131,4 +131,4 @@ GroupedGallery grouped_gallery(const std::vector<GalleryEntry>& entries, size_t 
   return out;
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

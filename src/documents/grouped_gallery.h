@@ -10,7 +10,7 @@
 
 #include "documents/html.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 struct GroupedGallery {
   std::string html;    // the gallery section's content, for HtmlReport::gallery_fragment
@@ -23,4 +23,4 @@ struct GroupedGallery {
 GroupedGallery grouped_gallery(const std::vector<GalleryEntry>& entries, size_t eager_cards,
                                const std::string& folder);
 
-}  // namespace fl::report
+}  // namespace fl::documents

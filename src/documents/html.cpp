@@ -7,8 +7,9 @@
 #include <vector>
 
 #include "documents/table_formats.h"
+#include "io/writer.h"
 
-namespace fl::report {
+namespace fl::documents {
 namespace {
 
 // The page's style: a light, dense layout; tables scroll inside their box with sticky headers.
@@ -150,7 +151,7 @@ constexpr const char* kScript = R"JS(
 })();
 )JS";
 
-std::string hex(Rgb8 c) {
+std::string hex(io::Rgb8 c) {
   return fmt::format("#{:02x}{:02x}{:02x}", c.r, c.g, c.b);
 }
 
@@ -175,7 +176,7 @@ std::string cell_html(const analysis::Cell& cell, int precision) {
                      format_number(v, precision));
 }
 
-std::string strip_gradient(const std::vector<Rgb8>& strip) {
+std::string strip_gradient(const std::vector<io::Rgb8>& strip) {
   std::string s = "linear-gradient(90deg";
   for (size_t i = 0; i < strip.size(); ++i)
     s += fmt::format(",{} {:.1f}%", hex(strip[i]),
@@ -336,13 +337,11 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries) {
   return s;
 }
 
-using Files = std::vector<std::pair<std::string, std::string>>;
-
 namespace {
 
 // The tables section; with `folder`, a table larger than kInlineTableBytes is left to a script
 // FOLDER/NAME.js (added to `scripts`) that the page loads when the table's section is opened.
-std::string tables_section(const HtmlReport& r, const std::string& folder, Files* scripts) {
+std::string tables_section(const HtmlReport& r, const std::string& folder, io::Files* scripts) {
   std::string s = "<section id=\"tables\"><h2>Tables</h2>\n";
   for (const auto& t : r.tables) {
     std::string body = table_html(t, "table-" + t.name, 3);
@@ -384,8 +383,8 @@ std::string html_report(const HtmlReport& r) {
   return html_report_files(r, "").front().second;
 }
 
-Files html_report_files(const HtmlReport& r, const std::string& folder) {
-  Files scripts;
+io::Files html_report_files(const HtmlReport& r, const std::string& folder) {
+  io::Files scripts;
   std::string s = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
       "<meta name=\"viewport\" content=\"width=device-width, "
@@ -422,9 +421,9 @@ Files html_report_files(const HtmlReport& r, const std::string& folder) {
   s += kScript;
   s += r.gallery_script;
   s += "</script>\n</body></html>\n";
-  Files out{{"index.html", std::move(s)}};
+  io::Files out{{"index.html", std::move(s)}};
   for (auto& f : scripts) out.push_back(std::move(f));
   return out;
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

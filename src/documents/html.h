@@ -12,7 +12,7 @@
 #include "analysis/tables/table.h"
 #include "io/image.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 // Text for HTML element content and attribute values (& < > " ' escaped).
 std::string html_escape(const std::string& text);
@@ -36,9 +36,9 @@ struct GalleryEntry {
   std::string kind;  // what the entry is ("bulk", "thin film", "consensus", "catalog", "file")
   // Other names the search finds it by: its element's symbol and common name, catalog aliases.
   std::vector<std::string> keywords;
-  std::string group;        // the element it is grouped under (grouped_gallery), e.g. "Au (Gold)"
-  std::vector<Rgb8> strip;  // ground truth display colours at equally spaced angles 0°…90°
-  Rgb8 f0, f82;             // display colours of F0 and F82
+  std::string group;  // the element it is grouped under (grouped_gallery), e.g. "Au (Gold)"
+  std::vector<io::Rgb8> strip;  // ground truth display colours at equally spaced angles 0°…90°
+  io::Rgb8 f0, f82;             // display colours of F0 and F82
   std::vector<std::string> flags;
   std::vector<std::pair<std::string, std::string>> facts;    // (label, value) lines, e.g. errors
   std::vector<std::pair<std::string, std::string>> figures;  // (caption, image path)
@@ -87,4 +87,4 @@ std::vector<std::pair<std::string, std::string>> html_report_files(const HtmlRep
 // `text` as a JavaScript string literal, safe inside a <script> element and in a .js file.
 std::string js_string(const std::string& text);
 
-}  // namespace fl::report
+}  // namespace fl::documents

@@ -4,7 +4,7 @@
 
 #include "documents/table_formats.h"
 
-namespace fl::report {
+namespace fl::documents {
 namespace {
 
 using Decimals = std::function<int(const std::string& key)>;
@@ -65,4 +65,4 @@ std::string write_json(const Json& document, const Decimals& decimals) {
   return out + "\n}\n";
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

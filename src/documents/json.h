@@ -12,11 +12,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-namespace fl::report {
+namespace fl::documents {
 
 using Json = nlohmann::ordered_json;
 
 std::string write_json(const Json& document,
                        const std::function<int(const std::string& key)>& decimals);
 
-}  // namespace fl::report
+}  // namespace fl::documents

@@ -10,7 +10,7 @@
 #include "util/errors.h"
 #include "util/suggest.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 MaterialxShader materialx_shader_from_name(const std::string& name) {
   // MaterialX's node names; the short names people say for them are aliases.
@@ -268,4 +268,4 @@ std::string presets_materialx(const analysis::Context& ctx,
   return out + "</materialx>\n";
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

@@ -7,7 +7,7 @@
 #include "analysis/tables/shading_presets.h"
 #include "color/matrix.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 // generalized_schlick: one generalized_schlick_bsdf per material (color0 = F0, color82 = the F82
 // tint, color90 = 1; scatter_mode RT for clear dielectrics) under a `surface`.
@@ -39,4 +39,4 @@ std::string presets_materialx(const analysis::Context& ctx,
                               const std::vector<analysis::MaterialStudy>& studies,
                               MaterialxShader shader, const analysis::ExportOptions& options = {});
 
-}  // namespace fl::report
+}  // namespace fl::documents

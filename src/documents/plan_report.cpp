@@ -12,7 +12,7 @@
 #include "fresnel/registered_models.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::documents {
 namespace {
 
 using analysis::Lighting;
@@ -500,4 +500,4 @@ std::string plan_materials_json(const analysis::Plan& p) {
   });
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

@@ -6,7 +6,7 @@
 #include "analysis/plan/plan.h"
 #include "analysis/shader/shader.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 std::string plan_json(const analysis::Plan& plan);
 // `costs` names where the costs came from.
@@ -34,4 +34,4 @@ std::string plan_include_name(const analysis::Plan& plan, const analysis::Option
 // error as rendered and whether it meets the budget.
 std::string plan_materials_json(const analysis::Plan& plan);
 
-}  // namespace fl::report
+}  // namespace fl::documents

@@ -6,7 +6,7 @@
 #include "documents/gltf.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::documents {
 namespace {
 
 constexpr std::array kFormats{
@@ -71,9 +71,9 @@ std::string preset_document(const PresetFormat& f, const PresetSource& in) {
   return {};
 }
 
-Files preset_files(const std::string& stem, const PresetSource& in,
-                   const std::vector<std::string>& written) {
-  Files files;
+io::Files preset_files(const std::string& stem, const PresetSource& in,
+                       const std::vector<std::string>& written) {
+  io::Files files;
   for (const auto& f : kFormats) {
     const std::string path = stem + f.suffix + "." + f.extension;
     if (std::find(written.begin(), written.end(), path) == written.end())
@@ -82,4 +82,4 @@ Files preset_files(const std::string& stem, const PresetSource& in,
   return files;
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

@@ -12,7 +12,7 @@
 #include "documents/table_formats.h"
 #include "io/writer.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 enum class PresetKind { Table, MaterialX, Gltf };
 
@@ -48,7 +48,7 @@ std::string preset_document(const PresetFormat& f, const PresetSource& in);
 
 // Every format of preset_formats() as STEM + suffix + "." + extension, in registry order, except
 // the files named in `written` already (a table loop's STEM.csv).
-Files preset_files(const std::string& stem, const PresetSource& in,
-                   const std::vector<std::string>& written = {});
+io::Files preset_files(const std::string& stem, const PresetSource& in,
+                       const std::vector<std::string>& written = {});
 
-}  // namespace fl::report
+}  // namespace fl::documents

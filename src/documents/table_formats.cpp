@@ -10,7 +10,7 @@
 #include "util/errors.h"
 #include "util/suggest.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 namespace {
 const std::vector<NameChoice>& table_format_choices() {
@@ -175,4 +175,4 @@ std::string render(const analysis::Table& t, Format f) {
   }
 }
 
-}  // namespace fl::report
+}  // namespace fl::documents

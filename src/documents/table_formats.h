@@ -4,7 +4,7 @@
 
 #include "analysis/tables/table.h"
 
-namespace fl::report {
+namespace fl::documents {
 
 enum class Format { Csv, Markdown, Json };
 // csv, md (or markdown) or json, ignoring case; InputError otherwise.
@@ -25,4 +25,4 @@ std::string render(const analysis::Table& t, Format f);
 // `v` with `precision` decimals, "-0.000" printed as "0.000".
 std::string format_number(double v, int precision);
 
-}  // namespace fl::report
+}  // namespace fl::documents

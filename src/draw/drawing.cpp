@@ -19,7 +19,7 @@
 #include "io/writer.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 // Owns one reference to the Cairo face.
 struct LabelFont::Face {
@@ -83,7 +83,7 @@ cairo_font_face_t* load_face(const std::string& path) {
   return face;
 }
 
-void set_colour(cairo_t* cr, Rgb8 c) {
+void set_colour(cairo_t* cr, io::Rgb8 c) {
   cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0);
 }
 
@@ -144,7 +144,7 @@ void paint(cairo_t* cr, const Text& t, const LabelFont* font) {
 }
 
 void paint(cairo_t* cr, const Picture& p, const LabelFont*) {
-  const Image8& img = p.image;
+  const io::Image8& img = p.image;
   if (img.width <= 0 || img.height <= 0) return;
   cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, img.width, img.height);
   unsigned char* data = cairo_image_surface_get_data(s);
@@ -152,7 +152,7 @@ void paint(cairo_t* cr, const Picture& p, const LabelFont*) {
   for (int y = 0; y < img.height; ++y) {
     auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<size_t>(y) * stride);
     for (int x = 0; x < img.width; ++x) {
-      const Rgb8 c = img.at(x, y);
+      const io::Rgb8 c = img.at(x, y);
       row[x] = (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
     }
   }
@@ -275,7 +275,7 @@ std::string encode_without_text(const Drawing& d, FileType type) {
   return encode_with(d, type, nullptr);
 }
 
-Image8 rasterize(const Drawing& d, const LabelFont& font) {
+io::Image8 rasterize(const Drawing& d, const LabelFont& font) {
   if (d.width <= 0 || d.height <= 0)
     throw std::logic_error("rasterize: a drawing needs a positive size");
   const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height),
@@ -283,7 +283,7 @@ Image8 rasterize(const Drawing& d, const LabelFont& font) {
   paint_drawing(s.get(), d, FileType::Png, &font);
   cairo_surface_flush(s.get());
   check(cairo_surface_status(s.get()));
-  Image8 img(d.width, d.height);
+  io::Image8 img(d.width, d.height);
   const unsigned char* data = cairo_image_surface_get_data(s.get());
   const int stride = cairo_image_surface_get_stride(s.get());
   for (int y = 0; y < d.height; ++y) {
@@ -318,7 +318,7 @@ double text_size_to_fit(const std::string& utf8, double size_px, double min_px, 
 }
 
 void write_drawing(const std::string& path, const Drawing& d, const LabelFont& font) {
-  write_file_atomic(path, encode(d, file_type(path), font));
+  io::write_file_atomic(path, encode(d, file_type(path), font));
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -10,7 +10,7 @@
 
 #include "io/image.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 struct Point {
   double x = 0, y = 0;
@@ -21,19 +21,19 @@ using Dash = std::vector<double>;
 
 struct Polyline {
   std::vector<Point> points;
-  Rgb8 colour;
+  io::Rgb8 colour;
   double width_px = 1.0;
   Dash dash;
 };
 
 struct Rect {
   double x = 0, y = 0, w = 0, h = 0;
-  Rgb8 fill;
+  io::Rgb8 fill;
 };
 
 struct Circle {
   double cx = 0, cy = 0, radius_px = 0;
-  Rgb8 colour;
+  io::Rgb8 colour;
   double ring_px = 0;  // 0: a filled disc; otherwise a ring of this width inside the radius
 };
 
@@ -43,7 +43,7 @@ struct Text {
   double x = 0, y = 0;  // baseline anchor (or the centre, when vertical)
   std::string utf8;
   double size_px = 12;  // the em size
-  Rgb8 colour;
+  io::Rgb8 colour;
   Align align = Align::Left;
   bool vertical = false;  // reading upwards, centred on (x, y)
 };
@@ -51,14 +51,14 @@ struct Text {
 // Pixels drawn unscaled with their top-left corner at (x, y) (whole pixels).
 struct Picture {
   int x = 0, y = 0;
-  Image8 image;
+  io::Image8 image;
 };
 
 using Shape = std::variant<Rect, Polyline, Circle, Text, Picture>;
 
 struct Drawing {
   int width = 0, height = 0;
-  Rgb8 background{255, 255, 255};
+  io::Rgb8 background{255, 255, 255};
   std::vector<Shape> shapes;  // painted in insertion order
 
   template <class S>
@@ -103,7 +103,7 @@ std::string encode_without_text(const Drawing& d, FileType type);
 
 // The drawing's pixels as PNG output paints them (for frames of an animation, or a picture inside
 // another drawing).
-Image8 rasterize(const Drawing& d, const LabelFont& font);
+io::Image8 rasterize(const Drawing& d, const LabelFont& font);
 
 // The advance width of `utf8` in `font` as PNG output sets it (hinted metrics), for layout.
 double text_width_px(const std::string& utf8, double size_px, const LabelFont& font);
@@ -115,4 +115,4 @@ double text_size_to_fit(const std::string& utf8, double size_px, double min_px, 
 // encode() by the extension of `path`, written atomically.
 void write_drawing(const std::string& path, const Drawing& d, const LabelFont& font);
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -9,7 +9,7 @@
 #include "draw/inferno_table.h"
 #include "draw/plot.h"
 
-namespace fl::report {
+namespace fl::draw {
 namespace {
 
 // Strip layout (pixels): margin | row labels | spans, kStripGap apart | RMS ΔE2000 column | margin.
@@ -43,8 +43,8 @@ std::string degrees(double v) {
 }
 
 // One span of one row: its sample colours, each stretched to a kStripRowHeight column.
-Image8 strip_picture(const analysis::StripRow& row, size_t first_sample, int samples) {
-  Image8 img(samples, kStripRowHeight);
+io::Image8 strip_picture(const analysis::StripRow& row, size_t first_sample, int samples) {
+  io::Image8 img(samples, kStripRowHeight);
   for (int x = 0; x < samples; ++x) {
     const std::uint8_t* p = &row.srgb[3 * (first_sample + x)];
     for (int y = 0; y < kStripRowHeight; ++y) img.set(x, y, {p[0], p[1], p[2]});
@@ -53,10 +53,10 @@ Image8 strip_picture(const analysis::StripRow& row, size_t first_sample, int sam
 }
 
 // One span of a model row's ΔE2000: inferno(ΔE / kStripDe2000Scale), saturating above the scale.
-Image8 de_picture(const analysis::StripRow& row, size_t first_sample, int samples) {
-  Image8 img(samples, kStripDeHeight);
+io::Image8 de_picture(const analysis::StripRow& row, size_t first_sample, int samples) {
+  io::Image8 img(samples, kStripDeHeight);
   for (int x = 0; x < samples; ++x) {
-    const Rgb8 c =
+    const io::Rgb8 c =
         inferno(std::min(row.de2000[first_sample + x] / analysis::kStripDe2000Scale, 1.0));
     for (int y = 0; y < kStripDeHeight; ++y) img.set(x, y, c);
   }
@@ -116,7 +116,7 @@ void add_zoom_marks(Drawing& dr, const analysis::StripData& d, const std::vector
 
 // The ΔE2000 rows' colour scale, left-aligned with the spans at `top`.
 void add_de_legend(Drawing& dr, int left, int top) {
-  Image8 bar(kStripLegendW, kStripLegendH);
+  io::Image8 bar(kStripLegendW, kStripLegendH);
   for (int x = 0; x < kStripLegendW; ++x)
     for (int y = 0; y < kStripLegendH; ++y) bar.set(x, y, inferno((x + 0.5) / kStripLegendW));
   dr.add(Text{double(left - 10), double(top + 10), "ΔE2000 row under each model", 12, kInk,
@@ -172,9 +172,9 @@ Drawing strip_drawing(const analysis::StripData& d) {
 
 namespace {
 
-const Rgb8 kChannel[3] = {{205, 40, 40}, {30, 150, 50}, {40, 80, 210}};
-const Rgb8 kModel[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
-                       {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127}};
+const io::Rgb8 kChannel[3] = {{205, 40, 40}, {30, 150, 50}, {40, 80, 210}};
+const io::Rgb8 kModel[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
+                           {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127}};
 const Dash kDash[] = {{9, 5},  {2, 4},       {12, 4, 3, 4}, {5, 5},
                       {16, 5}, {3, 3, 3, 8}, {1, 3},        {7, 3, 1, 3}};
 constexpr size_t kStyles = 8;
@@ -256,7 +256,7 @@ Drawing curves_drawing(const analysis::CurveData& d) {
   return dr;
 }
 
-Rgb8 inferno(double t) {
+io::Rgb8 inferno(double t) {
   const double x = std::clamp(t, 0.0, 1.0) * (kInfernoEntries - 1);
   const int i = std::min(kInfernoEntries - 2, static_cast<int>(x));
   const double f = x - i;
@@ -270,14 +270,15 @@ Rgb8 inferno(double t) {
 namespace {
 
 // Heat map layout (pixels): title band, then the image with the colour bar to its right.
-constexpr Rgb8 kNoSurface{235, 235, 235};
+constexpr io::Rgb8 kNoSurface{235, 235, 235};
 constexpr int kHeatTop = kHeatmapImageTop, kHeatBarGap = 16, kHeatBarW = 18, kHeatRight = 110,
               kHeatMinBar = 120;
 
 void add_colour_bar(Drawing& dr, const ColourBar& bar, double scale, double de_max) {
-  Image8 ramp(bar.width, bar.height);
+  io::Image8 ramp(bar.width, bar.height);
   for (int y = 0; y < bar.height; ++y) {
-    const Rgb8 c = inferno(bar.height > 1 ? 1.0 - static_cast<double>(y) / (bar.height - 1) : 1.0);
+    const io::Rgb8 c =
+        inferno(bar.height > 1 ? 1.0 - static_cast<double>(y) / (bar.height - 1) : 1.0);
     for (int x = 0; x < bar.width; ++x) ramp.set(x, y, c);
   }
   dr.add(Picture{bar.x, bar.y, std::move(ramp)});
@@ -305,8 +306,8 @@ double heatmap_scale(const std::vector<double>& de) {
   return nice_ceiling(std::max(1.0, de_max));
 }
 
-Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale) {
-  Image8 map(width, height);
+io::Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale) {
+  io::Image8 map(width, height);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const double v = de[static_cast<size_t>(y) * width + x];
@@ -414,4 +415,4 @@ Drawing contact_sheet_drawing(const ContactSheet& s, const LabelFont& font) {
   return dr;
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

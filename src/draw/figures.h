@@ -7,7 +7,7 @@
 #include "analysis/render/figure_data.h"
 #include "draw/drawing.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 // Stacked strips, one row per StripData row (ground truth, then each model), one pixel column per
 // sample of each span, spans side by side; the RMS ΔE2000 of each model on the right. Under each
@@ -30,21 +30,21 @@ Drawing heatmap_drawing(const std::vector<double>& de, int width, int height,
 // The nice ceiling of the largest finite ΔE (at least 1).
 double heatmap_scale(const std::vector<double>& de);
 // The map's pixels: inferno(ΔE / scale), light grey where there is no surface.
-Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale);
+io::Image8 heatmap_image(const std::vector<double>& de, int width, int height, double scale);
 
 // A flip comparison on one page: per model a row of the model's render and its ΔE2000 heat map,
 // the ground truth render once, left of the first row (column 0), with one colour bar for every row
 // (the scale is heatmap_scale over all rows, so rows compare).
 struct ContactSheetRow {
   std::string label;  // the model (and its parameter set)
-  Image8 render;      // display codes, the truth's size
+  io::Image8 render;  // display codes, the truth's size
   std::vector<double> de2000;
   double mean_de2000 = 0, max_de2000 = 0;
 };
 struct ContactSheet {
   std::string title;
   std::vector<std::string> notes;  // lines under the title
-  Image8 truth;                    // square
+  io::Image8 truth;                // square
   std::vector<ContactSheetRow> rows;
 };
 // heatmap_scale over every row's ΔE2000: the one scale of the sheet and of its models' heat maps.
@@ -67,6 +67,6 @@ ColourBar heatmap_colour_bar(int width, int height);
 // The ramp: matplotlib's 256-entry "inferno" table (van der Walt & Smith 2015, matplotlib inferno,
 // CC0; draw/inferno_table.h), sRGB-encoded, entry i at t = i / 255 and interpolated linearly
 // between entries, as 8-bit codes; t is clamped to [0, 1].
-Rgb8 inferno(double t);
+io::Rgb8 inferno(double t);
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -9,10 +9,10 @@
 
 #include "draw/figures.h"
 
-namespace fl::report {
+namespace fl::draw {
 namespace {
 
-const Rgb8 kBackground{24, 24, 24}, kLabel{235, 235, 235}, kDetail{175, 175, 175};
+const io::Rgb8 kBackground{24, 24, 24}, kLabel{235, 235, 235}, kDetail{175, 175, 175};
 
 // Text size and band height grow with the frame: 11 px up to 374 px wide, 15 px from 510.
 double text_size(int width) {
@@ -22,7 +22,7 @@ int band_height(int width) {
   return static_cast<int>(std::ceil(3.4 * text_size(width)));
 }
 
-Drawing frame_drawing(const Image8& render) {
+Drawing frame_drawing(const io::Image8& render) {
   Drawing dr;
   dr.width = render.width;
   dr.height = render.height + band_height(render.width);
@@ -58,14 +58,14 @@ void add_band(Drawing& dr, int top, const std::vector<std::string>& label,
 
 // A horizontal ramp `width` × `height`: colour(t) for t from 0 at the left to 1 at the right.
 template <class Colour>
-Image8 ramp(int width, int height, Colour colour) {
-  Image8 bar(width, height);
+io::Image8 ramp(int width, int height, Colour colour) {
+  io::Image8 bar(width, height);
   for (int x = 0; x < width; ++x)
     for (int y = 0; y < height; ++y) bar.set(x, y, colour(width > 1 ? x / (width - 1.0) : 0.0));
   return bar;
 }
 
-Rgb8 difference_code(double t) {
+io::Rgb8 difference_code(double t) {
   const double d = kFlipDifferenceRange * (2 * t - 1);
   const auto c =
       static_cast<std::uint8_t>(std::clamp(std::lround(128 + kFlipDifferenceGain * d), 0L, 255L));
@@ -73,8 +73,8 @@ Rgb8 difference_code(double t) {
 }
 
 // The image without `margin` pixels on every side.
-Image8 cropped(const Image8& image, int margin) {
-  Image8 c(image.width - 2 * margin, image.height - 2 * margin);
+io::Image8 cropped(const io::Image8& image, int margin) {
+  io::Image8 c(image.width - 2 * margin, image.height - 2 * margin);
   for (int y = 0; y < c.height; ++y)
     for (int x = 0; x < c.width; ++x) c.set(x, y, image.at(x + margin, y + margin));
   return c;
@@ -83,7 +83,7 @@ Image8 cropped(const Image8& image, int margin) {
 // A panel at (x, y) with its caption above and its ramp, labelled at both ends and the middle,
 // below.
 struct Panel {
-  Image8 image, bar;
+  io::Image8 image, bar;
   std::vector<std::string> caption;  // longest first: the first that fits legibly is set
   std::string low, middle, high;
 };
@@ -106,7 +106,7 @@ void add_panel(Drawing& dr, const Panel& p, int x, int y, const LabelFont& font)
 
 }  // namespace
 
-Drawing flip_frame_drawing(const Image8& render, const std::string& label,
+Drawing flip_frame_drawing(const io::Image8& render, const std::string& label,
                            const std::string& detail, const LabelFont& font) {
   Drawing dr = frame_drawing(render);
   dr.add(Picture{0, 0, render});
@@ -114,17 +114,17 @@ Drawing flip_frame_drawing(const Image8& render, const std::string& label,
   return dr;
 }
 
-Image8 flip_frame(const Image8& render, const std::string& label, const std::string& detail,
-                  const LabelFont& font) {
+io::Image8 flip_frame(const io::Image8& render, const std::string& label, const std::string& detail,
+                      const LabelFont& font) {
   return rasterize(flip_frame_drawing(render, label, detail, font), font);
 }
 
-Image8 signed_difference(const DisplayValues& truth, const DisplayValues& model) {
+io::Image8 signed_difference(const DisplayValues& truth, const DisplayValues& model) {
   if (truth.width != model.width || truth.height != model.height ||
       truth.rgb.size() != model.rgb.size() ||
       truth.rgb.size() != 3 * static_cast<size_t>(truth.width) * truth.height)
     throw std::invalid_argument("signed_difference: images differ in size");
-  Image8 d(truth.width, truth.height);
+  io::Image8 d(truth.width, truth.height);
   for (size_t k = 0; k < d.pixels.size(); ++k) {
     const double codes = 255.0 * (double(model.rgb[k]) - double(truth.rgb[k]));
     d.pixels[k] = static_cast<std::uint8_t>(
@@ -133,8 +133,8 @@ Image8 signed_difference(const DisplayValues& truth, const DisplayValues& model)
   return d;
 }
 
-Image8 half_size(const Image8& image) {
-  Image8 h(image.width / 2, image.height / 2);
+io::Image8 half_size(const io::Image8& image) {
+  io::Image8 h(image.width / 2, image.height / 2);
   const auto code = [&](int x, int y, int c) {
     return int(image.pixels[3 * (static_cast<size_t>(y) * image.width + x) + c]);
   };
@@ -152,7 +152,7 @@ Drawing flip_difference_drawing(const DisplayValues& truth, const DisplayValues&
                                 const std::vector<double>& de2000, double scale,
                                 const std::string& name, const std::string& label,
                                 const LabelFont& font) {
-  Drawing dr = frame_drawing(Image8(truth.width, truth.height));
+  Drawing dr = frame_drawing(io::Image8(truth.width, truth.height));
   const int half = truth.width / 2, crop = half / 25, panel = half - 2 * crop;
   const int top = (truth.height - panel) / 2;
   const int bar_h = std::max(4, static_cast<int>(0.6 * text_size(truth.width)));
@@ -183,11 +183,11 @@ Drawing flip_difference_drawing(const DisplayValues& truth, const DisplayValues&
   return dr;
 }
 
-Image8 flip_difference_frame(const DisplayValues& truth, const DisplayValues& model,
-                             const std::vector<double>& de2000, double scale,
-                             const std::string& name, const std::string& label,
-                             const LabelFont& font) {
+io::Image8 flip_difference_frame(const DisplayValues& truth, const DisplayValues& model,
+                                 const std::vector<double>& de2000, double scale,
+                                 const std::string& name, const std::string& label,
+                                 const LabelFont& font) {
   return rasterize(flip_difference_drawing(truth, model, de2000, scale, name, label, font), font);
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

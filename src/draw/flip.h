@@ -8,7 +8,7 @@
 
 #include "draw/drawing.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 // The signed difference is shown as mid grey (code 128) + kFlipDifferenceGain × (model − truth)
 // per channel, the difference taken between the display-encoded floating-point images (before
@@ -33,11 +33,11 @@ struct DisplayValues {
 inline constexpr double kFlipMinTextPx = 10;
 
 // The render (display codes) above a dark band with `label` and, under it in grey, `detail`.
-Drawing flip_frame_drawing(const Image8& render, const std::string& label,
+Drawing flip_frame_drawing(const io::Image8& render, const std::string& label,
                            const std::string& detail, const LabelFont& font);
 // flip_frame_drawing's pixels.
-Image8 flip_frame(const Image8& render, const std::string& label, const std::string& detail,
-                  const LabelFont& font);
+io::Image8 flip_frame(const io::Image8& render, const std::string& label, const std::string& detail,
+                      const LabelFont& font);
 
 // A model's difference frame, the size of flip_frame(truth, ...): on the left the ΔE2000 heat map
 // (heatmap_image on `scale`), on the right signed_difference(truth, model), each panel at half the
@@ -49,16 +49,16 @@ Drawing flip_difference_drawing(const DisplayValues& truth, const DisplayValues&
                                 const std::string& name, const std::string& label,
                                 const LabelFont& font);
 // flip_difference_drawing's pixels.
-Image8 flip_difference_frame(const DisplayValues& truth, const DisplayValues& model,
-                             const std::vector<double>& de2000, double scale,
-                             const std::string& name, const std::string& label,
-                             const LabelFont& font);
+io::Image8 flip_difference_frame(const DisplayValues& truth, const DisplayValues& model,
+                                 const std::vector<double>& de2000, double scale,
+                                 const std::string& name, const std::string& label,
+                                 const LabelFont& font);
 
 // Per channel 128 + kFlipDifferenceGain × 255 × (model − truth), rounded and clamped to 0–255
 // (same sizes: std::invalid_argument otherwise).
-Image8 signed_difference(const DisplayValues& truth, const DisplayValues& model);
+io::Image8 signed_difference(const DisplayValues& truth, const DisplayValues& model);
 
 // Half the width and height (rounded down), each pixel the mean of a 2 × 2 block, rounded half up.
-Image8 half_size(const Image8& image);
+io::Image8 half_size(const io::Image8& image);
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -5,7 +5,7 @@
 // who associated CC0 with mpl-colormaps have waived all copyright and related or neighboring
 // rights"); the values of matplotlib's _cm_listed.py (_inferno_data), entry i at t = i / 255.
 
-namespace fl::report {
+namespace fl::draw {
 
 inline constexpr int kInfernoEntries = 256;
 
@@ -270,4 +270,4 @@ inline constexpr double kInferno[kInfernoEntries][3] = {
 };
 // clang-format on
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -5,7 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
-namespace fl::report {
+namespace fl::draw {
 namespace {
 
 // DejaVu Sans's ascent and descent (hhea), in em: the height a label's box reserves.
@@ -14,7 +14,7 @@ constexpr double kGapPx = 3;   // between a marker and its label
 constexpr double kStepPx = 8;  // further-out rings
 constexpr int kRings = 30;
 
-const Rgb8 kPalette[kQualitativeColours] = {
+const io::Rgb8 kPalette[kQualitativeColours] = {
     {31, 119, 180}, {255, 127, 14},  {44, 160, 44}, {214, 39, 40},  {148, 103, 189},
     {140, 86, 75},  {227, 119, 194}, {0, 95, 95},   {188, 189, 34}, {23, 190, 207}};
 
@@ -44,11 +44,11 @@ Point nearest_on(const Box& b, Point p) {
 
 }  // namespace
 
-Rgb8 qualitative_colour(size_t k) {
+io::Rgb8 qualitative_colour(size_t k) {
   return kPalette[k % kQualitativeColours];
 }
 
-Rgb8 label_ink(Rgb8 c) {
+io::Rgb8 label_ink(io::Rgb8 c) {
   const auto dark = [](unsigned char v) { return static_cast<unsigned char>(v * 0.7); };
   return {dark(c.r), dark(c.g), dark(c.b)};
 }
@@ -83,4 +83,4 @@ std::vector<Shape> place_labels(const std::vector<PointLabel>& labels, std::vect
   return out;
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

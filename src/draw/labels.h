@@ -8,17 +8,17 @@
 
 #include "draw/drawing.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 // Ten qualitative colours (Tableau 10 with its grey replaced by a dark teal, which no axis or
 // front line uses), each distinct from the others in hue or lightness; series k takes colour
 // k mod 10. Past the tenth series the colours repeat, and the series' direct labels tell them apart
 // (a new model added to the registry still plots).
-Rgb8 qualitative_colour(size_t k);
+io::Rgb8 qualitative_colour(size_t k);
 inline constexpr size_t kQualitativeColours = 10;
 
 // `c` darkened for text on white (labels of light hues stay legible).
-Rgb8 label_ink(Rgb8 c);
+io::Rgb8 label_ink(io::Rgb8 c);
 
 // An axis-aligned box in pixels: left, top, width, height.
 struct Box {
@@ -31,7 +31,7 @@ struct Box {
 struct PointLabel {
   Point at;  // the marker's centre
   std::string text;
-  Rgb8 colour;
+  io::Rgb8 colour;
 };
 
 // Texts (and leader lines) labelling `labels` inside `area`, set at `size_px`. `markers` are the
@@ -43,4 +43,4 @@ struct PointLabel {
 std::vector<Shape> place_labels(const std::vector<PointLabel>& labels, std::vector<Box> markers,
                                 const Box& area, double size_px, const LabelFont& font);
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -6,12 +6,12 @@
 
 #include "draw/plot.h"
 
-namespace fl::report {
+namespace fl::draw {
 namespace {
 
 constexpr int kWidth = 960, kHeight = 560;
 constexpr double kLeft = 90, kTop = 50, kPanelW = 600, kPanelH = 430, kRadius = 5;
-const Rgb8 kFrontColour{31, 119, 180}, kDominated{170, 170, 170}, kChosen{214, 39, 40},
+const io::Rgb8 kFrontColour{31, 119, 180}, kDominated{170, 170, 170}, kChosen{214, 39, 40},
     kBudget{44, 160, 44};
 
 Axes plan_axes(const analysis::Plan& p) {
@@ -94,4 +94,4 @@ Drawing plan_plot(const analysis::Plan& p) {
   return d;
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -5,10 +5,10 @@
 #include "analysis/plan/plan.h"
 #include "draw/drawing.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 // Options with an unmeasured instruction count have no place on the cost axis and are left out;
 // errors above the axis (4 × the budget, or the largest error when smaller) sit on its top edge.
 Drawing plan_plot(const analysis::Plan& plan);
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace fl::report {
+namespace fl::draw {
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {
   if (!(hi > lo)) return {lo};
@@ -51,7 +51,7 @@ double pixel_centre(double v) {
   return std::floor(v) + 0.5;
 }
 
-Polyline hairline(Point a, Point b, Rgb8 colour) {
+Polyline hairline(Point a, Point b, io::Rgb8 colour) {
   return {{{pixel_centre(a.x), pixel_centre(a.y)}, {pixel_centre(b.x), pixel_centre(b.y)}},
           colour,
           1.0,
@@ -61,7 +61,7 @@ Polyline hairline(Point a, Point b, Rgb8 colour) {
 void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks,
               const std::vector<double>& y_ticks, const std::string& x_label,
               const std::string& y_label, int x_decimals, int y_decimals) {
-  const Rgb8 grid{225, 225, 225}, frame{60, 60, 60};
+  const io::Rgb8 grid{225, 225, 225}, frame{60, 60, 60};
   const double right = a.left + a.width, bottom = a.top + a.height;
   for (double x : x_ticks) {
     const double px = std::min(a.map(x, a.y_min).x, right - 0.5);
@@ -85,7 +85,7 @@ void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks,
 }
 
 Polyline data_line(const Axes& a, const std::vector<double>& xs, const std::vector<double>& ys,
-                   Rgb8 colour, double width_px, Dash dash) {
+                   io::Rgb8 colour, double width_px, Dash dash) {
   Polyline l{{}, colour, width_px, std::move(dash)};
   for (size_t i = 0; i < xs.size() && i < ys.size(); ++i) {
     if (!std::isfinite(ys[i])) continue;
@@ -94,4 +94,4 @@ Polyline data_line(const Axes& a, const std::vector<double>& xs, const std::vect
   return l;
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

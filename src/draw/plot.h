@@ -5,10 +5,10 @@
 
 #include "draw/drawing.h"
 
-namespace fl::report {
+namespace fl::draw {
 
-const Rgb8 kInk{30, 30, 30};
-const Rgb8 kGreyInk{110, 110, 110};
+const io::Rgb8 kInk{30, 30, 30};
+const io::Rgb8 kGreyInk{110, 110, 110};
 
 struct Axes {
   double left = 0, top = 0, width = 0, height = 0;  // pixels
@@ -32,7 +32,7 @@ std::string tick_label(double v, int decimals);
 double pixel_centre(double v);
 
 // A 1 px straight line between two points, both snapped to pixel centres.
-Polyline hairline(Point a, Point b, Rgb8 colour);
+Polyline hairline(Point a, Point b, io::Rgb8 colour);
 
 // Frame, light grid lines at the ticks, tick labels and axis labels.
 void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks,
@@ -40,6 +40,6 @@ void add_axes(Drawing& d, const Axes& a, const std::vector<double>& x_ticks,
               const std::string& y_label, int x_decimals = 0, int y_decimals = 1);
 // A data polyline clipped to the panel's y range (points outside are clamped to the frame).
 Polyline data_line(const Axes& a, const std::vector<double>& xs, const std::vector<double>& ys,
-                   Rgb8 colour, double width_px, Dash dash = {});
+                   io::Rgb8 colour, double width_px, Dash dash = {});
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -9,9 +9,9 @@
 #include "io/writer.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::draw {
 
-std::string encode_png(const Image8& image) {
+std::string encode_png(const io::Image8& image) {
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<size_t>(image.width) * image.height * 3)
     throw std::logic_error("encode_png: image size and pixel count disagree");
@@ -22,11 +22,11 @@ std::string encode_png(const Image8& image) {
   return encode_without_text(d, FileType::Png);
 }
 
-void write_png_atomic(const std::string& path, const Image8& image) {
-  write_file_atomic(path, encode_png(image));
+void write_png_atomic(const std::string& path, const io::Image8& image) {
+  io::write_file_atomic(path, encode_png(image));
 }
 
-Image8 read_png(const std::string& path) {
+io::Image8 read_png(const std::string& path) {
   const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> s(
       cairo_image_surface_create_from_png(path.c_str()), cairo_surface_destroy);
   const cairo_status_t status = cairo_surface_status(s.get());
@@ -35,7 +35,7 @@ Image8 read_png(const std::string& path) {
   const cairo_format_t format = cairo_image_surface_get_format(s.get());
   if (format != CAIRO_FORMAT_RGB24 && format != CAIRO_FORMAT_ARGB32)
     throw InputError(path, 0, "not an RGB PNG");
-  Image8 img(cairo_image_surface_get_width(s.get()), cairo_image_surface_get_height(s.get()));
+  io::Image8 img(cairo_image_surface_get_width(s.get()), cairo_image_surface_get_height(s.get()));
   const unsigned char* data = cairo_image_surface_get_data(s.get());
   const int stride = cairo_image_surface_get_stride(s.get());
   for (int y = 0; y < img.height; ++y) {
@@ -49,4 +49,4 @@ Image8 read_png(const std::string& path) {
   return img;
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -6,15 +6,15 @@
 
 #include "io/image.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 // The PNG file as bytes.
-std::string encode_png(const Image8& image);
+std::string encode_png(const io::Image8& image);
 
 // encode_png, then written to a temporary file beside `path` that is renamed into place.
-void write_png_atomic(const std::string& path, const Image8& image);
+void write_png_atomic(const std::string& path, const io::Image8& image);
 
 // Reads an opaque PNG (any alpha is dropped), for tests and tools. Throws InputError.
-Image8 read_png(const std::string& path);
+io::Image8 read_png(const std::string& path);
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -9,7 +9,7 @@
 #include "draw/labels.h"
 #include "draw/plot.h"
 
-namespace fl::report {
+namespace fl::draw {
 namespace {
 
 using analysis::Lighting;
@@ -19,13 +19,13 @@ constexpr int kWidth = 1040, kHeight = 560;
 constexpr double kTop = 60, kPanelHeight = 380, kPanelWidth = 380;
 constexpr double kLeftPanel = 80, kRightPanel = 600;
 constexpr double kFloorDe = 5e-3, kCeilingDe = 20;  // the error axis: log10 of these ends
-const Rgb8 kGrid{225, 225, 225}, kFrame{60, 60, 60};
+const io::Rgb8 kGrid{225, 225, 225}, kFrame{60, 60, 60};
 
 // One colour per (class, lighting) on the left, per shader on the right.
 struct Series {
   const char* page_class;
   Lighting lighting;
-  Rgb8 colour;
+  io::Rgb8 colour;
   const char* label;
 };
 const Series kSeries[] = {{"metal", Lighting::Ibl, {200, 90, 0}, "metals, IBL"},
@@ -146,4 +146,4 @@ Drawing rendered_library_plot(const std::vector<RenderedLibraryRow>& rows, const
   return d;
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

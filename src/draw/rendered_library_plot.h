@@ -6,7 +6,7 @@
 #include "analysis/tables/rendered_library.h"
 #include "draw/drawing.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 // Left: the basis projections' median (solid) and p99 (dashed) page RMS ΔE2000 against K = 2..5,
 // per class and lighting. Right: every shader with a measured GPU cost over all pages, median
@@ -16,4 +16,4 @@ namespace fl::report {
 Drawing rendered_library_plot(const std::vector<analysis::RenderedLibraryRow>& rows,
                               const LabelFont& font);
 
-}  // namespace fl::report
+}  // namespace fl::draw

@@ -10,13 +10,13 @@
 #include "draw/plot.h"
 #include "io/writer.h"
 
-namespace fl::report {
+namespace fl::draw {
 namespace {
 
 constexpr int kWidth = 960, kHeight = 560;
 constexpr double kLeft = 90, kRight = 760, kTop = 50, kBottom = 480;
 constexpr double kMarkerRadius = 6, kFloorDe = 1e-3;  // errors below the floor are drawn at it
-const Rgb8 kFrame{60, 60, 60}, kGrid{225, 225, 225}, kFront{90, 90, 90};
+const io::Rgb8 kFrame{60, 60, 60}, kGrid{225, 225, 225}, kFront{90, 90, 90};
 
 // A log-scale axis range covering [lo, hi], its ends on 1-2-5 values.
 struct LogAxis {
@@ -122,11 +122,11 @@ void add_pareto_front(Drawing& d, const std::vector<Point>& front) {
 }
 
 // One qualitative colour per model, in model_specs() order.
-Rgb8 model_colour(fresnel::Model m) {
+io::Rgb8 model_colour(fresnel::Model m) {
   return qualitative_colour(static_cast<size_t>(m.index()));
 }
 
-Circle marker(Point p, Rgb8 colour, bool filled) {
+Circle marker(Point p, io::Rgb8 colour, bool filled) {
   return {p.x, p.y, kMarkerRadius, colour, filled ? 0.0 : 2.0};
 }
 
@@ -198,7 +198,7 @@ Drawing speed_plot(const std::vector<analysis::SpeedRow>& all_rows, const LabelF
 void write_speed_plot(const std::string& path, const std::vector<analysis::SpeedRow>& rows,
                       const LabelFont& font) {
   const FileType type = file_type(path);
-  write_file_atomic(path, encode(speed_plot(rows, font), type, font));
+  io::write_file_atomic(path, encode(speed_plot(rows, font), type, font));
 }
 
-}  // namespace fl::report
+}  // namespace fl::draw

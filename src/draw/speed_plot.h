@@ -7,7 +7,7 @@
 #include "analysis/tables/speed.h"
 #include "draw/drawing.h"
 
-namespace fl::report {
+namespace fl::draw {
 
 // Median RMS ΔE2000 (log scale) against ns per evaluation (log scale): one marker per model and
 // parameter set (filled: fitted, hollow: derived) in one qualitative colour per model, each model
@@ -18,4 +18,4 @@ Drawing speed_plot(const std::vector<analysis::SpeedRow>& rows, const LabelFont&
 void write_speed_plot(const std::string& path, const std::vector<analysis::SpeedRow>& rows,
                       const LabelFont& font);
 
-}  // namespace fl::report
+}  // namespace fl::draw

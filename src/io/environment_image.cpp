@@ -7,7 +7,7 @@
 
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::io {
 namespace {
 
 int channel_index(const ExrImage& exr, const std::string& path, const char* name) {
@@ -54,4 +54,4 @@ EnvironmentImage environment_image(const ExrImage& exr, const std::string& path)
   return out;
 }
 
-}  // namespace fl::report
+}  // namespace fl::io

@@ -1,15 +1,21 @@
 #pragma once
 // An EXR image as a latitude-longitude environment: its shape, channels and values checked before
-// any colour conversion (io/environment.h converts and exposes it).
+// any colour conversion (analysis/render/environment_file.h converts and exposes it).
 #include <string>
+#include <vector>
 
-#include "analysis/render/render.h"
 #include "io/exr.h"
 
-namespace fl::report {
+namespace fl::io {
+
+// An equirectangular image (width = 2 × height for a full sphere of directions).
+struct LatLongImage {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // 3 per pixel, row-major, row 0 at the zenith
+};
 
 struct EnvironmentImage {
-  analysis::LatLongImage image;    // R, G, B of the file, negative values read as 0
+  LatLongImage image;              // R, G, B of the file, negative values read as 0
   long long clamped_negative = 0;  // how many values were below 0 (lossy compression's ringing)
 };
 
@@ -19,4 +25,4 @@ struct EnvironmentImage {
 // luminance is impossible and every render would be black).
 EnvironmentImage environment_image(const ExrImage& exr, const std::string& path);
 
-}  // namespace fl::report
+}  // namespace fl::io

@@ -20,7 +20,7 @@
 #include "spectral/text_file.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::io {
 
 namespace {
 
@@ -313,4 +313,4 @@ ExrImage read_exr(const std::string& path) {
   }
 }
 
-}  // namespace fl::report
+}  // namespace fl::io

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace fl::report {
+namespace fl::io {
 
 // A scanline image of 32-bit float channels. Pixel (x, y) of channel c is
 // pixels[(y·width + x)·channels.size() + c]; row y = 0 is the first row of the file.
@@ -40,4 +40,4 @@ std::uint16_t half_bits(float v);
 // and whatever OpenEXR cannot read.
 ExrImage read_exr(const std::string& path);
 
-}  // namespace fl::report
+}  // namespace fl::io

@@ -11,7 +11,7 @@
 
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::io {
 namespace {
 
 int append_bytes(GifFileType* gif, const GifByteType* data, int length) {
@@ -247,4 +247,4 @@ GifAnimation decode_gif(const std::string& bytes, const std::string& what) {
   return a;
 }
 
-}  // namespace fl::report
+}  // namespace fl::io

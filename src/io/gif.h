@@ -5,7 +5,7 @@
 
 #include "io/image.h"
 
-namespace fl::report {
+namespace fl::io {
 
 // The frames (all the same size) shown in turn for delay_cs hundredths of a second each, looping
 // forever. Every frame has its own local colour map of at most 256 colours, giflib's median-cut
@@ -27,4 +27,4 @@ struct GifAnimation {
 // Throws InputError naming `what` when the bytes are not a GIF.
 GifAnimation decode_gif(const std::string& bytes, const std::string& what);
 
-}  // namespace fl::report
+}  // namespace fl::io

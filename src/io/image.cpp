@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace fl::report {
+namespace fl::io {
 
 Image8::Image8(int w, int h, Rgb8 fill)
     : width(w), height(h), pixels(static_cast<size_t>(w) * h * 3) {
@@ -32,4 +32,4 @@ void Image8::set(int x, int y, Rgb8 c) {
   pixels[i + 2] = c.b;
 }
 
-}  // namespace fl::report
+}  // namespace fl::io

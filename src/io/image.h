@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace fl::report {
+namespace fl::io {
 
 struct Rgb8 {
   std::uint8_t r = 0, g = 0, b = 0;
@@ -24,4 +24,4 @@ struct Image8 {
   void set(int x, int y, Rgb8 c);  // ignored outside the image
 };
 
-}  // namespace fl::report
+}  // namespace fl::io

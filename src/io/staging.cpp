@@ -17,7 +17,7 @@
 
 #include "io/writer.h"
 
-namespace fl::report {
+namespace fl::io {
 namespace staging {
 namespace {
 
@@ -198,4 +198,4 @@ void install_termination_handler() {
   }
 }
 
-}  // namespace fl::report
+}  // namespace fl::io

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-namespace fl::report::staging {
+namespace fl::io::staging {
 
 namespace fs = std::filesystem;
 
@@ -49,4 +49,4 @@ class HoldSignals {
   HoldSignals& operator=(const HoldSignals&) = delete;
 };
 
-}  // namespace fl::report::staging
+}  // namespace fl::io::staging

@@ -9,7 +9,7 @@
 
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::io {
 namespace {
 
 struct EncoderDeleter {
@@ -120,4 +120,4 @@ WebpAnimation decode_webp(const std::string& bytes, const std::string& what) {
   return a;
 }
 
-}  // namespace fl::report
+}  // namespace fl::io

@@ -5,7 +5,7 @@
 
 #include "io/image.h"
 
-namespace fl::report {
+namespace fl::io {
 
 // The frames (all the same size) shown in turn for delay_ms milliseconds each, looping forever,
 // encoded losslessly by libwebp's WebPAnimEncoder: every frame decodes to exactly its codes. The
@@ -25,4 +25,4 @@ struct WebpAnimation {
 // Throws InputError naming `what` when the bytes are not an animated (or still) WebP.
 WebpAnimation decode_webp(const std::string& bytes, const std::string& what);
 
-}  // namespace fl::report
+}  // namespace fl::io

@@ -10,7 +10,7 @@
 #include "io/staging.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::io {
 
 namespace {
 
@@ -191,4 +191,4 @@ std::string output_extension(const std::string& path, std::initializer_list<cons
       fmt::format("unknown output type '{}' (expected {})", ext.empty() ? "(none)" : ext, list));
 }
 
-}  // namespace fl::report
+}  // namespace fl::io

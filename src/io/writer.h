@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-namespace fl::report {
+namespace fl::io {
 
 // Files to write together: (path, bytes).
 using Files = std::vector<std::pair<std::string, std::string>>;
@@ -63,4 +63,4 @@ std::string lower_extension(const std::string& path);
 // and the expected types.
 std::string output_extension(const std::string& path, std::initializer_list<const char*> allowed);
 
-}  // namespace fl::report
+}  // namespace fl::io

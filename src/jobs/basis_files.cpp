@@ -7,7 +7,7 @@
 #include "analysis/library/library.h"
 #include "documents/table_formats.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 namespace {
 
@@ -97,13 +97,13 @@ std::string basis_header(const analysis::FresnelBasis& b, const std::string& com
   return h + basis_header_errors(b);
 }
 
-Files basis_files(const analysis::Context& ctx, const analysis::FresnelBasis& b,
-                  const std::string& command) {
+io::Files basis_files(const analysis::Context& ctx, const analysis::FresnelBasis& b,
+                      const std::string& command) {
   const std::vector<analysis::Table> tables = {
       analysis::basis_functions_table(b), analysis::basis_polynomials_table(b),
       analysis::basis_energy_table(b), analysis::basis_projection_table(ctx, b),
       analysis::basis_pages_table(b)};
-  Files files;
+  io::Files files;
   std::string md = fmt::format(
       "# Fresnel basis\n\n"
       "`{}`: {} of {} pages read ({} metals); {} left out "
@@ -117,13 +117,14 @@ Files basis_files(const analysis::Context& ctx, const analysis::FresnelBasis& b,
       b.skipped.size(), analysis::basis_coverage_note(b), b.lambda_nm.front(), b.lambda_nm.back(),
       b.options.lambda_step_nm, b.mu.size(), b.options.poly_degree);
   for (const auto& t : tables) {
-    files.emplace_back(t.name + ".csv", to_csv(t));
-    if (t.name != "basis_functions" && t.name != "basis_pages") md += "\n" + to_markdown(t, 2);
+    files.emplace_back(t.name + ".csv", documents::to_csv(t));
+    if (t.name != "basis_functions" && t.name != "basis_pages")
+      md += "\n" + documents::to_markdown(t, 2);
   }
-  md += "\n" + to_markdown(analysis::skip_reasons_table(b.skipped), 2);
+  md += "\n" + documents::to_markdown(analysis::skip_reasons_table(b.skipped), 2);
   files.emplace_back("basis.md", md);
   files.emplace_back("basis_polynomials.h", basis_header(b, command));
   return files;
 }
 
-}  // namespace fl::report
+}  // namespace fl::jobs

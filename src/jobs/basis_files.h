@@ -5,7 +5,7 @@
 #include "analysis/basis/basis.h"
 #include "io/writer.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 // Paths relative to the output folder: basis_functions.csv (the terms sampled),
 // basis_polynomials.csv (coefficients, fit errors), basis_energy.csv (singular values),
@@ -13,10 +13,10 @@ namespace fl::report {
 // tables with their readings, and the pages left out by reason) and
 // basis_polynomials.h (the polynomials as constexpr data, src/fresnel/basis_polynomials.h).
 // `command` is the command line, for basis.md and the header.
-Files basis_files(const analysis::Context& ctx, const analysis::FresnelBasis& basis,
-                  const std::string& command);
+io::Files basis_files(const analysis::Context& ctx, const analysis::FresnelBasis& basis,
+                      const std::string& command);
 
 // The generated header alone.
 std::string basis_header(const analysis::FresnelBasis& basis, const std::string& command);
 
-}  // namespace fl::report
+}  // namespace fl::jobs

@@ -7,7 +7,7 @@
 #include "analysis/library/library.h"
 #include "io/writer.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 // Paths relative to the output folder: library.csv / .md / .json (one row per page) and every other
 // preset format of documents/preset_formats.h (library.mtlx, library_openpbr.mtlx,
@@ -17,7 +17,7 @@ namespace fl::report {
 // tables, searchable and sortable), gallery.md with strips/PAGE.png (the ground truth's colour over
 // 0-90° per page, with its flags) when `gallery` is set, and README.md (what went in, what came
 // out, what was skipped by reason). `command` is the command line, for README.md.
-Files library_files(const analysis::Context& ctx, const analysis::Library& lib, bool gallery,
-                    const std::string& command);
+io::Files library_files(const analysis::Context& ctx, const analysis::Library& lib, bool gallery,
+                        const std::string& command);
 
-}  // namespace fl::report
+}  // namespace fl::jobs

@@ -11,7 +11,7 @@
 #include "jobs/lut_texture.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::jobs {
 namespace {
 
 using namespace lut_files;
@@ -66,7 +66,7 @@ std::string slice_list(const analysis::DielectricEnergyTable& t) {
   return s;
 }
 
-ExrImage dielectric_texture(const analysis::DielectricEnergyTable& t, int tiles) {
+io::ExrImage dielectric_texture(const analysis::DielectricEnergyTable& t, int tiles) {
   const auto& g = t.grid;
   const int n = g.size, side = tiles * n;
   auto img = texture("energy-dielectric", side, {"R", "G", "B", "A"}, dfg_axes(g),
@@ -106,15 +106,15 @@ std::string dielectric_csv(const analysis::DielectricEnergyTable& t, int tiles) 
              "# axes: {}\n# channels: e = E_F(eta), e_avg = E_F,avg(eta), e_inside and "
              "e_avg_inside the same at 1/eta; {}\n# shader: {}\n",
              dielectric_axes(t, tiles), kDielectricChannels, dielectric_shader(t, tiles)) +
-         to_csv(tab);
+         documents::to_csv(tab);
 }
 
 }  // namespace
 
-Output dielectric_energy_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+io::Output dielectric_energy_lut(const LutRequest& request, const analysis::LutProgress& progress) {
   const LutRequest r = sized(request, kDefaultSize);
   const int tiles = atlas_tiles(r.slices);
-  const std::string ext = output_extension(r.out, {".exr", ".csv", ".h"});
+  const std::string ext = io::output_extension(r.out, {".exr", ".csv", ".h"});
   const std::string symbol = header_symbol(r, ext, "fresnel_lab_energy_dielectric");
   const auto t = analysis::dielectric_energy_table(analysis::dfg_grid(r.size), r.slices,
                                                    lut_options(r, progress));
@@ -125,4 +125,4 @@ Output dielectric_energy_lut(const LutRequest& request, const analysis::LutProgr
   return one_file("lut energy --dielectric", r.out, std::move(bytes));
 }
 
-}  // namespace fl::report
+}  // namespace fl::jobs

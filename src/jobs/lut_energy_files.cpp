@@ -6,7 +6,7 @@
 #include "jobs/lut_files.h"
 #include "jobs/lut_texture.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 using namespace lut_files;
 
@@ -41,10 +41,10 @@ std::string energy_csv(const analysis::EnergyTable& t) {
           {g.nov[i], g.perceptual_roughness[j], g.alpha[j], t.e[g.index(i, j)], t.e_avg[j]});
   return fmt::format("# axes: {}\n# channels: {}\n# shader: {}\n", energy_axes(g), kEnergyChannels,
                      energy_shader(g)) +
-         to_csv(tab);
+         documents::to_csv(tab);
 }
 
-ExrImage energy_texture(const analysis::EnergyTable& t) {
+io::ExrImage energy_texture(const analysis::EnergyTable& t) {
   const auto& g = t.grid;
   const Axes axes = dfg_axes(g);
   auto img = texture("energy", g.size, {"R", "G"}, axes, g.convention, kEnergyChannels);
@@ -58,10 +58,10 @@ ExrImage energy_texture(const analysis::EnergyTable& t) {
 
 }  // namespace
 
-Output energy_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+io::Output energy_lut(const LutRequest& request, const analysis::LutProgress& progress) {
   if (request.dielectric) return dielectric_energy_lut(request, progress);
   const LutRequest r = sized(request, kDefaultSize);
-  const std::string ext = output_extension(r.out, {".exr", ".csv", ".h"});
+  const std::string ext = io::output_extension(r.out, {".exr", ".csv", ".h"});
   const std::string symbol = header_symbol(r, ext, "fresnel_lab_energy");
   const auto t = analysis::energy_table(analysis::dfg_grid(r.size), lut_options(r, progress));
   std::string bytes = ext == ".csv"
@@ -70,4 +70,4 @@ Output energy_lut(const LutRequest& request, const analysis::LutProgress& progre
                                           {symbol, lut_command("energy", r, symbol)}, r.half);
   return one_file("lut energy", r.out, std::move(bytes));
 }
-}  // namespace fl::report
+}  // namespace fl::jobs

@@ -16,7 +16,7 @@
 #include "util/errors.h"
 #include "util/suggest.h"
 
-namespace fl::report {
+namespace fl::jobs {
 namespace lut_files {
 
 // The request with its size (default_size when not given), checked.
@@ -45,9 +45,9 @@ analysis::Column col(const char* name) {
 
 // Texture-axis attributes shared by every EXR written here.
 
-ExrImage texture(const std::string& table, int size, std::vector<std::string> channels,
-                 const Axes& a, const std::string& grid, const std::string& channel_text) {
-  ExrImage img;
+io::ExrImage texture(const std::string& table, int size, std::vector<std::string> channels,
+                     const Axes& a, const std::string& grid, const std::string& channel_text) {
+  io::ExrImage img;
   img.width = img.height = size;
   img.channels = std::move(channels);
   img.string_attributes = {{"fresnelLab:table", table},
@@ -82,8 +82,8 @@ Axes dfg_axes(const analysis::LutGrid& g) {
           g.perceptual_roughness.back()};
 }
 
-Output one_file(const std::string& what, const std::string& path, std::string bytes) {
-  Output o;
+io::Output one_file(const std::string& what, const std::string& path, std::string bytes) {
+  io::Output o;
   o.files.emplace_back(path, std::move(bytes));
   o.messages.push_back(fmt::format("{}: wrote {}", what, path));
   return o;
@@ -130,14 +130,15 @@ std::string texture_path(const std::string& out, const std::string& texture, siz
 std::string header_symbol(const LutRequest& r, const std::string& ext, const char* default_symbol) {
   if (r.symbol.empty()) return default_symbol;
   if (ext != ".h") throw InputError("--symbol names the arrays of .h output only");
-  check_c_symbol(r.symbol);
+  documents::check_c_symbol(r.symbol);
   return r.symbol;
 }
 
 // A texture as EXR bytes, or as a C header for `.h` output; half floats when the request asks.
-std::string texture_bytes(ExrImage img, const std::string& ext, CHeader header, bool half) {
+std::string texture_bytes(io::ExrImage img, const std::string& ext, documents::CHeader header,
+                          bool half) {
   img.half = header.half = half;
-  return ext == ".h" ? c_header(img, header) : encode_exr(img);
+  return ext == ".h" ? documents::c_header(img, header) : io::encode_exr(img);
 }
 
 // "fresnel-lab lut NAME --size N [...]": what wrote a header.
@@ -249,7 +250,7 @@ std::string split_sum_csv(const analysis::DfgTable& t) {
   std::string head;
   for (const auto& name : analysis::term_texture_names(true))
     head += comment_lines(dfg_text(DfgLayout::SplitSum, g, name), "# ");
-  return head + to_csv(tab);
+  return head + documents::to_csv(tab);
 }
 
 std::string filament_csv(const analysis::DfgTable& t, const std::vector<double>& values) {
@@ -265,11 +266,11 @@ std::string filament_csv(const analysis::DfgTable& t, const std::vector<double>&
       tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j], values[k], values[k + 1],
                           values[k + 2]});
     }
-  return comment_lines(dfg_text(DfgLayout::Filament, g, "dfg"), "# ") + to_csv(tab);
+  return comment_lines(dfg_text(DfgLayout::Filament, g, "dfg"), "# ") + documents::to_csv(tab);
 }
 
-ExrImage dfg_texture(DfgLayout layout, const analysis::DfgTable& t, const std::string& name,
-                     const std::vector<double>& values) {
+io::ExrImage dfg_texture(DfgLayout layout, const analysis::DfgTable& t, const std::string& name,
+                         const std::vector<double>& values) {
   const auto& g = t.grid;
   const Axes axes = dfg_axes(g);
   const DfgText text = dfg_text(layout, g, name);
@@ -295,7 +296,7 @@ std::string array_body(size_t texels, int per_line, int channels, Print value) {
 
 std::string half_array(const std::vector<float>& values) {
   return array_body(values.size() / 3, 4, 3,
-                    [&](size_t k) { return fmt::format("0x{:04x}", half_bits(values[k])); });
+                    [&](size_t k) { return fmt::format("0x{:04x}", io::half_bits(values[k])); });
 }
 
 std::string filament_inc(const analysis::DfgTable& t, const std::vector<float>& values) {
@@ -323,9 +324,9 @@ std::vector<float> filament_dfg_values(const analysis::DfgTable& t,
 }
 
 // The split-sum textures: out.exr, then STEM_2.exr, ... (or out.h, STEM_2.h, ...).
-Output split_sum_textures(const LutRequest& r, const std::string& ext, const std::string& symbol,
-                          const analysis::DfgTable& t) {
-  Output o;
+io::Output split_sum_textures(const LutRequest& r, const std::string& ext,
+                              const std::string& symbol, const analysis::DfgTable& t) {
+  io::Output o;
   const auto textures = analysis::term_texture_names(true);
   for (size_t k = 0; k < textures.size(); ++k) {
     const std::string sym = k ? symbol + suffix(textures[k]) : symbol;
@@ -334,17 +335,17 @@ Output split_sum_textures(const LutRequest& r, const std::string& ext, const std
         texture_bytes(dfg_texture(DfgLayout::SplitSum, t, textures[k], dfg_values(t, textures[k])),
                       ext, {sym, lut_command("dfg", r, symbol)}, r.half));
   }
-  o.messages.push_back("lut dfg (split-sum): wrote " + file_list(o.files));
+  o.messages.push_back("lut dfg (split-sum): wrote " + io::file_list(o.files));
   return o;
 }
 
-Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+io::Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress) {
   const DfgLayout layout = dfg_layout_from_name(request.layout);
   const LutRequest r =
       sized(request, layout == DfgLayout::Filament ? kFilamentDfgSize : kDefaultSize);
   const std::string ext = layout == DfgLayout::Filament
-                              ? output_extension(r.out, {".exr", ".csv", ".h", ".inc"})
-                              : output_extension(r.out, {".exr", ".csv", ".h"});
+                              ? io::output_extension(r.out, {".exr", ".csv", ".h", ".inc"})
+                              : io::output_extension(r.out, {".exr", ".csv", ".h"});
   const std::string symbol = header_symbol(
       r, ext, layout == DfgLayout::Filament ? "fresnel_lab_dfg_filament" : "fresnel_lab_dfg");
   const auto grid = layout == DfgLayout::Filament ? analysis::filament_dfg_grid(r.size)
@@ -359,7 +360,7 @@ Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress)
   auto opts = lut_options(r, stage(0));
   const auto t = analysis::dfg_table(grid, opts);
   if (layout == DfgLayout::SplitSum && ext != ".csv") {
-    Output o = split_sum_textures(r, ext, symbol, t);
+    io::Output o = split_sum_textures(r, ext, symbol, t);
     if (r.headers && ext == ".exr") {
       LutRequest h = r;
       h.out = std::filesystem::path(r.out).replace_extension(".h").string();
@@ -377,12 +378,12 @@ Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress)
     if (ext == ".csv")
       bytes = filament_csv(t, values);
     else if (ext == ".exr")
-      bytes = encode_exr(dfg_texture(layout, t, "dfg", values));
+      bytes = io::encode_exr(dfg_texture(layout, t, "dfg", values));
     else if (ext == ".inc")
       bytes = filament_inc(t, filament_dfg_values(t, sheen));
     else
-      bytes = c_header(dfg_texture(layout, t, "dfg", values),
-                       {symbol, lut_command("dfg", r, symbol), true});
+      bytes = documents::c_header(dfg_texture(layout, t, "dfg", values),
+                                  {symbol, lut_command("dfg", r, symbol), true});
   }
   return one_file(fmt::format("lut dfg ({})", r.layout), r.out, bytes);
 }
@@ -402,4 +403,4 @@ std::string table_error_line(const analysis::Context& ctx,
       e.schlick_median, e.basis4_median, e.basis4_max);
 }
 
-}  // namespace fl::report
+}  // namespace fl::jobs

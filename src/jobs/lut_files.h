@@ -10,7 +10,7 @@
 #include "analysis/study/study.h"
 #include "io/writer.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 // The layouts of `lut dfg`. split-sum: one channel per table term (fresnel::kTermRegistry) in its
 // texture: dfg (R = dfg1 (scale), G = dfg2 (bias), B = dfg_f82, read as E = F0·R + G (Schlick),
@@ -56,22 +56,23 @@ struct LutRequest {
 // ...; Filament: half-float bit patterns) or, Filament only, out.inc (Filament's dfg.inc form: the
 // array's initializer list). Rows run from smooth to rough (GL order: the first row is texture v =
 // 0), texels within a row from n·v = 0 to 1, at texel centres; uv = (n·v, perceptual roughness).
-Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
+io::Output dfg_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // LTC moments: out.exr (RGB = n_D, f_D, l_D) and STEM_3.exr (the basis moments), out.h and
 // STEM_3.h, or out.csv.
-Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
+io::Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // LTC fit: out.exr gives FILE_1.exr (the inverse matrix), FILE_2.exr (n_D, f_D, l_D, sphere form
 // factor), FILE_3.exr (the basis moments) and FILE.csv; out.h gives FILE_1.h, FILE_2.h, FILE_3.h;
 // out.csv gives the CSV only.
-Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
+io::Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // Kulla–Conty's tables (analysis/lut/energy.h) on the DFG grid: out.exr or out.h (R = E(n·v,
 // roughness), G = E_avg(roughness)), or out.csv.
-Output energy_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
+io::Output energy_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
 // The dielectric table (analysis/lut/energy.h, dielectric_energy_table) on the DFG grid: out.exr or
 // out.h, a square atlas of √K × √K tiles of N × N texels, slice k in tile (k mod √K, k div √K),
 // RGBA = E_F(η_k), E_F,avg(η_k), E_F(1/η_k), E_F,avg(1/η_k); or out.csv (a row per slice and
 // cell). energy_lut with request.dielectric calls it.
-Output dielectric_energy_lut(const LutRequest& request, const analysis::LutProgress& progress = {});
+io::Output dielectric_energy_lut(const LutRequest& request,
+                                 const analysis::LutProgress& progress = {});
 // Filament's layout as texel values, 3 per texel in file order (the half floats are these rounded).
 std::vector<float> filament_dfg_values(const analysis::DfgTable& table,
                                        const std::vector<double>& sheen);
@@ -82,4 +83,4 @@ std::string table_error_line(const analysis::Context& ctx,
                              const std::vector<analysis::MaterialStudy>& studies,
                              const LutRequest& r, analysis::Lighting lighting);
 
-}  // namespace fl::report
+}  // namespace fl::jobs

@@ -11,7 +11,7 @@
 #include "jobs/lut_texture.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 using namespace lut_files;
 namespace {
@@ -33,7 +33,7 @@ std::string moments_csv(const analysis::MomentsTable& t) {
       tab.rows.push_back({g.nov[i], g.perceptual_roughness[j], g.alpha[j]});
       tab.rows.back().insert(tab.rows.back().end(), c.v.begin(), c.v.end());
     }
-  return to_csv(tab);
+  return documents::to_csv(tab);
 }
 
 // "R = n_D = integral rho cos, ..." for the moments of one LTC texture.
@@ -45,7 +45,7 @@ std::string moments_channel_text(const std::string& texture) {
   return s;
 }
 
-ExrImage moments_texture(const analysis::MomentsTable& t, const std::string& name) {
+io::ExrImage moments_texture(const analysis::MomentsTable& t, const std::string& name) {
   const auto& g = t.grid;
   auto img = texture("ltc-moments", g.size, exr_channels(false, name), kLtcAxes, g.convention,
                      moments_channel_text(name));
@@ -97,7 +97,7 @@ std::string ltc_csv(const analysis::LtcTable& t) {
                  {2.0 * j / (n - 1) - 1.0, static_cast<double>(i) / (n - 1), sphere_at(t, i, j),
                   c.fit_error, static_cast<long long>(c.fit.iterations), c.fit.termination});
     }
-  return to_csv(tab);
+  return documents::to_csv(tab);
 }
 
 // ltc_2's description: its terms' moments and the sphere form factor in A.
@@ -113,9 +113,9 @@ std::string ltc_2_text() {
 
 // The textures beside the matrix: ltc_2 (its terms' moments and the sphere form factor) and the
 // other terms' textures (ltc_3, ...), in analysis::term_texture_names order.
-std::vector<ExrImage> moment_textures(const analysis::LtcTable& t) {
+std::vector<io::ExrImage> moment_textures(const analysis::LtcTable& t) {
   const auto& g = t.grid;
-  std::vector<ExrImage> out;
+  std::vector<io::ExrImage> out;
   for (const auto& name : analysis::term_texture_names(false)) {
     const bool second = name == "ltc_2";
     auto channels = exr_channels(false, name);
@@ -135,7 +135,7 @@ std::vector<ExrImage> moment_textures(const analysis::LtcTable& t) {
 }
 
 // ltc_1: the normalized inverse matrix.
-ExrImage matrix_texture(const analysis::LtcTable& t) {
+io::ExrImage matrix_texture(const analysis::LtcTable& t) {
   const auto& g = t.grid;
   auto tex1 = texture(
       "ltc_1", g.size, {"R", "G", "B", "A"}, kLtcAxes, g.convention,
@@ -161,13 +161,13 @@ std::string ltc_fit_message(const analysis::LtcTable& t) {
 
 }  // namespace
 
-Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+io::Output moments_lut(const LutRequest& request, const analysis::LutProgress& progress) {
   const LutRequest r = sized(request, kDefaultSize);
-  const std::string ext = output_extension(r.out, {".exr", ".csv", ".h"});
+  const std::string ext = io::output_extension(r.out, {".exr", ".csv", ".h"});
   const std::string symbol = header_symbol(r, ext, "fresnel_lab_ltc_moments");
   const auto t = analysis::moments_table(analysis::ltc_grid(r.size), lut_options(r, progress));
   if (ext == ".csv") return one_file("lut ltc-moments", r.out, moments_csv(t));
-  Output o;
+  io::Output o;
   const auto textures = analysis::term_texture_names(false);
   for (size_t k = 0; k < textures.size(); ++k)
     o.files.emplace_back(texture_path(r.out, textures[k], k),
@@ -175,28 +175,28 @@ Output moments_lut(const LutRequest& request, const analysis::LutProgress& progr
                                        {k ? symbol + suffix(textures[k]) : symbol,
                                         lut_command("ltc-moments", r, symbol)},
                                        r.half));
-  o.messages.push_back("lut ltc-moments: wrote " + file_list(o.files));
+  o.messages.push_back("lut ltc-moments: wrote " + io::file_list(o.files));
   return o;
 }
 
-Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress) {
+io::Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress) {
   const LutRequest r = sized(request, kDefaultSize);
-  const std::string ext = output_extension(r.out, {".exr", ".csv", ".h"});
+  const std::string ext = io::output_extension(r.out, {".exr", ".csv", ".h"});
   const std::string symbol = header_symbol(r, ext, "fresnel_lab_ltc");
   const auto t = analysis::fit_ltc_table(r.size, lut_options(r, progress));
-  Output o;
+  io::Output o;
   if (ext == ".csv") {
     o = one_file("lut ltc", r.out, ltc_csv(t));
   } else {
     const std::filesystem::path out(r.out);
     const auto stem = (out.parent_path() / out.stem()).string();
-    const CHeader header{symbol, lut_command("ltc", r, symbol)};
+    const documents::CHeader header{symbol, lut_command("ltc", r, symbol)};
     const auto names = analysis::term_texture_names(false);
     const auto images = moment_textures(t);
     for (const std::string e : {ext, std::string(".h")}) {
       if (e != ext && !(r.headers && ext == ".exr")) continue;
-      auto add = [&](const std::string& texture, const ExrImage& img) {
-        CHeader h = header;
+      auto add = [&](const std::string& texture, const io::ExrImage& img) {
+        documents::CHeader h = header;
         h.symbol += suffix(texture);
         o.files.emplace_back(stem + suffix(texture) + e, texture_bytes(img, e, h, r.half));
       };
@@ -204,10 +204,10 @@ Output ltc_lut(const LutRequest& request, const analysis::LutProgress& progress)
       for (size_t k = 0; k < names.size(); ++k) add(names[k], images[k]);
     }
     if (ext == ".exr") o.files.emplace_back(stem + ".csv", ltc_csv(t));
-    o.messages.push_back("lut ltc: wrote " + file_list(o.files));
+    o.messages.push_back("lut ltc: wrote " + io::file_list(o.files));
   }
   o.messages.push_back(ltc_fit_message(t));
   return o;
 }
 
-}  // namespace fl::report
+}  // namespace fl::jobs

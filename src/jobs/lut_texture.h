@@ -15,7 +15,7 @@
 #include "io/writer.h"
 #include "jobs/lut_files.h"
 
-namespace fl::report::lut_files {
+namespace fl::jobs::lut_files {
 
 inline constexpr int kDefaultSize = 64;
 inline constexpr const char* kRoughnessAxis = "perceptual_roughness";
@@ -34,18 +34,19 @@ struct Axes {
   double y_min, y_max;
 };
 // A size × size texture with the fresnelLab:* attributes (table, axes, grid, channels, row order).
-ExrImage texture(const std::string& table, int size, std::vector<std::string> channels,
-                 const Axes& a, const std::string& grid, const std::string& channel_text);
+io::ExrImage texture(const std::string& table, int size, std::vector<std::string> channels,
+                     const Axes& a, const std::string& grid, const std::string& channel_text);
 // The uv a shader reads a DFG-grid texture at (endpoints remapped to texel centres).
 std::string dfg_uv_text(const analysis::LutGrid& g);
 // The DFG grid's texture axes: x = n·v, y = perceptual roughness.
 Axes dfg_axes(const analysis::LutGrid& g);
-Output one_file(const std::string& what, const std::string& path, std::string bytes);
+io::Output one_file(const std::string& what, const std::string& path, std::string bytes);
 // The C symbol of a table's headers (request.symbol or default_symbol), checked; InputError for a
 // symbol given with another output type.
 std::string header_symbol(const LutRequest& r, const std::string& ext, const char* default_symbol);
 // A texture as EXR bytes, or as a C header for `.h` output; half floats when `half`.
-std::string texture_bytes(ExrImage img, const std::string& ext, CHeader header, bool half);
+std::string texture_bytes(io::ExrImage img, const std::string& ext, documents::CHeader header,
+                          bool half);
 // The table terms a texture holds (analysis::term_texture_names), in registry order.
 std::vector<const fresnel::TermSpec*> texture_terms(bool dfg, const std::string& texture);
 std::string upper(std::string s);
@@ -59,4 +60,4 @@ std::string texture_path(const std::string& out, const std::string& texture, siz
 // "fresnel-lab lut NAME --size N [...]": what wrote a header.
 std::string lut_command(const char* name, const LutRequest& r, const std::string& symbol);
 
-}  // namespace fl::report::lut_files
+}  // namespace fl::jobs::lut_files

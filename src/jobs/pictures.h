@@ -10,7 +10,7 @@
 #include "draw/drawing.h"
 #include "io/writer.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 // "all" or a comma-separated list of model names (InputError for an unknown or empty name).
 std::vector<fresnel::Model> parse_models(const std::string& list);
@@ -25,8 +25,8 @@ struct PlotRequest {
 void check_plot_request(const PlotRequest& request);
 // The figure of `m` with the request's models and parameter set, as request.out, its labels in
 // `font`.
-Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                   const PlotRequest& request, const LabelFont& font);
+io::Output plot_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                       const PlotRequest& request, const draw::LabelFont& font);
 
 struct RenderRequest {
   std::vector<std::string> materials;
@@ -56,8 +56,8 @@ void check_render_request(const RenderRequest& request);
 // when it is null there).
 // The pictures go through the context's display view (Context::display); the EXR and every
 // ΔE2000 stay scene-linear.
-Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                     const RenderRequest& request, const LabelFont* font);
+io::Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                         const RenderRequest& request, const draw::LabelFont* font);
 // Whether the request draws labelled pictures (a model other than the truth, or a comparison).
 bool render_draws_labels(const RenderRequest& request);
 
@@ -68,10 +68,12 @@ std::string material_output(const std::string& out, const analysis::LoadedMateri
                             size_t count);
 // plot_output / render_output for every material, to material_output paths (the pictures through
 // the context's display view, Context::display).
-Output plot_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
-                    const PlotRequest& request, const LabelFont& font);
-Output render_outputs(const analysis::Context& ctx, const std::vector<analysis::LoadedMaterial>& ms,
-                      const RenderRequest& request, const LabelFont* font);
+io::Output plot_outputs(const analysis::Context& ctx,
+                        const std::vector<analysis::LoadedMaterial>& ms, const PlotRequest& request,
+                        const draw::LabelFont& font);
+io::Output render_outputs(const analysis::Context& ctx,
+                          const std::vector<analysis::LoadedMaterial>& ms,
+                          const RenderRequest& request, const draw::LabelFont* font);
 
 // The flip every gallery card of `reproduce` shows: figures/flip-KEY.png per material, the ground
 // truth and then Schlick, F82 and Gulbrandsen (derived parameters) side by side, each a sphere of
@@ -81,8 +83,8 @@ constexpr int kFlipSizePx = 97;
 constexpr double kFlipRoughness = 0.3;
 constexpr int kFlipSamples = 32;
 struct FlipFiles {
-  Files files;
-  std::vector<Flip> flips;  // one per study, in order
+  io::Files files;
+  std::vector<documents::Flip> flips;  // one per study, in order
 };
 FlipFiles reproduce_flips(const analysis::Context& ctx,
                           const std::vector<analysis::MaterialStudy>& studies);
@@ -90,27 +92,28 @@ FlipFiles reproduce_flips(const analysis::Context& ctx,
 // A gallery card of any material (a catalog entry, a database page, a file; no renders): name,
 // class, page, the ground-truth colour strip (19 angles) and F0/F82 swatches, with the flags and
 // facts given. What a preset library's gallery is made of.
-GalleryEntry material_card(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                           std::vector<std::string> flags,
-                           std::vector<std::pair<std::string, std::string>> facts);
+documents::GalleryEntry material_card(const analysis::Context& ctx,
+                                      const analysis::LoadedMaterial& m,
+                                      std::vector<std::string> flags,
+                                      std::vector<std::pair<std::string, std::string>> facts);
 
 // material_card with the study's facts: the RMS ΔE2000 of Schlick, F82 and Gulbrandsen (derived
 // parameters) and the best fitted model.
-GalleryEntry study_card(const analysis::Context& ctx, const analysis::MaterialStudy& st,
-                        std::vector<std::string> flags);
+documents::GalleryEntry study_card(const analysis::Context& ctx, const analysis::MaterialStudy& st,
+                                   std::vector<std::string> flags);
 
 // A gallery card per study: name, class, page, ground-truth strip and F0/F82 swatches, flags (data
 // extrapolated, presets outside [0, 1] from `presets`' out_of_range column, the F82 model's output
 // clamp), the RMS ΔE2000 of Schlick, F82 and Gulbrandsen and the best fitted model; `figures` and
 // `flips` (either may be empty) add the figure links and the flip.
-std::vector<GalleryEntry> catalog_gallery(const analysis::Context& ctx,
-                                          const std::vector<analysis::MaterialStudy>& studies,
-                                          const analysis::Table& presets, bool figures,
-                                          const std::vector<Flip>& flips);
+std::vector<documents::GalleryEntry> catalog_gallery(
+    const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
+    const analysis::Table& presets, bool figures, const std::vector<documents::Flip>& flips);
 
 // figures/strip-KEY.png and figures/curves-KEY.png per material (derived parameters), labelled in
 // `font` and rendered in parallel, and their Markdown gallery as figures.md.
-Files reproduce_figures(const analysis::Context& ctx,
-                        const std::vector<analysis::MaterialStudy>& studies, const LabelFont& font);
+io::Files reproduce_figures(const analysis::Context& ctx,
+                            const std::vector<analysis::MaterialStudy>& studies,
+                            const draw::LabelFont& font);
 
-}  // namespace fl::report
+}  // namespace fl::jobs

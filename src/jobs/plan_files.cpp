@@ -16,7 +16,7 @@
 #include "fresnel/registered_models.h"
 #include "jobs/lut_files.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 using analysis::Lighting;
 
@@ -24,7 +24,7 @@ namespace {
 
 // The table textures the chosen option reads, as `lut dfg` and `lut ltc` write them at the plan's
 // size and storage: each as EXR and as a C header.
-Files table_files(const analysis::Plan& p, int threads, const TableProgress& progress) {
+io::Files table_files(const analysis::Plan& p, int threads, const TableProgress& progress) {
   std::set<std::string> needed;
   bool dfg = false, ltc = false;
   for (const auto& l : p.scene_luts) {
@@ -32,8 +32,8 @@ Files table_files(const analysis::Plan& p, int threads, const TableProgress& pro
     dfg = dfg || l.lighting == "ibl";
     ltc = ltc || l.lighting == "area";
   }
-  Files out;
-  const auto keep = [&](const Output& o) {
+  io::Files out;
+  const auto keep = [&](const io::Output& o) {
     for (const auto& [path, bytes] : o.files) {
       const std::filesystem::path file = std::filesystem::path(path).filename();
       const std::string exr = std::filesystem::path(file).replace_extension(".exr").string();
@@ -76,9 +76,10 @@ std::string readme_shaders(const analysis::Plan& p) {
     for (Lighting l : p.scene.lightings())
       functions.push_back(fmt::format("`{}` ({})", analysis::shader_function_name(g.model, l),
                                       analysis::lighting_name(l)));
-    s += fmt::format("| `{}`, `{}` | {} | {} | {} | {} |\n", plan_include_name(p, g, "glsl"),
-                     plan_include_name(p, g, "hlsl"), g.name, fresnel::model_spec(g.model).name,
-                     join_text(materials), join_text(functions));
+    s += fmt::format("| `{}`, `{}` | {} | {} | {} | {} |\n",
+                     documents::plan_include_name(p, g, "glsl"),
+                     documents::plan_include_name(p, g, "hlsl"), g.name,
+                     fresnel::model_spec(g.model).name, join_text(materials), join_text(functions));
   }
   return s +
          "\nEach include is self-contained (its helpers, the model, the table lookups); its "
@@ -120,7 +121,7 @@ std::string readme_tables(const analysis::Plan& p) {
              p.tables.forced ? "the size given by --lut-size"
                              : "the fewest bytes of 16² to 128², half or float, that keep every "
                                "material within its budget",
-             format_number(p.tables.worst_de00, 3), half ? " --storage half" : "");
+             documents::format_number(p.tables.worst_de00, 3), half ? " --storage half" : "");
 }
 
 std::string readme_materials(const analysis::Plan& p) {
@@ -136,14 +137,14 @@ std::string readme_materials(const analysis::Plan& p) {
       const bool mirror = p.scene.materials.at(k).mirror();
       std::vector<std::string> tables;
       for (const auto& l : analysis::material_luts(p, k)) tables.push_back(l.file);
-      s += fmt::format("| {} | `{}` | {} | {} | {} | {} |\n", m.material,
-                       plan_include_name(p, g, "glsl"), fresnel::model_spec(m.model).name,
-                       analysis::parameter_set_name(m.set), format_number(m.error, 3),
-                       mirror ? "none: roughness 0 is a mirror; call `" +
-                                    analysis::shader_function_name(m.model, Lighting::Punctual) +
-                                    "(n·v, …)`"
-                       : tables.empty() ? "none"
-                                        : join_text(tables));
+      s += fmt::format(
+          "| {} | `{}` | {} | {} | {} | {} |\n", m.material,
+          documents::plan_include_name(p, g, "glsl"), fresnel::model_spec(m.model).name,
+          analysis::parameter_set_name(m.set), documents::format_number(m.error, 3),
+          mirror ? "none: roughness 0 is a mirror; call `" +
+                       analysis::shader_function_name(m.model, Lighting::Punctual) + "(n·v, …)`"
+          : tables.empty() ? "none"
+                           : join_text(tables));
     }
   return s;
 }
@@ -173,37 +174,39 @@ std::string plan_readme(const analysis::Plan& p) {
       p.scene.path, p.scene.path, sc.name,
       sc.meets_every_budget() ? "meets every material's budget"
                               : "over budget: " + join_text(sc.failing),
-      format_number(sc.worst_de00, 3), format_number(sc.median_de00, 3),
-      format_number(p.scene.max_de00, 3));
+      documents::format_number(sc.worst_de00, 3), documents::format_number(sc.median_de00, 3),
+      documents::format_number(p.scene.max_de00, 3));
   return s + readme_shaders(p) + readme_tables(p) + readme_materials(p) + readme_reference();
 }
 
 }  // namespace
-Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs,
-                 const analysis::Table& reference, const LabelFont& font, int threads,
-                 const TableProgress& progress) {
-  Files out = table_files(p, threads, progress);
+io::Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs,
+                     const analysis::Table& reference, const draw::LabelFont& font, int threads,
+                     const TableProgress& progress) {
+  io::Files out = table_files(p, threads, progress);
   std::set<std::string> includes;
   for (const auto& g : p.scene_choice().groups) {
-    if (!includes.insert(plan_include_name(p, g, "glsl")).second) continue;
+    if (!includes.insert(documents::plan_include_name(p, g, "glsl")).second) continue;
     for (const auto lang : {analysis::ShaderLanguage::Glsl, analysis::ShaderLanguage::Hlsl}) {
       const std::string ext = lang == analysis::ShaderLanguage::Glsl ? "glsl" : "hlsl";
-      const analysis::ShaderDocument doc{lang,
-                                         p.tables.size,
-                                         false,
-                                         fmt::format("fresnel-lab plan {} --out DIR ({})",
-                                                     p.scene.path, plan_include_name(p, g, ext)),
-                                         {}};
-      out.emplace_back(plan_include_name(p, g, ext), plan_group_shader(p, g, doc));
+      const analysis::ShaderDocument doc{
+          lang,
+          p.tables.size,
+          false,
+          fmt::format("fresnel-lab plan {} --out DIR ({})", p.scene.path,
+                      documents::plan_include_name(p, g, ext)),
+          {}};
+      out.emplace_back(documents::plan_include_name(p, g, ext),
+                       documents::plan_group_shader(p, g, doc));
     }
   }
-  out.emplace_back("materials.json", plan_materials_json(p));
-  out.emplace_back("reference.csv", to_csv(reference));
-  out.emplace_back("plan.md", plan_markdown(p, costs));
-  out.emplace_back("plan.json", plan_json(p));
-  out.emplace_back("pareto.svg", encode(plan_plot(p), FileType::Svg, font));
+  out.emplace_back("materials.json", documents::plan_materials_json(p));
+  out.emplace_back("reference.csv", documents::to_csv(reference));
+  out.emplace_back("plan.md", documents::plan_markdown(p, costs));
+  out.emplace_back("plan.json", documents::plan_json(p));
+  out.emplace_back("pareto.svg", draw::encode(draw::plan_plot(p), draw::FileType::Svg, font));
   out.emplace_back("README.md", plan_readme(p));
   return out;
 }
 
-}  // namespace fl::report
+}  // namespace fl::jobs

@@ -18,7 +18,7 @@
 #include "draw/drawing.h"
 #include "io/writer.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 // The marker replace_folder_atomic leaves in a folder `plan --out` made.
 inline constexpr const char* kPlanMarker = ".fresnel-lab-plan";
@@ -29,8 +29,8 @@ using TableProgress = std::function<void(const std::string& table, int done, int
 
 // Paths relative to the output folder; `reference` is analysis::plan_reference's table; `font` sets
 // the figure's labels. `threads` for the tables (0: every hardware thread).
-Files plan_files(const analysis::Plan& plan, const analysis::PlanCosts& costs,
-                 const analysis::Table& reference, const LabelFont& font, int threads = 0,
-                 const TableProgress& progress = {});
+io::Files plan_files(const analysis::Plan& plan, const analysis::PlanCosts& costs,
+                     const analysis::Table& reference, const draw::LabelFont& font, int threads = 0,
+                     const TableProgress& progress = {});
 
-}  // namespace fl::report
+}  // namespace fl::jobs

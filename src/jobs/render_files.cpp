@@ -6,13 +6,13 @@
 #include <cmath>
 #include <filesystem>
 
+#include "analysis/render/environment_file.h"
 #include "analysis/render/figure_data.h"
 #include "analysis/tables/tables.h"
 #include "draw/drawing.h"
 #include "draw/figures.h"
 #include "draw/flip.h"
 #include "draw/png.h"
-#include "io/environment.h"
 #include "io/exr.h"
 #include "io/gif.h"
 #include "io/webp.h"
@@ -20,7 +20,7 @@
 #include "util/errors.h"
 #include "util/suggest.h"
 
-namespace fl::report {
+namespace fl::jobs {
 namespace {
 
 // A flip frame stays on screen this long (milliseconds; the GIF counts hundredths of a second).
@@ -28,11 +28,11 @@ constexpr int kFlipDelayMs = 900;
 
 // The render through the context's view on the backdrop of m's class (dielectrics: reflection
 // only, over grey).
-Image8 display_image(const analysis::Context& ctx, const analysis::SphereImage& img,
-                     const analysis::LoadedMaterial& m) {
-  return Image8(img.width, img.height,
-                analysis::sphere_display(ctx.display(), img,
-                                         analysis::backdrop_for(m.material.material_class)));
+io::Image8 display_image(const analysis::Context& ctx, const analysis::SphereImage& img,
+                         const analysis::LoadedMaterial& m) {
+  return io::Image8(img.width, img.height,
+                    analysis::sphere_display(ctx.display(), img,
+                                             analysis::backdrop_for(m.material.material_class)));
 }
 
 bool reflection_only(const analysis::LoadedMaterial& m) {
@@ -82,9 +82,9 @@ Scene render_scene(const analysis::Context& ctx, const RenderRequest& r) {
 }
 
 // The EXR header shared by every render: material, colour space (with its chromaticities), scene.
-ExrImage exr_header(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                    const RenderRequest& r, const Scene& scene, int size) {
-  ExrImage exr;
+io::ExrImage exr_header(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                        const RenderRequest& r, const Scene& scene, int size) {
+  io::ExrImage exr;
   exr.width = exr.height = size;
   const auto c = color::chromaticities_of(ctx.space());
   exr.chromaticities =
@@ -103,7 +103,7 @@ ExrImage exr_header(const analysis::Context& ctx, const analysis::LoadedMaterial
 }
 
 // Channels `names` of `exr` filled from premultiplied RGB (+ alpha) or a scalar image.
-void add_channels(ExrImage& exr, const std::vector<std::string>& names,
+void add_channels(io::ExrImage& exr, const std::vector<std::string>& names,
                   const std::vector<const std::vector<float>*>& planes,
                   const std::vector<int>& strides, const std::vector<int>& offsets) {
   const size_t old_nc = exr.channels.size(), nc = old_nc + names.size(),
@@ -118,7 +118,7 @@ void add_channels(ExrImage& exr, const std::vector<std::string>& names,
   exr.pixels = std::move(pixels);
 }
 
-void add_rgba(ExrImage& exr, const std::string& prefix, const analysis::SphereImage& img,
+void add_rgba(io::ExrImage& exr, const std::string& prefix, const analysis::SphereImage& img,
               bool alpha) {
   std::vector<std::string> names{prefix + "R", prefix + "G", prefix + "B"};
   std::vector<const std::vector<float>*> planes{&img.rgb, &img.rgb, &img.rgb};
@@ -133,12 +133,12 @@ std::string model_label(fresnel::Model model, const std::string& kind) {
   return fmt::format("{} ({} parameters)", fresnel::model_spec(model).name, kind);
 }
 
-Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                   const RenderRequest& r, const Scene& scene,
-                   const analysis::MaterialRender& images, const LabelFont* font) {
+io::Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                       const RenderRequest& r, const Scene& scene,
+                       const analysis::MaterialRender& images, const draw::LabelFont* font) {
   const std::string base = r.out.substr(0, r.out.size() - 4);
   const auto& shown = images.models.empty() ? images.truth : images.models[0].image;
-  ExrImage exr = exr_header(ctx, m, r, scene, shown.width);
+  io::ExrImage exr = exr_header(ctx, m, r, scene, shown.width);
   add_rgba(exr, "", shown, true);
   const bool model = !images.models.empty();
   exr.string_attributes.emplace_back(
@@ -147,17 +147,17 @@ Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial&
   exr.string_attributes.emplace_back(
       "fresnelLab:parameters",
       model ? parameter_text(images.models[0].model, images.models[0].params) : "");
-  Files files;
-  files.emplace_back(r.out, encode_exr(exr));
-  files.emplace_back(base + ".png", encode_png(display_image(ctx, shown, m)));
+  io::Files files;
+  files.emplace_back(r.out, io::encode_exr(exr));
+  files.emplace_back(base + ".png", draw::encode_png(display_image(ctx, shown, m)));
   if (model) {
-    files.emplace_back(base + ".truth.png", encode_png(display_image(ctx, images.truth, m)));
+    files.emplace_back(base + ".truth.png", draw::encode_png(display_image(ctx, images.truth, m)));
     const auto title = fmt::format("{}: ΔE2000, truth vs {}", m.material.name,
                                    fresnel::model_spec(images.models[0].model).name);
-    files.emplace_back(
-        base + ".de2000.png",
-        encode(heatmap_drawing(images.models[0].de2000, shown.width, shown.height, title, *font),
-               FileType::Png, *font));
+    files.emplace_back(base + ".de2000.png",
+                       draw::encode(draw::heatmap_drawing(images.models[0].de2000, shown.width,
+                                                          shown.height, title, *font),
+                                    draw::FileType::Png, *font));
   }
   return files;
 }
@@ -166,7 +166,7 @@ Files single_files(const analysis::Context& ctx, const analysis::LoadedMaterial&
 std::string compare_exr(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
                         const RenderRequest& r, const Scene& scene,
                         const analysis::MaterialRender& images) {
-  ExrImage exr = exr_header(ctx, m, r, scene, images.truth.width);
+  io::ExrImage exr = exr_header(ctx, m, r, scene, images.truth.width);
   add_rgba(exr, "", images.truth, true);
   std::string fresnel = "R, G, B: spectral ground truth";
   std::vector<std::vector<float>> de(images.models.size());
@@ -180,13 +180,13 @@ std::string compare_exr(const analysis::Context& ctx, const analysis::LoadedMate
                            parameter_text(mr.model, mr.params));
   }
   exr.string_attributes.emplace_back("fresnelLab:fresnel", fresnel);
-  return encode_exr(exr);
+  return io::encode_exr(exr);
 }
 
-ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                           const RenderRequest& r, const Scene& scene,
-                           const analysis::MaterialRender& images) {
-  ContactSheet sheet;
+draw::ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                                 const RenderRequest& r, const Scene& scene,
+                                 const analysis::MaterialRender& images) {
+  draw::ContactSheet sheet;
   sheet.title = fmt::format("{}: ground truth against each model (roughness {:g})", m.material.name,
                             r.settings.roughness);
   sheet.notes = {scene.lighting,
@@ -211,59 +211,61 @@ ContactSheet contact_sheet(const analysis::Context& ctx, const analysis::LoadedM
 // The flip's frames: per model the truth, the model and its difference frame.
 // The truth frame's second line names the view, or for a dielectric that it shows the reflection
 // only.
-std::vector<Image8> flip_frames(const ContactSheet& sheet, const analysis::MaterialRender& images,
-                                double scale, const color::DisplayTransform& view,
-                                analysis::Backdrop backdrop, const LabelFont& font) {
+std::vector<io::Image8> flip_frames(const draw::ContactSheet& sheet,
+                                    const analysis::MaterialRender& images, double scale,
+                                    const color::DisplayTransform& view,
+                                    analysis::Backdrop backdrop, const draw::LabelFont& font) {
   const bool reflection = backdrop == analysis::Backdrop::ReflectionOnMidGrey;
   const auto values = [&](const analysis::SphereImage& img) {
-    return DisplayValues{img.width, img.height,
-                         analysis::sphere_display_values(view, img, backdrop)};
+    return draw::DisplayValues{img.width, img.height,
+                               analysis::sphere_display_values(view, img, backdrop)};
   };
-  const DisplayValues truth_values = values(images.truth);
-  std::vector<Image8> frames;
-  const Image8 truth =
-      flip_frame(sheet.truth, "ground truth (spectral)",
-                 reflection ? analysis::kReflectionOnlyNote : view.display_and_view(), font);
+  const draw::DisplayValues truth_values = values(images.truth);
+  std::vector<io::Image8> frames;
+  const io::Image8 truth =
+      draw::flip_frame(sheet.truth, "ground truth (spectral)",
+                       reflection ? analysis::kReflectionOnlyNote : view.display_and_view(), font);
   for (size_t i = 0; i < images.models.size(); ++i) {
     const auto& row = sheet.rows[i];
     const std::string name = fresnel::model_spec(images.models[i].model).name;
     frames.push_back(truth);
-    frames.push_back(flip_frame(
+    frames.push_back(draw::flip_frame(
         row.render, row.label,
         fmt::format("ΔE2000 mean {:.2f}, max {:.2f}", row.mean_de2000, row.max_de2000), font));
-    frames.push_back(flip_difference_frame(truth_values, values(images.models[i].image), row.de2000,
-                                           scale, name, row.label + ": difference", font));
+    frames.push_back(draw::flip_difference_frame(truth_values, values(images.models[i].image),
+                                                 row.de2000, scale, name,
+                                                 row.label + ": difference", font));
   }
   return frames;
 }
 
-Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                    const RenderRequest& r, const Scene& scene,
-                    const analysis::MaterialRender& images, const LabelFont& font) {
+io::Files compare_files(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                        const RenderRequest& r, const Scene& scene,
+                        const analysis::MaterialRender& images, const draw::LabelFont& font) {
   const std::string base = r.out.substr(0, r.out.size() - 4);
-  const ContactSheet sheet = contact_sheet(ctx, m, r, scene, images);
-  Files files;
+  const draw::ContactSheet sheet = contact_sheet(ctx, m, r, scene, images);
+  io::Files files;
   files.emplace_back(r.out, compare_exr(ctx, m, r, scene, images));
-  files.emplace_back(base + ".truth.png", encode_png(sheet.truth));
-  const double scale = contact_sheet_scale(sheet);
+  files.emplace_back(base + ".truth.png", draw::encode_png(sheet.truth));
+  const double scale = draw::contact_sheet_scale(sheet);
   for (size_t i = 0; i < images.models.size(); ++i) {
     const auto& mr = images.models[i];
     const std::string name = fresnel::model_spec(mr.model).name;
-    files.emplace_back(base + "." + name + ".png", encode_png(sheet.rows[i].render));
+    files.emplace_back(base + "." + name + ".png", draw::encode_png(sheet.rows[i].render));
     const auto title = fmt::format("{}: ΔE2000, truth vs {}", m.material.name, name);
-    files.emplace_back(
-        base + "." + name + ".de2000.png",
-        encode(heatmap_drawing(mr.de2000, mr.image.width, mr.image.height, title, font, scale),
-               FileType::Png, font));
+    files.emplace_back(base + "." + name + ".de2000.png",
+                       draw::encode(draw::heatmap_drawing(mr.de2000, mr.image.width,
+                                                          mr.image.height, title, font, scale),
+                                    draw::FileType::Png, font));
   }
   const auto frames = flip_frames(sheet, images, scale, ctx.display(),
                                   analysis::backdrop_for(m.material.material_class), font);
   if (r.flip == "gif")
-    files.emplace_back(base + ".flip.gif", encode_gif(frames, kFlipDelayMs / 10));
+    files.emplace_back(base + ".flip.gif", io::encode_gif(frames, kFlipDelayMs / 10));
   else
-    files.emplace_back(base + ".flip.webp", encode_webp(frames, kFlipDelayMs));
-  files.emplace_back(base + ".sheet.png",
-                     encode(contact_sheet_drawing(sheet, font), FileType::Png, font));
+    files.emplace_back(base + ".flip.webp", io::encode_webp(frames, kFlipDelayMs));
+  files.emplace_back(base + ".sheet.png", draw::encode(draw::contact_sheet_drawing(sheet, font),
+                                                       draw::FileType::Png, font));
   return files;
 }
 
@@ -284,7 +286,7 @@ std::string de2000_message(const analysis::ModelRender& mr) {
 }  // namespace
 
 void check_render_request(const RenderRequest& r) {
-  if (lower_extension(r.out) != ".exr")
+  if (io::lower_extension(r.out) != ".exr")
     throw InputError(r.out, 0,
                      "the render output must be an .exr file (the PNGs are written beside it)");
   analysis::parameter_set_from_name(r.params);
@@ -312,8 +314,8 @@ bool render_draws_labels(const RenderRequest& r) {
   return !render_models(r).empty();
 }
 
-Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
-                     const RenderRequest& r, const LabelFont* font) {
+io::Output render_output(const analysis::Context& ctx, const analysis::LoadedMaterial& m,
+                         const RenderRequest& r, const draw::LabelFont* font) {
   check_render_request(r);
   if (!font && render_draws_labels(r))
     throw std::invalid_argument("render_output: heat maps need a label font");
@@ -323,7 +325,7 @@ Output render_output(const analysis::Context& ctx, const analysis::LoadedMateria
   const auto images =
       analysis::render_material(ctx, m, scene.light, render_models(r), r.params, rs);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  Output o;
+  io::Output o;
   o.messages = scene.warnings;
   o.messages.push_back(
       fmt::format("render: {} × {} px, roughness {:g}, {} samples per strategy, {} image(s) in one "
@@ -341,8 +343,8 @@ Output render_output(const analysis::Context& ctx, const analysis::LoadedMateria
   o.messages.push_back(fmt::format("render: centre pixel ({:.5f}, {:.5f}, {:.5f})", rgb[3 * c],
                                    rgb[3 * c + 1], rgb[3 * c + 2]));
   for (const auto& mr : images.models) o.messages.push_back(de2000_message(mr));
-  o.messages.push_back("render: wrote " + file_list(o.files));
+  o.messages.push_back("render: wrote " + io::file_list(o.files));
   return o;
 }
 
-}  // namespace fl::report
+}  // namespace fl::jobs

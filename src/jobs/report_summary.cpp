@@ -8,7 +8,7 @@
 #include <map>
 #include <utility>
 
-namespace fl::report {
+namespace fl::jobs {
 namespace {
 
 using analysis::Cell;
@@ -129,4 +129,4 @@ std::vector<std::string> report_summary(const std::vector<Table>& tables) {
   return lines;
 }
 
-}  // namespace fl::report
+}  // namespace fl::jobs

@@ -5,7 +5,7 @@
 
 #include "analysis/tables/table.h"
 
-namespace fl::report {
+namespace fl::jobs {
 
 // Up to five Markdown lines: the best model per class as rendered (lut-accuracy), the talk's
 // Schlick values reproduced and where they differ (talk_spread), the ranking of the talk's method
@@ -13,4 +13,4 @@ namespace fl::report {
 // table is not among `tables` is left out.
 std::vector<std::string> report_summary(const std::vector<analysis::Table>& tables);
 
-}  // namespace fl::report
+}  // namespace fl::jobs

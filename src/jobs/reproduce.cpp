@@ -15,10 +15,10 @@
 #include "jobs/report_summary.h"
 #include "util/parallel.h"
 
-namespace fl::report {
+namespace fl::jobs {
 namespace {
 
-using File = Files::value_type;
+using File = io::Files::value_type;
 
 constexpr const char* kRenderedLibraryPlot = "rendered-library.png";
 
@@ -28,7 +28,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 // The tables as CSV and Markdown, with their rows of the index; the tables themselves for the HTML.
 // The studies come first, then the tables are built concurrently (each logged with its own time).
-std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files, std::string& index,
+std::vector<analysis::Table> add_tables(analysis::TableInputs& in, io::Files& files,
+                                        std::string& index,
                                         const std::function<void(const std::string&)>& log) {
   auto t0 = std::chrono::steady_clock::now();
   in.prepare();
@@ -46,8 +47,8 @@ std::vector<analysis::Table> add_tables(analysis::TableInputs& in, Files& files,
   for (size_t i = 0; i < specs.size(); ++i) {
     const auto& spec = *specs[i];
     const auto& t = tables[i];
-    files.emplace_back(std::string(spec.name) + ".csv", to_csv(t));
-    files.emplace_back(std::string(spec.name) + ".md", to_markdown(t));
+    files.emplace_back(std::string(spec.name) + ".csv", documents::to_csv(t));
+    files.emplace_back(std::string(spec.name) + ".md", documents::to_markdown(t));
     log(fmt::format("reproduce: {} ({} rows, {:.2f} s)", spec.name, t.rows.size(), seconds[i]));
     index += fmt::format("| {} | {} | [{}.md]({}.md), [{}.csv]({}.csv) |\n", spec.name,
                          spec.summary, spec.name, spec.name, spec.name, spec.name);
@@ -69,9 +70,9 @@ std::string settings_line(const analysis::Context& ctx) {
 std::string report_page(const analysis::Context& ctx,
                         const std::vector<analysis::MaterialStudy>& studies,
                         const analysis::Table& presets, const std::vector<analysis::Table>& tables,
-                        bool figures, const std::vector<Flip>& flips,
+                        bool figures, const std::vector<documents::Flip>& flips,
                         const std::vector<std::string>& lookdev) {
-  HtmlReport page;
+  documents::HtmlReport page;
   page.summary = report_summary(tables);
   page.title = "Fresnel Lab reports";
   page.intro = {
@@ -106,7 +107,7 @@ std::string report_page(const analysis::Context& ctx,
         "them): one row per model, truth, model and ΔE2000 heat map; the errors by view angle and "
         "the animated flips (lossless WebP: per model the truth, the model and a difference "
         "frame) are in [lookdev/README.md](lookdev/README.md).";
-  return html_report(page);
+  return documents::html_report(page);
 }
 
 // The presets in every other format of the registry (documents/preset_formats.h: JSON, three
@@ -114,9 +115,10 @@ std::string report_page(const analysis::Context& ctx,
 // Markdown.
 void add_documents(const analysis::Context& ctx,
                    const std::vector<analysis::MaterialStudy>& studies,
-                   const analysis::Table& presets, Files& files, std::string& index) {
+                   const analysis::Table& presets, io::Files& files, std::string& index) {
   std::string links;
-  for (auto& f : preset_files("presets", {ctx, studies, presets}, {"presets.csv", "presets.md"})) {
+  for (auto& f :
+       documents::preset_files("presets", {ctx, studies, presets}, {"presets.csv", "presets.md"})) {
     links += fmt::format("{}[{}]({})", links.empty() ? "" : ", ", f.first, f.first);
     files.push_back(std::move(f));
   }
@@ -128,19 +130,19 @@ void add_documents(const analysis::Context& ctx,
 }
 
 // The figures and the sphere flips, with their row of the index; the flips for index.html.
-std::vector<Flip> add_figures(analysis::TableInputs& in, const LabelFont& font, Files& files,
-                              std::string& index,
-                              const std::function<void(const std::string&)>& log) {
+std::vector<documents::Flip> add_figures(analysis::TableInputs& in, const draw::LabelFont& font,
+                                         io::Files& files, std::string& index,
+                                         const std::function<void(const std::string&)>& log) {
   const auto& ctx = in.ctx;
   const auto& studies = in.studies();
   const auto t0 = std::chrono::steady_clock::now();
-  files.emplace_back(
-      kRenderedLibraryPlot,
-      encode(rendered_library_plot(analysis::rendered_library_rows(
-                                       in.rendered_library(),
-                                       analysis::load_gpu_costs(ctx.settings().paths.gpu_costs)),
-                                   font),
-             FileType::Png, font));
+  files.emplace_back(kRenderedLibraryPlot,
+                     draw::encode(draw::rendered_library_plot(
+                                      analysis::rendered_library_rows(
+                                          in.rendered_library(),
+                                          analysis::load_gpu_costs(ctx.settings().paths.gpu_costs)),
+                                      font),
+                                  draw::FileType::Png, font));
   auto pictures = reproduce_figures(ctx, studies, font);
   auto flip_files = reproduce_flips(ctx, studies);
   log(fmt::format("reproduce: figures ({} PNGs, {:.2f} s)",
@@ -158,11 +160,11 @@ std::vector<Flip> add_figures(analysis::TableInputs& in, const LabelFont& font, 
 
 }  // namespace
 
-Files reproduce_files(analysis::TableInputs& in, const LabelFont* figures_font,
-                      const std::function<void(const std::string&)>& log,
-                      const std::vector<std::string>& lookdev) {
+io::Files reproduce_files(analysis::TableInputs& in, const draw::LabelFont* figures_font,
+                          const std::function<void(const std::string&)>& log,
+                          const std::vector<std::string>& lookdev) {
   const auto& ctx = in.ctx;
-  Files files;
+  io::Files files;
   std::string index =
       "# Fresnel Lab reports\n\nGenerated by `fresnel-lab reproduce`. Every table is a CSV "
       "(machine-readable, columns in docs/conventions.md) and a Markdown file; "
@@ -175,7 +177,7 @@ Files reproduce_files(analysis::TableInputs& in, const LabelFont* figures_font,
   add_documents(ctx, studies, presets, files, index);
   const bool figures = figures_font != nullptr;
   const auto flips =
-      figures ? add_figures(in, *figures_font, files, index, log) : std::vector<Flip>{};
+      figures ? add_figures(in, *figures_font, files, index, log) : std::vector<documents::Flip>{};
   const auto t0 = std::chrono::steady_clock::now();
   File page{"index.html", report_page(ctx, studies, presets, tables, figures, flips, lookdev)};
   log(fmt::format("reproduce: index.html ({} bytes, {:.2f} s)", page.second.size(),
@@ -195,4 +197,4 @@ Files reproduce_files(analysis::TableInputs& in, const LabelFont* figures_font,
   return files;
 }
 
-}  // namespace fl::report
+}  // namespace fl::jobs

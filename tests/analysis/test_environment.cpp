@@ -18,8 +18,8 @@ namespace fl {
 namespace {
 
 using analysis::EnvironmentMap;
-using analysis::LatLongImage;
 using brdf::Vec3;
+using io::LatLongImage;
 
 constexpr double kPi = std::numbers::pi;
 // Directions agree to float precision (OpenEXR computes in float).

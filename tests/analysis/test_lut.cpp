@@ -291,7 +291,7 @@ double integrate_sphere(const std::function<double(const brdf::Vec3&)>& f, doubl
 
 // Relative L3 distance (E₃/B₃)^⅓ between ρ cos and an approximation of it, over the sphere in polar
 // coordinates about a frame's Z.
-double relative_l3(const brdf::Vec3& v, double alpha, const fit::LtcFrame& frame,
+double relative_l3(const brdf::Vec3& v, double alpha, const LtcFrame& frame,
                    const std::function<double(const brdf::Vec3&)>& approx) {
   auto in_frame = [&](const std::function<double(const brdf::Vec3&)>& f) {
     return test::integrate_sphere(
@@ -344,20 +344,19 @@ TEST(Ltc, FittedLobesIntegrateToOneAndMatchTheBrdfAsWellAsLtcCode) {
       const auto& c = t.cells[k];
       const auto& mo = t.moments[k];
       EXPECT_TRUE(c.fit.usable) << i << "," << j;
-      const auto frame =
-          i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(mo.average_dir);
+      const auto frame = i == 0 ? LtcFrame{} : ltc_frame_from_average_direction(mo.average_dir);
       // The normalized LTC over its support, the hemisphere ω·(−m31, 0, m11) > 0 of its frame.
       const double axis = std::hypot(c.params.m31, c.params.m11);
       const double unit = test::integrate_hemisphere_about(
           -c.params.m31 / axis, c.params.m11 / axis,
-          [&](double x, double y, double z) { return fit::ltc_density(c.params, x, y, z); });
+          [&](double x, double y, double z) { return ltc_density(c.params, x, y, z); });
       EXPECT_NEAR(unit, 1.0, kLtcUnitIntegralTolerance) << i << "," << j;
 
       const brdf::Vec3 v = brdf::view_from_nov(t.grid.nov[i]);
       const double alpha = t.grid.alpha[j];
       const double ours = relative_l2(v, alpha, [&](const brdf::Vec3& w) {
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
-        return mo[Term::One] * fit::ltc_density(c.params, f.x, f.y, f.z);
+        return mo[Term::One] * ltc_density(c.params, f.x, f.y, f.z);
       });
       const int lk = grid64.index(kLtcCodeStride * i, kLtcCodeStride * j);
       const double theirs = relative_l2(v, alpha, [&](const brdf::Vec3& w) {
@@ -395,14 +394,14 @@ TEST(Ltc, TextureEntriesReproduceTheFittedLobe) {
     const auto& p = c.inv_packed;
     const std::array<double, 9> shader_minv{p[0], 0, p[2], 0, 1, 0, p[1], 0, p[3]};  // row-major
     const auto frame =
-        i == 0 ? fit::LtcFrame{} : fit::ltc_frame_from_average_direction(t.moments[k].average_dir);
+        i == 0 ? LtcFrame{} : ltc_frame_from_average_direction(t.moments[k].average_dir);
     for (int a = 0; a < 12; ++a)
       for (int b = 0; b < 6; ++b) {
         const double theta = (b + 0.5) * kPi / 12, phi = (a + 0.5) * kPi / 6;
         const brdf::Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
                            std::cos(theta)};
         const brdf::Vec3 f{brdf::dot(w, frame.x), brdf::dot(w, frame.y), brdf::dot(w, frame.z)};
-        const double fitted = fit::ltc_density(c.params, f.x, f.y, f.z);
+        const double fitted = ltc_density(c.params, f.x, f.y, f.z);
         EXPECT_NEAR(ref::ltc_from_inverse(shader_minv, w), fitted,
                     kTextureDensityTolerance * std::max(1.0, fitted))
             << "cell " << k << " direction " << a << "," << b;

@@ -72,7 +72,7 @@ TEST(LutCli, WritesTablesDeterministically) {
   const auto texel = analysis::integrate_dfg(grid.nov[0], grid.alpha[0], 256);
   for (const auto& tex : analysis::lut_textures()) {
     if (std::string(tex.lighting) != "ibl") continue;
-    const auto dfg = report::read_exr(tmp.path() + "/" + tex.file);
+    const auto dfg = io::read_exr(tmp.path() + "/" + tex.file);
     ASSERT_EQ(dfg.channels.size(), 3u);
     for (const auto& c : tex.channels) {
       std::string component = c.components;
@@ -97,12 +97,12 @@ TEST(LutCli, WritesTablesDeterministically) {
 
   r = test::run_command(lut + "ltc --size 4 --samples 256 --out '" + tmp.path() + "/ltc.exr'");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto t1 = report::read_exr(tmp.path() + "/ltc_1.exr");
-  const auto t2 = report::read_exr(tmp.path() + "/ltc_2.exr");
+  const auto t1 = io::read_exr(tmp.path() + "/ltc_1.exr");
+  const auto t2 = io::read_exr(tmp.path() + "/ltc_2.exr");
   EXPECT_EQ(t1.width, 4);
   EXPECT_EQ(t1.channels.size(), 4u);
   EXPECT_EQ(t2.channels.size(), 4u);
-  EXPECT_EQ(report::read_exr(tmp.path() + "/ltc_3.exr").channels.size(), 3u);  // b2..b4
+  EXPECT_EQ(io::read_exr(tmp.path() + "/ltc_3.exr").channels.size(), 3u);  // b2..b4
   EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/ltc.csv"));
 }
 

@@ -171,7 +171,7 @@ TEST(PlanCli, SplitVariantsCompileAndValidate) {
   for (const auto lang : {analysis::ShaderLanguage::Glsl, analysis::ShaderLanguage::Hlsl}) {
     analysis::ShaderDocument doc;
     doc.lang = lang;
-    const std::string code = report::plan_shader(p, doc);
+    const std::string code = documents::plan_shader(p, doc);
     EXPECT_NE(code.find("#ifdef FRESNEL_GROUP_METAL"), std::string::npos);
     EXPECT_NE(code.find("#ifdef FRESNEL_GROUP_DIELECTRIC"), std::string::npos);
     EXPECT_NE(code.find("fresnel_f82("), std::string::npos);      // the mirror's F(n·v)

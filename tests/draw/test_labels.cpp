@@ -19,15 +19,15 @@
 namespace fl {
 namespace {
 
-using report::Box;
+using draw::Box;
 
 // The box of the pixels `t` inks when set alone on white at the figure's size (PNG output).
-Box ink_box(const report::Text& t, int width, int height, const report::LabelFont& font) {
-  report::Drawing d;
+Box ink_box(const draw::Text& t, int width, int height, const draw::LabelFont& font) {
+  draw::Drawing d;
   d.width = width;
   d.height = height;
   d.add(t);
-  const auto img = report::rasterize(d, font);
+  const auto img = draw::rasterize(d, font);
   int x0 = width, y0 = height, x1 = -1, y1 = -1;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
@@ -42,13 +42,13 @@ struct Measured {
 };
 
 // The ink boxes of the texts named in `names` and the boxes of every marker (circle).
-Measured measure(const report::Drawing& d, const std::set<std::string>& names,
-                 const report::LabelFont& font) {
+Measured measure(const draw::Drawing& d, const std::set<std::string>& names,
+                 const draw::LabelFont& font) {
   Measured m;
   for (const auto& shape : d.shapes) {
-    if (const auto* t = std::get_if<report::Text>(&shape); t && names.count(t->utf8))
+    if (const auto* t = std::get_if<draw::Text>(&shape); t && names.count(t->utf8))
       m.labels.emplace_back(t->utf8, ink_box(*t, d.width, d.height, font));
-    if (const auto* c = std::get_if<report::Circle>(&shape))
+    if (const auto* c = std::get_if<draw::Circle>(&shape))
       m.markers.push_back(
           {c->cx - c->radius_px, c->cy - c->radius_px, 2 * c->radius_px, 2 * c->radius_px});
   }
@@ -68,7 +68,7 @@ void expect_no_overlap(const Measured& m) {
 
 // Ten models crowded within a factor 1.5 in cost and error: every one named once, no overlap.
 TEST(DirectLabels, SpeedPlotNamesEveryModelWithoutOverlap) {
-  const report::LabelFont font;
+  const draw::LabelFont font;
   std::vector<analysis::SpeedRow> rows;
   std::set<std::string> names;
   for (const auto& s : fresnel::model_specs()) {
@@ -77,7 +77,7 @@ TEST(DirectLabels, SpeedPlotNamesEveryModelWithoutOverlap) {
     rows.push_back({s.model, true, 1.0 + 0.05 * k, 0.8 + 0.03 * k, 2.0, k == 0});
     names.insert(s.name);
   }
-  const auto m = measure(report::speed_plot(rows, font), names, font);
+  const auto m = measure(draw::speed_plot(rows, font), names, font);
   EXPECT_EQ(m.labels.size(), names.size());
   EXPECT_EQ(m.markers.size(), rows.size() + 2);  // and the legend's fitted and derived markers
   expect_no_overlap(m);
@@ -86,7 +86,7 @@ TEST(DirectLabels, SpeedPlotNamesEveryModelWithoutOverlap) {
 // The GPU-cost figure: f82, "f82 rendered" and basis3 at the same cost and nearly the same error
 // (as in the report) are each named, apart.
 TEST(DirectLabels, GpuCostFigureNamesEveryShaderWithoutOverlap) {
-  const report::LabelFont font;
+  const draw::LabelFont font;
   std::vector<analysis::RenderedLibraryRow> rows;
   std::set<std::string> names;
   const auto& shaders = analysis::library_shaders();
@@ -104,7 +104,7 @@ TEST(DirectLabels, GpuCostFigureNamesEveryShaderWithoutOverlap) {
     }
     names.insert(shaders[k].name);
   }
-  const auto m = measure(report::rendered_library_plot(rows, font), names, font);
+  const auto m = measure(draw::rendered_library_plot(rows, font), names, font);
   EXPECT_EQ(m.labels.size(), names.size());
   expect_no_overlap(m);
 }
@@ -112,20 +112,20 @@ TEST(DirectLabels, GpuCostFigureNamesEveryShaderWithoutOverlap) {
 // The palette: ten colours, no two within 60 (of 441) of each other in RGB codes, and none too pale
 // to read as text once darkened for a label (Rec.709 luma of the codes at most 160 of 255).
 TEST(DirectLabels, QualitativePaletteIsDistinct) {
-  for (size_t i = 0; i < report::kQualitativeColours; ++i) {
-    const auto a = report::qualitative_colour(i);
-    const auto ink = report::label_ink(a);
+  for (size_t i = 0; i < draw::kQualitativeColours; ++i) {
+    const auto a = draw::qualitative_colour(i);
+    const auto ink = draw::label_ink(a);
     EXPECT_LE(0.2126 * ink.r + 0.7152 * ink.g + 0.0722 * ink.b, 160) << i;
-    for (size_t j = i + 1; j < report::kQualitativeColours; ++j) {
-      const auto b = report::qualitative_colour(j);
+    for (size_t j = i + 1; j < draw::kQualitativeColours; ++j) {
+      const auto b = draw::qualitative_colour(j);
       const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
       EXPECT_GT(std::sqrt(dr * dr + dg * dg + db * db), 60) << i << ", " << j;
     }
   }
   // An eleventh series (a model added to the registry) repeats the first colour, named by its
   // label.
-  const auto first = report::qualitative_colour(0),
-             eleventh = report::qualitative_colour(report::kQualitativeColours);
+  const auto first = draw::qualitative_colour(0),
+             eleventh = draw::qualitative_colour(draw::kQualitativeColours);
   EXPECT_EQ(first.r, eleventh.r);
   EXPECT_EQ(first.g, eleventh.g);
   EXPECT_EQ(first.b, eleventh.b);

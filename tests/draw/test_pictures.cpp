@@ -180,7 +180,7 @@ size_t count(const std::string& s, const std::string& what) {
 struct Ink {
   int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
 };
-Ink ink(const report::Image8& img) {
+Ink ink(const io::Image8& img) {
   Ink b;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
@@ -190,71 +190,71 @@ Ink ink(const report::Image8& img) {
   return b;
 }
 
-report::Image8 draw_png(const report::Drawing& d, const report::LabelFont& font) {
+io::Image8 draw_png(const draw::Drawing& d, const draw::LabelFont& font) {
   test::TempDir tmp;
-  const auto path = tmp.file("d.png", report::encode(d, report::FileType::Png, font));
-  return report::read_png(path);
+  const auto path = tmp.file("d.png", draw::encode(d, draw::FileType::Png, font));
+  return draw::read_png(path);
 }
 
 TEST(Png, RoundTripSizeAndDeterministicBytes) {
-  report::Image8 img(7, 5, report::Rgb8{10, 20, 30});
+  io::Image8 img(7, 5, io::Rgb8{10, 20, 30});
   img.set(3, 2, {255, 0, 128});
-  const auto bytes = report::encode_png(img);
-  EXPECT_EQ(bytes, report::encode_png(img));
+  const auto bytes = draw::encode_png(img);
+  EXPECT_EQ(bytes, draw::encode_png(img));
   EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
   EXPECT_EQ(bytes.find("tIME"), std::string::npos);  // no timestamp
   EXPECT_EQ(bytes.find("tEXt"), std::string::npos);
   test::TempDir tmp;
   const auto path = tmp.path() + "/x.png";
-  report::write_png_atomic(path, img);
-  const auto back = report::read_png(path);
+  draw::write_png_atomic(path, img);
+  const auto back = draw::read_png(path);
   EXPECT_EQ(back.width, 7);
   EXPECT_EQ(back.height, 5);
   EXPECT_EQ(back.pixels, img.pixels);
-  EXPECT_THROW(report::read_png(tmp.file("bad.png", "not a png")), InputError);
+  EXPECT_THROW(draw::read_png(tmp.file("bad.png", "not a png")), InputError);
 }
 
 TEST(Draw, HairlinesAndRectanglesCoverWholePixels) {
-  report::Drawing d;
+  draw::Drawing d;
   d.width = 40;
   d.height = 20;
   // A 1 px line along the centres of row 4 covers that row and nothing beyond it.
-  d.add(report::Polyline{{{2, 4.5}, {30, 4.5}}, {0, 0, 0}, 1.0, {}});
-  d.add(report::Rect{10, 10, 5, 3, {200, 40, 90}});
-  const auto img = draw_png(d, report::LabelFont());
+  d.add(draw::Polyline{{{2, 4.5}, {30, 4.5}}, {0, 0, 0}, 1.0, {}});
+  d.add(draw::Rect{10, 10, 5, 3, {200, 40, 90}});
+  const auto img = draw_png(d, draw::LabelFont());
   ASSERT_EQ(img.width, 40);
   ASSERT_EQ(img.height, 20);
-  EXPECT_EQ(img.at(15, 4), (report::Rgb8{0, 0, 0}));
-  EXPECT_EQ(img.at(15, 3), (report::Rgb8{255, 255, 255}));
-  EXPECT_EQ(img.at(15, 5), (report::Rgb8{255, 255, 255}));
-  EXPECT_EQ(img.at(10, 10), (report::Rgb8{200, 40, 90}));
-  EXPECT_EQ(img.at(14, 12), (report::Rgb8{200, 40, 90}));
-  EXPECT_EQ(img.at(15, 12), (report::Rgb8{255, 255, 255}));  // the rectangle ends at x = 15
-  EXPECT_EQ(img.at(14, 13), (report::Rgb8{255, 255, 255}));
+  EXPECT_EQ(img.at(15, 4), (io::Rgb8{0, 0, 0}));
+  EXPECT_EQ(img.at(15, 3), (io::Rgb8{255, 255, 255}));
+  EXPECT_EQ(img.at(15, 5), (io::Rgb8{255, 255, 255}));
+  EXPECT_EQ(img.at(10, 10), (io::Rgb8{200, 40, 90}));
+  EXPECT_EQ(img.at(14, 12), (io::Rgb8{200, 40, 90}));
+  EXPECT_EQ(img.at(15, 12), (io::Rgb8{255, 255, 255}));  // the rectangle ends at x = 15
+  EXPECT_EQ(img.at(14, 13), (io::Rgb8{255, 255, 255}));
 }
 
 TEST(Draw, TextIsAlignedOnItsAnchor) {
-  const report::LabelFont font;
-  const auto drawn = [&font](report::Align align, bool vertical) {
-    report::Drawing d;
+  const draw::LabelFont font;
+  const auto drawn = [&font](draw::Align align, bool vertical) {
+    draw::Drawing d;
     d.width = 240;
     d.height = 240;
-    d.add(report::Text{120, 120, "Fresnel", 20, {0, 0, 0}, align, vertical});
+    d.add(draw::Text{120, 120, "Fresnel", 20, {0, 0, 0}, align, vertical});
     return ink(draw_png(d, font));
   };
   constexpr int kInkTol = 3;  // glyph side bearings, pixels
-  const Ink centre = drawn(report::Align::Center, false);
+  const Ink centre = drawn(draw::Align::Center, false);
   ASSERT_GE(centre.x1, 0) << "no text drawn";
   EXPECT_NEAR(0.5 * (centre.x0 + centre.x1), 120, kInkTol);
   EXPECT_LE(centre.y1, 120);       // "Fresnel" has no descender: ink ends on the baseline
   EXPECT_GE(centre.y0, 120 - 20);  // and its capitals stay within the em size
-  const Ink left = drawn(report::Align::Left, false), right = drawn(report::Align::Right, false);
+  const Ink left = drawn(draw::Align::Left, false), right = drawn(draw::Align::Right, false);
   EXPECT_NEAR(left.x0, 120, kInkTol);
   EXPECT_NEAR(right.x1, 120, kInkTol);
-  const Ink up = drawn(report::Align::Left, true);
+  const Ink up = drawn(draw::Align::Left, true);
   EXPECT_GT(up.y1 - up.y0, 2 * (up.x1 - up.x0));  // reads upwards: taller than wide
   EXPECT_NEAR(0.5 * (up.y0 + up.y1), 120, kInkTol);
-  EXPECT_NEAR(report::text_width_px("Fresnel", 20, font), centre.x1 - centre.x0, 2 * kInkTol);
+  EXPECT_NEAR(draw::text_width_px("Fresnel", 20, font), centre.x1 - centre.x0, 2 * kInkTol);
 }
 
 // Advance widths of "Fresnel" in font units (2048 per em), from the hmtx tables of Debian's
@@ -266,26 +266,23 @@ constexpr double kMonoFresnelUnits = 7 * 1233;
 constexpr double kHintedTol = 7 * 0.5;
 
 TEST(LabelFont, EachObjectSetsTextInItsOwnFile) {
-  const report::LabelFont sans;
+  const draw::LabelFont sans;
   EXPECT_EQ(std::filesystem::path(sans.file()).filename(), "DejaVuSans.ttf");
   const auto mono_file = std::filesystem::path(sans.file()).parent_path() / "DejaVuSansMono.ttf";
   ASSERT_TRUE(std::filesystem::exists(mono_file)) << "fonts-dejavu-core installs " << mono_file;
-  const report::LabelFont mono(mono_file.string());
+  const draw::LabelFont mono(mono_file.string());
   EXPECT_EQ(mono.file(), mono_file.string());
   // Both loaded in one process, each measures with its own face.
-  EXPECT_NEAR(report::text_width_px("Fresnel", 20, sans), kSansFresnelUnits / 2048 * 20,
-              kHintedTol);
-  EXPECT_NEAR(report::text_width_px("Fresnel", 20, mono), kMonoFresnelUnits / 2048 * 20,
-              kHintedTol);
+  EXPECT_NEAR(draw::text_width_px("Fresnel", 20, sans), kSansFresnelUnits / 2048 * 20, kHintedTol);
+  EXPECT_NEAR(draw::text_width_px("Fresnel", 20, mono), kMonoFresnelUnits / 2048 * 20, kHintedTol);
   // A copy shares the face and measures the same.
-  const report::LabelFont copy = mono;
-  EXPECT_NEAR(report::text_width_px("Fresnel", 20, copy), kMonoFresnelUnits / 2048 * 20,
-              kHintedTol);
+  const draw::LabelFont copy = mono;
+  EXPECT_NEAR(draw::text_width_px("Fresnel", 20, copy), kMonoFresnelUnits / 2048 * 20, kHintedTol);
   // Drawn text follows the font passed to encode: the monospaced word is wider by the difference.
-  report::Drawing d;
+  draw::Drawing d;
   d.width = 240;
   d.height = 60;
-  d.add(report::Text{20, 40, "Fresnel", 20, {0, 0, 0}});
+  d.add(draw::Text{20, 40, "Fresnel", 20, {0, 0, 0}});
   const Ink a = ink(draw_png(d, sans)), b = ink(draw_png(d, mono));
   EXPECT_NEAR((b.x1 - b.x0) - (a.x1 - a.x0), (kMonoFresnelUnits - kSansFresnelUnits) / 2048 * 20,
               2 * kHintedTol);
@@ -295,7 +292,7 @@ TEST(LabelFont, AFileThatIsNoFontIsAnInputErrorNamingIt) {
   test::TempDir tmp;
   for (const auto& file : {tmp.path() + "/none.ttf", tmp.file("text.ttf", "not a font")}) {
     try {
-      report::LabelFont font(file);
+      draw::LabelFont font(file);
       ADD_FAILURE() << file << " loaded";
     } catch (const InputError& e) {
       EXPECT_EQ(e.file(), file);
@@ -306,16 +303,16 @@ TEST(LabelFont, AFileThatIsNoFontIsAnInputErrorNamingIt) {
 }
 
 TEST(Draw, SvgIsWellFormedXmlAndPdfHasOnePage) {
-  report::Drawing d;
+  draw::Drawing d;
   d.width = 320;
   d.height = 200;
-  d.add(report::Text{10, 30, "ΔE2000 & <θ>", 14, {0, 0, 0}});
-  d.add(report::Polyline{{{10, 50}, {300, 150}}, {40, 80, 210}, 2.0, {6, 3}});
-  d.add(report::Circle{100, 100, 6, {255, 127, 14}, 2.0});
-  d.add(report::Picture{200, 20, report::Image8(30, 10, report::Rgb8{10, 200, 30})});
+  d.add(draw::Text{10, 30, "ΔE2000 & <θ>", 14, {0, 0, 0}});
+  d.add(draw::Polyline{{{10, 50}, {300, 150}}, {40, 80, 210}, 2.0, {6, 3}});
+  d.add(draw::Circle{100, 100, 6, {255, 127, 14}, 2.0});
+  d.add(draw::Picture{200, 20, io::Image8(30, 10, io::Rgb8{10, 200, 30})});
   test::TempDir tmp;
-  const report::LabelFont font;
-  const auto svg = report::encode(d, report::FileType::Svg, font);
+  const draw::LabelFont font;
+  const auto svg = draw::encode(d, draw::FileType::Svg, font);
   const auto svg_path = tmp.file("d.svg", svg);
   if (std::system("command -v xmllint >/dev/null 2>&1") == 0) {
     const auto r = test::run_command("xmllint --noout '" + svg_path + "'");
@@ -325,19 +322,18 @@ TEST(Draw, SvgIsWellFormedXmlAndPdfHasOnePage) {
   EXPECT_NE(svg.find("width=\"320px\" height=\"200px\""), std::string::npos);
   EXPECT_EQ(count(svg, "<svg"), 1u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
-  EXPECT_EQ(svg,
-            report::encode(d, report::FileType::Svg, font));  // Cairo's surface counters moved on
-  const auto pdf = report::encode(d, report::FileType::Pdf, font);
+  EXPECT_EQ(svg, draw::encode(d, draw::FileType::Svg, font));  // Cairo's surface counters moved on
+  const auto pdf = draw::encode(d, draw::FileType::Pdf, font);
   EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
   EXPECT_EQ(count(pdf, "/Type /Page\n") + count(pdf, "/Type /Page "), 1u);
   EXPECT_NE(pdf.find("/MediaBox [ 0 0 320 200 ]"), std::string::npos);
   EXPECT_NE(pdf.find("%%EOF"), std::string::npos);
   EXPECT_EQ(pdf.find("/CreationDate"), std::string::npos);  // nothing that changes between runs
-  EXPECT_EQ(pdf, report::encode(d, report::FileType::Pdf, font));
+  EXPECT_EQ(pdf, draw::encode(d, draw::FileType::Pdf, font));
   // Text needs a font: only a drawing without it may be encoded without one.
-  EXPECT_THROW(report::encode_without_text(d, report::FileType::Png), std::logic_error);
-  EXPECT_EQ(report::file_type("A.PDF"), report::FileType::Pdf);
-  EXPECT_THROW(report::file_type("a.jpg"), InputError);
+  EXPECT_THROW(draw::encode_without_text(d, draw::FileType::Png), std::logic_error);
+  EXPECT_EQ(draw::file_type("A.PDF"), draw::FileType::Pdf);
+  EXPECT_THROW(draw::file_type("a.jpg"), InputError);
 }
 
 TEST(Figures, WhiteDisplaysAsWhite) {
@@ -364,12 +360,12 @@ TEST(Figures, StripPixelsAreTheSrgbEncodingOfKnownReflectances) {
       {{fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b}}}};
   const auto data = analysis::strip_data(ctx, in);
   ASSERT_EQ(data.rows.size(), 2u);
-  const auto img = draw_png(report::strip_drawing(data), report::LabelFont());
+  const auto img = draw_png(draw::strip_drawing(data), draw::LabelFont());
   // Sample 0 of the 0°–90° span is at θ = 1/12°, where both reflectances are their normal-incidence
   // values to 1e-6.
   const auto pixel = [&](size_t row) {
-    const auto p = report::strip_cell(data, row, 0, 0);
-    return img.at(static_cast<int>(p.x), static_cast<int>(p.y) + report::kStripRowHeight / 2);
+    const auto p = draw::strip_cell(data, row, 0, 0);
+    return img.at(static_cast<int>(p.x), static_cast<int>(p.y) + draw::kStripRowHeight / 2);
   };
   const int grey = srgb_code(0.04);
   const auto truth = pixel(0);
@@ -383,11 +379,11 @@ TEST(Figures, StripPixelsAreTheSrgbEncodingOfKnownReflectances) {
   EXPECT_NEAR(schlick.b, srgb_code(lin.b), kOneCode);
   EXPECT_GT(schlick.r - schlick.b, 40);  // not grey: a channel mix-up would show
   // At grazing incidence every reflectance tends to 1: the zoom's last sample is near white.
-  const auto p = report::strip_cell(data, 1, 1, data.spans[1].samples - 1);
+  const auto p = draw::strip_cell(data, 1, 1, data.spans[1].samples - 1);
   EXPECT_GE(img.at(static_cast<int>(p.x), static_cast<int>(p.y) + 1).g, srgb_code(0.99));
   // The figure is exactly as wide as its strips plus the labels and the RMS column.
-  EXPECT_EQ(img.width, static_cast<int>(report::strip_cell(data, 0, 1, 0).x) +
-                           data.spans[1].samples + 14 + 100 + 16);
+  EXPECT_EQ(img.width, static_cast<int>(draw::strip_cell(data, 0, 1, 0).x) + data.spans[1].samples +
+                           14 + 100 + 16);
 }
 
 // CIEDE2000 between two neutral greys of lightness L1 and L2 (Sharma, Wu & Dalal 2005 with
@@ -429,27 +425,27 @@ TEST(Figures, StripsShowEachModelsDe2000UnderItsStrip) {
   EXPECT_NEAR(data.rows[1].de2000[0], 0.0, kDeTolerance);
   EXPECT_NEAR(data.rows[2].de2000[0], 0.3, kDeTolerance);
   EXPECT_GT(data.rows[3].de2000[0], analysis::kStripDe2000Scale);
-  const auto img = draw_png(report::strip_drawing(data), report::LabelFont());
+  const auto img = draw_png(draw::strip_drawing(data), draw::LabelFont());
   const auto de_pixel = [&](size_t row) {
-    const auto p = report::strip_cell(data, row, 0, 0);
+    const auto p = draw::strip_cell(data, row, 0, 0);
     return img.at(static_cast<int>(p.x),
-                  static_cast<int>(p.y) + report::kStripRowHeight + report::kStripDeOffset + 1);
+                  static_cast<int>(p.y) + draw::kStripRowHeight + draw::kStripDeOffset + 1);
   };
-  const auto expect_colour = [](report::Rgb8 got, report::Rgb8 want) {
+  const auto expect_colour = [](io::Rgb8 got, io::Rgb8 want) {
     EXPECT_NEAR(got.r, want.r, kOneCode);
     EXPECT_NEAR(got.g, want.g, kOneCode);
     EXPECT_NEAR(got.b, want.b, kOneCode);
   };
-  expect_colour(de_pixel(1), report::inferno(0.0));
-  expect_colour(de_pixel(2), report::inferno(0.3 / analysis::kStripDe2000Scale));
-  expect_colour(de_pixel(3), report::inferno(1.0));  // saturated
+  expect_colour(de_pixel(1), draw::inferno(0.0));
+  expect_colour(de_pixel(2), draw::inferno(0.3 / analysis::kStripDe2000Scale));
+  expect_colour(de_pixel(3), draw::inferno(1.0));  // saturated
   // 0.3 ΔE2000 stands out from 0: its colour is tens of codes away from the zero colour.
   const auto a = de_pixel(1), b = de_pixel(2);
   EXPECT_GT(std::hypot(a.r - b.r, a.g - b.g, a.b - b.b), 40.0);
   // The strips themselves stay where strip_cell says: the model rows' colours are their F0 greys.
   const auto strip = [&](size_t row) {
-    const auto p = report::strip_cell(data, row, 0, 0);
-    return img.at(static_cast<int>(p.x), static_cast<int>(p.y) + report::kStripRowHeight / 2);
+    const auto p = draw::strip_cell(data, row, 0, 0);
+    return img.at(static_cast<int>(p.x), static_cast<int>(p.y) + draw::kStripRowHeight / 2);
   };
   EXPECT_NEAR(strip(1).g, srgb_code(0.04), kOneCode);
   EXPECT_NEAR(strip(2).g, srgb_code(lo), kOneCode);
@@ -459,7 +455,7 @@ TEST(Figures, StripsShowEachModelsDe2000UnderItsStrip) {
 constexpr double kInfernoFirst[3] = {0.001462, 0.000466, 0.013866};
 constexpr double kInfernoLast[3] = {0.988362, 0.998364, 0.644924};
 
-report::Rgb8 codes(const double (&v)[3]) {
+io::Rgb8 codes(const double (&v)[3]) {
   const auto c = [](double x) { return static_cast<std::uint8_t>(std::lround(255.0 * x)); };
   return {c(v[0]), c(v[1]), c(v[2])};
 }
@@ -469,21 +465,21 @@ TEST(Figures, HeatMapLegendEndsAreInfernosEnds) {
   std::vector<double> de(kW * kH, 0.0);
   de[0] = std::nan("");
   de[kW * kH - 1] = 2.0;  // the largest ΔE is 2, a nice value: the scale's top
-  const report::LabelFont font;
-  const auto img = draw_png(report::heatmap_drawing(de, kW, kH, "test", font), font);
-  const auto bar = report::heatmap_colour_bar(kW, kH);
+  const draw::LabelFont font;
+  const auto img = draw_png(draw::heatmap_drawing(de, kW, kH, "test", font), font);
+  const auto bar = draw::heatmap_colour_bar(kW, kH);
   ASSERT_GE(img.height, bar.y + bar.height);
   ASSERT_GE(img.width, bar.x + bar.width);
   const int mid = bar.x + bar.width / 2;
   EXPECT_EQ(img.at(mid, bar.y), codes(kInfernoLast));
   EXPECT_EQ(img.at(mid, bar.y + bar.height - 1), codes(kInfernoFirst));
-  EXPECT_EQ(report::inferno(1.0), codes(kInfernoLast));
-  EXPECT_EQ(report::inferno(0.0), codes(kInfernoFirst));
+  EXPECT_EQ(draw::inferno(1.0), codes(kInfernoLast));
+  EXPECT_EQ(draw::inferno(0.0), codes(kInfernoFirst));
   // The map itself, below the title band: ΔE 0 and the top of the scale take the bar's end colours.
-  const int top = report::kHeatmapImageTop;
+  const int top = draw::kHeatmapImageTop;
   EXPECT_EQ(img.at(kW - 1, top + kH - 1), codes(kInfernoLast));
   EXPECT_EQ(img.at(kW / 2, top + kH / 2), codes(kInfernoFirst));
-  EXPECT_EQ(img.at(0, top), (report::Rgb8{235, 235, 235}));  // no surface
+  EXPECT_EQ(img.at(0, top), (io::Rgb8{235, 235, 235}));  // no surface
   // Tick marks at both ends of the bar, on its right edge.
   EXPECT_LT(img.at(bar.x + bar.width + 1, bar.y).r, 128);
   EXPECT_LT(img.at(bar.x + bar.width + 1, bar.y + bar.height - 1).r, 128);
@@ -497,7 +493,7 @@ constexpr double kInferno128[3] = {0.735683, 0.215906, 0.330245};
 constexpr double kInferno224[3] = {0.974638, 0.797692, 0.206332};
 
 // CIE 1976 L* of an 8-bit sRGB colour (IEC 61966-2-1 decoding, Rec.709 luminance, white Y = 1).
-double lightness(report::Rgb8 c) {
+double lightness(io::Rgb8 c) {
   const auto lin = [](std::uint8_t code) {
     const double v = code / 255.0;
     return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
@@ -508,27 +504,27 @@ double lightness(report::Rgb8 c) {
 }
 
 TEST(Figures, InfernoIsThePublishedTableInterpolatedLinearly) {
-  EXPECT_EQ(report::inferno(0.0), codes(kInfernoFirst));
-  EXPECT_EQ(report::inferno(32.0 / 255), codes(kInferno32));    // (33, 12, 74)
-  EXPECT_EQ(report::inferno(128.0 / 255), codes(kInferno128));  // (188, 55, 84)
-  EXPECT_EQ(report::inferno(224.0 / 255), codes(kInferno224));  // (249, 203, 53)
-  EXPECT_EQ(report::inferno(1.0), codes(kInfernoLast));
+  EXPECT_EQ(draw::inferno(0.0), codes(kInfernoFirst));
+  EXPECT_EQ(draw::inferno(32.0 / 255), codes(kInferno32));    // (33, 12, 74)
+  EXPECT_EQ(draw::inferno(128.0 / 255), codes(kInferno128));  // (188, 55, 84)
+  EXPECT_EQ(draw::inferno(224.0 / 255), codes(kInferno224));  // (249, 203, 53)
+  EXPECT_EQ(draw::inferno(1.0), codes(kInfernoLast));
   // Halfway between two entries: their mean.
   const double mid[3] = {0.5 * (kInferno32[0] + kInferno33[0]),
                          0.5 * (kInferno32[1] + kInferno33[1]),
                          0.5 * (kInferno32[2] + kInferno33[2])};
-  EXPECT_EQ(report::inferno(32.5 / 255), codes(mid));  // (34, 12, 75)
-  EXPECT_EQ(report::inferno(-1.0), codes(kInfernoFirst));
-  EXPECT_EQ(report::inferno(2.0), codes(kInfernoLast));
+  EXPECT_EQ(draw::inferno(32.5 / 255), codes(mid));  // (34, 12, 75)
+  EXPECT_EQ(draw::inferno(-1.0), codes(kInfernoFirst));
+  EXPECT_EQ(draw::inferno(2.0), codes(kInfernoLast));
   // The published map's lightness rises monotonically from black (L* 0.1) to pale yellow (L* 98);
   // the 8-bit codes at the 256 entries keep every step (the smallest is 0.04).
   double previous = -1;
   for (int i = 0; i < 256; ++i) {
-    const double l = lightness(report::inferno(i / 255.0));
+    const double l = lightness(draw::inferno(i / 255.0));
     EXPECT_GT(l, previous) << "entry " << i;
     previous = l;
   }
-  EXPECT_NEAR(lightness(report::inferno(0.0)), 0.08, 0.01);
+  EXPECT_NEAR(lightness(draw::inferno(0.0)), 0.08, 0.01);
   EXPECT_NEAR(previous, 98.0, 0.1);
 }
 
@@ -546,14 +542,14 @@ TEST(Figures, CurveAndSpeedFiguresHaveTheirSizes) {
   EXPECT_EQ(curves.models[0].de2000.size(), ctx.angles_deg().size());
   // Schlick reaches 1 at 90°, like any Fresnel reflectance: no colour difference there.
   EXPECT_NEAR(curves.models[0].de2000.back(), 0.0, 1e-6);
-  const report::LabelFont font;
-  const auto img = draw_png(report::curves_drawing(curves), font);
+  const draw::LabelFont font;
+  const auto img = draw_png(draw::curves_drawing(curves), font);
   EXPECT_EQ(img.width, 940);
   EXPECT_EQ(img.height, 820);
   std::vector<analysis::SpeedRow> rows{
       {fresnel::model_of<fresnel::models::Schlick>, false, 0.5, 1.6, 3.0, false},
       {fresnel::model_of<fresnel::models::F82>, true, 1.5, 0.6, 2.0, true}};
-  const auto speed = draw_png(report::speed_plot(rows, font), font);
+  const auto speed = draw_png(draw::speed_plot(rows, font), font);
   EXPECT_EQ(speed.width, 960);
   EXPECT_EQ(speed.height, 560);
 }
@@ -576,21 +572,21 @@ TEST(PictureCli, PlotAndRenderWriteTheirFiles) {
   for (const char* f :
        {"/s.png", "/c.svg", "/s.pdf", "/r.exr", "/r.png", "/r.truth.png", "/r.de2000.png"})
     EXPECT_TRUE(std::filesystem::exists(tmp.path() + f)) << f;
-  EXPECT_EQ(report::read_png(tmp.path() + "/r.png").width, 21);
+  EXPECT_EQ(draw::read_png(tmp.path() + "/r.png").width, 21);
   // $FRESNEL_LAB_FONT reaches the drawing: in DejaVu Sans Mono every glyph of the heat map's title
   // "Gold: ΔE2000, truth vs F82" (26 characters) advances 1233/2048 × 13 px, hinted to 8 px, and
   // the map is as wide as the title with 8 px margins (the map and its colour bar are narrower).
   const auto mono =
-      std::filesystem::path(report::LabelFont().file()).parent_path() / "DejaVuSansMono.ttf";
+      std::filesystem::path(draw::LabelFont().file()).parent_path() / "DejaVuSansMono.ttf";
   ASSERT_EQ(run_command("FRESNEL_LAB_FONT='" + mono.string() + "' " + cli() +
                         " -q render gold --model f82 --roughness 0 --size 21 --samples 4 --out '" +
                         tmp.path() + "/m.exr'")
                 .status,
             0);
-  EXPECT_EQ(report::read_png(tmp.path() + "/m.de2000.png").width, 8 + 26 * 8 + 8);
-  EXPECT_NE(report::read_png(tmp.path() + "/r.de2000.png").width, 8 + 26 * 8 + 8);
+  EXPECT_EQ(draw::read_png(tmp.path() + "/m.de2000.png").width, 8 + 26 * 8 + 8);
+  EXPECT_NE(draw::read_png(tmp.path() + "/r.de2000.png").width, 8 + 26 * 8 + 8);
   EXPECT_EQ(slurp(tmp.path() + "/s.pdf").rfind("%PDF-", 0), 0u);
-  const auto e = report::read_exr(exr);
+  const auto e = io::read_exr(exr);
   EXPECT_EQ(e.channels.size(), 4u);
   // Bad input: one line, exit 2, nothing written.
   const auto bad = run_command(cli() + " plot strip gold --out '" + tmp.path() + "/x.jpg'");
@@ -631,12 +627,11 @@ TEST(PictureCli, DielectricRendersShowTheirReflectionOverMidGrey) {
             std::string::npos)
       << glass.err;
   EXPECT_EQ(gold.err.find("reflection only"), std::string::npos);
-  const auto g = report::read_png(tmp.path() + "/g.png"),
-             m = report::read_png(tmp.path() + "/m.png");
+  const auto g = draw::read_png(tmp.path() + "/g.png"), m = draw::read_png(tmp.path() + "/m.png");
   EXPECT_NEAR(g.at(0, 0).g, srgb_code(analysis::kMidGreyBackdrop), kOneCode);
   EXPECT_NEAR(m.at(0, 0).g, srgb_code(analysis::kDarkBackdrop), kOneCode);
   // The sphere's centre: its reflection (about 0.042, F0 of BK7 under a unit key light) over grey.
-  const auto exr = report::read_exr(tmp.path() + "/g.exr");
+  const auto exr = io::read_exr(tmp.path() + "/g.exr");
   const size_t centre = 10 * 21 + 10, nc = exr.channels.size();
   const auto green = std::find(exr.channels.begin(), exr.channels.end(), "G");
   ASSERT_NE(green, exr.channels.end());
@@ -664,7 +659,7 @@ TEST(PictureCli, FiguresAreByteIdenticalRunToRun) {
     EXPECT_FALSE(a.empty()) << ext;
     EXPECT_EQ(a, b) << ext;
   }
-  EXPECT_EQ(report::read_png(tmp.path() + "/a.png").width, 940);
+  EXPECT_EQ(draw::read_png(tmp.path() + "/a.png").width, 940);
 }
 
 }  // namespace

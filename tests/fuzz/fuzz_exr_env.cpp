@@ -11,10 +11,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const std::string path = fl::fuzz::temp_path(".exr");
   fl::fuzz::write_input(path, data, size);
   try {
-    const auto exr = fl::report::read_exr(path);
+    const auto exr = fl::io::read_exr(path);
     if (exr.chromaticities)
       for (float v : *exr.chromaticities) fl::fuzz::require(std::isfinite(v));
-    const auto env = fl::report::environment_image(exr, path);
+    const auto env = fl::io::environment_image(exr, path);
     fl::fuzz::require(env.image.width == 2 * env.image.height && env.image.height > 0);
     fl::fuzz::require(env.image.rgb.size() == 3 * static_cast<size_t>(env.image.width) *
                                                   static_cast<size_t>(env.image.height));

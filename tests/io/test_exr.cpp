@@ -12,7 +12,7 @@
 #include "test_util.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::io {
 namespace {
 
 TEST(Exr, RoundTripKeepsFloatsAndAttributes) {
@@ -76,4 +76,4 @@ TEST(Exr, NanChromaticitiesAreRefused) {
 }
 
 }  // namespace
-}  // namespace fl::report
+}  // namespace fl::io

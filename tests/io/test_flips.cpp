@@ -16,8 +16,8 @@
 namespace fl {
 namespace {
 
-using report::Image8;
-using report::Rgb8;
+using io::Image8;
+using io::Rgb8;
 
 // A frame of w × h pixels that every channel varies over (a fixed linear congruential sequence
 // mixed with gradients), so that a lossy or palette encoding would change codes.
@@ -52,7 +52,7 @@ TEST(Webp, LosslessFramesLoopForeverDelaysAndSameBytes) {
   Image8 c = a;
   c.set(5, 7, {1, 2, 3});  // differs from a in one pixel
   const std::vector<Image8> frames{a, b, c, a};
-  const auto bytes = report::encode_webp(frames, 900);
+  const auto bytes = io::encode_webp(frames, 900);
   ASSERT_GT(bytes.size(), 12u);
   EXPECT_EQ(bytes.substr(0, 4), "RIFF");
   EXPECT_EQ(bytes.substr(8, 4), "WEBP");
@@ -65,7 +65,7 @@ TEST(Webp, LosslessFramesLoopForeverDelaysAndSameBytes) {
     EXPECT_EQ(le(bytes, f + 12, 3), 900u);           // frame duration, ms
     EXPECT_EQ(bytes.compare(f + 16, 4, "VP8L"), 0);  // lossless bitstream
   }
-  const auto decoded = report::decode_webp(bytes, "flip.webp");
+  const auto decoded = io::decode_webp(bytes, "flip.webp");
   ASSERT_EQ(decoded.frames.size(), frames.size());
   for (size_t i = 0; i < frames.size(); ++i) {
     EXPECT_EQ(decoded.frames[i].width, 37);
@@ -73,10 +73,10 @@ TEST(Webp, LosslessFramesLoopForeverDelaysAndSameBytes) {
   }
   EXPECT_EQ(decoded.delays_ms, (std::vector<int>{900, 900, 900, 900}));
   EXPECT_EQ(decoded.loop_count, 0);
-  EXPECT_EQ(report::encode_webp(frames, 900), bytes);  // deterministic
-  EXPECT_THROW(report::encode_webp({a, Image8(10, 10)}, 900), std::invalid_argument);
-  EXPECT_THROW(report::encode_webp({}, 900), std::invalid_argument);
-  EXPECT_THROW(report::decode_webp("RIFF0000WEBPjunk", "x.webp"), InputError);
+  EXPECT_EQ(io::encode_webp(frames, 900), bytes);  // deterministic
+  EXPECT_THROW(io::encode_webp({a, Image8(10, 10)}, 900), std::invalid_argument);
+  EXPECT_THROW(io::encode_webp({}, 900), std::invalid_argument);
+  EXPECT_THROW(io::decode_webp("RIFF0000WEBPjunk", "x.webp"), InputError);
 }
 
 // The difference frame's arithmetic: 128 + 32 × 255 × (model − truth) per channel of the
@@ -84,23 +84,23 @@ TEST(Webp, LosslessFramesLoopForeverDelaysAndSameBytes) {
 // difference under half a code, which rounding both images to codes would show as 0 or ±32, stays
 // near mid grey.
 TEST(FlipFrames, SignedDifferenceAndHalfSize) {
-  const auto values = [](std::vector<float> rgb) { return report::DisplayValues{2, 2, rgb}; };
+  const auto values = [](std::vector<float> rgb) { return draw::DisplayValues{2, 2, rgb}; };
   const float t = 0.5f, code = 1.0f / 255;
   const auto truth = values(std::vector<float>(12, t));
   const auto model = values({t + 3 * code, t, t - 10 * code,       // +3, 0, −10 codes
                              t + code, t - code, t,                // ±1 code
                              t + 0.2f * code, t - 0.3f * code, t,  // under half a code
                              1.0f, 0.0f, t + 16 * code});          // clips
-  const Image8 d = report::signed_difference(truth, model);
+  const Image8 d = draw::signed_difference(truth, model);
   EXPECT_EQ(d.at(0, 0), (Rgb8{224, 128, 0}));
   EXPECT_EQ(d.at(1, 0), (Rgb8{160, 96, 128}));
   EXPECT_EQ(d.at(0, 1), (Rgb8{134, 118, 128}));  // 128 + 6.4 and 128 − 9.6, rounded
   EXPECT_EQ(d.at(1, 1), (Rgb8{255, 0, 255}));
-  const Image8 h = report::half_size(d);
+  const Image8 h = draw::half_size(d);
   ASSERT_EQ(h.width, 1);
   EXPECT_EQ(h.at(0, 0), (Rgb8{(224 + 160 + 134 + 255 + 2) / 4, (128 + 96 + 118 + 0 + 2) / 4,
                               (0 + 128 + 128 + 255 + 2) / 4}));
-  EXPECT_THROW(report::signed_difference(truth, report::DisplayValues{3, 2, {}}),
+  EXPECT_THROW(draw::signed_difference(truth, draw::DisplayValues{3, 2, {}}),
                std::invalid_argument);
 }
 
@@ -108,25 +108,25 @@ TEST(FlipFrames, SignedDifferenceAndHalfSize) {
 // difference frame and of a model frame is at least kFlipMinTextPx and, measured in the font, fits
 // inside the frame (a long model name gives way to a shorter wording rather than to 5 px text).
 TEST(FlipFrames, CaptionsLegibleAtEverySize) {
-  const report::LabelFont font;
+  const draw::LabelFont font;
   for (const int size : {256, 512}) {
-    const report::DisplayValues grey{size, size, std::vector<float>(3 * size * size, 0.5f)};
+    const draw::DisplayValues grey{size, size, std::vector<float>(3 * size * size, 0.5f)};
     const std::vector<double> de(static_cast<size_t>(size) * size, 0.5);
     const std::string name = "generalized_schlick";
-    const auto diff = report::flip_difference_drawing(grey, grey, de, 2.0, name,
-                                                      name + " (rendered): difference", font);
-    const auto frame = report::flip_frame_drawing(Image8(size, size), name + " (rendered)",
-                                                  "ΔE2000 mean 0.42, max 1.87", font);
+    const auto diff = draw::flip_difference_drawing(grey, grey, de, 2.0, name,
+                                                    name + " (rendered): difference", font);
+    const auto frame = draw::flip_frame_drawing(Image8(size, size), name + " (rendered)",
+                                                "ΔE2000 mean 0.42, max 1.87", font);
     int texts = 0;
     for (const auto* d : {&diff, &frame})
       for (const auto& shape : d->shapes)
-        if (const auto* t = std::get_if<report::Text>(&shape)) {
+        if (const auto* t = std::get_if<draw::Text>(&shape)) {
           ++texts;
-          EXPECT_GE(t->size_px, report::kFlipMinTextPx) << size << ": " << t->utf8;
-          const double w = report::text_width_px(t->utf8, t->size_px, font);
-          const double left = t->align == report::Align::Left    ? t->x
-                              : t->align == report::Align::Right ? t->x - w
-                                                                 : t->x - w / 2;
+          EXPECT_GE(t->size_px, draw::kFlipMinTextPx) << size << ": " << t->utf8;
+          const double w = draw::text_width_px(t->utf8, t->size_px, font);
+          const double left = t->align == draw::Align::Left    ? t->x
+                              : t->align == draw::Align::Right ? t->x - w
+                                                               : t->x - w / 2;
           EXPECT_GE(left, 0) << size << ": " << t->utf8;
           EXPECT_LE(left + w, size) << size << ": " << t->utf8;
         }
@@ -196,8 +196,8 @@ constexpr double kDitheredBlockCodes = 4.0, kBandedBlockCodes = 16.0;
 
 TEST(Gif, PalettePerFrameDitheredKeepsLocalMeans) {
   const Image8 smooth = sky(256, 256), busy = busy_frame(256, 256, 3);
-  const auto bytes = report::encode_gif({smooth, busy}, 90);
-  const auto gif = report::decode_gif(bytes, "flip.gif");
+  const auto bytes = io::encode_gif({smooth, busy}, 90);
+  const auto gif = io::decode_gif(bytes, "flip.gif");
   ASSERT_EQ(gif.frames.size(), 2u);
   EXPECT_EQ(gif.delays_cs, (std::vector<int>{90, 90}));
   EXPECT_EQ(gif.loop_count, 0);
@@ -215,8 +215,8 @@ TEST(Gif, PalettePerFrameDitheredKeepsLocalMeans) {
   EXPECT_LT(dithered, kDitheredBlockCodes);
   EXPECT_GT(own, dithered);
   EXPECT_GT(global, kBandedBlockCodes);
-  EXPECT_EQ(report::encode_gif({smooth, busy}, 90), bytes);  // deterministic
-  EXPECT_THROW(report::decode_gif("not a gif", "x.gif"), InputError);
+  EXPECT_EQ(io::encode_gif({smooth, busy}, 90), bytes);  // deterministic
+  EXPECT_THROW(io::decode_gif("not a gif", "x.gif"), InputError);
 }
 
 }  // namespace

@@ -15,7 +15,7 @@
 #include "test_util.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -116,4 +116,4 @@ TEST(Writer, ReplacesAFolderAsAWhole) {
 }
 
 }  // namespace
-}  // namespace fl::report
+}  // namespace fl::io

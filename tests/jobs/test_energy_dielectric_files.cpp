@@ -36,7 +36,7 @@ double reference_fresnel(double cos_i, double eta) {
 }
 
 // A GL texture read: bilinear between texel centres, clamp to edge.
-double bilinear(const report::ExrImage& img, int channel, double u, double v) {
+double bilinear(const io::ExrImage& img, int channel, double u, double v) {
   const int c = static_cast<int>(img.channels.size());
   const double x = u * img.width - 0.5, y = v * img.height - 0.5;
   const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
@@ -51,7 +51,7 @@ double bilinear(const report::ExrImage& img, int channel, double u, double v) {
 }
 
 // The atlas's shader (fresnelLab:shader) in C++: E_F (R) or, for η < 1, B.
-double engine_read(const report::ExrImage& img, int n, int slices, double eta, double nov,
+double engine_read(const io::ExrImage& img, int n, int slices, double eta, double nov,
                    double roughness) {
   const int tiles = static_cast<int>(std::lround(std::sqrt(slices)));
   const double t = std::sqrt(std::abs(eta - 1) / ((eta + 1) * 0.5));
@@ -70,15 +70,15 @@ double engine_read(const report::ExrImage& img, int n, int slices, double eta, d
 
 TEST(DielectricEnergyFiles, EngineReadMatchesQuadrature) {
   test::TempDir dir;
-  report::LutRequest r;
+  jobs::LutRequest r;
   r.size = 8;
   r.samples = 4096;
   r.dielectric = true;
   r.out = dir.path() + "/d.exr";
-  const auto o = report::dielectric_energy_lut(r);
+  const auto o = jobs::dielectric_energy_lut(r);
   ASSERT_EQ(o.files.size(), 1u);
   std::ofstream(o.files[0].first, std::ios::binary) << o.files[0].second;
-  const auto img = report::read_exr(o.files[0].first);
+  const auto img = io::read_exr(o.files[0].first);
   ASSERT_EQ(img.width, 4 * r.size);
   ASSERT_EQ(img.channels.size(), 4u);
   double max_out = 0, max_in = 0;

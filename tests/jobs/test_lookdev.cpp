@@ -22,8 +22,8 @@
 namespace fl {
 namespace {
 
-using report::Image8;
-using report::Rgb8;
+using io::Image8;
+using io::Rgb8;
 using test::cli;
 using test::run_command;
 
@@ -33,7 +33,7 @@ Image8 flat(int w, int h, Rgb8 c) {
 
 TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
   const int n = 21;
-  report::ContactSheet s;
+  draw::ContactSheet s;
   s.title = "Gold";
   s.notes = {"one", "two"};
   s.truth = flat(n, n, {10, 200, 10});
@@ -42,23 +42,23 @@ TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
   s.rows.push_back({"schlick", flat(n, n, {200, 10, 10}), de, 0.5, 0.5});
   s.rows.push_back(
       {"f82", flat(n, n, {10, 10, 200}), std::vector<double>(de.size(), 2.0), 2.0, 2.0});
-  const report::LabelFont font;
-  const auto img = report::rasterize(report::contact_sheet_drawing(s, font), font);
-  const double scale = report::heatmap_scale({0.5, 2.0});  // shared by both rows: 2
+  const draw::LabelFont font;
+  const auto img = draw::rasterize(draw::contact_sheet_drawing(s, font), font);
+  const double scale = draw::heatmap_scale({0.5, 2.0});  // shared by both rows: 2
   for (size_t r = 0; r < 2; ++r) {
     const auto at = [&](int col, int dx, int dy) {
-      const auto p = report::sheet_tile(s, r, col);
+      const auto p = draw::sheet_tile(s, r, col);
       return img.at(int(p.x) + dx, int(p.y) + dy);
     };
     // The truth once, left of the first row; the later rows' first column stays empty.
     EXPECT_EQ(at(0, n / 2, n / 2), (r == 0 ? Rgb8{10, 200, 10} : Rgb8{255, 255, 255}));
     EXPECT_EQ(at(1, n / 2, n / 2), s.rows[r].render.at(0, 0));
-    EXPECT_EQ(at(2, n / 2, n / 2), report::inferno(s.rows[r].de2000[1] / scale));
-    EXPECT_EQ(at(2, n - 1, n - 1), report::inferno(s.rows[r].de2000[1] / scale));
+    EXPECT_EQ(at(2, n / 2, n / 2), draw::inferno(s.rows[r].de2000[1] / scale));
+    EXPECT_EQ(at(2, n - 1, n - 1), draw::inferno(s.rows[r].de2000[1] / scale));
   }
-  EXPECT_EQ(img.at(int(report::sheet_tile(s, 0, 2).x), int(report::sheet_tile(s, 0, 2).y)),
+  EXPECT_EQ(img.at(int(draw::sheet_tile(s, 0, 2).x), int(draw::sheet_tile(s, 0, 2).y)),
             (Rgb8{235, 235, 235}));
-  EXPECT_GT(report::sheet_tile(s, 1, 0).y, report::sheet_tile(s, 0, 0).y + n);
+  EXPECT_GT(draw::sheet_tile(s, 1, 0).y, draw::sheet_tile(s, 0, 0).y + n);
   int truth_pixels = 0;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) truth_pixels += img.at(x, y) == Rgb8{10, 200, 10};
@@ -69,21 +69,20 @@ TEST(ContactSheet, TilesAreWhereTheLayoutSays) {
 // font measures it at the size it is set in.
 TEST(ContactSheet, LabelsOfSmallTilesDoNotOverlap) {
   const int n = 21;
-  report::ContactSheet s;
+  draw::ContactSheet s;
   s.title = "Gold";
   s.truth = flat(n, n, {10, 200, 10});
   s.rows.push_back({"generalized_schlick (rendered parameters)", flat(n, n, {200, 10, 10}),
                     std::vector<double>(static_cast<size_t>(n) * n, 0.5), 0.512, 1.234});
-  const report::LabelFont font;
-  const auto dr = report::contact_sheet_drawing(s, font);
-  const double label_y = report::sheet_tile(s, 0, 0).y - 7;  // the label line above the tiles
-  std::vector<const report::Text*> labels;
+  const draw::LabelFont font;
+  const auto dr = draw::contact_sheet_drawing(s, font);
+  const double label_y = draw::sheet_tile(s, 0, 0).y - 7;  // the label line above the tiles
+  std::vector<const draw::Text*> labels;
   for (const auto& shape : dr.shapes)
-    if (const auto* t = std::get_if<report::Text>(&shape); t && t->y == label_y)
-      labels.push_back(t);
+    if (const auto* t = std::get_if<draw::Text>(&shape); t && t->y == label_y) labels.push_back(t);
   ASSERT_EQ(labels.size(), 3u);
   for (size_t i = 0; i + 1 < labels.size(); ++i)
-    EXPECT_LT(labels[i]->x + report::text_width_px(labels[i]->utf8, labels[i]->size_px, font),
+    EXPECT_LT(labels[i]->x + draw::text_width_px(labels[i]->utf8, labels[i]->size_px, font),
               labels[i + 1]->x)
         << labels[i]->utf8;
   EXPECT_GE(labels[1]->size_px, 8.0);  // shrunk, but no smaller than legible
@@ -96,7 +95,7 @@ TEST(Html, TableCellsAreEscapedAndSortable) {
   t.columns = {{"name"}, {"value", 3}, {"count"}};
   t.rows = {{std::string("a<b>&'"), 1.23456789, 7LL}, {std::string("z"), std::nan(""), 2LL}};
   t.reading = "See `code` and [the file](x.md).";
-  const auto html = report::table_html(t, "table-x");
+  const auto html = documents::table_html(t, "table-x");
   EXPECT_NE(html.find("A &lt;b&gt; &amp; &quot;c&quot;"), std::string::npos);
   EXPECT_NE(html.find("<td class=\"t\">a&lt;b&gt;&amp;&#39;</td>"), std::string::npos);
   EXPECT_NE(html.find("<td data-v=\"1.234567890000\">1.235</td>"), std::string::npos);
@@ -108,11 +107,11 @@ TEST(Html, TableCellsAreEscapedAndSortable) {
   EXPECT_NE(html.find("data-table=\"table-x\""), std::string::npos);
 }
 
-report::HtmlReport sample_page() {
-  report::HtmlReport r;
+documents::HtmlReport sample_page() {
+  documents::HtmlReport r;
   r.title = "Report & more";
   r.intro = {"Hello `world`."};
-  report::GalleryEntry e;
+  documents::GalleryEntry e;
   e.key = "gold";
   e.name = "Gold";
   e.material_class = "metal";
@@ -139,7 +138,7 @@ report::HtmlReport sample_page() {
 }
 
 TEST(Html, PageIsSelfContainedAndParses) {
-  const auto page = report::html_report(sample_page());
+  const auto page = documents::html_report(sample_page());
   EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(page.find("<style>"), std::string::npos);
   EXPECT_NE(page.find("<script>"), std::string::npos);
@@ -149,7 +148,7 @@ TEST(Html, PageIsSelfContainedAndParses) {
             std::string::npos);
   EXPECT_NE(page.find("id=\"m-gold\""), std::string::npos);
   EXPECT_NE(page.find("id=\"gallery-filter\""), std::string::npos);
-  EXPECT_EQ(report::html_report(sample_page()), page);
+  EXPECT_EQ(documents::html_report(sample_page()), page);
   // libxml2's HTML parser (xmllint, libxml2-utils) finds no unclosed or mismatched element; it
   // knows HTML 4 only, so HTML5's sectioning elements are the one complaint allowed.
   test::TempDir tmp;
@@ -184,7 +183,7 @@ TEST(RenderCli, CompareUnderAnHdrEnvironment) {
   for (const char* f : {"g.truth.png", "g.schlick.png", "g.schlick.de2000.png", "g.f82.png",
                         "g.f82.de2000.png", "g.flip.webp", "g.sheet.png"})
     EXPECT_TRUE(std::filesystem::exists(tmp.path() + "/" + f)) << f;
-  const auto exr = report::read_exr(out);
+  const auto exr = io::read_exr(out);
   for (const char* ch :
        {"R", "G", "B", "A", "schlick.R", "schlick.B", "schlick.de2000", "f82.G", "f82.de2000"})
     EXPECT_NE(std::find(exr.channels.begin(), exr.channels.end(), ch), exr.channels.end()) << ch;
@@ -195,12 +194,12 @@ TEST(RenderCli, CompareUnderAnHdrEnvironment) {
   // PNG's codes exactly (lossless), above the label band.
   std::ifstream in(tmp.path() + "/g.flip.webp", std::ios::binary);
   const auto flip =
-      report::decode_webp(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.webp");
+      io::decode_webp(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.webp");
   ASSERT_EQ(flip.frames.size(), 6u);
   EXPECT_EQ(flip.delays_ms, std::vector<int>(6, 900));
   EXPECT_EQ(flip.loop_count, 0);
-  const Image8 truth = report::read_png(tmp.path() + "/g.truth.png"),
-               schlick = report::read_png(tmp.path() + "/g.schlick.png");
+  const Image8 truth = draw::read_png(tmp.path() + "/g.truth.png"),
+               schlick = draw::read_png(tmp.path() + "/g.schlick.png");
   const auto top = [](const Image8& frame, int size) {
     return Image8(
         size, size,
@@ -222,10 +221,10 @@ TEST(RenderCli, CompareDefaultsTo512PxFrames) {
                              tmp.path() + "/g.exr'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("render: 512 × 512 px"), std::string::npos) << r.err;
-  EXPECT_EQ(report::read_png(tmp.path() + "/g.truth.png").width, 512);
+  EXPECT_EQ(draw::read_png(tmp.path() + "/g.truth.png").width, 512);
   std::ifstream in(tmp.path() + "/g.flip.webp", std::ios::binary);
   const auto flip =
-      report::decode_webp(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.webp");
+      io::decode_webp(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.webp");
   ASSERT_EQ(flip.frames.size(), 3u);
   for (const auto& f : flip.frames) EXPECT_EQ(f.width, 512);
   const auto single =
@@ -245,7 +244,7 @@ TEST(RenderCli, FlipFormats) {
   EXPECT_FALSE(std::filesystem::exists(tmp.path() + "/g.flip.webp"));
   std::ifstream in(tmp.path() + "/g.flip.gif", std::ios::binary);
   const auto decoded =
-      report::decode_gif(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.gif");
+      io::decode_gif(std::string(std::istreambuf_iterator<char>(in), {}), "g.flip.gif");
   EXPECT_EQ(decoded.frames.size(), 3u);
   EXPECT_EQ(decoded.delays_cs, std::vector<int>(3, 90));
   const auto bad = run("png");
@@ -293,14 +292,14 @@ TEST(RenderCli, ViewChangesPicturesNotTheExr) {
 // An EXR written by the tool's own encoder, for the bad-input cases.
 std::string exr_file(const test::TempDir& tmp, const std::string& name, int w, int h,
                      std::vector<std::string> channels, float value) {
-  report::ExrImage img;
+  io::ExrImage img;
   img.width = w;
   img.height = h;
   img.channels = std::move(channels);
   img.pixels.assign(static_cast<size_t>(w) * h * img.channels.size(), 1.0f);
   img.pixels[1] = value;
   const std::string path = tmp.path() + "/" + name;
-  report::write_exr_atomic(path, img);
+  io::write_exr_atomic(path, img);
   return path;
 }
 

@@ -3,7 +3,7 @@
 
 #include "jobs/report_summary.h"
 
-namespace fl::report {
+namespace fl::jobs {
 namespace {
 
 using analysis::Table;
@@ -63,4 +63,4 @@ TEST(ReportSummary, ParetoFrontListsFlaggedModelsByCost) {
 }
 
 }  // namespace
-}  // namespace fl::report
+}  // namespace fl::jobs

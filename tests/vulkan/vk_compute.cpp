@@ -189,7 +189,7 @@ std::vector<unsigned char> texel_bytes(const Texture& t, Storage storage) {
     return out;
   }
   std::vector<std::uint16_t> half(t.rgba.size());
-  for (size_t k = 0; k < half.size(); ++k) half[k] = report::half_bits(t.rgba[k]);
+  for (size_t k = 0; k < half.size(); ++k) half[k] = io::half_bits(t.rgba[k]);
   out.resize(half.size() * sizeof(std::uint16_t));
   std::memcpy(out.data(), half.data(), out.size());
   return out;

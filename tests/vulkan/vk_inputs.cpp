@@ -14,7 +14,7 @@ const char* storage_name(Storage s) {
 }
 
 Texture read_texture(const std::string& exr_path) {
-  const auto img = report::read_exr(exr_path);
+  const auto img = io::read_exr(exr_path);
   Texture t{img.width, img.height, std::vector<float>(size_t(img.width) * img.height * 4, 1.0f)};
   const size_t nc = img.channels.size();
   for (size_t c = 0; c < nc; ++c) {

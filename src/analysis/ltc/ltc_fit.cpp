@@ -9,7 +9,7 @@
 
 #include "util/codegen.h"
 
-namespace fl::fit {
+namespace fl::analysis {
 
 LtcFrame ltc_frame_from_average_direction(const brdf::Vec3& average_dir) {
   const brdf::Vec3 z = brdf::normalize(brdf::Vec3{average_dir.x, 0.0, average_dir.z});
@@ -363,7 +363,7 @@ double relative_change(const LtcParams& a, const LtcParams& b) {
                    std::abs(b.m31 - a.m31) / std::max(a.m11, std::abs(a.m31))});
 }
 
-LtcParams params_of(const FitResult& r) {
+LtcParams params_of(const fit::FitResult& r) {
   if (r.parameters.size() != 4) throw std::runtime_error("LTC solver returned no parameters");
   return clamp_to_bounds({r.parameters[0], r.parameters[1], r.parameters[2], r.parameters[3]});
 }
@@ -407,7 +407,7 @@ namespace {
 // Rounds of the solver from one start (fit_ltc_cell).
 struct Rounds {
   LtcParams params;
-  FitResult fit;
+  fit::FitResult fit;
   int rounds = 0;
 };
 Rounds fit_rounds(double nov, double alpha, double magnitude, const LtcFrame& frame,
@@ -522,7 +522,7 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
   return out;
 }
 
-FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool isotropic) {
+fit::FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool isotropic) {
   const LtcParams s0 = clamp_to_bounds(start);
   double p[4] = {s0.m11, s0.m22, s0.m13, s0.m31};
   ceres::Problem pr;
@@ -545,7 +545,7 @@ FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool 
   ceres::Solver::Summary summary;
   ceres::Solve(options, &pr, &summary);
 
-  FitResult r;
+  fit::FitResult r;
   r.parameters = {p[0], p[1], p[2], p[3]};
   r.cost = summary.final_cost;
   r.initial_cost = summary.initial_cost;
@@ -556,14 +556,14 @@ FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool 
   return r;
 }
 
-GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p) {
+fit::GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p) {
   const LtcCost cost(problem);
   const double q[4] = {p.m11, p.m22, p.m13, p.m31};
   const double* blocks[] = {q};
   const size_t n = problem.samples.size();
   std::vector<double> r(n), jac(4 * n);
   double* jacobians[] = {jac.data()};
-  GradientCheck out;
+  fit::GradientCheck out;
   if (!cost.Evaluate(blocks, r.data(), jacobians)) {
     out.report = "the cost function rejected the parameters";
     return out;
@@ -596,4 +596,4 @@ GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p)
   return out;
 }
 
-}  // namespace fl::fit
+}  // namespace fl::analysis

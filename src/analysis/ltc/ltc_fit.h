@@ -1,7 +1,7 @@
 #pragma once
 // Fitting a linearly transformed cosine (LTC) to the GGX lobe of one (n·v, α) cell
 // (Heitz, Dupuy, Hill & Neubelt 2016, "Real-Time Polygonal-Light Shading with Linearly Transformed
-// Cosines"). Ceres stays inside ltc_fit.cpp; callers see LtcProblem, LtcParams and FitResult.
+// Cosines"). Ceres stays inside ltc_fit.cpp; callers see LtcProblem, LtcParams and fit::FitResult.
 #include <array>
 #include <cmath>
 #include <functional>
@@ -11,7 +11,7 @@
 #include "brdf/ggx.h"
 #include "fit/fit.h"
 
-namespace fl::fit {
+namespace fl::analysis {
 
 // The free entries of the isotropic LTC matrix in its frame (X, Y, Z):
 // M = [X Y Z] · A, A = [[m11, 0, m13], [0, m22, 0], [m31, 0, 1]] (row-major). Heitz's fitLTC.cpp
@@ -123,16 +123,16 @@ double ltc_objective(const LtcProblem& problem, const LtcParams& p);
 
 // One solve on a problem's fixed directions from `start`; with `isotropic`, m13 and m31 are held at
 // their start values (the lobe at normal incidence is rotationally symmetric).
-// FitResult::parameters = {m11, m22, m13, m31}.
+// fit::FitResult::parameters = {m11, m22, m13, m31}.
 using LtcSolver =
-    std::function<FitResult(const LtcProblem&, const LtcParams& start, bool isotropic)>;
+    std::function<fit::FitResult(const LtcProblem&, const LtcParams& start, bool isotropic)>;
 // Ceres, Levenberg–Marquardt within the bounds above.
-FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool isotropic);
+fit::FitResult fit_ltc_ceres(const LtcProblem& problem, const LtcParams& start, bool isotropic);
 // The fit's analytic Jacobian at `p` through the gradient it gives, 2 Jᵀr = ∇ Σ r², against central
 // differences of Σ r² (the residuals d √|d| are not twice differentiable where d = 0, so
 // differences of single residuals are inaccurate there; Σ |d|³ is). max_relative_error is relative
 // to the largest gradient component; the report lists both gradients.
-GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p);
+fit::GradientCheck check_ltc_gradients(const LtcProblem& problem, const LtcParams& p);
 
 // The start for a cell from the two cells before it along a row: the linear extrapolation
 // 2·prev − prev2, or prev where that is not a valid LTC (m11, m22 or m11 − m13 m31 not positive).
@@ -166,7 +166,7 @@ constexpr int kLtcContinuationSteps = 8;
 constexpr int kLtcContinuationBisections = 3;
 struct LtcCellFit {
   LtcParams params;
-  FitResult fit;            // of the kept fit's last round
+  fit::FitResult fit;       // of the kept fit's last round
   int rounds = 0;           // of the kept fit
   int fits = 0;             // starts fitted
   bool kept_start = false;  // the held-out check rejected every fit
@@ -198,4 +198,4 @@ LtcCellFit fit_ltc_cell(double nov, double alpha, double magnitude, const brdf::
                         const LtcSolver& solver, const LtcCellPoints& points,
                         double near_equal_margin);
 
-}  // namespace fl::fit
+}  // namespace fl::analysis

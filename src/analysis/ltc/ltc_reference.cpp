@@ -96,7 +96,7 @@ namespace {
 struct JudgedPoint {
   double nov = 1, alpha = 1, n_d = 1;
   bool last_row = false;
-  fit::LtcLobe ours, reference;
+  LtcLobe ours, reference;
   int a = 0, b = 0;  // the cells (a == b for a cell)
 };
 
@@ -115,8 +115,8 @@ std::vector<Band> bands() {
 }
 
 // The LTC of a texel: M⁻¹ = [[e0, 0, e2], [0, 1, 0], [e1, 0, e3]] (LtcCell::inv_packed order).
-fit::LtcLobe lobe_of_entries(const std::array<double, 4>& e) {
-  return fit::ltc_lobe(fit::inverse(fit::LtcMatrix{{e[0], 0, e[2], 0, 1, 0, e[1], 0, e[3]}}));
+LtcLobe lobe_of_entries(const std::array<double, 4>& e) {
+  return ltc_lobe(inverse(LtcMatrix{{e[0], 0, e[2], 0, 1, 0, e[1], 0, e[3]}}));
 }
 
 std::vector<LtcBandError> band_errors(const std::vector<JudgedPoint>& points,
@@ -145,7 +145,7 @@ void judge(const std::vector<JudgedPoint>& points, int samples, std::vector<doub
   reference.assign(points.size(), 0.0);
   parallel_for(points.size(), [&](size_t k) {
     const auto& p = points[k];
-    const auto e = fit::ltc_l3_errors(p.nov, p.alpha, p.n_d, {p.ours, p.reference}, samples);
+    const auto e = ltc_l3_errors(p.nov, p.alpha, p.n_d, {p.ours, p.reference}, samples);
     ours[k] = e[0].relative();
     reference[k] = e[1].relative();
   });
@@ -232,8 +232,8 @@ LtcComparison compare_ltc_tables(const LtcTable& table, const LtcReferenceTable&
                 g.alpha[j],
                 table.moments[k][fresnel::Term::One],
                 i == n - 1,
-                fit::ltc_lobe(table.cells[k].m),
-                fit::ltc_lobe(fit::inverse(reference.m_inv[k])),
+                ltc_lobe(table.cells[k].m),
+                ltc_lobe(inverse(reference.m_inv[k])),
                 static_cast<int>(k),
                 static_cast<int>(k)};
   }

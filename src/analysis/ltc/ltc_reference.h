@@ -16,13 +16,13 @@ namespace fl::analysis {
 // ltc_grid(size). Stored here in LutGrid order (cell(i_nov = t, j_roughness = a)), M⁻¹ row-major.
 struct LtcReferenceTable {
   int size = 0;
-  std::vector<fit::LtcMatrix> m_inv;
+  std::vector<LtcMatrix> m_inv;
   std::vector<double> magnitude;
 };
 // Throws InputError naming the file (and line) when it is missing or not of that form.
 LtcReferenceTable read_ltc_code_table(const std::string& path);
 
-// Per cell the held-out relative L3 error fit::ltc_l3_error of both tables, each LTC scaled by the
+// Per cell the held-out relative L3 error ltc_l3_error of both tables, each LTC scaled by the
 // fitted table's n_D (the magnitude is not part of either fit), with `heldout_samples` directions
 // per strategy; per band the mean and max; per texture entry (LtcCell::inv_packed) the largest
 // difference between neighbouring cells; and the same error half-way between neighbouring cells (in

@@ -19,31 +19,31 @@ void check_size(int size) {
     throw InputError(fmt::format("table size {} out of range (2 to 4096)", size));
 }
 
-// Fits cell (i, j) of an LTC grid from its starts (fit::fit_ltc_cell); i = 0 (normal incidence) is
+// Fits cell (i, j) of an LTC grid from its starts (fit_ltc_cell); i = 0 (normal incidence) is
 // isotropic.
 LtcCell fit_table_cell(const LutGrid& g, const GgxMoments& mo, int i, int j,
-                       const std::vector<fit::LtcParams>& starts, const LtcCellFitter& fitter,
-                       const fit::LtcCellPoints& points) {
+                       const std::vector<LtcParams>& starts, const LtcCellFitter& fitter,
+                       const LtcCellPoints& points) {
   const bool isotropic = i == 0;
   const brdf::Vec3 dir = isotropic ? brdf::Vec3{0, 0, 1} : mo.average_dir;
   const double near_equal_margin = i == g.size - 1 ? kLtcGrazingNearEqualMargin : 0.0;
-  const auto r = fit::fit_ltc_cell(g.nov[i], g.alpha[j], mo[fresnel::Term::One], dir, starts,
-                                   isotropic, fitter, points, near_equal_margin);
+  const auto r = fit_ltc_cell(g.nov[i], g.alpha[j], mo[fresnel::Term::One], dir, starts, isotropic,
+                              fitter, points, near_equal_margin);
   LtcCell c;
   c.fit = r.fit;
   c.params = r.params;
   c.fit_error = r.heldout_error;
   c.rounds = r.rounds;
   c.kept_start = r.kept_start;
-  c.m = fit::ltc_matrix(fit::ltc_frame_from_average_direction(dir), c.params);
-  c.m_inv = fit::inverse(c.m);
+  c.m = ltc_matrix(ltc_frame_from_average_direction(dir), c.params);
+  c.m_inv = inverse(c.m);
   c.inv_packed = ltc_texture_entries(c.m_inv);
   return c;
 }
 
 }  // namespace
 
-std::array<double, 4> ltc_texture_entries(const fit::LtcMatrix& m_inv) {
+std::array<double, 4> ltc_texture_entries(const LtcMatrix& m_inv) {
   const double s = 1.0 / m_inv(1, 1);
   return {m_inv(0, 0) * s, m_inv(2, 0) * s, m_inv(0, 2) * s, m_inv(2, 2) * s};
 }
@@ -95,8 +95,8 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   t.grid = ltc_grid(size);
   const auto& g = t.grid;
   t.cells.resize(static_cast<size_t>(size) * size);
-  const fit::LtcCellPoints points = fit::ltc_cell_points(fit_sample_sqrt);
-  const auto fit_cell = [&](int i, int j, const std::vector<fit::LtcParams>& starts) {
+  const LtcCellPoints points = ltc_cell_points(fit_sample_sqrt);
+  const auto fit_cell = [&](int i, int j, const std::vector<LtcParams>& starts) {
     t.cells[g.index(i, j)] =
         fit_table_cell(g, t.moments[g.index(i, j)], i, j, starts, fitter, points);
   };
@@ -107,7 +107,7 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
   t.moments = moments_table(g, options, done).cells;
   // Stage 2: the normal-incidence column, rough to smooth (sequential warm starts).
   for (int j = size - 1; j >= 0; --j) {
-    fit::LtcParams start;
+    LtcParams start;
     if (j < size - 1) {
       const auto& rougher = t.cells[g.index(0, j + 1)].params;
       start = {rougher.m11, rougher.m22, 0.0, 0.0};
@@ -124,8 +124,7 @@ LtcTable fit_ltc_table(int size, const LutOptions& options, const LtcCellFitter&
         fit_cell(1, j, {t.cells[g.index(0, j)].params});
         for (int i = 2; i < size; ++i) {
           const auto& prev = t.cells[g.index(i - 1, j)].params;
-          fit_cell(i, j,
-                   {fit::extrapolate_ltc_start(prev, t.cells[g.index(i - 2, j)].params), prev});
+          fit_cell(i, j, {extrapolate_ltc_start(prev, t.cells[g.index(i - 2, j)].params), prev});
         }
         done.add(size - 1);
       },

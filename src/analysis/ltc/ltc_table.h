@@ -19,20 +19,19 @@ double horizon_clipped_sphere_form_factor(double z, double len);
 std::vector<double> sphere_form_factor_table(int size);
 
 struct LtcCell {
-  fit::LtcParams params;
-  fit::LtcMatrix m, m_inv;
+  LtcParams params;
+  LtcMatrix m, m_inv;
   // The texture's four entries of M⁻¹ normalized by M⁻¹₁₁ (row-major indices):
   // (M⁻¹₀₀, M⁻¹₂₀, M⁻¹₀₂, M⁻¹₂₂) / M⁻¹₁₁, i.e. ltc_code's (invM[0][0], invM[0][2], invM[2][0],
   // invM[2][2]) in glm's column-major indexing.
   std::array<double, 4> inv_packed{};
   fit::FitResult fit;
-  double fit_error =
-      0;           // held-out relative L3 error of the cell's LTC (fit::LtcCellFit::heldout_error)
-  int rounds = 0;  // fit::LtcCellFit::rounds
-  bool kept_start = false;  // fit::LtcCellFit::kept_start
+  double fit_error = 0;  // held-out relative L3 error of the cell's LTC (LtcCellFit::heldout_error)
+  int rounds = 0;        // LtcCellFit::rounds
+  bool kept_start = false;  // LtcCellFit::kept_start
 };
 // The texture's entries of one cell: (M⁻¹₀₀, M⁻¹₂₀, M⁻¹₀₂, M⁻¹₂₂) / M⁻¹₁₁ (LtcCell::inv_packed).
-std::array<double, 4> ltc_texture_entries(const fit::LtcMatrix& m_inv);
+std::array<double, 4> ltc_texture_entries(const LtcMatrix& m_inv);
 struct LtcTable {
   LutGrid grid;
   std::vector<GgxMoments> moments;
@@ -40,10 +39,10 @@ struct LtcTable {
   std::vector<double> sphere_form_factor;  // sphere_form_factor_table(grid.size)
 };
 
-// fit::fit_ltc_cell's near-equal choice, in the grazing row (i = N − 1, θ = 1.57) only. There the
+// fit_ltc_cell's near-equal choice, in the grazing row (i = N − 1, θ = 1.57) only. There the
 // lobe changes fastest with θ and the L3 optimum is flattest: at roughness 1 the optimum steps by
 // 0.14 in M⁻¹₂₂ from the cell at i = N − 2 (by 0.08 between i = N − 3 and N − 2), while the
-// continuation (fit::extrapolate_ltc_start) is within 0.5% of its held-out error. Elsewhere the fit
+// continuation (extrapolate_ltc_start) is within 0.5% of its held-out error. Elsewhere the fit
 // is kept: a bilinear lookup between two near-optimal cells measured as good as or better than
 // between cells moved towards their continuations (the choice in every row raised the cells' and
 // the midpoints' mean held-out error by about 1%).
@@ -51,16 +50,16 @@ inline constexpr double kLtcGrazingNearEqualMargin = 0.01;
 
 // One solve of a cell's problem from a start; the isotropic flag holds m13 and m31 (normal
 // incidence).
-using LtcCellFitter = fit::LtcSolver;
+using LtcCellFitter = LtcSolver;
 
-// Fits every cell of ltc_grid(size) with fit::fit_ltc_cell, in Heitz's fitLTC.cpp order: the
+// Fits every cell of ltc_grid(size) with fit_ltc_cell, in Heitz's fitLTC.cpp order: the
 // normal-incidence column from rough to smooth, each cell starting from the rougher one; then every
 // roughness row from normal to grazing, each cell starting from the previous ones (the
-// extrapolation fit::extrapolate_ltc_start first, then the previous cell), the grazing row with the
+// extrapolation extrapolate_ltc_start first, then the previous cell), the grazing row with the
 // near-equal choice (kLtcGrazingNearEqualMargin). Rows run in parallel; results do not depend on
 // threads.
 LtcTable fit_ltc_table(int size, const LutOptions& options = {},
-                       const LtcCellFitter& fitter = fit::fit_ltc_ceres,
-                       int fit_sample_sqrt = fit::kLtcDefaultSampleSqrt);
+                       const LtcCellFitter& fitter = fit_ltc_ceres,
+                       int fit_sample_sqrt = kLtcDefaultSampleSqrt);
 
 }  // namespace fl::analysis

@@ -257,7 +257,8 @@ color::Rgb environment_radiance(const Environment& env, const Vec3& dir) {
   return lerp(0.5 * env.horizon, env.ground, t);
 }
 
-EnvironmentMap::EnvironmentMap(LatLongImage image, const color::Rgb& luminance, double rotation_deg)
+EnvironmentMap::EnvironmentMap(io::LatLongImage image, const color::Rgb& luminance,
+                               double rotation_deg)
     : image_(std::move(image)), rotation_deg_(rotation_deg) {
   const int w = image_.width, h = image_.height;
   if (w < 1 || h < 1 || image_.rgb.size() != 3 * static_cast<size_t>(w) * h)
@@ -416,7 +417,7 @@ SphereImage render_sphere(const SceneLight& light, const FresnelTable& fresnel,
   return std::move(render_spheres(light, {&fresnel}, s).front());
 }
 
-EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std::string& space,
+EnvironmentMap environment_map(const Context& ctx, io::LatLongImage image, const std::string& space,
                                double rotation_deg, double exposure_ev, double& scale) {
   const color::Mat3 m = ctx.spaces().conversion(space, ctx.settings().space);
   const auto& to_xyz = ctx.space().rgb_to_xyz;

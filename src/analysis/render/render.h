@@ -30,6 +30,7 @@
 #include "brdf/ggx.h"
 #include "color/values.h"
 #include "fresnel/registered_models.h"
+#include "io/environment_image.h"
 
 namespace fl::analysis {
 
@@ -51,12 +52,6 @@ Environment default_environment();
 // `dir` (unit).
 color::Rgb environment_radiance(const Environment& env, const brdf::Vec3& dir);
 
-// An equirectangular image (width = 2 × height for a full sphere of directions).
-struct LatLongImage {
-  int width = 0, height = 0;
-  std::vector<float> rgb;  // 3 per pixel, row-major, row 0 at the zenith
-};
-
 // Radiance looked up bilinearly between pixel centres (wrapping in u, clamped at the poles) and
 // directions drawn in proportion to each pixel's luminance × sin θ (the pixel's solid angle), so
 // bright sources such as the sun are found with few samples (Pharr, Jakob & Humphreys, PBRT 3rd
@@ -65,7 +60,7 @@ class EnvironmentMap {
  public:
   // `luminance` weighs R, G, B into the sampling density (the working space's Y row; negative
   // pixel values count as 0). Throws std::invalid_argument for an empty or inconsistent image.
-  EnvironmentMap(LatLongImage image, const color::Rgb& luminance, double rotation_deg = 0);
+  EnvironmentMap(io::LatLongImage image, const color::Rgb& luminance, double rotation_deg = 0);
 
   color::Rgb radiance(const brdf::Vec3& dir) const;
   // False when the image is black: then no direction can be drawn.
@@ -76,7 +71,7 @@ class EnvironmentMap {
   // radiance(dir) and pdf(dir) together (one direction → (u, v) conversion).
   void lookup(const brdf::Vec3& dir, color::Rgb& radiance, double& pdf) const;
 
-  const LatLongImage& image() const { return image_; }
+  const io::LatLongImage& image() const { return image_; }
   double rotation_deg() const { return rotation_deg_; }
   // (u, v) of a unit direction and back (the mapping above).
   void direction_to_uv(const brdf::Vec3& dir, double& u, double& v) const;
@@ -86,7 +81,7 @@ class EnvironmentMap {
   color::Rgb texel(int x, int y) const;
   color::Rgb radiance_uv(double u, double v) const;
   double pdf_uv(double u, double v, double sin_theta) const;
-  LatLongImage image_;
+  io::LatLongImage image_;
   double rotation_deg_ = 0;
   std::vector<double> row_cdf_;     // height + 1 entries, 0 … 1
   std::vector<double> column_cdf_;  // per row, width + 1 entries, 0 … 1
@@ -157,7 +152,7 @@ SphereImage render_sphere(const SceneLight& light, const FresnelTable& fresnel,
 // exposes a plate so that an 18% grey ball reads 0.18; ΔE2000 then compares across environments.
 // `scale` receives the factor applied. An image whose mean luminance is not positive and finite
 // (black, all negative, overflowing) is an InputError: no exposure can light it.
-EnvironmentMap environment_map(const Context& ctx, LatLongImage image, const std::string& space,
+EnvironmentMap environment_map(const Context& ctx, io::LatLongImage image, const std::string& space,
                                double rotation_deg, double exposure_ev, double& scale);
 
 // ΔE2000 over the covered pixels of a heat map: mean and max, and the mean in bands of the angle θ

@@ -1,4 +1,4 @@
-#include "io/environment.h"
+#include "analysis/render/environment_file.h"
 
 #include <fmt/format.h>
 
@@ -6,14 +6,14 @@
 #include "io/exr.h"
 #include "util/errors.h"
 
-namespace fl::report {
+namespace fl::analysis {
 namespace {
 
 // Agreement of an EXR chromaticities attribute (float) with a space's primaries and white.
 constexpr double kChromaticityTol = 1e-3;
 
 // The colour space the file's pixels are in, and how that was decided.
-std::pair<std::string, std::string> file_space(const analysis::Context& ctx, const ExrImage& exr,
+std::pair<std::string, std::string> file_space(const Context& ctx, const io::ExrImage& exr,
                                                const std::string& path,
                                                const std::string& requested) {
   if (!requested.empty()) {
@@ -44,16 +44,17 @@ std::string LoadedEnvironment::description() const {
       width, height, space, space_basis, map.rotation_deg(), exposure_ev, scale);
 }
 
-LoadedEnvironment load_environment(const analysis::Context& ctx, const std::string& path,
+LoadedEnvironment load_environment(const Context& ctx, const std::string& path,
                                    const std::string& space, double rotation_deg,
                                    double exposure_ev) {
-  const ExrImage exr = read_exr(path);  // InputError for what is not a bounded regular EXR file
-  auto env = environment_image(exr, path);
+  const io::ExrImage exr =
+      io::read_exr(path);  // InputError for what is not a bounded regular EXR file
+  auto env = io::environment_image(exr, path);
   const auto [space_name, basis] = file_space(ctx, exr, path, space);
   double scale = 1;
   try {
-    auto map = analysis::environment_map(ctx, std::move(env.image), space_name, rotation_deg,
-                                         exposure_ev, scale);
+    auto map =
+        environment_map(ctx, std::move(env.image), space_name, rotation_deg, exposure_ev, scale);
     return {std::move(map), space_name,           basis,       exr.width,
             exr.height,     env.clamped_negative, exposure_ev, scale};
   } catch (const InputError& e) {
@@ -61,4 +62,4 @@ LoadedEnvironment load_environment(const analysis::Context& ctx, const std::stri
   }
 }
 
-}  // namespace fl::report
+}  // namespace fl::analysis

@@ -13,7 +13,7 @@
 #include "ggx_reference.h"
 #include "quadrature.h"
 
-namespace fl::fit {
+namespace fl::analysis {
 namespace {
 
 namespace ref = test::ggx_ref;
@@ -189,7 +189,7 @@ TEST(LtcFit, RecoversTheParametersOfAnExactlyRepresentableTarget) {
     const brdf::Vec3 mirror{-std::sqrt(1 - c.nov * c.nov), 0.0, c.nov};
     LtcProblem pr = make_ltc_problem(c.nov, c.alpha, magnitude, mirror, c.truth);
     for (auto& s : pr.samples) s.target = magnitude * ltc_density(c.truth, s.x, s.y, s.z);
-    const FitResult r = fit_ltc_ceres(pr, {1.0, 1.0, 0.0, 0.0}, c.isotropic);
+    const fit::FitResult r = fit_ltc_ceres(pr, {1.0, 1.0, 0.0, 0.0}, c.isotropic);
     ASSERT_TRUE(r.usable) << r.termination;
     ASSERT_EQ(r.parameters.size(), 4u);
     EXPECT_NEAR(r.parameters[0], c.truth.m11, kRecoveredParamTolerance) << c.nov;
@@ -207,7 +207,7 @@ TEST(LtcCellFit, RejectsAFitWorseOutOfSampleThanItsStart) {
   const brdf::Vec3 dir{-0.97, 0.0, 0.25};
   const LtcParams start{0.8, 0.15, -0.1, -1.0};
   const LtcSolver thin = [](const LtcProblem&, const LtcParams& s, bool) {
-    FitResult r;
+    fit::FitResult r;
     r.parameters = {s.m11 * 0.05, s.m22 * 0.05, s.m13, s.m31};
     r.usable = true;
     return r;
@@ -219,7 +219,7 @@ TEST(LtcCellFit, RejectsAFitWorseOutOfSampleThanItsStart) {
   EXPECT_DOUBLE_EQ(rejected.heldout_error, rejected.start_heldout_error);
 
   const LtcSolver same = [](const LtcProblem&, const LtcParams& s, bool) {
-    FitResult r;
+    fit::FitResult r;
     r.parameters = {s.m11, s.m22, s.m13, s.m31};
     r.usable = true;
     return r;
@@ -282,4 +282,4 @@ TEST(LtcCellFit, NearEqualChoiceStaysWithinItsMarginAndNearsTheContinuation) {
 }
 
 }  // namespace
-}  // namespace fl::fit
+}  // namespace fl::analysis
