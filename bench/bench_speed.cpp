@@ -22,7 +22,7 @@
 #include <thread>
 #include <vector>
 
-#include "analysis/tables/speed.h"
+#include "analysis/speed/speed.h"
 #include "analysis/tables/table_registry.h"
 #include "color/ciede2000_batch.h"
 #include "color/lab.h"

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/presets/preset_tables.h"
 #include "analysis/tables/tables.h"
 #include "documents/html.h"
 #include "documents/table_formats.h"
@@ -49,8 +50,8 @@ int main(int argc, char** argv) {
   const auto studies = analysis::study_materials(ctx, materials, options);
   documents::HtmlReport page;
   page.title = "Database gallery";
-  const std::vector<analysis::Table> tables{analysis::presets_table(ctx, studies),
-                                            analysis::models_table(ctx, studies)};
+  const std::vector<Table> tables{analysis::presets_table(ctx, studies),
+                                  analysis::models_table(ctx, studies)};
   page.tables = tables;
   page.gallery = jobs::catalog_gallery(ctx, studies, page.tables[0], false, {});
   const auto html = documents::html_report(page);

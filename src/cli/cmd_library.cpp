@@ -6,7 +6,7 @@
 
 #include "analysis/consensus/consensus.h"
 #include "analysis/library/library.h"
-#include "analysis/tables/tables.h"
+#include "analysis/presets/preset_tables.h"
 #include "cli/app.h"
 #include "documents/preset_formats.h"
 #include "documents/table_formats.h"
@@ -135,7 +135,7 @@ int consensus_presets(GlobalOptions& g, const std::vector<std::string>& specs,
   analysis::StudyOptions options = analysis::presets_study_options(openpbr || document);
   const auto c =
       analysis::consensus_for(ctx, requests, options, periodic_progress(g, "consensus: reading "));
-  analysis::Table t;
+  Table t;
   if (!document) {
     t = openpbr ? analysis::openpbr_table(ctx, c.set.studies)
                 : analysis::presets_table(ctx, c.set.studies);

@@ -2,8 +2,8 @@
 #include <memory>
 #include <optional>
 
-#include "analysis/tables/tables.h"
 #include "cli/app.h"
+#include "fresnel/registered_models.h"
 #include "jobs/pictures.h"
 
 namespace fl::cli {
@@ -17,7 +17,7 @@ void add_plot_subcommand(CLI::App& plot, GlobalOptions& g, Runner& selected, con
   r->models = default_models;
   sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
   sub->add_option("--models", r->models,
-                  "comma-separated models, or all: " + analysis::model_names())
+                  "comma-separated models, or all: " + fresnel::model_names())
       ->capture_default_str();
   sub->add_option("--params", r->params,
                   "derived (the spectral procedure), fitted (to the curve) or rendered (to the "
@@ -87,7 +87,7 @@ void add_render(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto r = std::make_shared<jobs::RenderRequest>();
   sub->add_option("MATERIALS", r->materials, kMaterialsHelp)->required();
   sub->add_option("--model", r->model,
-                  "truth (spectral ground truth) or a model: " + analysis::model_names())
+                  "truth (spectral ground truth) or a model: " + fresnel::model_names())
       ->capture_default_str();
   auto* compare =
       sub->add_option("--compare", r->compare,

@@ -5,7 +5,6 @@
 
 #include "analysis/plan/reference.h"
 #include "analysis/shader/shader.h"
-#include "analysis/tables/tables.h"
 #include "cli/app.h"
 #include "documents/table_formats.h"
 #include "fresnel/registered_models.h"
@@ -43,7 +42,7 @@ void add_shader_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
                                  "a self-describing shader include for a Fresnel model, with the "
                                  "lookup-table read under ibl and area");
   auto r = std::make_shared<analysis::ShaderRequest>();
-  sub->add_option("MODEL", r->model, "Fresnel model: " + analysis::model_names())->required();
+  sub->add_option("MODEL", r->model, "Fresnel model: " + fresnel::model_names())->required();
   sub->add_option("--lang", r->lang, "glsl or hlsl")->capture_default_str();
   sub->add_option("--lighting", r->lighting, "punctual, ibl (DFG table) or area (LTC moments)")
       ->capture_default_str();

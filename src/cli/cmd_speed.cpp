@@ -4,7 +4,7 @@
 #include <memory>
 #include <optional>
 
-#include "analysis/tables/speed.h"
+#include "analysis/speed/speed.h"
 #include "analysis/tables/table_registry.h"
 #include "cli/app.h"
 #include "documents/table_formats.h"

@@ -8,12 +8,14 @@
 #include <vector>
 
 #include "analysis/consensus/trusted.h"
+#include "analysis/presets/preset_tables.h"
 #include "analysis/tables/table_registry.h"
 #include "analysis/tables/tables.h"
 #include "cli/app.h"
 #include "documents/materialx.h"
 #include "documents/preset_formats.h"
 #include "documents/table_formats.h"
+#include "fresnel/registered_models.h"
 #include "io/writer.h"
 #include "jobs/reproduce.h"
 #include "util/errors.h"
@@ -59,7 +61,7 @@ void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto format = std::make_shared<std::string>("csv");
   auto params = std::make_shared<std::string>("derived");
   sub->add_option("MATERIALS", *materials, kMaterialsHelp)->required();
-  sub->add_option("--model", *model, "Fresnel model: " + analysis::model_names())
+  sub->add_option("--model", *model, "Fresnel model: " + fresnel::model_names())
       ->capture_default_str();
   sub->add_option("--params", *params,
                   "derived (the spectral procedure), fitted (to the curve) or rendered (to the "
@@ -130,7 +132,7 @@ std::string preset_documents(GlobalOptions& g, const std::vector<std::string>& s
     if (format.kind == documents::PresetKind::MaterialX &&
         !documents::materialx_space(ctx).note.empty())
       progress(g, "presets: " + documents::materialx_space(ctx).note);
-    return documents::preset_document(format, {ctx, studies, analysis::Table{}, options});
+    return documents::preset_document(format, {ctx, studies, Table{}, options});
   }
   const auto studies = analysis::study_materials(ctx, ms, analysis::presets_study_options(openpbr),
                                                  study_progress(g, "fitting: "));

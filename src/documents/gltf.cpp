@@ -6,8 +6,8 @@
 #include <cmath>
 #include <set>
 
-#include "analysis/tables/shading_presets.h"
-#include "analysis/tables/tables.h"
+#include "analysis/presets/shading_presets.h"
+#include "analysis/study/table_notes.h"
 #include "color/matrix.h"
 #include "documents/json.h"
 

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/presets/shading_presets.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/shading_presets.h"
 
 namespace fl::documents {
 

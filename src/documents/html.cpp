@@ -165,7 +165,7 @@ std::string inline_markdown(const std::string& text) {
   return std::regex_replace(s, kLink, "<a href=\"$2\">$1</a>");
 }
 
-std::string cell_html(const analysis::Cell& cell, int precision) {
+std::string cell_html(const Cell& cell, int precision) {
   if (const auto* text = std::get_if<std::string>(&cell))
     return "<td class=\"t\">" + html_escape(*text) + "</td>";
   if (const auto* n = std::get_if<long long>(&cell))
@@ -294,7 +294,7 @@ std::string html_escape(const std::string& text) {
   return out;
 }
 
-std::string table_html(const analysis::Table& t, const std::string& id, int heading_level) {
+std::string table_html(const Table& t, const std::string& id, int heading_level) {
   std::string s = fmt::format("<section class=\"table\"><h{0}>{1}</h{0}>\n", heading_level,
                               html_escape(t.title));
   if (!t.reading.empty()) s += "<p>" + inline_markdown(t.reading) + "</p>\n";

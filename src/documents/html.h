@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/tables/table.h"
 #include "io/image.h"
+#include "util/table.h"
 
 namespace fl::documents {
 
@@ -20,7 +20,7 @@ std::string html_escape(const std::string& text);
 // One table as an HTML fragment: its title (heading level `heading_level`), reading, a filter box,
 // the <table> with every column (numbers printed as in Markdown, with their full value in data-v
 // for sorting; non-finite numbers shown as n/a and sorted last) and the notes. `id` names it.
-std::string table_html(const analysis::Table& t, const std::string& id, int heading_level = 2);
+std::string table_html(const Table& t, const std::string& id, int heading_level = 2);
 
 // A sphere flip: frames side by side in one image (each frame_px square), frame 0 the truth.
 struct Flip {
@@ -57,7 +57,7 @@ struct HtmlReport {
   std::string title;
   std::vector<std::string> intro;  // paragraphs
   std::vector<GalleryEntry> gallery;
-  std::span<const analysis::Table> tables;                 // the caller's, shown in order
+  std::span<const Table> tables;                           // the caller's, shown in order
   std::vector<std::pair<std::string, std::string>> links;  // (text, href): the other formats
   // (caption, image path): figures shown full width before the tables, each opening full size.
   std::vector<std::pair<std::string, std::string>> figures;

@@ -5,8 +5,8 @@
 #include <cctype>
 #include <cmath>
 
-#include "analysis/tables/shading_presets.h"
-#include "analysis/tables/tables.h"
+#include "analysis/presets/shading_presets.h"
+#include "analysis/study/table_notes.h"
 #include "util/errors.h"
 #include "util/suggest.h"
 

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/presets/shading_presets.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/shading_presets.h"
 #include "color/matrix.h"
 
 namespace fl::documents {
@@ -33,7 +33,7 @@ MaterialxSpace materialx_space(const analysis::Context& ctx);
 // Every material of `studies` as a surfacematerial; each carries a `doc` attribute with its data
 // source, its coverage (n and k, each alone), whether it is extrapolated and where, a consensus'
 // pages and spread, what a short name resolved to, and its out_of_range list with the colours
-// stored in [0, 1] instead (analysis/tables/shading_presets.h). The document's comment explains
+// stored in [0, 1] instead (analysis/presets/shading_presets.h). The document's comment explains
 // these and counts the extrapolated materials.
 std::string presets_materialx(const analysis::Context& ctx,
                               const std::vector<analysis::MaterialStudy>& studies,

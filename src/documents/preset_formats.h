@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "analysis/presets/shading_presets.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/shading_presets.h"
-#include "analysis/tables/table.h"
 #include "documents/materialx.h"
 #include "documents/table_formats.h"
 #include "io/writer.h"
+#include "util/table.h"
 
 namespace fl::documents {
 
@@ -41,7 +41,7 @@ const PresetFormat& preset_format(const std::string& name, bool openpbr, const s
 struct PresetSource {
   const analysis::Context& ctx;
   const std::vector<analysis::MaterialStudy>& studies;
-  const analysis::Table& table;
+  const Table& table;
   analysis::ExportOptions options = {};  // MaterialX and glTF
 };
 std::string preset_document(const PresetFormat& f, const PresetSource& in);

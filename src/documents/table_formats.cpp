@@ -55,8 +55,7 @@ std::string format_number(double v, int precision) {
 
 namespace {
 
-std::string cell_text(const analysis::Cell& c, const analysis::Column& col,
-                      const char* non_finite) {
+std::string cell_text(const Cell& c, const Column& col, const char* non_finite) {
   if (const auto* s = std::get_if<std::string>(&c)) return *s;
   if (const auto* i = std::get_if<long long>(&c)) return std::to_string(*i);
   const double v = std::get<double>(c);
@@ -77,7 +76,7 @@ std::string csv_quote(const std::string& s) {
 
 }  // namespace
 
-std::string to_csv(const analysis::Table& t) {
+std::string to_csv(const Table& t) {
   std::string out;
   bool first = true;
   for (const auto& col : t.columns) {
@@ -119,7 +118,7 @@ std::string markdown_cell(const std::string& text) {
 
 }  // namespace
 
-std::string to_markdown(const analysis::Table& t, int level) {
+std::string to_markdown(const Table& t, int level) {
   std::string out = std::string(level, '#') + " " + t.title + "\n\n";
   if (!t.reading.empty()) out += t.reading + "\n\n";
   out += "|";
@@ -144,7 +143,7 @@ std::string to_markdown(const analysis::Table& t, int level) {
   return out;
 }
 
-std::string to_json(const analysis::Table& t) {
+std::string to_json(const Table& t) {
   std::map<std::string, int> decimals;
   for (const auto& c : t.columns)
     if (!decimals.emplace(c.name, c.precision).second)
@@ -164,7 +163,7 @@ std::string to_json(const analysis::Table& t) {
   });
 }
 
-std::string render(const analysis::Table& t, Format f) {
+std::string render(const Table& t, Format f) {
   switch (f) {
     case Format::Csv:
       return to_csv(t);

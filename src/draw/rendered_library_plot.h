@@ -1,9 +1,9 @@
 #pragma once
 // The figure of `reports/rendered-library.png`: rendered error over every database page against
-// the number of table terms K and against the GPU cost (analysis/tables/rendered_library.h).
+// the number of table terms K and against the GPU cost (analysis/library/rendered_library.h).
 #include <vector>
 
-#include "analysis/tables/rendered_library.h"
+#include "analysis/library/rendered_library.h"
 #include "draw/drawing.h"
 
 namespace fl::draw {

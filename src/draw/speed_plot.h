@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/tables/speed.h"
+#include "analysis/speed/speed.h"
 #include "draw/drawing.h"
 
 namespace fl::draw {

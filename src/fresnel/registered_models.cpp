@@ -195,4 +195,10 @@ std::vector<double> example_params(Model m) {
   return p;
 }
 
+std::string model_names() {
+  std::string s;
+  for (const auto& m : model_specs()) s += (s.empty() ? "" : ", ") + std::string(m.name);
+  return s;
+}
+
 }  // namespace fl::fresnel

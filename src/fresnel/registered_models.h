@@ -14,6 +14,8 @@ namespace fl::fresnel {
 const std::vector<ModelSpec>& model_specs();  // registry order
 const ModelSpec& model_spec(Model m);
 const ModelSpec& model_from_name(const std::string& name);  // InputError if unknown
+// "schlick, generalized_schlick, ...": every model's name in registry order, for option help.
+std::string model_names();
 
 std::vector<color::Rgb> evaluate_curve(Model m, const std::vector<double>& params,
                                        const std::vector<double>& cos_thetas);

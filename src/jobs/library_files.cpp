@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <map>
 
+#include "analysis/consensus/spread.h"
 #include "analysis/render/figure_data.h"
-#include "analysis/tables/spread.h"
+#include "analysis/study/table_notes.h"
 #include "analysis/tables/tables.h"
 #include "documents/grouped_gallery.h"
 #include "documents/html.h"
@@ -52,10 +53,10 @@ std::string file_safe(std::string s) {
 }
 
 // The flags of one library row, space-separated in its flags column.
-std::vector<std::string> row_flags(const analysis::Table& t, size_t row) {
+std::vector<std::string> row_flags(const Table& t, size_t row) {
   std::vector<std::string> out;
-  for (const auto f : spectral::split_fields(
-           std::get<std::string>(t.rows[row][analysis::column_index(t, "flags")]), " "))
+  for (const auto f :
+       spectral::split_fields(std::get<std::string>(t.rows[row][column_index(t, "flags")]), " "))
     out.emplace_back(f);
   return out;
 }
@@ -84,8 +85,8 @@ std::string gallery_entry(const analysis::MaterialStudy& s, const std::string& s
   return out;
 }
 
-std::string gallery(const analysis::Context& ctx, const analysis::Library& lib,
-                    const analysis::Table& t, io::Files& files) {
+std::string gallery(const analysis::Context& ctx, const analysis::Library& lib, const Table& t,
+                    io::Files& files) {
   const size_t n = lib.rows.size();
   std::vector<std::string> pngs(n);
   parallel_for(n, [&](size_t i) { pngs[i] = strip_png(ctx, lib.rows[i]); });
@@ -102,13 +103,13 @@ std::string gallery(const analysis::Context& ctx, const analysis::Library& lib,
     const std::string path = "strips/" + file_safe(mat.source) + ".png";
     files.emplace_back(path, std::move(pngs[i]));
     md += gallery_entry(lib.rows[i], path,
-                        std::get<std::string>(t.rows[i][analysis::column_index(t, "flags")]));
+                        std::get<std::string>(t.rows[i][column_index(t, "flags")]));
   }
   return md;
 }
 
 // Pages carrying each kind of flag, from the library table's flags column.
-std::map<std::string, int> flag_counts(const analysis::Table& t) {
+std::map<std::string, int> flag_counts(const Table& t) {
   std::map<std::string, int> counts;
   for (size_t row = 0; row < t.rows.size(); ++row) {
     std::map<std::string, bool> kinds;
@@ -125,8 +126,8 @@ std::map<std::string, int> flag_counts(const analysis::Table& t) {
   return counts;
 }
 
-std::string readme(const analysis::Context& ctx, const analysis::Library& lib,
-                   const analysis::Table& t, const std::string& command, bool gallery) {
+std::string readme(const analysis::Context& ctx, const analysis::Library& lib, const Table& t,
+                   const std::string& command, bool gallery) {
   int metals = 0;
   for (const auto& m : lib.set.materials)
     metals += m.material.material_class == spectral::MaterialClass::Metal;
@@ -166,12 +167,12 @@ std::string readme(const analysis::Context& ctx, const analysis::Library& lib,
 
 // A card's kind and its place against the consensus: a page's kind and distance (with the outlier
 // reason), a consensus's spread (its bulk pages' median and largest ΔE2000).
-std::pair<std::string, std::string> consensus_fact(const analysis::Table& t, size_t row) {
+std::pair<std::string, std::string> consensus_fact(const Table& t, size_t row) {
   const auto text = [&](const char* col) {
-    return std::get<std::string>(t.rows[row][analysis::column_index(t, col)]);
+    return std::get<std::string>(t.rows[row][column_index(t, col)]);
   };
   const auto number = [&](const char* col) {
-    return std::get<double>(t.rows[row][analysis::column_index(t, col)]);
+    return std::get<double>(t.rows[row][column_index(t, col)]);
   };
   const std::string kind = text("kind"), detail = text("kind_detail");
   if (kind == "consensus")
@@ -246,14 +247,14 @@ std::map<std::string, std::vector<std::string>> catalog_names_by_book(
 // keywords (the element's symbol, common name and catalog names and aliases), the cards ordered by
 // group: the main shelf's books first, alphabetically, then the other books, then catalog
 // entries and files.
-void group_cards(const analysis::Context& ctx, const analysis::Library& lib,
-                 const analysis::Table& t, std::vector<documents::GalleryEntry>& cards) {
+void group_cards(const analysis::Context& ctx, const analysis::Library& lib, const Table& t,
+                 std::vector<documents::GalleryEntry>& cards) {
   std::map<std::string, std::string> main_names;  // consensus rows take their book's name
   for (const auto& st : lib.rows)
     if (const auto& m = st.material->material; !m.book_name.empty() && !main_book(m).empty())
       main_names.emplace(main_book(m), plain(m.book_name));
   const auto catalog = catalog_names_by_book(ctx);
-  const int kind = analysis::column_index(t, "kind");
+  const int kind = column_index(t, "kind");
   std::vector<std::pair<std::string, size_t>> order;  // (sort key, card)
   for (size_t i = 0; i < cards.size(); ++i) {
     const auto& m = lib.rows[i].material->material;
@@ -283,9 +284,8 @@ void group_cards(const analysis::Context& ctx, const analysis::Library& lib,
 // index.html, its card scripts and its large tables' scripts: a gallery card per page (strip,
 // F0/F82 swatches, flags, coverage, errors) grouped by element, searchable, then the library,
 // spread and skipped tables, sortable and filterable.
-io::Files library_page(const analysis::Context& ctx, const analysis::Library& lib,
-                       const analysis::Table& t, const std::vector<analysis::Table>& tables,
-                       const std::string& command) {
+io::Files library_page(const analysis::Context& ctx, const analysis::Library& lib, const Table& t,
+                       const std::vector<Table>& tables, const std::string& command) {
   documents::HtmlReport page;
   page.title = "Fresnel Lab preset library";
   page.intro = {"Generated by `" + command +

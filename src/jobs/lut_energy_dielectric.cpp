@@ -87,7 +87,7 @@ io::ExrImage dielectric_texture(const analysis::DielectricEnergyTable& t, int ti
 
 std::string dielectric_csv(const analysis::DielectricEnergyTable& t, int tiles) {
   const auto& g = t.grid;
-  analysis::Table tab;
+  Table tab;
   tab.name = "energy-dielectric";
   tab.columns = {
       {"slice", 0}, col("f0"), col("eta"),   col("nov"),      col("perceptual_roughness"),

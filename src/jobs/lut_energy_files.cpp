@@ -32,7 +32,7 @@ std::string energy_shader(const analysis::LutGrid& g) {
 
 std::string energy_csv(const analysis::EnergyTable& t) {
   const auto& g = t.grid;
-  analysis::Table tab;
+  Table tab;
   tab.name = "energy";
   tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha"), col("e"), col("e_avg")};
   for (int j = 0; j < g.size; ++j)

@@ -39,7 +39,7 @@ analysis::LutOptions lut_options(const LutRequest& r, const analysis::LutProgres
 }
 
 // Nine significant digits: every value a float holds, small ones included.
-analysis::Column col(const char* name) {
+Column col(const char* name) {
   return {name, 9, true, true};
 }
 
@@ -237,7 +237,7 @@ std::string comment_lines(const DfgText& d, const char* prefix) {
 // The split-sum CSV: every term's channel, its texture's description per texture.
 std::string split_sum_csv(const analysis::DfgTable& t) {
   const auto& g = t.grid;
-  analysis::Table tab;
+  Table tab;
   tab.name = "dfg";
   tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha")};
   for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.dfg_channel));
@@ -255,7 +255,7 @@ std::string split_sum_csv(const analysis::DfgTable& t) {
 
 std::string filament_csv(const analysis::DfgTable& t, const std::vector<double>& values) {
   const auto& g = t.grid;
-  analysis::Table tab;
+  Table tab;
   tab.name = "dfg";
   tab.columns = {col("nov"),      col("perceptual_roughness"),
                  col("alpha"),    col("dfg_fc"),

@@ -23,7 +23,7 @@ const Axes kLtcAxes{kRoughnessAxis, 0.0, 1.0, "sqrt(1 - nov)", 0.0, 1.0};
 
 std::string moments_csv(const analysis::MomentsTable& t) {
   const auto& g = t.grid;
-  analysis::Table tab;
+  Table tab;
   tab.name = "ltc-moments";
   tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha")};
   for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.ltc_channel));
@@ -68,7 +68,7 @@ double sphere_at(const analysis::LtcTable& t, int i, int j) {
 std::string ltc_csv(const analysis::LtcTable& t) {
   const auto& g = t.grid;
   const int n = g.size;
-  analysis::Table tab;
+  Table tab;
   tab.name = "ltc";
   tab.columns = {col("nov"),     col("perceptual_roughness"),
                  col("alpha"),   col("inv_m00"),

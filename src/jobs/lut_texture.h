@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "analysis/lut/lut.h"
-#include "analysis/tables/table.h"
 #include "documents/c_header.h"
 #include "fresnel/table_terms.h"
 #include "io/exr.h"
 #include "io/writer.h"
 #include "jobs/lut_files.h"
+#include "util/table.h"
 
 namespace fl::jobs::lut_files {
 
@@ -24,7 +24,7 @@ inline constexpr const char* kRoughnessAxis = "perceptual_roughness";
 LutRequest sized(LutRequest r, int default_size);
 analysis::LutOptions lut_options(const LutRequest& r, const analysis::LutProgress& progress);
 // A CSV column of nine significant digits: every value a float holds, small ones included.
-analysis::Column col(const char* name);
+Column col(const char* name);
 
 // Texture-axis attributes shared by every EXR written here.
 struct Axes {

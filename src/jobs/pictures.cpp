@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
+#include "analysis/lut/lut_accuracy.h"
 #include "analysis/render/figure_data.h"
-#include "analysis/tables/tables.h"
 #include "draw/drawing.h"
 #include "draw/figures.h"
 #include "draw/png.h"
@@ -264,9 +264,9 @@ documents::GalleryEntry study_card(const analysis::Context& ctx, const analysis:
 
 std::vector<documents::GalleryEntry> catalog_gallery(
     const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
-    const analysis::Table& presets, bool figures, const std::vector<documents::Flip>& flips) {
+    const Table& presets, bool figures, const std::vector<documents::Flip>& flips) {
   std::vector<documents::GalleryEntry> out;
-  const int col = analysis::column_index(presets, "out_of_range");
+  const int col = column_index(presets, "out_of_range");
   for (size_t i = 0; i < studies.size(); ++i) {
     const auto& st = studies[i];
     const auto& mat = st.material->material;

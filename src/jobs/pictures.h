@@ -108,7 +108,7 @@ documents::GalleryEntry study_card(const analysis::Context& ctx, const analysis:
 // `flips` (either may be empty) add the figure links and the flip.
 std::vector<documents::GalleryEntry> catalog_gallery(
     const analysis::Context& ctx, const std::vector<analysis::MaterialStudy>& studies,
-    const analysis::Table& presets, bool figures, const std::vector<documents::Flip>& flips);
+    const Table& presets, bool figures, const std::vector<documents::Flip>& flips);
 
 // figures/strip-KEY.png and figures/curves-KEY.png per material (derived parameters), labelled in
 // `font` and rendered in parallel, and their Markdown gallery as figures.md.

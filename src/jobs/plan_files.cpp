@@ -181,7 +181,7 @@ std::string plan_readme(const analysis::Plan& p) {
 
 }  // namespace
 io::Files plan_files(const analysis::Plan& p, const analysis::PlanCosts& costs,
-                     const analysis::Table& reference, const draw::LabelFont& font, int threads,
+                     const Table& reference, const draw::LabelFont& font, int threads,
                      const TableProgress& progress) {
   io::Files out = table_files(p, threads, progress);
   std::set<std::string> includes;

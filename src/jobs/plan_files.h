@@ -30,7 +30,7 @@ using TableProgress = std::function<void(const std::string& table, int done, int
 // Paths relative to the output folder; `reference` is analysis::plan_reference's table; `font` sets
 // the figure's labels. `threads` for the tables (0: every hardware thread).
 io::Files plan_files(const analysis::Plan& plan, const analysis::PlanCosts& costs,
-                     const analysis::Table& reference, const draw::LabelFont& font, int threads = 0,
+                     const Table& reference, const draw::LabelFont& font, int threads = 0,
                      const TableProgress& progress = {});
 
 }  // namespace fl::jobs

@@ -8,7 +8,6 @@
 
 #include "analysis/render/environment_file.h"
 #include "analysis/render/figure_data.h"
-#include "analysis/tables/tables.h"
 #include "draw/drawing.h"
 #include "draw/figures.h"
 #include "draw/flip.h"

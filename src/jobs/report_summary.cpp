@@ -11,8 +11,6 @@
 namespace fl::jobs {
 namespace {
 
-using analysis::Cell;
-using analysis::Table;
 
 const Table* find_table(const std::vector<Table>& tables, const std::string& name) {
   for (const auto& t : tables)
@@ -34,9 +32,9 @@ std::string text(const Cell& c) {
 // Per class, the model and parameters with the lowest mean IBL RMS ΔE2000 over the class's
 // materials.
 std::string best_rendered(const Table& t) {
-  const int cls = analysis::column_index(t, "class"), model = analysis::column_index(t, "model");
-  const int params = analysis::column_index(t, "parameters");
-  const int err = analysis::column_index(t, "ibl_rms_de00");
+  const int cls = column_index(t, "class"), model = column_index(t, "model");
+  const int params = column_index(t, "parameters");
+  const int err = column_index(t, "ibl_rms_de00");
   std::map<std::string, std::map<std::string, std::pair<double, int>>> sums;  // class → model
   for (const auto& row : t.rows) {
     const double e = number(row[err]);
@@ -60,8 +58,8 @@ std::string best_rendered(const Table& t) {
 
 // The talk's Schlick values: how many are reproduced, and the misses with both values.
 std::string talk_schlick(const Table& t) {
-  const int name = analysis::column_index(t, "material"), ours = analysis::column_index(t, "ours");
-  const int talk = analysis::column_index(t, "talk"), miss = analysis::column_index(t, "misses");
+  const int name = column_index(t, "material"), ours = column_index(t, "ours");
+  const int talk = column_index(t, "talk"), miss = column_index(t, "misses");
   std::string misses;
   int n = 0, missed = 0;
   for (const auto& row : t.rows) {
@@ -99,10 +97,9 @@ std::string talk_methods(const Table& t) {
 // The Pareto front of one cost column: the models no other model beats on both cost and error.
 std::string pareto(const Table& t, const std::string& flag, const std::string& cost,
                    const std::string& unit, const std::string& label) {
-  const int model = analysis::column_index(t, "model"),
-            params = analysis::column_index(t, "parameters");
-  const int f = analysis::column_index(t, flag), c = analysis::column_index(t, cost);
-  const int err = analysis::column_index(t, "median_rms_de00");
+  const int model = column_index(t, "model"), params = column_index(t, "parameters");
+  const int f = column_index(t, flag), c = column_index(t, cost);
+  const int err = column_index(t, "median_rms_de00");
   std::vector<std::pair<double, std::string>> front;
   for (const auto& row : t.rows)
     if (text(row[f]) == "yes")

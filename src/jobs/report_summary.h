@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::jobs {
 
@@ -11,6 +11,6 @@ namespace fl::jobs {
 // Schlick values reproduced and where they differ (talk_spread), the ranking of the talk's method
 // table (methods), and the speed/error Pareto fronts on the CPU and the GPU (speed). A line whose
 // table is not among `tables` is left out.
-std::vector<std::string> report_summary(const std::vector<analysis::Table>& tables);
+std::vector<std::string> report_summary(const std::vector<Table>& tables);
 
 }  // namespace fl::jobs

@@ -6,7 +6,6 @@
 #include <chrono>
 
 #include "analysis/render/figure_data.h"
-#include "analysis/tables/tables.h"
 #include "documents/html.h"
 #include "documents/preset_formats.h"
 #include "documents/table_formats.h"
@@ -28,16 +27,15 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 // The tables as CSV and Markdown, with their rows of the index; the tables themselves for the HTML.
 // The studies come first, then the tables are built concurrently (each logged with its own time).
-std::vector<analysis::Table> add_tables(analysis::TableInputs& in, io::Files& files,
-                                        std::string& index,
-                                        const std::function<void(const std::string&)>& log) {
+std::vector<Table> add_tables(analysis::TableInputs& in, io::Files& files, std::string& index,
+                              const std::function<void(const std::string&)>& log) {
   auto t0 = std::chrono::steady_clock::now();
   in.prepare();
   log(fmt::format("reproduce: studies and database pages ({:.2f} s)", seconds_since(t0)));
   std::vector<const analysis::TableSpec*> specs;
   for (const auto& spec : analysis::table_specs())
     if (spec.in_reproduce) specs.push_back(&spec);
-  std::vector<analysis::Table> tables(specs.size());
+  std::vector<Table> tables(specs.size());
   std::vector<double> seconds(specs.size());
   parallel_for(specs.size(), [&](size_t i) {
     const auto t1 = std::chrono::steady_clock::now();
@@ -68,9 +66,9 @@ std::string settings_line(const analysis::Context& ctx) {
 
 // index.html: the gallery (with figures and flips when they were drawn) and every table.
 std::string report_page(const analysis::Context& ctx,
-                        const std::vector<analysis::MaterialStudy>& studies,
-                        const analysis::Table& presets, const std::vector<analysis::Table>& tables,
-                        bool figures, const std::vector<documents::Flip>& flips,
+                        const std::vector<analysis::MaterialStudy>& studies, const Table& presets,
+                        const std::vector<Table>& tables, bool figures,
+                        const std::vector<documents::Flip>& flips,
                         const std::vector<std::string>& lookdev) {
   documents::HtmlReport page;
   page.summary = report_summary(tables);
@@ -114,8 +112,8 @@ std::string report_page(const analysis::Context& ctx,
 // MaterialX documents, glTF), with their row of the index; the table loop wrote the CSV and
 // Markdown.
 void add_documents(const analysis::Context& ctx,
-                   const std::vector<analysis::MaterialStudy>& studies,
-                   const analysis::Table& presets, io::Files& files, std::string& index) {
+                   const std::vector<analysis::MaterialStudy>& studies, const Table& presets,
+                   io::Files& files, std::string& index) {
   std::string links;
   for (auto& f :
        documents::preset_files("presets", {ctx, studies, presets}, {"presets.csv", "presets.md"})) {
@@ -173,7 +171,7 @@ io::Files reproduce_files(analysis::TableInputs& in, const draw::LabelFont* figu
   auto tables = add_tables(in, files, index, log);
   const auto& studies = in.studies();
   const auto presets = *std::find_if(tables.begin(), tables.end(),
-                                     [](const analysis::Table& t) { return t.name == "presets"; });
+                                     [](const Table& t) { return t.name == "presets"; });
   add_documents(ctx, studies, presets, files, index);
   const bool figures = figures_font != nullptr;
   const auto flips =

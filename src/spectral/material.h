@@ -43,7 +43,7 @@ struct DataFile {
 struct DataPaths {
   std::string database;   // the folder holding data/
   std::string materials;  // the catalog folder
-  DataFile model_costs;   // bench/model_costs.csv (analysis/tables/speed.h)
+  DataFile model_costs;   // bench/model_costs.csv (analysis/speed/speed.h)
   DataFile gpu_costs;     // bench/gpu_costs.csv
   // The database's page catalog, owned by the run (the analysis context sets it); without it a
   // page read reads catalog-nk.yml for itself.

@@ -3,8 +3,8 @@
 // of rendered errors.
 #include <vector>
 
+#include "analysis/lut/lut_accuracy.h"
 #include "analysis/pipeline/materials.h"
-#include "analysis/tables/lut_accuracy.h"
 
 namespace fl::analysis::test {
 

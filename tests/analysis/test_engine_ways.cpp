@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "analysis/gold_shading.h"
-#include "analysis/tables/lut_accuracy.h"
+#include "analysis/lut/lut_accuracy.h"
 #include "fresnel/registry.h"
 
 namespace fl::analysis {

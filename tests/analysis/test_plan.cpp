@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "analysis/plan/plan.h"
-#include "analysis/tables/speed.h"
+#include "analysis/speed/speed.h"
 #include "fresnel/registered_models.h"
 #include "test_util.h"
 #include "util/errors.h"

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "analysis/gold_shading.h"
+#include "analysis/lut/lut_accuracy.h"
 #include "analysis/lut/rendered_fit.h"
 #include "analysis/pipeline/materials.h"
-#include "analysis/tables/lut_accuracy.h"
 #include "fresnel/registry.h"
 #include "util/errors.h"
 

@@ -1,9 +1,9 @@
-// Rendered error over the library (analysis/tables/rendered_library.h).
+// Rendered error over the library (analysis/library/rendered_library.h).
 #include <gtest/gtest.h>
 
+#include "analysis/library/rendered_library.h"
+#include "analysis/lut/lut_accuracy.h"
 #include "analysis/pipeline/materials.h"
-#include "analysis/tables/lut_accuracy.h"
-#include "analysis/tables/rendered_library.h"
 #include "fresnel/registry.h"
 
 namespace fl::analysis {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/presets/preset_tables.h"
 #include "analysis/study/study.h"
 #include "analysis/tables/tables.h"
 #include "fit/fit.h"
@@ -170,7 +171,7 @@ TEST(Acceptance, MethodsTableAndF82Median) {
   const auto full = analysis::presets_table(ctx, studies).rows,
              alone = analysis::presets_table(ctx, presets).rows;
   ASSERT_EQ(full.size(), alone.size());
-  const auto same = [](const analysis::Cell& a, const analysis::Cell& b) {
+  const auto same = [](const Cell& a, const Cell& b) {
     const auto* x = std::get_if<double>(&a);
     const auto* y = std::get_if<double>(&b);
     return x && y ? (*x == *y || (std::isnan(*x) && std::isnan(*y)))

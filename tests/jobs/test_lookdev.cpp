@@ -89,7 +89,7 @@ TEST(ContactSheet, LabelsOfSmallTilesDoNotOverlap) {
 }
 
 TEST(Html, TableCellsAreEscapedAndSortable) {
-  analysis::Table t;
+  Table t;
   t.name = "x";
   t.title = "A <b> & \"c\"";
   t.columns = {{"name"}, {"value", 3}, {"count"}};
@@ -124,13 +124,13 @@ documents::HtmlReport sample_page() {
   e.flip = {"figures/flip-gold.png", 97, {"truth", "schlick \"s\""}};
   r.gallery = {e};
   // The page shows its caller's tables (a span): these live as long as the test program.
-  static const std::vector<analysis::Table> tables = [] {
-    analysis::Table t;
+  static const std::vector<Table> tables = [] {
+    Table t;
     t.name = "schlick";
     t.title = "Schlick";
     t.columns = {{"material"}, {"rms", 3}};
     t.rows = {{std::string("Gold"), 0.8}};
-    return std::vector<analysis::Table>{t};
+    return std::vector<Table>{t};
   }();
   r.tables = tables;
   r.links = {{"README.md", "README.md"}};

@@ -6,10 +6,9 @@
 namespace fl::jobs {
 namespace {
 
-using analysis::Table;
 
 Table table(std::string name, std::vector<std::string> columns,
-            std::vector<std::vector<analysis::Cell>> rows) {
+            std::vector<std::vector<Cell>> rows) {
   Table t;
   t.name = std::move(name);
   for (auto& c : columns) t.columns.push_back({std::move(c)});

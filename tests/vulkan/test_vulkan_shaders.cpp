@@ -12,8 +12,8 @@
 #include <map>
 #include <numbers>
 
+#include "analysis/lut/lut_accuracy.h"
 #include "analysis/pipeline/materials.h"
-#include "analysis/tables/lut_accuracy.h"
 #include "color/lab.h"
 #include "fresnel/registered_models.h"
 #include "vulkan/shader_kernel.h"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analysis/pipeline/materials.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "analysis/basis/basis.h"
-#include "analysis/tables/tables.h"
+#include "analysis/study/table_notes.h"
 #include "util/median.h"
 
 namespace fl::analysis {

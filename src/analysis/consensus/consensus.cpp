@@ -8,8 +8,7 @@
 #include <filesystem>
 #include <map>
 
-#include "analysis/tables/spread.h"
-#include "analysis/tables/tables.h"
+#include "analysis/consensus/spread.h"
 #include "color/lab.h"
 #include "fresnel/exact.h"
 #include "spectral/pages.h"

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "analysis/consensus/spread.h"
 #include "analysis/pipeline/context.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/spread.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

@@ -7,8 +7,8 @@
 #include <map>
 
 #include "analysis/consensus/consensus.h"
-#include "analysis/tables/spread.h"
-#include "analysis/tables/tables.h"
+#include "analysis/consensus/spread.h"
+#include "analysis/study/table_notes.h"
 #include "color/lab.h"
 #include "spectral/pages.h"
 #include "spectral/text_file.h"

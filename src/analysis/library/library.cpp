@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <map>
 
-#include "analysis/tables/spread.h"
-#include "analysis/tables/tables.h"
+#include "analysis/consensus/spread.h"
+#include "analysis/presets/preset_tables.h"
+#include "analysis/study/table_notes.h"
 #include "fresnel/registered_models.h"
 #include "spectral/pages.h"
 #include "spectral/text_file.h"

@@ -10,7 +10,7 @@
 #include "analysis/consensus/consensus.h"
 #include "analysis/pipeline/materials.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

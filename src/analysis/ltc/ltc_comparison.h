@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "analysis/ltc/ltc_reference.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

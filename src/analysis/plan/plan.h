@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
+#include "analysis/lut/lut_accuracy.h"
 #include "analysis/lut/lut_layout.h"
+#include "analysis/speed/speed.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/lut_accuracy.h"
-#include "analysis/tables/speed.h"
 
 namespace fl::analysis {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "analysis/plan/plan.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "analysis/tables/tables.h"
+#include "analysis/lut/lut_accuracy.h"
 #include "color/lab.h"
 #include "fresnel/ground_truth.h"
 #include "util/errors.h"

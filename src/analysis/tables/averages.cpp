@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "analysis/tables/tables.h"
+#include "analysis/study/table_notes.h"
 #include "fresnel/average.h"
 #include "fresnel/registry.h"
 #include "util/median.h"

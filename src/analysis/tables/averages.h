@@ -4,7 +4,7 @@
 // ground truth.
 #include "analysis/pipeline/context.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

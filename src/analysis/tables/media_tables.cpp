@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/tables/tables.h"
+#include "analysis/study/table_notes.h"
 #include "color/ciede2000_batch.h"
 #include "fresnel/exact.h"
 #include "fresnel/media.h"

@@ -2,7 +2,7 @@
 // The talk's arguments for linear models, made measurable: parameter blending, gamut
 // conversion, external media and internal reflection.
 #include "analysis/study/study.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

@@ -8,7 +8,7 @@
 
 #include "analysis/lut/rendered.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

@@ -3,10 +3,11 @@
 #include <fmt/format.h>
 
 #include "analysis/lut/lut.h"
+#include "analysis/lut/lut_accuracy.h"
 #include "analysis/pipeline/materials.h"
+#include "analysis/presets/preset_tables.h"
+#include "analysis/speed/speed.h"
 #include "analysis/tables/averages.h"
-#include "analysis/tables/lut_accuracy.h"
-#include "analysis/tables/speed.h"
 #include "analysis/tables/table_layouts.h"
 #include "analysis/tables/tables.h"
 #include "util/errors.h"

@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "analysis/consensus/spread.h"
+#include "analysis/library/rendered_library.h"
 #include "analysis/lut/rendered.h"
 #include "analysis/study/study.h"
 #include "analysis/tables/media_tables.h"
-#include "analysis/tables/rendered_library.h"
-#include "analysis/tables/spread.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

@@ -1,4 +1,4 @@
-#include "analysis/tables/speed.h"
+#include "analysis/speed/speed.h"
 
 #include <fmt/format.h>
 

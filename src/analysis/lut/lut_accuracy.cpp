@@ -1,4 +1,4 @@
-#include "analysis/tables/lut_accuracy.h"
+#include "analysis/lut/lut_accuracy.h"
 
 #include <fmt/format.h>
 
@@ -268,6 +268,32 @@ Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& s
         projection_gain(studies, per_material));
   t.notes = accuracy_notes(ctx);
   return t;
+}
+
+MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one,
+                        const std::string& kind, const std::vector<fresnel::Model>& models) {
+  const ParameterSet set = parameter_set_from_name(kind);
+  StudyOptions o;
+  o.fit = set != ParameterSet::Derived;
+  o.fitted_models = models;
+  o.threads = 1;
+  MaterialStudy st = study_materials(ctx, one, o).front();
+  if (set == ParameterSet::Rendered) add_rendered_fits(ctx, st, lut_accuracy_points(), models);
+  return st;
+}
+
+const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m,
+                                        const std::string& kind) {
+  const auto& r = st.result(m);
+  switch (parameter_set_from_name(kind)) {
+    case ParameterSet::Fitted:
+      return r.fitted.parameters;
+    case ParameterSet::Rendered:
+      return r.rendered.parameters;
+    case ParameterSet::Derived:
+      break;
+  }
+  return r.derived;
 }
 
 }  // namespace fl::analysis

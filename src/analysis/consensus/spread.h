@@ -6,7 +6,7 @@
 
 #include "analysis/pipeline/materials.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

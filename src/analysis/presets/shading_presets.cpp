@@ -1,4 +1,4 @@
-#include "analysis/tables/shading_presets.h"
+#include "analysis/presets/shading_presets.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "analysis/tables/rendered_library.h"
+#include "analysis/library/rendered_library.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "analysis/tables/spread.h"
+#include "analysis/consensus/spread.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <map>
 
-#include "analysis/tables/tables.h"
+#include "analysis/study/table_notes.h"
 #include "color/lab.h"
 #include "fresnel/registered_models.h"
 #include "util/median.h"

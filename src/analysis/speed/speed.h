@@ -12,8 +12,8 @@
 
 #include "analysis/lut/rendered.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/table.h"
 #include "fresnel/registered_models.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 

@@ -6,7 +6,7 @@
 
 #include "analysis/lut/rendered.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 
@@ -47,5 +47,15 @@ std::vector<ShadingPoint> lut_accuracy_points();
 // at lut_accuracy_points().
 Table lut_accuracy_table(const Context& ctx, const std::vector<MaterialStudy>& studies,
                          const std::vector<ShadingPoint>& points);
+
+// The study of one material with the parameter set `kind` names (parameter_set_from_name): curve
+// fits for "fitted" and "rendered", and then only of `models` (empty: every model); rendered fits
+// (add_rendered_fits at lut_accuracy_points) for "rendered". `one` holds the material and must
+// outlive the study, which points into it.
+MaterialStudy study_one(const Context& ctx, const std::vector<LoadedMaterial>& one,
+                        const std::string& kind, const std::vector<fresnel::Model>& models = {});
+// A model's derived, fitted or rendered parameters (`kind`) from a study.
+const std::vector<double>& model_params(const MaterialStudy& st, fresnel::Model m,
+                                        const std::string& kind);
 
 }  // namespace fl::analysis

@@ -6,7 +6,7 @@
 #include <variant>
 #include <vector>
 
-namespace fl::analysis {
+namespace fl {
 
 struct Column {
   std::string name;
@@ -34,4 +34,4 @@ inline int column_index(const Table& t, const std::string& name) {
   throw std::logic_error("table " + t.name + " has no column " + name);
 }
 
-}  // namespace fl::analysis
+}  // namespace fl

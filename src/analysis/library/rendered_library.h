@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "analysis/lut/rendered.h"
+#include "analysis/speed/speed.h"
 #include "analysis/study/study.h"
-#include "analysis/tables/speed.h"
-#include "analysis/tables/table.h"
+#include "util/table.h"
 
 namespace fl::analysis {
 
