@@ -11,7 +11,6 @@
 namespace fl::jobs {
 namespace {
 
-
 const Table* find_table(const std::vector<Table>& tables, const std::string& name) {
   for (const auto& t : tables)
     if (t.name == name) return &t;

@@ -6,7 +6,6 @@
 namespace fl::jobs {
 namespace {
 
-
 Table table(std::string name, std::vector<std::string> columns,
             std::vector<std::vector<Cell>> rows) {
   Table t;
