@@ -1,5 +1,7 @@
 // Highway (hwy/foreach_target.h) compiles this file once per x86 instruction set and
 // batch_targets() below picks the best one the CPU has; Highway's headers stay in this file.
+// Over 400 lines: foreach_target re-includes this one file per instruction set, so the vector
+// kernel, its per-target entry points and the dispatch cannot be split across files.
 #include "color/ciede2000_batch.h"
 
 #include <cpuid.h>
@@ -7,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,7 +43,8 @@ using D = hn::ScalableTag<double>;
 using V = hn::Vec<D>;
 using M = hn::Mask<D>;
 
-using namespace detail;  // the formula's constants (ciede2000_constants.h), kPi, kDegPerRad
+using namespace detail;  // the formula's constants (ciede2000_constants.h), std::numbers::pi,
+                         // kDegPerRad
 
 HWY_INLINE V pow7(V x) {
   const V x2 = hn::Mul(x, x);
@@ -58,10 +62,10 @@ HWY_INLINE V atan2_deg(D d, V y, V x) {
   const V ax = hn::Abs(x), ay = hn::Abs(y);
   const M steep = hn::Gt(ay, ax);
   const V r = hn::Atan(d, hn::Div(hn::IfThenElse(steep, ax, ay), hn::IfThenElse(steep, ay, ax)));
-  const V first = hn::IfThenElse(steep, hn::Sub(hn::Set(d, 0.5 * kPi), r), r);
-  const V upper =
-      hn::Mul(hn::IfThenElse(hn::Lt(x, hn::Zero(d)), hn::Sub(hn::Set(d, kPi), first), first),
-              hn::Set(d, kDegPerRad));
+  const V first = hn::IfThenElse(steep, hn::Sub(hn::Set(d, 0.5 * std::numbers::pi), r), r);
+  const V upper = hn::Mul(
+      hn::IfThenElse(hn::Lt(x, hn::Zero(d)), hn::Sub(hn::Set(d, std::numbers::pi), first), first),
+      hn::Set(d, kDegPerRad));
   return hn::IfThenElse(hn::Lt(y, hn::Zero(d)), hn::Sub(hn::Set(d, 360.0), upper), upper);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // CIELAB and CIEDE2000, templated on the scalar so Ceres can differentiate a ΔE2000 objective.
 #include <cmath>
+#include <numbers>
 
 #include "color/autodiff.h"
 #include "color/matrix.h"
@@ -16,8 +17,7 @@ T lab_f(const T& t) {
   if (t > T(kDelta * kDelta * kDelta)) return cbrt(t);
   return t / (3.0 * kDelta * kDelta) + 4.0 / 29.0;
 }
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegPerRad = 180.0 / kPi;
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 }  // namespace detail
 
 // CIE 1976 L*a*b* relative to `white` (its Y is the reference luminance).

@@ -28,6 +28,14 @@ inline Rgb operator+(const Rgb& u, const Rgb& v) {
 inline Rgb operator*(double s, const Rgb& v) {
   return {s * v.r, s * v.g, s * v.b};
 }
+// a + (b − a)·t, per channel.
+inline Rgb lerp(const Rgb& a, const Rgb& b, double t) {
+  return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
+}
+// The channel-wise product.
+inline Rgb mul(const Rgb& a, const Rgb& b) {
+  return {a.r * b.r, a.g * b.g, a.b * b.b};
+}
 
 struct Chromaticity {
   double x = 0, y = 0;

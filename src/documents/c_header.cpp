@@ -29,19 +29,18 @@ std::string attribute_lines(const io::ExrImage& t) {
   return out;
 }
 
-// The values, a few texels per line.
-std::string values(const io::ExrImage& t, bool half) {
-  const size_t channels = t.channels.size(), per_line = std::max<size_t>(1, 8 / channels);
+}  // namespace
+
+std::string c_array_values(const std::vector<float>& values, size_t channels,
+                           size_t texels_per_line, bool half) {
   std::string s;
-  for (size_t k = 0; k < t.pixels.size(); ++k) {
-    if (k % (channels * per_line) == 0) s += k ? "\n   " : "   ";
-    s += half ? fmt::format(" 0x{:04x},", io::half_bits(t.pixels[k]))
-              : fmt::format(" {:.9e}f,", t.pixels[k]);
+  for (size_t k = 0; k < values.size(); ++k) {
+    if (k % (channels * texels_per_line) == 0) s += k ? "\n   " : "   ";
+    s += half ? fmt::format(" 0x{:04x},", io::half_bits(values[k]))
+              : fmt::format(" {:.9e}f,", values[k]);
   }
   return s + "\n";
 }
-
-}  // namespace
 
 void check_c_symbol(const std::string& symbol) {
   bool ok = !symbol.empty() && symbol.size() <= 64 &&
@@ -73,7 +72,10 @@ std::string c_header(const io::ExrImage& t, const CHeader& h) {
       "static const {5} {0}_data[{1}_SIZE * {1}_SIZE * {1}_CHANNELS] = {{\n",
       name, macro, h.half ? "#include <stdint.h>\n\n" : "", t.width, t.channels.size(),
       h.half ? "uint16_t" : "float");
-  return s + values(t, h.half) + fmt::format("}};\n\n#endif /* {}_H */\n", macro);
+  return s +
+         c_array_values(t.pixels, t.channels.size(), std::max<size_t>(1, 8 / t.channels.size()),
+                        h.half) +
+         fmt::format("}};\n\n#endif /* {}_H */\n", macro);
 }
 
 }  // namespace fl::documents

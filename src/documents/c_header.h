@@ -11,6 +11,7 @@
 // Texel (x, y), channel c is SYMBOL_data[(y * SYMBOL_SIZE + x) * SYMBOL_CHANNELS + c]; the comment
 // above repeats the texture's attributes (axes, channels, the shader code that reads it).
 #include <string>
+#include <vector>
 
 #include "io/exr.h"
 
@@ -22,6 +23,11 @@ struct CHeader {
   bool half = false;  // uint16_t half-float bit patterns (an RGB16F texture) instead of float
 };
 std::string c_header(const io::ExrImage& texture, const CHeader& header);
+
+// The body of a C array initializer: `texels_per_line` texels of `channels` values per line, as
+// floats (%.9e) or, with `half`, as half-float bit patterns (0x3c00).
+std::string c_array_values(const std::vector<float>& values, size_t channels,
+                           size_t texels_per_line, bool half);
 
 // InputError unless `symbol` is a C identifier of at most 64 characters.
 void check_c_symbol(const std::string& symbol);

@@ -7,6 +7,7 @@
 
 #include "analysis/presets/shading_presets.h"
 #include "analysis/study/table_notes.h"
+#include "documents/html.h"
 #include "util/errors.h"
 #include "util/suggest.h"
 
@@ -78,29 +79,6 @@ struct Writer {
     return fmt::format("    <input name=\"{}\" type=\"float\" value=\"{:.6g}\" />\n", input, v);
   }
 };
-
-std::string xml_attribute(const std::string& text) {
-  std::string out;
-  for (char ch : text) {
-    switch (ch) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
-}
 
 std::string node_id(const std::string& key) {
   std::string id = key;
@@ -263,7 +241,7 @@ std::string presets_materialx(const analysis::Context& ctx,
         "  <surfacematerial name=\"{0}\" type=\"material\" doc=\"{1}\">\n"
         "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"{0}_shader\" />\n"
         "  </surfacematerial>\n",
-        id, xml_attribute(doc));
+        id, html_escape(doc));
   }
   return out + "</materialx>\n";
 }

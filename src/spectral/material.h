@@ -40,6 +40,8 @@ struct DataFile {
   std::string path, name;
 };
 
+struct CatalogIndex;
+
 struct DataPaths {
   std::string database;   // the folder holding data/
   std::string materials;  // the catalog folder
@@ -48,6 +50,8 @@ struct DataPaths {
   // The database's page catalog, owned by the run (the analysis context sets it); without it a
   // page read reads catalog-nk.yml for itself.
   std::shared_ptr<const PageCatalog> pages;
+  // The catalog's names, owned by the run likewise (catalog_index).
+  std::shared_ptr<const CatalogIndex> catalog;
 };
 // `paths.pages`, or a catalog of `paths.database` read for this one use.
 std::shared_ptr<const PageCatalog> page_catalog(const DataPaths& paths);
@@ -57,8 +61,32 @@ std::shared_ptr<const PageCatalog> page_catalog(const DataPaths& paths);
 // format nk_text.h reads) or a constant index (`constant: {n: 1.64, k: 0}`).
 Material read_catalog_entry(const std::string& path, const DataPaths& paths);
 
+// Keys and names select entries case-insensitively (resolve_material): two entries may not share
+// either. InputError at the later entry's name, naming the earlier one.
+void require_unique_names(const std::vector<std::string>& files, const std::vector<Material>& ms);
+
 // Every catalog entry, in catalog order: the `order` field, then the key.
 std::vector<Material> read_catalog(const DataPaths& paths);
+
+// The names that select each catalog entry of a folder: its key (file stem), `name` and `aliases`.
+// An entry that cannot be read keeps its error and is selected by its key only; reading it then
+// reports the error, and a name that selects nothing lists it (unreadable_entries).
+struct CatalogIndex {
+  struct Entry {
+    std::string file;
+    std::vector<std::string> names;
+    std::string error;  // empty when the entry's names were read
+  };
+  std::string folder;
+  std::vector<Entry> entries;  // in file-name order
+};
+CatalogIndex read_catalog_index(const std::string& folder);
+// `paths.catalog` when it indexes `paths.materials`, or an index read for this one use.
+std::shared_ptr<const CatalogIndex> catalog_index(const DataPaths& paths);
+// "; unreadable catalog entries: ERROR; ERROR" for entries whose names could not be read, or "".
+std::string unreadable_entries(const DataPaths& paths);
+// The file of a database page (main/Au/nk/Johnson): DATABASE/data/PAGE.yml.
+std::string database_file(const DataPaths& paths, const std::string& page);
 
 // A catalog key or display name (case-insensitive), a database page (main/Au/nk/Johnson), or a
 // file path (a refractiveindex.info page or catalog entry .yml, or any format nk_text.h reads).

@@ -133,5 +133,28 @@ TEST(Yaml, ABrokenCatalogEntryFoundByNameReportsItsOwnError) {
   }
 }
 
+// An entry whose YAML does not parse is still selected by its key, and a name that selects nothing
+// names the broken entry and its line instead of passing over it.
+TEST(Yaml, AnUnreadableCatalogEntryIsNamedWhenANameSelectsNothing) {
+  test::TempDir tmp;
+  tmp.file("materials/shiny.yml", "name: Shiny Metal\nclass: metal\nsource: main/Au/nk/Johnson\n");
+  tmp.file("materials/broken.yml", "name: [Broken\nclass: metal\n");
+  const DataPaths paths{tmp.path() + "/db", tmp.path() + "/materials"};
+  const auto index = read_catalog_index(paths.materials);
+  ASSERT_EQ(index.entries.size(), 2u);
+  EXPECT_EQ(index.entries[0].names, std::vector<std::string>{"broken"});
+  EXPECT_NE(index.entries[0].error.find("broken.yml"), std::string::npos) << index.entries[0].error;
+  EXPECT_EQ(index.entries[1].names, (std::vector<std::string>{"shiny", "Shiny Metal"}));
+  EXPECT_TRUE(index.entries[1].error.empty());
+  try {
+    resolve_material("Brokenn Metal", paths);
+    FAIL() << "an unknown name";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unreadable catalog entries: "), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("broken.yml"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace fl::spectral

@@ -1,3 +1,6 @@
+// The LTC cell fit: the lobe's samples, the objective, the Ceres solve and the continuation over a
+// table's cells. Over 400 lines: Ceres stays inside this one file (its headers and cost functors),
+// and its column loops need this file's compile options (src/CMakeLists.txt).
 #include "analysis/ltc/ltc_fit.h"
 
 #include <ceres/ceres.h>

@@ -12,8 +12,6 @@
 namespace fl::analysis {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 void check_size(int size) {
   if (size < 2 || size > 4096)
     throw InputError(fmt::format("table size {} out of range (2 to 4096)", size));
@@ -60,23 +58,23 @@ double horizon_clipped_sphere_form_factor(double z, double len) {
   auto terms = [&](double& g_term, double& h_term) {
     const double gamma = std::asin(std::clamp(cos_s / sin_w, -1.0, 1.0));
     const double cos_g = std::cos(gamma), sin_g = std::sin(gamma);
-    g_term = -2.0 * sin_w * cos_s * cos_g + kPi / 2.0 - gamma + sin_g * cos_g;
+    g_term = -2.0 * sin_w * cos_s * cos_g + std::numbers::pi / 2.0 - gamma + sin_g * cos_g;
     h_term = cos_w * (cos_g * std::sqrt(std::max(0.0, sin2_s - cos_g * cos_g)) +
                       sin2_s * std::asin(std::clamp(cos_g / sin_s, -1.0, 1.0)));
   };
   double projected = 0.0;  // cosine-weighted solid angle of the visible part of the cap
-  if (omega <= kPi / 2.0 - sigma) {
-    projected = kPi * cos_w * sin2_s;
-  } else if (omega < kPi / 2.0) {
+  if (omega <= std::numbers::pi / 2.0 - sigma) {
+    projected = std::numbers::pi * cos_w * sin2_s;
+  } else if (omega < std::numbers::pi / 2.0) {
     double g_term = 0, h_term = 0;
     terms(g_term, h_term);
-    projected = kPi * cos_w * sin2_s + g_term - h_term;
-  } else if (omega < kPi / 2.0 + sigma) {
+    projected = std::numbers::pi * cos_w * sin2_s + g_term - h_term;
+  } else if (omega < std::numbers::pi / 2.0 + sigma) {
     double g_term = 0, h_term = 0;
     terms(g_term, h_term);
     projected = g_term + h_term;
   }
-  return projected / (kPi * len);
+  return projected / (std::numbers::pi * len);
 }
 
 std::vector<double> sphere_form_factor_table(int size) {

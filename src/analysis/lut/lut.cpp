@@ -18,7 +18,6 @@ namespace fl::analysis {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Heitz's fitLTC.cpp caps θ_v below π/2 so the view vector never lies in the surface.
 constexpr double kLtcMaxThetaRad = 1.57;
 
@@ -152,7 +151,7 @@ double integrate_sheen_dfg(double nov, double alpha, int samples) {
   for (int k = 0; k < samples; ++k) {
     const auto u =
         brdf::hammersley(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(samples));
-    const double phi = 2.0 * kPi * u.u1, cos_h = 1.0 - u.u2,
+    const double phi = 2.0 * std::numbers::pi * u.u1, cos_h = 1.0 - u.u2,
                  sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
     const brdf::Vec3 h{sin_h * std::cos(phi), sin_h * std::sin(phi), cos_h};
     const double voh = brdf::dot(v, h);
@@ -161,7 +160,7 @@ double integrate_sheen_dfg(double nov, double alpha, int samples) {
     // f (n·l) dω_l = D V (n·l) 4 (v·h) dω_h, and dω_h / pdf = 2π.
     sum += brdf::charlie_ndf(cos_h, alpha) * brdf::neubelt_visibility(v.z, l.z) * l.z * 4.0 * voh;
   }
-  return sum * 2.0 * kPi / samples;
+  return sum * 2.0 * std::numbers::pi / samples;
 }
 
 namespace {

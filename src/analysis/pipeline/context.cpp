@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include "color/ciede2000_batch.h"
@@ -64,9 +65,13 @@ Context::Context(const Settings& s)
                                     : color::SpaceLibrary::from_config(s.ocio_config, s.ocio_xyz)),
       display_(spaces_, s.space, s.view),
       reflectance_display_(spaces_, s.space, reflectance_view(s)) {
-  // The run's page catalog: one per database, shared with the settings' copies.
+  // The run's page catalog and catalog index: one per database and catalog folder, shared with
+  // the settings' copies.
   if (!settings_.paths.pages || settings_.paths.pages->database() != settings_.paths.database)
     settings_.paths.pages = std::make_shared<const spectral::PageCatalog>(settings_.paths.database);
+  if (!settings_.paths.catalog || settings_.paths.catalog->folder != settings_.paths.materials)
+    settings_.paths.catalog = std::make_shared<const spectral::CatalogIndex>(
+        spectral::read_catalog_index(settings_.paths.materials));
   const auto observer = spectral::cie1931_2deg(grid_);
   space_ = spaces_.space(s.space, space_white(s, grid_, observer));
   if (settings_.illuminant.empty()) settings_.illuminant = space_.reference_illuminant;
@@ -87,10 +92,10 @@ Context::Context(const Settings& s)
   double wsum = 0;
   for (int i = 0; i < n; ++i) {
     const double deg = 90.0 * i / (n - 1);
-    const double c = i == n - 1 ? 0.0 : std::cos(deg * M_PI / 180.0);
+    const double c = i == n - 1 ? 0.0 : std::cos(deg * std::numbers::pi / 180.0);
     angles_deg_.push_back(deg);
     cos_thetas_.push_back(c);
-    const double w = std::sin(deg * M_PI / 180.0) * c;
+    const double w = std::sin(deg * std::numbers::pi / 180.0) * c;
     render_weights_.push_back(w);
     wsum += w;
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fresnel/registered_models.h"
 #include "fresnel/registry.h"
 #include "util/errors.h"
 #include "util/parallel.h"
@@ -124,6 +125,11 @@ std::vector<MaterialStudy> study_materials(const Context& ctx,
       },
       options.threads);
   return out;
+}
+
+std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) {
+  return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b},
+                                 ctx.cos_thetas());
 }
 
 }  // namespace fl::analysis

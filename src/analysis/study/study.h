@@ -41,6 +41,9 @@ struct MaterialStudy {
   bool lossless = false;  // k ≤ fit::kLosslessMaxK over the grid: fits hold κ at 0
 
   const ModelResult& result(fresnel::Model m) const;
+  bool is_metal() const {
+    return material->material.material_class == spectral::MaterialClass::Metal;
+  }
 };
 
 struct StudyOptions {
@@ -77,5 +80,8 @@ bool is_lossless(const spectral::ComplexIorSpectrum& ior);
 
 // The target of a fit: the ground truth in the working space's CIELAB at the context's angles.
 fit::CurveTarget curve_target(const Context& ctx, const std::vector<color::Rgb>& truth);
+
+// Schlick's curve of `f0` at the context's angles.
+std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0);
 
 }  // namespace fl::analysis

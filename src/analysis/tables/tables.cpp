@@ -14,15 +14,6 @@
 
 namespace fl::analysis {
 
-namespace {
-
-std::vector<color::Rgb> schlick_curve(const Context& ctx, const color::Rgb& f0) {
-  return fresnel::evaluate_curve(fresnel::model_of<fresnel::models::Schlick>, {f0.r, f0.g, f0.b},
-                                 ctx.cos_thetas());
-}
-
-}  // namespace
-
 Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& materials) {
   Table t;
   t.name = "schlick";
@@ -134,10 +125,6 @@ std::string fit_flags_note(const std::vector<MaterialStudy>& studies) {
       flagged, fits, fit::kLosslessMaxK);
 }
 
-bool is_metal(const MaterialStudy& s) {
-  return s.material->material.material_class == spectral::MaterialClass::Metal;
-}
-
 }  // namespace
 
 Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
@@ -152,7 +139,7 @@ Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studie
   int g_clamped_ps = 0, g_clamped_refl = 0;
   std::vector<const LoadedMaterial*> metals;
   for (const auto& s : studies) {
-    if (!is_metal(s)) continue;
+    if (!s.is_metal()) continue;
     t.rows.push_back({s.material->material.name,
                       s.result(fresnel::model_of<fresnel::models::Schlick>).derived_error.rms,
                       s.ps_eta_kappa.rms,
@@ -239,7 +226,7 @@ Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies
         const bool schlick_derived =
             r.model == fresnel::model_of<fresnel::models::Schlick> && !fitted;
         const bool f82_fitted = r.model == fresnel::model_of<fresnel::models::F82> && fitted;
-        if (is_metal(s) && (schlick_derived || f82_fitted))
+        if (s.is_metal() && (schlick_derived || f82_fitted))
           med[f82_fitted].push_back(fitted ? r.fitted_error.rms : r.derived_error.rms);
       }
   const double m_schlick = median(med[0]), m_f82 = median(med[1]);
