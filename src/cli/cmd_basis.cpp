@@ -35,6 +35,14 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--degree", a->options.poly_degree, "degree of each term's polynomial in μ")
       ->capture_default_str()
       ->check(CLI::Range(1, 16));
+  sub->add_option("--metal-share", a->options.metal_share,
+                  "the metals' share of the construction's weight, 0-1 (each class's pages weigh "
+                  "the same within it); -1: every page weighs the same")
+      ->capture_default_str()
+      ->check(CLI::Range(-1.0, 1.0));
+  sub->add_option("--normalize", a->options.normalize_power, "normalization power")
+      ->capture_default_str();
+  sub->add_flag("--perceptual", a->options.perceptual, "perceptual");
   sub->callback([&g, &selected, a] {
     selected = [&g, a] {
       const auto t0 = std::chrono::steady_clock::now();
@@ -57,6 +65,8 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
         command += fmt::format(" --terms {}", a->options.data_terms);
       if (a->options.poly_degree != analysis::BasisOptions{}.poly_degree)
         command += fmt::format(" --degree {}", a->options.poly_degree);
+      if (a->options.metal_share != analysis::BasisOptions{}.metal_share)
+        command += fmt::format(" --metal-share {:g}", a->options.metal_share);
       auto files = report::basis_files(ctx, basis, command);
       for (auto& f : files) f.first = a->out + "/" + f.first;
       report::write_files_atomic(files, a->out);

@@ -7,7 +7,7 @@
 
 #include "analysis/basis/basis.h"
 #include "analysis/tables/tables.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 
@@ -30,18 +30,10 @@ std::vector<std::string> set_labels(const FresnelBasis& b) {
   std::vector<std::string> labels;
   for (size_t k = 2; k <= 2 + b.terms.size(); ++k) labels.push_back(fmt::format("k{}", k));
   labels.push_back("hoffman3");
+  for (size_t k = 3; k <= b.peer.functions.size(); ++k)
+    labels.push_back(fmt::format("belcour{}", k));
+  if (!b.peer.functions.empty()) labels.push_back("belcour4_two_point");
   return labels;
-}
-
-// The q-quantile of `values` by linear interpolation between order statistics (Hyndman & Fan
-// 1996, definition 7); NaN when empty.
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return std::nan("");
-  std::sort(values.begin(), values.end());
-  const double h = q * (values.size() - 1);
-  const size_t lo = static_cast<size_t>(std::floor(h));
-  const size_t hi = std::min(values.size() - 1, lo + 1);
-  return values[lo] + (h - lo) * (values[hi] - values[lo]);
 }
 
 }  // namespace
@@ -164,7 +156,7 @@ Table basis_projection_table(const Context& ctx, const FresnelBasis& b) {
       "of the construction (gases, whose curve is a spike at grazing that no basis follows); "
       "metal and dielectric exclude them, all includes them.";
   t.notes = {setting_note(ctx), basis_coverage_note(b),
-             "Quantiles interpolate linearly between order statistics (Hyndman & Fan type 7)."};
+             "Median, p90 and p99 by nearest rank: the value of rank ⌈q·n⌉ in ascending order."};
   return t;
 }
 

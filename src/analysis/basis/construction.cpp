@@ -45,17 +45,38 @@ Wavelengths construction_wavelengths(const Context& ctx, double step_nm) {
 // R(λ, μ_j) for each construction wavelength (exact unpolarized Fresnel, index relative to the
 // outside medium), weighted by the wavelength's weight.
 void add_page_rows(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w,
-                   const std::vector<double>& mu, double eta_outside, CurveRows& rows) {
+                   const std::vector<double>& mu, double eta_outside, CurveRows& rows,
+                   double page_weight = 1.0, double normalize_power = 0) {
   for (size_t l = 0; l < w.index.size(); ++l) {
     const std::complex<double> eta = ior.ior[w.index[l]] / eta_outside;
     for (double m : mu) rows.values.push_back(fresnel::fresnel_conductor(m, eta));
-    rows.weights.push_back(w.weights[l]);
+    const double f0 = fresnel::fresnel_conductor(1.0, eta);
+    rows.weights.push_back(page_weight * w.weights[l] * std::pow(1.0 - f0, -2.0 * normalize_power));
   }
 }
 
+// Each stacked page's weight from its base weight (1, or its sensitivity): with a metal share s,
+// the metals' base weights scaled to sum to s·n and the others' to (1 − s)·n (n pages, so that
+// the weights average 1); without one, the base weights.
+std::vector<double> page_weights(const std::vector<const LoadedMaterial*>& pages,
+                                 std::vector<double> w, double share) {
+  if (share < 0) return w;
+  double sum[2] = {0, 0};
+  auto metal = [&](size_t i) {
+    return pages[i]->material.material_class == spectral::MaterialClass::Metal ? 1 : 0;
+  };
+  for (size_t i = 0; i < pages.size(); ++i) sum[metal(i)] += w[i];
+  const double n = static_cast<double>(pages.size());
+  for (size_t i = 0; i < pages.size(); ++i)
+    w[i] *= n * (metal(i) ? share : 1.0 - share) / sum[metal(i)];
+  return w;
+}
+
 // The function sets projected on: K = 2..2 + terms (b0, b1, then the data-driven polynomials),
-// then Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, each sampled at `points`.
+// then Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, then the peer's first 3, 4, 5 functions (as many
+// as it has), each sampled at `points`.
 std::vector<std::vector<std::vector<double>>> projection_sets(const std::vector<BasisTerm>& terms,
+                                                              const PeerBasis* peer,
                                                               const std::vector<double>& points) {
   auto sample = [&](auto&& f) {
     std::vector<double> v;
@@ -72,7 +93,26 @@ std::vector<std::vector<std::vector<double>>> projection_sets(const std::vector<
   }
   sets.push_back(
       {functions[0], functions[1], sample([](double m) { return m * std::pow(1.0 - m, 6); })});
+  if (!peer) return sets;
+  std::vector<std::vector<double>> theirs;
+  for (size_t k = 0; k < peer->functions.size(); ++k) {
+    theirs.push_back(sample([&](double m) { return (*peer)(k, m); }));
+    if (theirs.size() >= 3) sets.push_back(theirs);
+  }
   return sets;
+}
+
+// The peer's own projection of one curve f(μ) sampled at `points` (f_at(μ) gives the curve at
+// any μ): f − Σ c_k b_k at the points.
+template <class F>
+std::vector<double> two_point_residual(const PeerBasis& peer, const std::vector<double>& points,
+                                       const std::vector<double>& f, F&& f_at) {
+  const auto c = peer.two_point_coefficients(f_at(1.0), f_at(peer.mu[peer.two_point[0]]),
+                                             f_at(peer.mu[peer.two_point[1]]));
+  std::vector<double> r = f;
+  for (size_t j = 0; j < points.size(); ++j)
+    for (size_t k = 0; k < c.size(); ++k) r[j] -= c[k] * peer(k, points[j]);
+  return r;
 }
 
 // Normal-incidence reflectance weighted over the construction's wavelengths.
@@ -84,9 +124,10 @@ double weighted_f0(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w
   return f0;
 }
 
-ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages, const Wavelengths& w,
+ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages,
+                            const std::vector<double>& weights, const Wavelengths& w,
                             const std::vector<double>& mu, double eta_outside, int terms,
-                            const std::function<void(int, int)>& progress) {
+                            double normalize_power, const std::function<void(int, int)>& progress) {
   const size_t blocks = (pages.size() + kBlockPages - 1) / kBlockPages;
   std::vector<std::unique_ptr<ResidualStack>> stacks(blocks);
   ProgressCounter counter(progress, static_cast<int>(pages.size()));
@@ -95,7 +136,7 @@ ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages, con
     rows.samples = static_cast<int>(mu.size());
     const size_t end = std::min(pages.size(), (b + 1) * kBlockPages);
     for (size_t p = b * kBlockPages; p < end; ++p)
-      add_page_rows(pages[p]->ior, w, mu, eta_outside, rows);
+      add_page_rows(pages[p]->ior, w, mu, eta_outside, rows, weights[p], normalize_power);
     stacks[b] = std::make_unique<ResidualStack>(mu);
     stacks[b]->add(rows);
     counter.add(static_cast<int>(end - b * kBlockPages));
@@ -144,10 +185,43 @@ BasisTerm make_term(const std::vector<double>& mu, const std::vector<double>& ve
   return t;
 }
 
+// The peer's two-point projection's errors, appended to the page's.
+void add_two_point(const Context& ctx, const LoadedMaterial& page, const Wavelengths& w,
+                   const std::vector<double>& mu, const PeerBasis& peer,
+                   const std::vector<color::Rgb>& truth, PageProjection& out) {
+  const double eta_outside = ctx.settings().eta_outside;
+  double sum = 0;
+  for (size_t l = 0; l < w.index.size(); ++l) {
+    const std::complex<double> eta = page.ior.ior[w.index[l]] / eta_outside;
+    const auto at = [&](double m) { return fresnel::fresnel_conductor(m, eta); };
+    std::vector<double> f;
+    for (double m : mu) f.push_back(at(m));
+    double e2 = 0;
+    for (double r : two_point_residual(peer, mu, f, at)) e2 += r * r;
+    sum += w.weights[l] * e2 / mu.size();
+  }
+  out.rms_reflectance.push_back(std::sqrt(sum));
+  std::vector<color::Rgb> approx = truth;
+  std::vector<color::Rgb> at_mu;
+  for (double m : {1.0, peer.mu[peer.two_point[0]], peer.mu[peer.two_point[1]]})
+    at_mu.push_back(ground_truth_rgb(ctx, page.ior, m, eta_outside));
+  for (int c = 0; c < 3; ++c) {
+    std::vector<double> channel;
+    for (const auto& rgb : truth) channel.push_back(rgb[c]);
+    const auto at = [&](double m) {
+      return m == 1.0 ? at_mu[0][c] : m == peer.mu[peer.two_point[0]] ? at_mu[1][c] : at_mu[2][c];
+    };
+    const auto r = two_point_residual(peer, ctx.cos_thetas(), channel, at);
+    for (size_t j = 0; j < r.size(); ++j) approx[j][c] -= r[j];
+  }
+  out.rms_de2000.push_back(curve_error(ctx, truth, approx).rms);
+}
+
 PageProjection project_page(const Context& ctx, const LoadedMaterial& page, const Wavelengths& w,
                             const std::vector<double>& mu,
                             const std::vector<Projector>& spectral_projectors,
-                            const std::vector<Projector>& rgb_projectors) {
+                            const std::vector<Projector>& rgb_projectors,
+                            const PeerBasis* peer = nullptr) {
   const double eta_outside = ctx.settings().eta_outside;
   PageProjection out{page.material.source, page.material.material_class,
                      weighted_f0(page.ior, w, eta_outside)};
@@ -178,6 +252,7 @@ PageProjection project_page(const Context& ctx, const LoadedMaterial& page, cons
     }
     out.rms_de2000.push_back(curve_error(ctx, truth, approx).rms);
   }
+  if (peer) add_two_point(ctx, page, w, mu, *peer, truth, out);
   return out;
 }
 
@@ -198,20 +273,33 @@ FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const Basis
   for (const auto& p : pages)
     if (weighted_f0(p.ior, w, ctx.settings().eta_outside) >= kBasisMinF0) stacked.push_back(&p);
   const int total = static_cast<int>(stacked.size() + pages.size());
-  b.svd = stack_residuals(stacked, w, b.mu, ctx.settings().eta_outside, options.data_terms,
+  std::vector<double> base(stacked.size(), 1.0);
+  if (options.perceptual) {
+    std::vector<Projector> spectral2, rgb2;
+    spectral2.emplace_back(projection_sets({}, nullptr, b.mu).front());
+    rgb2.emplace_back(projection_sets({}, nullptr, ctx.cos_thetas()).front());
+    parallel_for(stacked.size(), [&](size_t i) {
+      const auto p = project_page(ctx, *stacked[i], w, b.mu, spectral2, rgb2);
+      base[i] = std::pow(p.rms_de2000[0] / p.rms_reflectance[0], 2);
+    });
+  }
+  b.svd = stack_residuals(stacked, page_weights(stacked, base, options.metal_share), w, b.mu,
+                          ctx.settings().eta_outside, options.data_terms, options.normalize_power,
                           [&](int done, int) {
                             if (progress) progress(done, total);
                           });
   for (const auto& v : b.svd.functions) b.terms.push_back(make_term(b.mu, v, options.poly_degree));
 
   std::vector<Projector> spectral_projectors, rgb_projectors;
-  for (const auto& set : projection_sets(b.terms, b.mu)) spectral_projectors.emplace_back(set);
-  for (const auto& set : projection_sets(b.terms, ctx.cos_thetas()))
+  b.peer = belcour_basis(kBelcourDataTerms);
+  for (const auto& set : projection_sets(b.terms, &b.peer, b.mu))
+    spectral_projectors.emplace_back(set);
+  for (const auto& set : projection_sets(b.terms, &b.peer, ctx.cos_thetas()))
     rgb_projectors.emplace_back(set);
   b.pages.resize(pages.size());
   ProgressCounter counter(progress, total, static_cast<int>(stacked.size()));
   parallel_for(pages.size(), [&](size_t i) {
-    b.pages[i] = project_page(ctx, pages[i], w, b.mu, spectral_projectors, rgb_projectors);
+    b.pages[i] = project_page(ctx, pages[i], w, b.mu, spectral_projectors, rgb_projectors, &b.peer);
     counter.add(1);
   });
   return b;

@@ -11,7 +11,7 @@
 #include "fresnel/table_terms.h"
 #include "util/codegen.h"
 #include "util/errors.h"
-#include "util/median.h"
+#include "util/quantile.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {

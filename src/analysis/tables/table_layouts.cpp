@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "fresnel/registered_models.h"
-#include "util/median.h"
+#include "util/quantile.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {
