@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "util/quantile.h"
 #include "util/parallel.h"
+#include "util/quantile.h"
 
 namespace {
 

@@ -20,6 +20,14 @@ namespace fl::analysis {
 // condensed phase in the database lies above (F0 = 1e-4 is η ≈ 1.02).
 inline constexpr double kBasisMinF0 = 1e-4;
 
+// How each page's curves weigh in the construction (docs/basis.md): all alike; per class, the
+// metals' pages sharing `metal_share` of the weight and the others the rest; or by the page's
+// perceptual sensitivity, (RMS ΔE2000 / RMS reflectance residual)² of its projection on
+// {1, (1 − μ)⁵}, so that reflectance residual energy counts as ΔE2000².
+enum class BasisWeighting { Pages, Classes, Perceptual };
+const char* basis_weighting_name(BasisWeighting w);                 // pages | classes | perceptual
+BasisWeighting basis_weighting_from_name(const std::string& name);  // InputError otherwise
+
 // The construction's choices (docs/basis.md says why).
 struct BasisOptions {
   int data_terms = 3;          // data-driven functions kept: K = 2..2 + data_terms
@@ -27,13 +35,10 @@ struct BasisOptions {
   int mu_samples = 91;         // μ_j = cos(90°·j/(M − 1)): uniform in θ, as the error metric
   double lambda_step_nm = 10;  // wavelengths 360, 370, ..., 830 nm, weighted by x̄ + ȳ + z̄
   int singular_values = 8;     // listed in the energy table
-  // The metals' share of the construction's weight (the dielectrics get the rest, each class's
-  // pages weighing the same within it); negative: every page weighs the same, whatever its class.
-  double metal_share = -1;
-  // Each curve's rows scaled by (1 − R(λ, 1))^-power before the SVD (1: every curve spans the same
-  // range from normal incidence to grazing, as Belcour et al. normalize theirs).
-  double normalize_power = 0;
-  bool perceptual = false;
+  BasisWeighting weighting = BasisWeighting::Classes;
+  double metal_share = 0.5;  // with BasisWeighting::Classes
+  // Also measure every projection as rendered (PageProjection::rendered_de2000).
+  bool rendered = false;
 };
 
 // μ_j = cos(θ_j), θ_j = 90°·j/(m − 1), j = 0..m − 1 (μ = 1 first, exactly 0 last).
@@ -126,6 +131,9 @@ struct PageProjection {
   // by its two-point projection.
   std::vector<double> rms_reflectance;
   std::vector<double> rms_de2000;
+  // With BasisOptions::rendered, per set (as rms_de2000): RMS ΔE2000 as rendered at lut-accuracy's
+  // shading points, the lobe integrals by the truth's quadrature (basis_rendered.h).
+  std::vector<double> rendered_de2000;
   Coverage coverage;  // how much of the visible range the page measures (the rest is held)
 };
 
@@ -183,5 +191,7 @@ Table basis_polynomials_table(const FresnelBasis& b);
 Table basis_energy_table(const FresnelBasis& b);
 Table basis_projection_table(const Context& ctx, const FresnelBasis& b);
 Table basis_pages_table(const FresnelBasis& b);
+// With BasisOptions::rendered: the projections' error as rendered per set and class.
+Table basis_rendered_table(const Context& ctx, const FresnelBasis& b);
 
 }  // namespace fl::analysis

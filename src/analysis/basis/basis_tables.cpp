@@ -150,11 +150,51 @@ Table basis_projection_table(const Context& ctx, const FresnelBasis& b) {
   }
   t.reading =
       "kK: the first K terms (b0, b1 and the data-driven polynomials); hoffman3: 1, (1 − μ)⁵, "
-      "μ(1 − μ)⁶. refl_rms: RMS over the samples of the spectral curve's least-squares residual, "
+      "μ(1 − μ)⁶; belcourK: the first K functions of Belcour, Bati & Barla 2020's basis "
+      "(rebuilt from their construction; K = 5 adds the next singular vector), least squares; "
+      "belcour4_two_point: their K = 4 with their projection (R(0°), 1 − R(0°), two angles). "
+      "refl_rms: RMS over the samples of the spectral curve's least-squares residual, "
       "weighted over the wavelengths; de2000: RMS ΔE2000 over the angles of the RGB truth curve "
       "projected per channel (least squares over the angles). f0_below_...: the pages left out "
       "of the construction (gases, whose curve is a spike at grazing that no basis follows); "
       "metal and dielectric exclude them, all includes them.";
+  t.notes = {setting_note(ctx), basis_coverage_note(b),
+             "Median, p90 and p99 by nearest rank: the value of rank ⌈q·n⌉ in ascending order."};
+  return t;
+}
+
+Table basis_rendered_table(const Context& ctx, const FresnelBasis& b) {
+  Table t;
+  t.name = "basis_rendered";
+  t.title = "Projection error per K as rendered, over the pages";
+  t.columns = {{"basis"},  {"class"},  {"pages", 0}, {"median", 4},
+               {"p90", 4}, {"p99", 4}, {"max", 4},   {"worst"}};
+  const auto labels = set_labels(b);
+  const std::string low = fmt::format("f0_below_{:g}", kBasisMinF0);
+  for (size_t s = 0; s < labels.size(); ++s)
+    for (const std::string cls : {std::string("metal"), std::string("dielectric"), low}) {
+      std::vector<double> de;
+      std::vector<const PageProjection*> of;
+      for (const auto& p : b.pages) {
+        const std::string c = p.stacked ? spectral::to_string(p.material_class) : low;
+        if (c != cls || p.rendered_de2000.size() <= s) continue;
+        de.push_back(p.rendered_de2000[s]);
+        of.push_back(&p);
+      }
+      if (de.empty()) continue;
+      std::string worst;
+      for (const size_t i : largest_indices(de, 5))
+        worst += fmt::format("{}{} ({:.3f})", worst.empty() ? "" : "; ", of[i]->page, de[i]);
+      t.rows.push_back({labels[s], cls, static_cast<long long>(de.size()), median(de),
+                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0), worst});
+    }
+  t.reading =
+      "Per page, the RMS ΔE2000 over lut-accuracy's shading points (perceptual roughness 0.2..1 × "
+      "view 0°..85°) between the GGX lobe integrated with the spectral ground truth and the "
+      "engine's Σ_t c_t·∫b_t ρ cos per channel, with c the least-squares projection of the RGB "
+      "curve over the 91 angles (belcour4_two_point: their own projection); the lobe integrals by "
+      "the truth's own quadrature, as tables of infinite resolution would hold them. worst: the "
+      "five worst pages of the class.";
   t.notes = {setting_note(ctx), basis_coverage_note(b),
              "Median, p90 and p99 by nearest rank: the value of rank ⌈q·n⌉ in ascending order."};
   return t;

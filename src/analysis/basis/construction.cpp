@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "analysis/basis/basis.h"
+#include "analysis/basis/basis_rendered.h"
+#include "analysis/tables/lut_accuracy.h"
 #include "fresnel/exact.h"
 #include "spectral/cie.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {
@@ -46,30 +50,12 @@ Wavelengths construction_wavelengths(const Context& ctx, double step_nm) {
 // outside medium), weighted by the wavelength's weight.
 void add_page_rows(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w,
                    const std::vector<double>& mu, double eta_outside, CurveRows& rows,
-                   double page_weight = 1.0, double normalize_power = 0) {
+                   double page_weight = 1.0) {
   for (size_t l = 0; l < w.index.size(); ++l) {
     const std::complex<double> eta = ior.ior[w.index[l]] / eta_outside;
     for (double m : mu) rows.values.push_back(fresnel::fresnel_conductor(m, eta));
-    const double f0 = fresnel::fresnel_conductor(1.0, eta);
-    rows.weights.push_back(page_weight * w.weights[l] * std::pow(1.0 - f0, -2.0 * normalize_power));
+    rows.weights.push_back(page_weight * w.weights[l]);
   }
-}
-
-// Each stacked page's weight from its base weight (1, or its sensitivity): with a metal share s,
-// the metals' base weights scaled to sum to s·n and the others' to (1 − s)·n (n pages, so that
-// the weights average 1); without one, the base weights.
-std::vector<double> page_weights(const std::vector<const LoadedMaterial*>& pages,
-                                 std::vector<double> w, double share) {
-  if (share < 0) return w;
-  double sum[2] = {0, 0};
-  auto metal = [&](size_t i) {
-    return pages[i]->material.material_class == spectral::MaterialClass::Metal ? 1 : 0;
-  };
-  for (size_t i = 0; i < pages.size(); ++i) sum[metal(i)] += w[i];
-  const double n = static_cast<double>(pages.size());
-  for (size_t i = 0; i < pages.size(); ++i)
-    w[i] *= n * (metal(i) ? share : 1.0 - share) / sum[metal(i)];
-  return w;
 }
 
 // The function sets projected on: K = 2..2 + terms (b0, b1, then the data-driven polynomials),
@@ -106,9 +92,11 @@ std::vector<std::vector<std::vector<double>>> projection_sets(const std::vector<
 // any μ): f − Σ c_k b_k at the points.
 template <class F>
 std::vector<double> two_point_residual(const PeerBasis& peer, const std::vector<double>& points,
-                                       const std::vector<double>& f, F&& f_at) {
+                                       const std::vector<double>& f, F&& f_at,
+                                       std::vector<double>* coefficients = nullptr) {
   const auto c = peer.two_point_coefficients(f_at(1.0), f_at(peer.mu[peer.two_point[0]]),
                                              f_at(peer.mu[peer.two_point[1]]));
+  if (coefficients) coefficients->assign(c.begin(), c.end());
   std::vector<double> r = f;
   for (size_t j = 0; j < points.size(); ++j)
     for (size_t k = 0; k < c.size(); ++k) r[j] -= c[k] * peer(k, points[j]);
@@ -127,7 +115,7 @@ double weighted_f0(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w
 ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages,
                             const std::vector<double>& weights, const Wavelengths& w,
                             const std::vector<double>& mu, double eta_outside, int terms,
-                            double normalize_power, const std::function<void(int, int)>& progress) {
+                            const std::function<void(int, int)>& progress) {
   const size_t blocks = (pages.size() + kBlockPages - 1) / kBlockPages;
   std::vector<std::unique_ptr<ResidualStack>> stacks(blocks);
   ProgressCounter counter(progress, static_cast<int>(pages.size()));
@@ -136,7 +124,7 @@ ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages,
     rows.samples = static_cast<int>(mu.size());
     const size_t end = std::min(pages.size(), (b + 1) * kBlockPages);
     for (size_t p = b * kBlockPages; p < end; ++p)
-      add_page_rows(pages[p]->ior, w, mu, eta_outside, rows, weights[p], normalize_power);
+      add_page_rows(pages[p]->ior, w, mu, eta_outside, rows, weights[p]);
     stacks[b] = std::make_unique<ResidualStack>(mu);
     stacks[b]->add(rows);
     counter.add(static_cast<int>(end - b * kBlockPages));
@@ -186,9 +174,12 @@ BasisTerm make_term(const std::vector<double>& mu, const std::vector<double>& ve
 }
 
 // The peer's two-point projection's errors, appended to the page's.
-void add_two_point(const Context& ctx, const LoadedMaterial& page, const Wavelengths& w,
-                   const std::vector<double>& mu, const PeerBasis& peer,
-                   const std::vector<color::Rgb>& truth, PageProjection& out) {
+std::array<std::vector<double>, 3> add_two_point(const Context& ctx, const LoadedMaterial& page,
+                                                 const Wavelengths& w,
+                                                 const std::vector<double>& mu,
+                                                 const PeerBasis& peer,
+                                                 const std::vector<color::Rgb>& truth,
+                                                 PageProjection& out) {
   const double eta_outside = ctx.settings().eta_outside;
   double sum = 0;
   for (size_t l = 0; l < w.index.size(); ++l) {
@@ -202,6 +193,7 @@ void add_two_point(const Context& ctx, const LoadedMaterial& page, const Wavelen
   }
   out.rms_reflectance.push_back(std::sqrt(sum));
   std::vector<color::Rgb> approx = truth;
+  std::array<std::vector<double>, 3> coefficients;
   std::vector<color::Rgb> at_mu;
   for (double m : {1.0, peer.mu[peer.two_point[0]], peer.mu[peer.two_point[1]]})
     at_mu.push_back(ground_truth_rgb(ctx, page.ior, m, eta_outside));
@@ -211,17 +203,19 @@ void add_two_point(const Context& ctx, const LoadedMaterial& page, const Wavelen
     const auto at = [&](double m) {
       return m == 1.0 ? at_mu[0][c] : m == peer.mu[peer.two_point[0]] ? at_mu[1][c] : at_mu[2][c];
     };
-    const auto r = two_point_residual(peer, ctx.cos_thetas(), channel, at);
+    const auto r = two_point_residual(peer, ctx.cos_thetas(), channel, at, &coefficients[c]);
     for (size_t j = 0; j < r.size(); ++j) approx[j][c] -= r[j];
   }
   out.rms_de2000.push_back(curve_error(ctx, truth, approx).rms);
+  return coefficients;
 }
 
 PageProjection project_page(const Context& ctx, const LoadedMaterial& page, const Wavelengths& w,
                             const std::vector<double>& mu,
                             const std::vector<Projector>& spectral_projectors,
                             const std::vector<Projector>& rgb_projectors,
-                            const PeerBasis* peer = nullptr) {
+                            const PeerBasis* peer = nullptr,
+                            const RenderedSets* rendered = nullptr) {
   const double eta_outside = ctx.settings().eta_outside;
   PageProjection out{page.material.source, page.material.material_class,
                      weighted_f0(page.ior, w, eta_outside)};
@@ -242,21 +236,101 @@ PageProjection project_page(const Context& ctx, const LoadedMaterial& page, cons
     out.rms_reflectance.push_back(std::sqrt(sum));
   }
   const auto truth = ground_truth_curve(ctx, page.ior, eta_outside);
+  std::vector<std::array<std::vector<double>, 3>> coefficients;
   for (const auto& proj : rgb_projectors) {
     std::vector<color::Rgb> approx = truth;
+    coefficients.emplace_back();
     for (int c = 0; c < 3; ++c) {
       std::vector<double> channel;
       for (const auto& rgb : truth) channel.push_back(rgb[c]);
+      coefficients.back()[c] = proj.coefficients(channel);
       const auto r = proj.residual(channel);
       for (size_t j = 0; j < r.size(); ++j) approx[j][c] -= r[j];
     }
     out.rms_de2000.push_back(curve_error(ctx, truth, approx).rms);
   }
-  if (peer) add_two_point(ctx, page, w, mu, *peer, truth, out);
+  if (peer) coefficients.push_back(add_two_point(ctx, page, w, mu, *peer, truth, out));
+  if (rendered) {
+    const auto lobe = lobe_truth(ctx, page, rendered->points);
+    for (size_t s = 0; s < coefficients.size(); ++s)
+      out.rendered_de2000.push_back(
+          rendered_rms(ctx, lobe, rendered->integrals[s], coefficients[s]));
+  }
   return out;
 }
 
+// Each stacked page's weight (BasisWeighting): 1; per class, the metals' weights summing to
+// metal_share·n and the others' to (1 − metal_share)·n (n pages, so that they average 1); or the
+// page's sensitivity (RMS ΔE2000 / RMS reflectance residual)² on {1, (1 − μ)⁵}.
+std::vector<double> page_weights(const Context& ctx,
+                                 const std::vector<const LoadedMaterial*>& pages,
+                                 const Wavelengths& w, const std::vector<double>& mu,
+                                 const BasisOptions& options) {
+  std::vector<double> weight(pages.size(), 1.0);
+  if (options.weighting == BasisWeighting::Perceptual) {
+    const std::vector<Projector> spectral = {Projector(projection_sets({}, nullptr, mu).front())};
+    const std::vector<Projector> rgb = {
+        Projector(projection_sets({}, nullptr, ctx.cos_thetas()).front())};
+    parallel_for(pages.size(), [&](size_t i) {
+      const auto p = project_page(ctx, *pages[i], w, mu, spectral, rgb);
+      weight[i] = std::pow(p.rms_de2000[0] / p.rms_reflectance[0], 2);
+    });
+  }
+  if (options.weighting != BasisWeighting::Classes) return weight;
+  auto metal = [&](size_t i) {
+    return pages[i]->material.material_class == spectral::MaterialClass::Metal ? 1 : 0;
+  };
+  size_t count[2] = {0, 0};
+  for (size_t i = 0; i < pages.size(); ++i) ++count[metal(i)];
+  const double n = static_cast<double>(pages.size());
+  for (size_t i = 0; i < pages.size(); ++i)
+    weight[i] = n * (metal(i) ? options.metal_share : 1.0 - options.metal_share) /
+                static_cast<double>(count[metal(i)]);
+  return weight;
+}
+
 }  // namespace
+
+// Every page's projection errors on every set (and as rendered, with BasisOptions::rendered).
+void project_pages(const Context& ctx, const std::vector<LoadedMaterial>& pages,
+                   const Wavelengths& w, FresnelBasis& b, ProgressCounter& counter) {
+  std::vector<Projector> spectral_projectors, rgb_projectors;
+  for (const auto& set : projection_sets(b.terms, &b.peer, b.mu))
+    spectral_projectors.emplace_back(set);
+  for (const auto& set : projection_sets(b.terms, &b.peer, ctx.cos_thetas()))
+    rgb_projectors.emplace_back(set);
+  std::optional<RenderedSets> rendered;
+  if (b.options.rendered) {
+    auto sets = projection_sets(b.terms, &b.peer, truth_nodes());
+    sets.push_back(sets.back());  // the peer's two-point projection: its K = 4 functions
+    sets.back().resize(4);
+    rendered = rendered_sets(sets, lut_accuracy_points());
+  }
+  b.pages.resize(pages.size());
+  parallel_for(pages.size(), [&](size_t i) {
+    b.pages[i] = project_page(ctx, pages[i], w, b.mu, spectral_projectors, rgb_projectors, &b.peer,
+                              rendered ? &*rendered : nullptr);
+    counter.add(1);
+  });
+}
+
+const char* basis_weighting_name(BasisWeighting w) {
+  switch (w) {
+    case BasisWeighting::Pages:
+      return "pages";
+    case BasisWeighting::Classes:
+      return "classes";
+    case BasisWeighting::Perceptual:
+      return "perceptual";
+  }
+  return "?";
+}
+
+BasisWeighting basis_weighting_from_name(const std::string& name) {
+  for (const auto w : {BasisWeighting::Pages, BasisWeighting::Classes, BasisWeighting::Perceptual})
+    if (name == basis_weighting_name(w)) return w;
+  throw InputError("basis: --weighting '" + name + "': expected pages, classes or perceptual");
+}
 
 FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const BasisOptions& options,
                          const std::function<void(int, int)>& progress) {
@@ -273,35 +347,15 @@ FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const Basis
   for (const auto& p : pages)
     if (weighted_f0(p.ior, w, ctx.settings().eta_outside) >= kBasisMinF0) stacked.push_back(&p);
   const int total = static_cast<int>(stacked.size() + pages.size());
-  std::vector<double> base(stacked.size(), 1.0);
-  if (options.perceptual) {
-    std::vector<Projector> spectral2, rgb2;
-    spectral2.emplace_back(projection_sets({}, nullptr, b.mu).front());
-    rgb2.emplace_back(projection_sets({}, nullptr, ctx.cos_thetas()).front());
-    parallel_for(stacked.size(), [&](size_t i) {
-      const auto p = project_page(ctx, *stacked[i], w, b.mu, spectral2, rgb2);
-      base[i] = std::pow(p.rms_de2000[0] / p.rms_reflectance[0], 2);
-    });
-  }
-  b.svd = stack_residuals(stacked, page_weights(stacked, base, options.metal_share), w, b.mu,
-                          ctx.settings().eta_outside, options.data_terms, options.normalize_power,
-                          [&](int done, int) {
+  b.svd = stack_residuals(stacked, page_weights(ctx, stacked, w, b.mu, options), w, b.mu,
+                          ctx.settings().eta_outside, options.data_terms, [&](int done, int) {
                             if (progress) progress(done, total);
                           });
   for (const auto& v : b.svd.functions) b.terms.push_back(make_term(b.mu, v, options.poly_degree));
 
-  std::vector<Projector> spectral_projectors, rgb_projectors;
   b.peer = belcour_basis(kBelcourDataTerms);
-  for (const auto& set : projection_sets(b.terms, &b.peer, b.mu))
-    spectral_projectors.emplace_back(set);
-  for (const auto& set : projection_sets(b.terms, &b.peer, ctx.cos_thetas()))
-    rgb_projectors.emplace_back(set);
-  b.pages.resize(pages.size());
   ProgressCounter counter(progress, total, static_cast<int>(stacked.size()));
-  parallel_for(pages.size(), [&](size_t i) {
-    b.pages[i] = project_page(ctx, pages[i], w, b.mu, spectral_projectors, rgb_projectors, &b.peer);
-    counter.add(1);
-  });
+  project_pages(ctx, pages, w, b, counter);
   return b;
 }
 

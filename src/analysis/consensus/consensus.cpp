@@ -190,6 +190,8 @@ LoadedMaterial consensus_material(const Context& ctx, const GroupPages& g) {
 struct Spread {
   double median = 0, max = 0, limit = 0;
 };
+// The consensus decides with these (outliers, whether the pages agree): estimators, on the sample
+// median (util/quantile.h), not the reports' nearest rank.
 Spread spread_of(const std::vector<double>& used) {
   Spread s;
   s.median = sample_median(used);
