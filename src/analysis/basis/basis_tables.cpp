@@ -36,6 +36,16 @@ std::vector<std::string> set_labels(const FresnelBasis& b) {
   return labels;
 }
 
+// "page (0.123); ..." of the five largest values, largest first: the tail by name (over a few
+// hundred pages p99 is the 4th largest).
+std::string worst_pages(const std::vector<double>& values,
+                        const std::vector<const PageProjection*>& pages) {
+  std::string out;
+  for (const size_t i : largest_indices(values, 5))
+    out += fmt::format("{}{} ({:.3f})", out.empty() ? "" : "; ", pages[i]->page, values[i]);
+  return out;
+}
+
 }  // namespace
 
 Table basis_functions_table(const FresnelBasis& b) {
@@ -130,22 +140,25 @@ Table basis_projection_table(const Context& ctx, const FresnelBasis& b) {
   t.columns = {
       {"basis"},           {"class"},           {"pages", 0},         {"refl_rms_median", 5},
       {"refl_rms_p90", 5}, {"refl_rms_max", 5}, {"de2000_median", 4}, {"de2000_p90", 4},
-      {"de2000_p99", 4},   {"de2000_max", 4}};
+      {"de2000_p99", 4},   {"de2000_max", 4},   {"de2000_worst"}};
   const auto labels = set_labels(b);
   for (size_t s = 0; s < labels.size(); ++s) {
     const std::string low = fmt::format("f0_below_{:g}", kBasisMinF0);
     for (const std::string cls :
          {std::string("metal"), std::string("dielectric"), low, std::string("all")}) {
       std::vector<double> refl, de;
+      std::vector<const PageProjection*> of;
       for (const auto& p : b.pages) {
         const std::string c = p.stacked ? spectral::to_string(p.material_class) : low;
         if (cls != "all" && c != cls) continue;
         refl.push_back(p.rms_reflectance[s]);
         de.push_back(p.rms_de2000[s]);
+        of.push_back(&p);
       }
       t.rows.push_back({labels[s], std::string(cls), static_cast<long long>(refl.size()),
                         median(refl), quantile(refl, 0.9), quantile(refl, 1.0), median(de),
-                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0)});
+                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0),
+                        worst_pages(de, of)});
     }
   }
   t.reading =
@@ -157,7 +170,7 @@ Table basis_projection_table(const Context& ctx, const FresnelBasis& b) {
       "weighted over the wavelengths; de2000: RMS ΔE2000 over the angles of the RGB truth curve "
       "projected per channel (least squares over the angles). f0_below_...: the pages left out "
       "of the construction (gases, whose curve is a spike at grazing that no basis follows); "
-      "metal and dielectric exclude them, all includes them.";
+      "metal and dielectric exclude them, all includes them. de2000_worst: the five worst pages.";
   t.notes = {setting_note(ctx), basis_coverage_note(b),
              "Median, p90 and p99 by nearest rank: the value of rank ⌈q·n⌉ in ascending order."};
   return t;
@@ -182,11 +195,9 @@ Table basis_rendered_table(const Context& ctx, const FresnelBasis& b) {
         of.push_back(&p);
       }
       if (de.empty()) continue;
-      std::string worst;
-      for (const size_t i : largest_indices(de, 5))
-        worst += fmt::format("{}{} ({:.3f})", worst.empty() ? "" : "; ", of[i]->page, de[i]);
       t.rows.push_back({labels[s], cls, static_cast<long long>(de.size()), median(de),
-                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0), worst});
+                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0),
+                        worst_pages(de, of)});
     }
   t.reading =
       "Per page, the RMS ΔE2000 over lut-accuracy's shading points (perceptual roughness 0.2..1 × "
