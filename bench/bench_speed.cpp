@@ -29,7 +29,7 @@
 #include "documents/table_formats.h"
 #include "fresnel/batch.h"
 #include "io/writer.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include "analysis/lut/lut.h"
 #include "documents/table_formats.h"
 #include "io/writer.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace {
 

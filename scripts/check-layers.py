@@ -22,7 +22,7 @@ RANKS = {
     "analysis/pipeline": 6,
     "analysis/study": 7,
     "analysis/lut": 8,
-    "analysis/basis": 8,
+    "analysis/basis": 9,
     "analysis/presets": 8,
     "analysis/ltc": 9,
     "analysis/shader": 9,

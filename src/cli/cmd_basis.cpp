@@ -12,6 +12,47 @@
 
 namespace fl::cli {
 
+namespace {
+
+// The command that made the files, as their headers quote it: the options that differ from the
+// defaults.
+std::string basis_command_line(const GlobalOptions& g, const std::vector<std::string>& globs,
+                               const analysis::BasisOptions& o) {
+  const analysis::BasisOptions defaults;
+  std::string command = "fresnel-lab";
+  if (g.min_coverage >= 0) command += fmt::format(" --min-coverage {:g}", g.min_coverage);
+  command += " basis";
+  for (const auto& glob : globs) command += " '" + glob + "'";
+  if (o.data_terms != defaults.data_terms) command += fmt::format(" --terms {}", o.data_terms);
+  if (o.poly_degree != defaults.poly_degree) command += fmt::format(" --degree {}", o.poly_degree);
+  if (o.weighting != defaults.weighting)
+    command += fmt::format(" --weighting {}", analysis::basis_weighting_name(o.weighting));
+  if (o.weighting == analysis::BasisWeighting::Classes && o.metal_share != defaults.metal_share)
+    command += fmt::format(" --metal-share {:g}", o.metal_share);
+  if (o.rendered) command += " --rendered";
+  return command;
+}
+
+// --weighting (returned, read in the callback), --metal-share and --rendered.
+std::shared_ptr<std::string> add_weighting_options(CLI::App* sub, analysis::BasisOptions& o) {
+  auto weighting = std::make_shared<std::string>(
+      analysis::basis_weighting_name(analysis::BasisOptions{}.weighting));
+  sub->add_option("--weighting", *weighting,
+                  "how each page weighs in the construction: pages (alike), classes (metals and "
+                  "the rest share --metal-share), perceptual (by ΔE2000 per unit reflectance)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"pages", "classes", "perceptual"}));
+  sub->add_option("--metal-share", o.metal_share,
+                  "with --weighting classes: the metals' share of the weight (0-1)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  sub->add_flag("--rendered", o.rendered,
+                "also measure every projection as rendered (basis_rendered.csv)");
+  return weighting;
+}
+
+}  // namespace
+
 void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand(
       "basis",
@@ -35,7 +76,9 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--degree", a->options.poly_degree, "degree of each term's polynomial in μ")
       ->capture_default_str()
       ->check(CLI::Range(1, 16));
-  sub->callback([&g, &selected, a] {
+  auto weighting = add_weighting_options(sub, a->options);
+  sub->callback([&g, &selected, a, weighting] {
+    a->options.weighting = analysis::basis_weighting_from_name(*weighting);
     selected = [&g, a] {
       const auto t0 = std::chrono::steady_clock::now();
       analysis::LoadPolicy policy;
@@ -49,14 +92,7 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
       auto basis =
           analysis::build_basis(ctx, set, a->options, periodic_progress(g, "basis: building "));
       basis.min_coverage = policy.min_coverage;
-      std::string command = "fresnel-lab";
-      if (g.min_coverage >= 0) command += fmt::format(" --min-coverage {:g}", g.min_coverage);
-      command += " basis";
-      for (const auto& glob : a->globs) command += " '" + glob + "'";
-      if (a->options.data_terms != analysis::BasisOptions{}.data_terms)
-        command += fmt::format(" --terms {}", a->options.data_terms);
-      if (a->options.poly_degree != analysis::BasisOptions{}.poly_degree)
-        command += fmt::format(" --degree {}", a->options.poly_degree);
+      const std::string command = basis_command_line(g, a->globs, a->options);
       auto files = jobs::basis_files(ctx, basis, command);
       for (auto& f : files) f.first = a->out + "/" + f.first;
       io::write_files_atomic(files, a->out);

@@ -99,10 +99,11 @@ std::string basis_header(const analysis::FresnelBasis& b, const std::string& com
 
 io::Files basis_files(const analysis::Context& ctx, const analysis::FresnelBasis& b,
                       const std::string& command) {
-  const std::vector<Table> tables = {
+  std::vector<Table> tables = {
       analysis::basis_functions_table(b), analysis::basis_polynomials_table(b),
       analysis::basis_energy_table(b), analysis::basis_projection_table(ctx, b),
       analysis::basis_pages_table(b)};
+  if (b.options.rendered) tables.push_back(analysis::basis_rendered_table(ctx, b));
   io::Files files;
   std::string md = fmt::format(
       "# Fresnel basis\n\n"

@@ -1,4 +1,4 @@
-// fl::parallel_for, fl::ProgressCounter and fl::median (src/util/).
+// fl::parallel_for and fl::ProgressCounter (src/util/).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "util/median.h"
 #include "util/parallel.h"
+#include "util/quantile.h"
 
 namespace {
 
@@ -54,13 +54,6 @@ TEST(ProgressCounter, ReportsIncreasingCountsUpToTheTotal) {
       100, [&](std::size_t) { done.add(3); }, 2);
   ASSERT_EQ(seen.size(), 100u);
   for (std::size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k], static_cast<int>(3 * (k + 1)));
-}
-
-TEST(Median, OddEvenAndEmpty) {
-  EXPECT_EQ(fl::median({3.0, 1.0, 2.0}), 2.0);
-  EXPECT_EQ(fl::median({4.0, 1.0, 3.0, 2.0}), 2.5);
-  EXPECT_EQ(fl::median({-7.0}), -7.0);
-  EXPECT_TRUE(std::isnan(fl::median({})));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // The data-driven Fresnel basis (docs/basis.md): spectral Fresnel curves R(λ, μ) of the database's
 // pages, the fixed terms 1 and (1 − μ)⁵ projected out, the leading left singular vectors of the
 // stacked residuals, each written as a polynomial in μ. Eigen stays inside basis.cpp.
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -19,6 +20,14 @@ namespace fl::analysis {
 // condensed phase in the database lies above (F0 = 1e-4 is η ≈ 1.02).
 inline constexpr double kBasisMinF0 = 1e-4;
 
+// How each page's curves weigh in the construction (docs/basis.md): all alike; per class, the
+// metals' pages sharing `metal_share` of the weight and the others the rest; or by the page's
+// perceptual sensitivity, (RMS ΔE2000 / RMS reflectance residual)² of its projection on
+// {1, (1 − μ)⁵}, so that reflectance residual energy counts as ΔE2000².
+enum class BasisWeighting { Pages, Classes, Perceptual };
+const char* basis_weighting_name(BasisWeighting w);                 // pages | classes | perceptual
+BasisWeighting basis_weighting_from_name(const std::string& name);  // InputError otherwise
+
 // The construction's choices (docs/basis.md says why).
 struct BasisOptions {
   int data_terms = 3;          // data-driven functions kept: K = 2..2 + data_terms
@@ -26,6 +35,10 @@ struct BasisOptions {
   int mu_samples = 91;         // μ_j = cos(90°·j/(M − 1)): uniform in θ, as the error metric
   double lambda_step_nm = 10;  // wavelengths 360, 370, ..., 830 nm, weighted by x̄ + ȳ + z̄
   int singular_values = 8;     // listed in the energy table
+  BasisWeighting weighting = BasisWeighting::Classes;
+  double metal_share = 0.5;  // with BasisWeighting::Classes
+  // Also measure every projection as rendered (PageProjection::rendered_de2000).
+  bool rendered = false;
 };
 
 // μ_j = cos(θ_j), θ_j = 90°·j/(m − 1), j = 0..m − 1 (μ = 1 first, exactly 0 last).
@@ -114,10 +127,40 @@ struct PageProjection {
   spectral::MaterialClass material_class;
   double f0 = 0;        // normal-incidence reflectance, weighted over the wavelengths
   bool stacked = true;  // part of the construction (f0 ≥ kBasisMinF0)
-  std::vector<double> rms_reflectance;  // K = 2..2 + data_terms, then the Hoffman span
+  // K = 2..2 + data_terms, the Hoffman span, the peer's K = 3..5 by least squares, the peer's K = 4
+  // by its two-point projection.
+  std::vector<double> rms_reflectance;
   std::vector<double> rms_de2000;
+  // With BasisOptions::rendered, per set (as rms_de2000): RMS ΔE2000 as rendered at lut-accuracy's
+  // shading points, the lobe integrals by the truth's quadrature (basis_rendered.h).
+  std::vector<double> rendered_de2000;
   Coverage coverage;  // how much of the visible range the page measures (the rest is held)
 };
+
+// The peer basis of Belcour, Bati & Barla 2020 (belcour.cpp, docs/basis.md), rebuilt from their
+// construction: kBelcourCurves synthetic curves R(μ) sampled at kBelcourSamples values of μ
+// uniform on [0, 1]: η = 1.1, kBelcourConductors conductors of edge tint 1 (Gulbrandsen 2014) at
+// reflectivity 0.1, 0.2, ..., 1 (the last held at kBelcourMaxReflectivity) and dielectrics with η
+// uniform over [1.01, 3]; each normalized to (R − R(1))/(1 − R(1)); b1 the magnitude of the
+// leading right singular vector; b2.. the leading right singular vectors of the curves less b1;
+// each scaled to max |b| = 1. b0 = 1.
+inline constexpr int kBelcourCurves = 1000;
+inline constexpr int kBelcourSamples = 1000;
+inline constexpr int kBelcourConductors = 10;
+inline constexpr double kBelcourMaxReflectivity = 1 - 1e-5;
+struct PeerBasis {
+  std::vector<double> mu;                      // the samples
+  std::vector<std::vector<double>> functions;  // b0 = 1, b1, b2, ... at the samples
+  std::array<size_t, 2> two_point{};           // their projection's two samples
+  // b_k(μ), linear between the samples.
+  double operator()(size_t k, double mu) const;
+  // Their projection on {1, b1, b2, b3}: c0 = R(1), c1 = 1 − c0, and c2, c3 interpolating the
+  // curve's remainder at the two samples (f_at_a, f_at_b: the curve there).
+  std::array<double, 4> two_point_coefficients(double f_at_1, double f_at_a, double f_at_b) const;
+};
+inline constexpr int kBelcourDataTerms = 3;  // b2, b3 (theirs) and b4 (for K = 5)
+// The basis with `data_terms` functions after b1 (K = 2 + data_terms; their K = 4 is 2).
+PeerBasis belcour_basis(int data_terms);
 
 struct FresnelBasis {
   BasisOptions options;
@@ -125,6 +168,7 @@ struct FresnelBasis {
   std::vector<double> lambda_nm, lambda_weights;  // the construction's wavelengths
   ResidualSvd svd;
   std::vector<BasisTerm> terms;  // the data-driven terms
+  PeerBasis peer;                // Belcour et al.'s, K = 2 + kBelcourDataTerms
   std::vector<PageProjection> pages;
   std::vector<SkippedMaterial> skipped;
   int requested = 0;
@@ -147,5 +191,7 @@ Table basis_polynomials_table(const FresnelBasis& b);
 Table basis_energy_table(const FresnelBasis& b);
 Table basis_projection_table(const Context& ctx, const FresnelBasis& b);
 Table basis_pages_table(const FresnelBasis& b);
+// With BasisOptions::rendered: the projections' error as rendered per set and class.
+Table basis_rendered_table(const Context& ctx, const FresnelBasis& b);
 
 }  // namespace fl::analysis

@@ -7,7 +7,7 @@
 
 #include "analysis/basis/basis.h"
 #include "analysis/study/table_notes.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 
@@ -30,18 +30,20 @@ std::vector<std::string> set_labels(const FresnelBasis& b) {
   std::vector<std::string> labels;
   for (size_t k = 2; k <= 2 + b.terms.size(); ++k) labels.push_back(fmt::format("k{}", k));
   labels.push_back("hoffman3");
+  for (size_t k = 3; k <= b.peer.functions.size(); ++k)
+    labels.push_back(fmt::format("belcour{}", k));
+  if (!b.peer.functions.empty()) labels.push_back("belcour4_two_point");
   return labels;
 }
 
-// The q-quantile of `values` by linear interpolation between order statistics (Hyndman & Fan
-// 1996, definition 7); NaN when empty.
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return std::nan("");
-  std::sort(values.begin(), values.end());
-  const double h = q * (values.size() - 1);
-  const size_t lo = static_cast<size_t>(std::floor(h));
-  const size_t hi = std::min(values.size() - 1, lo + 1);
-  return values[lo] + (h - lo) * (values[hi] - values[lo]);
+// "page (0.123); ..." of the five largest values, largest first: the tail by name (over a few
+// hundred pages p99 is the 4th largest).
+std::string worst_pages(const std::vector<double>& values,
+                        const std::vector<const PageProjection*>& pages) {
+  std::string out;
+  for (const size_t i : largest_indices(values, 5))
+    out += fmt::format("{}{} ({:.3f})", out.empty() ? "" : "; ", pages[i]->page, values[i]);
+  return out;
 }
 
 }  // namespace
@@ -138,33 +140,74 @@ Table basis_projection_table(const Context& ctx, const FresnelBasis& b) {
   t.columns = {
       {"basis"},           {"class"},           {"pages", 0},         {"refl_rms_median", 5},
       {"refl_rms_p90", 5}, {"refl_rms_max", 5}, {"de2000_median", 4}, {"de2000_p90", 4},
-      {"de2000_p99", 4},   {"de2000_max", 4}};
+      {"de2000_p99", 4},   {"de2000_max", 4},   {"de2000_worst"}};
   const auto labels = set_labels(b);
   for (size_t s = 0; s < labels.size(); ++s) {
     const std::string low = fmt::format("f0_below_{:g}", kBasisMinF0);
     for (const std::string cls :
          {std::string("metal"), std::string("dielectric"), low, std::string("all")}) {
       std::vector<double> refl, de;
+      std::vector<const PageProjection*> of;
       for (const auto& p : b.pages) {
         const std::string c = p.stacked ? spectral::to_string(p.material_class) : low;
         if (cls != "all" && c != cls) continue;
         refl.push_back(p.rms_reflectance[s]);
         de.push_back(p.rms_de2000[s]);
+        of.push_back(&p);
       }
       t.rows.push_back({labels[s], std::string(cls), static_cast<long long>(refl.size()),
                         median(refl), quantile(refl, 0.9), quantile(refl, 1.0), median(de),
-                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0)});
+                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0),
+                        worst_pages(de, of)});
     }
   }
   t.reading =
       "kK: the first K terms (b0, b1 and the data-driven polynomials); hoffman3: 1, (1 − μ)⁵, "
-      "μ(1 − μ)⁶. refl_rms: RMS over the samples of the spectral curve's least-squares residual, "
+      "μ(1 − μ)⁶; belcourK: the first K functions of Belcour, Bati & Barla 2020's basis "
+      "(rebuilt from their construction; K = 5 adds the next singular vector), least squares; "
+      "belcour4_two_point: their K = 4 with their projection (R(0°), 1 − R(0°), two angles). "
+      "refl_rms: RMS over the samples of the spectral curve's least-squares residual, "
       "weighted over the wavelengths; de2000: RMS ΔE2000 over the angles of the RGB truth curve "
       "projected per channel (least squares over the angles). f0_below_...: the pages left out "
       "of the construction (gases, whose curve is a spike at grazing that no basis follows); "
-      "metal and dielectric exclude them, all includes them.";
+      "metal and dielectric exclude them, all includes them. de2000_worst: the five worst pages.";
   t.notes = {setting_note(ctx), basis_coverage_note(b),
-             "Quantiles interpolate linearly between order statistics (Hyndman & Fan type 7)."};
+             "Median, p90 and p99 by nearest rank: the value of rank ⌈q·n⌉ in ascending order."};
+  return t;
+}
+
+Table basis_rendered_table(const Context& ctx, const FresnelBasis& b) {
+  Table t;
+  t.name = "basis_rendered";
+  t.title = "Projection error per K as rendered, over the pages";
+  t.columns = {{"basis"},  {"class"},  {"pages", 0}, {"median", 4},
+               {"p90", 4}, {"p99", 4}, {"max", 4},   {"worst"}};
+  const auto labels = set_labels(b);
+  const std::string low = fmt::format("f0_below_{:g}", kBasisMinF0);
+  for (size_t s = 0; s < labels.size(); ++s)
+    for (const std::string cls : {std::string("metal"), std::string("dielectric"), low}) {
+      std::vector<double> de;
+      std::vector<const PageProjection*> of;
+      for (const auto& p : b.pages) {
+        const std::string c = p.stacked ? spectral::to_string(p.material_class) : low;
+        if (c != cls || p.rendered_de2000.size() <= s) continue;
+        de.push_back(p.rendered_de2000[s]);
+        of.push_back(&p);
+      }
+      if (de.empty()) continue;
+      t.rows.push_back({labels[s], cls, static_cast<long long>(de.size()), median(de),
+                        quantile(de, 0.9), quantile(de, 0.99), quantile(de, 1.0),
+                        worst_pages(de, of)});
+    }
+  t.reading =
+      "Per page, the RMS ΔE2000 over lut-accuracy's shading points (perceptual roughness 0.2..1 × "
+      "view 0°..85°) between the GGX lobe integrated with the spectral ground truth and the "
+      "engine's Σ_t c_t·∫b_t ρ cos per channel, with c the least-squares projection of the RGB "
+      "curve over the 91 angles (belcour4_two_point: their own projection); the lobe integrals by "
+      "the truth's own quadrature, as tables of infinite resolution would hold them. worst: the "
+      "five worst pages of the class.";
+  t.notes = {setting_note(ctx), basis_coverage_note(b),
+             "Median, p90 and p99 by nearest rank: the value of rank ⌈q·n⌉ in ascending order."};
   return t;
 }
 

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "analysis/basis/basis.h"
+#include "analysis/basis/basis_rendered.h"
+#include "analysis/lut/lut_accuracy.h"
 #include "fresnel/exact.h"
 #include "spectral/cie.h"
+#include "util/errors.h"
 #include "util/parallel.h"
 
 namespace fl::analysis {
@@ -45,17 +49,20 @@ Wavelengths construction_wavelengths(const Context& ctx, double step_nm) {
 // R(λ, μ_j) for each construction wavelength (exact unpolarized Fresnel, index relative to the
 // outside medium), weighted by the wavelength's weight.
 void add_page_rows(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w,
-                   const std::vector<double>& mu, double eta_outside, CurveRows& rows) {
+                   const std::vector<double>& mu, double eta_outside, CurveRows& rows,
+                   double page_weight = 1.0) {
   for (size_t l = 0; l < w.index.size(); ++l) {
     const std::complex<double> eta = ior.ior[w.index[l]] / eta_outside;
     for (double m : mu) rows.values.push_back(fresnel::fresnel_conductor(m, eta));
-    rows.weights.push_back(w.weights[l]);
+    rows.weights.push_back(page_weight * w.weights[l]);
   }
 }
 
 // The function sets projected on: K = 2..2 + terms (b0, b1, then the data-driven polynomials),
-// then Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, each sampled at `points`.
+// then Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, then the peer's first 3, 4, 5 functions (as many
+// as it has), each sampled at `points`.
 std::vector<std::vector<std::vector<double>>> projection_sets(const std::vector<BasisTerm>& terms,
+                                                              const PeerBasis* peer,
                                                               const std::vector<double>& points) {
   auto sample = [&](auto&& f) {
     std::vector<double> v;
@@ -72,7 +79,28 @@ std::vector<std::vector<std::vector<double>>> projection_sets(const std::vector<
   }
   sets.push_back(
       {functions[0], functions[1], sample([](double m) { return m * std::pow(1.0 - m, 6); })});
+  if (!peer) return sets;
+  std::vector<std::vector<double>> theirs;
+  for (size_t k = 0; k < peer->functions.size(); ++k) {
+    theirs.push_back(sample([&](double m) { return (*peer)(k, m); }));
+    if (theirs.size() >= 3) sets.push_back(theirs);
+  }
   return sets;
+}
+
+// The peer's own projection of one curve f(μ) sampled at `points` (f_at(μ) gives the curve at
+// any μ): f − Σ c_k b_k at the points.
+template <class F>
+std::vector<double> two_point_residual(const PeerBasis& peer, const std::vector<double>& points,
+                                       const std::vector<double>& f, F&& f_at,
+                                       std::vector<double>* coefficients = nullptr) {
+  const auto c = peer.two_point_coefficients(f_at(1.0), f_at(peer.mu[peer.two_point[0]]),
+                                             f_at(peer.mu[peer.two_point[1]]));
+  if (coefficients) coefficients->assign(c.begin(), c.end());
+  std::vector<double> r = f;
+  for (size_t j = 0; j < points.size(); ++j)
+    for (size_t k = 0; k < c.size(); ++k) r[j] -= c[k] * peer(k, points[j]);
+  return r;
 }
 
 // Normal-incidence reflectance weighted over the construction's wavelengths.
@@ -84,7 +112,8 @@ double weighted_f0(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w
   return f0;
 }
 
-ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages, const Wavelengths& w,
+ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages,
+                            const std::vector<double>& weights, const Wavelengths& w,
                             const std::vector<double>& mu, double eta_outside, int terms,
                             const std::function<void(int, int)>& progress) {
   const size_t blocks = (pages.size() + kBlockPages - 1) / kBlockPages;
@@ -95,7 +124,7 @@ ResidualSvd stack_residuals(const std::vector<const LoadedMaterial*>& pages, con
     rows.samples = static_cast<int>(mu.size());
     const size_t end = std::min(pages.size(), (b + 1) * kBlockPages);
     for (size_t p = b * kBlockPages; p < end; ++p)
-      add_page_rows(pages[p]->ior, w, mu, eta_outside, rows);
+      add_page_rows(pages[p]->ior, w, mu, eta_outside, rows, weights[p]);
     stacks[b] = std::make_unique<ResidualStack>(mu);
     stacks[b]->add(rows);
     counter.add(static_cast<int>(end - b * kBlockPages));
@@ -144,10 +173,49 @@ BasisTerm make_term(const std::vector<double>& mu, const std::vector<double>& ve
   return t;
 }
 
+// The peer's two-point projection's errors, appended to the page's.
+std::array<std::vector<double>, 3> add_two_point(const Context& ctx, const LoadedMaterial& page,
+                                                 const Wavelengths& w,
+                                                 const std::vector<double>& mu,
+                                                 const PeerBasis& peer,
+                                                 const std::vector<color::Rgb>& truth,
+                                                 PageProjection& out) {
+  const double eta_outside = ctx.settings().eta_outside;
+  double sum = 0;
+  for (size_t l = 0; l < w.index.size(); ++l) {
+    const std::complex<double> eta = page.ior.ior[w.index[l]] / eta_outside;
+    const auto at = [&](double m) { return fresnel::fresnel_conductor(m, eta); };
+    std::vector<double> f;
+    for (double m : mu) f.push_back(at(m));
+    double e2 = 0;
+    for (double r : two_point_residual(peer, mu, f, at)) e2 += r * r;
+    sum += w.weights[l] * e2 / mu.size();
+  }
+  out.rms_reflectance.push_back(std::sqrt(sum));
+  std::vector<color::Rgb> approx = truth;
+  std::array<std::vector<double>, 3> coefficients;
+  std::vector<color::Rgb> at_mu;
+  for (double m : {1.0, peer.mu[peer.two_point[0]], peer.mu[peer.two_point[1]]})
+    at_mu.push_back(ground_truth_rgb(ctx, page.ior, m, eta_outside));
+  for (int c = 0; c < 3; ++c) {
+    std::vector<double> channel;
+    for (const auto& rgb : truth) channel.push_back(rgb[c]);
+    const auto at = [&](double m) {
+      return m == 1.0 ? at_mu[0][c] : m == peer.mu[peer.two_point[0]] ? at_mu[1][c] : at_mu[2][c];
+    };
+    const auto r = two_point_residual(peer, ctx.cos_thetas(), channel, at, &coefficients[c]);
+    for (size_t j = 0; j < r.size(); ++j) approx[j][c] -= r[j];
+  }
+  out.rms_de2000.push_back(curve_error(ctx, truth, approx).rms);
+  return coefficients;
+}
+
 PageProjection project_page(const Context& ctx, const LoadedMaterial& page, const Wavelengths& w,
                             const std::vector<double>& mu,
                             const std::vector<Projector>& spectral_projectors,
-                            const std::vector<Projector>& rgb_projectors) {
+                            const std::vector<Projector>& rgb_projectors,
+                            const PeerBasis* peer = nullptr,
+                            const RenderedSets* rendered = nullptr) {
   const double eta_outside = ctx.settings().eta_outside;
   PageProjection out{page.material.source, page.material.material_class,
                      weighted_f0(page.ior, w, eta_outside)};
@@ -168,20 +236,101 @@ PageProjection project_page(const Context& ctx, const LoadedMaterial& page, cons
     out.rms_reflectance.push_back(std::sqrt(sum));
   }
   const auto truth = ground_truth_curve(ctx, page.ior, eta_outside);
+  std::vector<std::array<std::vector<double>, 3>> coefficients;
   for (const auto& proj : rgb_projectors) {
     std::vector<color::Rgb> approx = truth;
+    coefficients.emplace_back();
     for (int c = 0; c < 3; ++c) {
       std::vector<double> channel;
       for (const auto& rgb : truth) channel.push_back(rgb[c]);
+      coefficients.back()[c] = proj.coefficients(channel);
       const auto r = proj.residual(channel);
       for (size_t j = 0; j < r.size(); ++j) approx[j][c] -= r[j];
     }
     out.rms_de2000.push_back(curve_error(ctx, truth, approx).rms);
   }
+  if (peer) coefficients.push_back(add_two_point(ctx, page, w, mu, *peer, truth, out));
+  if (rendered) {
+    const auto lobe = lobe_truth(ctx, page, rendered->points);
+    for (size_t s = 0; s < coefficients.size(); ++s)
+      out.rendered_de2000.push_back(
+          rendered_rms(ctx, lobe, rendered->integrals[s], coefficients[s]));
+  }
   return out;
 }
 
+// Each stacked page's weight (BasisWeighting): 1; per class, the metals' weights summing to
+// metal_share·n and the others' to (1 − metal_share)·n (n pages, so that they average 1); or the
+// page's sensitivity (RMS ΔE2000 / RMS reflectance residual)² on {1, (1 − μ)⁵}.
+std::vector<double> page_weights(const Context& ctx,
+                                 const std::vector<const LoadedMaterial*>& pages,
+                                 const Wavelengths& w, const std::vector<double>& mu,
+                                 const BasisOptions& options) {
+  std::vector<double> weight(pages.size(), 1.0);
+  if (options.weighting == BasisWeighting::Perceptual) {
+    const std::vector<Projector> spectral = {Projector(projection_sets({}, nullptr, mu).front())};
+    const std::vector<Projector> rgb = {
+        Projector(projection_sets({}, nullptr, ctx.cos_thetas()).front())};
+    parallel_for(pages.size(), [&](size_t i) {
+      const auto p = project_page(ctx, *pages[i], w, mu, spectral, rgb);
+      weight[i] = std::pow(p.rms_de2000[0] / p.rms_reflectance[0], 2);
+    });
+  }
+  if (options.weighting != BasisWeighting::Classes) return weight;
+  auto metal = [&](size_t i) {
+    return pages[i]->material.material_class == spectral::MaterialClass::Metal ? 1 : 0;
+  };
+  size_t count[2] = {0, 0};
+  for (size_t i = 0; i < pages.size(); ++i) ++count[metal(i)];
+  const double n = static_cast<double>(pages.size());
+  for (size_t i = 0; i < pages.size(); ++i)
+    weight[i] = n * (metal(i) ? options.metal_share : 1.0 - options.metal_share) /
+                static_cast<double>(count[metal(i)]);
+  return weight;
+}
+
 }  // namespace
+
+// Every page's projection errors on every set (and as rendered, with BasisOptions::rendered).
+void project_pages(const Context& ctx, const std::vector<LoadedMaterial>& pages,
+                   const Wavelengths& w, FresnelBasis& b, ProgressCounter& counter) {
+  std::vector<Projector> spectral_projectors, rgb_projectors;
+  for (const auto& set : projection_sets(b.terms, &b.peer, b.mu))
+    spectral_projectors.emplace_back(set);
+  for (const auto& set : projection_sets(b.terms, &b.peer, ctx.cos_thetas()))
+    rgb_projectors.emplace_back(set);
+  std::optional<RenderedSets> rendered;
+  if (b.options.rendered) {
+    auto sets = projection_sets(b.terms, &b.peer, truth_nodes());
+    sets.push_back(sets.back());  // the peer's two-point projection: its K = 4 functions
+    sets.back().resize(4);
+    rendered = rendered_sets(sets, lut_accuracy_points());
+  }
+  b.pages.resize(pages.size());
+  parallel_for(pages.size(), [&](size_t i) {
+    b.pages[i] = project_page(ctx, pages[i], w, b.mu, spectral_projectors, rgb_projectors, &b.peer,
+                              rendered ? &*rendered : nullptr);
+    counter.add(1);
+  });
+}
+
+const char* basis_weighting_name(BasisWeighting w) {
+  switch (w) {
+    case BasisWeighting::Pages:
+      return "pages";
+    case BasisWeighting::Classes:
+      return "classes";
+    case BasisWeighting::Perceptual:
+      return "perceptual";
+  }
+  return "?";
+}
+
+BasisWeighting basis_weighting_from_name(const std::string& name) {
+  for (const auto w : {BasisWeighting::Pages, BasisWeighting::Classes, BasisWeighting::Perceptual})
+    if (name == basis_weighting_name(w)) return w;
+  throw InputError("basis: --weighting '" + name + "': expected pages, classes or perceptual");
+}
 
 FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const BasisOptions& options,
                          const std::function<void(int, int)>& progress) {
@@ -198,22 +347,15 @@ FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const Basis
   for (const auto& p : pages)
     if (weighted_f0(p.ior, w, ctx.settings().eta_outside) >= kBasisMinF0) stacked.push_back(&p);
   const int total = static_cast<int>(stacked.size() + pages.size());
-  b.svd = stack_residuals(stacked, w, b.mu, ctx.settings().eta_outside, options.data_terms,
-                          [&](int done, int) {
+  b.svd = stack_residuals(stacked, page_weights(ctx, stacked, w, b.mu, options), w, b.mu,
+                          ctx.settings().eta_outside, options.data_terms, [&](int done, int) {
                             if (progress) progress(done, total);
                           });
   for (const auto& v : b.svd.functions) b.terms.push_back(make_term(b.mu, v, options.poly_degree));
 
-  std::vector<Projector> spectral_projectors, rgb_projectors;
-  for (const auto& set : projection_sets(b.terms, b.mu)) spectral_projectors.emplace_back(set);
-  for (const auto& set : projection_sets(b.terms, ctx.cos_thetas()))
-    rgb_projectors.emplace_back(set);
-  b.pages.resize(pages.size());
+  b.peer = belcour_basis(kBelcourDataTerms);
   ProgressCounter counter(progress, total, static_cast<int>(stacked.size()));
-  parallel_for(pages.size(), [&](size_t i) {
-    b.pages[i] = project_page(ctx, pages[i], w, b.mu, spectral_projectors, rgb_projectors);
-    counter.add(1);
-  });
+  project_pages(ctx, pages, w, b, counter);
   return b;
 }
 

@@ -14,7 +14,7 @@
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
 #include "util/errors.h"
-#include "util/median.h"
+#include "util/quantile.h"
 #include "util/suggest.h"
 
 namespace fl::analysis {
@@ -89,7 +89,8 @@ spectral::ComplexIorSpectrum consensus_ior(
       r82[p] = fresnel::fresnel_conductor(kConsensusCosGrazing, rel);
       eta[p] = rel.real();
     }
-    out.ior[w] = eta_outside * invert_reflectance_pair(median(r0), median(r82), median(eta));
+    out.ior[w] = eta_outside *
+                 invert_reflectance_pair(sample_median(r0), sample_median(r82), sample_median(eta));
   }
   return out;
 }
@@ -188,13 +189,15 @@ LoadedMaterial consensus_material(const Context& ctx, const GroupPages& g) {
 struct Spread {
   double median = 0, max = 0, limit = 0;
 };
+// The consensus decides with these (outliers, whether the pages agree): estimators, on the sample
+// median (util/quantile.h), not the reports' nearest rank.
 Spread spread_of(const std::vector<double>& used) {
   Spread s;
-  s.median = median(used);
+  s.median = sample_median(used);
   s.max = used.empty() ? 0.0 : *std::max_element(used.begin(), used.end());
   std::vector<double> dev;
   for (const double d : used) dev.push_back(std::abs(d - s.median));
-  s.limit = std::max(s.median + kOutlierMads * kMadToSigma * median(dev), kOutlierMinDe00);
+  s.limit = std::max(s.median + kOutlierMads * kMadToSigma * sample_median(dev), kOutlierMinDe00);
   return s;
 }
 

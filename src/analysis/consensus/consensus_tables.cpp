@@ -13,7 +13,7 @@
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
 #include "util/errors.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 

@@ -41,10 +41,13 @@ struct RenderedLibraryRow {
   Lighting lighting = Lighting::Ibl;
   std::string page_class;  // all | metal | dielectric
   std::optional<GpuCost> gpu;
-  int pages = 0, worse_than_f82 = 0;  // pages where it renders worse than F82 derived
-  double median = 0, p90 = 0, p99 = 0, max = 0;
-  std::string worst_page;
+  int pages = 0, worse_than_f82 = 0;             // pages where it renders worse than F82 derived
+  double median = 0, p90 = 0, p99 = 0, max = 0;  // nearest rank (util/quantile.h)
+  // The tail by name: the kWorstPages worst pages, worst first, and their RMS.
+  std::vector<std::string> worst_pages;
+  std::vector<double> worst_values;
 };
+inline constexpr size_t kWorstPages = 5;
 std::vector<RenderedLibraryRow> rendered_library_rows(const RenderedLibrary& lib,
                                                       const GpuCosts& gpu);
 Table rendered_library_table(const Context& ctx, const RenderedLibrary& lib,

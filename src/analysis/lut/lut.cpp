@@ -11,8 +11,8 @@
 #include "fresnel/table_terms.h"
 #include "util/codegen.h"
 #include "util/errors.h"
-#include "util/median.h"
 #include "util/parallel.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 

@@ -6,8 +6,8 @@
 
 #include "analysis/lut/rendered_fit.h"
 #include "fresnel/registered_models.h"
-#include "util/median.h"
 #include "util/parallel.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 

@@ -9,7 +9,7 @@
 #include "analysis/lut/lut_layout.h"
 #include "analysis/plan/plan.h"
 #include "fresnel/registered_models.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 

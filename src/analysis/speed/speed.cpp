@@ -12,7 +12,7 @@
 #include "fresnel/batch.h"
 #include "spectral/text_file.h"
 #include "util/errors.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 

@@ -9,7 +9,7 @@
 #include "analysis/study/table_notes.h"
 #include "fresnel/average.h"
 #include "fresnel/registry.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 

@@ -10,7 +10,7 @@
 #include "fresnel/average.h"
 #include "fresnel/registered_models.h"
 #include "util/errors.h"
-#include "util/median.h"
+#include "util/quantile.h"
 
 namespace fl::analysis {
 
