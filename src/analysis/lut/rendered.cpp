@@ -125,13 +125,55 @@ void for_texels(const Bilinear& b, Fn fn) {
 
 namespace {
 
-// Linear interpolation of the tabulated truth at cos θ, as weights on its two nodes.
+std::array<double, kTruthNodes> make_truth_nodes() {
+  std::array<double, kTruthNodes> mu{};
+  for (size_t p = 0; p + 1 < kTruthPanelEdges.size(); ++p) {
+    const double a = kTruthPanelEdges[p], b = kTruthPanelEdges[p + 1];
+    // The extrema of the Chebyshev polynomial T_d on [a, b], the ends exact.
+    for (int i = 0; i <= kTruthDegree; ++i)
+      mu[p * kTruthDegree + i] =
+          i == kTruthDegree
+              ? b
+              : a + (b - a) * 0.5 * (1.0 - std::cos(std::numbers::pi * i / kTruthDegree));
+  }
+  return mu;
+}
+
+constexpr size_t kTruthPanels = kTruthPanelEdges.size() - 1;
+using PanelDenominators = std::array<std::array<double, kTruthDegree + 1>, kTruthPanels>;
+
+// Per panel and node i of it, Π_{j ≠ i} (μ_i − μ_j) over the panel's other nodes: the Lagrange
+// basis's denominators (a panel's top node, shared, is the bottom node of the panel above).
+PanelDenominators truth_denominators() {
+  const auto& mu = truth_nodes();
+  PanelDenominators d{};
+  for (size_t p = 0; p < kTruthPanels; ++p)
+    for (int i = 0; i <= kTruthDegree; ++i) {
+      const size_t first = p * kTruthDegree;
+      double prod = 1.0;
+      for (int j = 0; j <= kTruthDegree; ++j)
+        if (j != i) prod *= mu[first + i] - mu[first + j];
+      d[p][i] = prod;
+    }
+  return d;
+}
+
+// The interpolated truth at cos θ, as weights on the nodes of its panel: its Lagrange basis there.
 void add_truth_weight(std::vector<double>& nodes, double cos_theta, double weight) {
-  const double x = std::clamp(cos_theta, 0.0, 1.0) * (kTruthCurveSize - 1);
-  const size_t k = std::min(static_cast<size_t>(x), nodes.size() - 2);
-  const double f = x - static_cast<double>(k);
-  nodes[k] += (1.0 - f) * weight;
-  nodes[k + 1] += f * weight;
+  static const auto denominators = truth_denominators();
+  const double mu = std::clamp(cos_theta, 0.0, 1.0);
+  size_t p = 0;
+  while (p + 1 < kTruthPanels && mu > kTruthPanelEdges[p + 1]) ++p;
+  const size_t first = p * kTruthDegree;
+  const auto& x = truth_nodes();
+  double diff[kTruthDegree + 1];
+  for (int j = 0; j <= kTruthDegree; ++j) diff[j] = mu - x[first + j];
+  for (int i = 0; i <= kTruthDegree; ++i) {
+    double l = weight;
+    for (int j = 0; j <= kTruthDegree; ++j)
+      if (j != i) l *= diff[j];
+    nodes[first + i] += l / denominators[p][i];
+  }
 }
 
 }  // namespace
@@ -155,7 +197,7 @@ std::vector<ShadingPoint> points_at(const std::vector<double>& roughness) {
 
 // The point's lobe: its weights on the truth curve's nodes and its exact integrals.
 void integrate_point(ShadingPoint& p, const std::vector<brdf::DiskPoint>& disk) {
-  p.truth_weights.assign(kTruthCurveSize, 0.0);
+  p.truth_weights.assign(kTruthNodes, 0.0);
   if (p.mirror) {
     add_truth_weight(p.truth_weights, p.nov, 1.0);
     return;
@@ -235,21 +277,25 @@ std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
   return points;
 }
 
+const std::array<double, kTruthNodes>& truth_nodes() {
+  static const auto nodes = make_truth_nodes();
+  return nodes;
+}
+
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points) {
   const double eta_e = ctx.settings().eta_outside;
-  std::vector<color::Rgb> curve(kTruthCurveSize);
-  std::vector<bool> needed(kTruthCurveSize, false);
+  const auto& mu = truth_nodes();
+  std::array<color::Rgb, kTruthNodes> curve{};
+  std::array<bool, kTruthNodes> needed{};
   for (const auto& p : points)
-    for (int k = 0; k < kTruthCurveSize; ++k) needed[k] = needed[k] || p.truth_weights[k] != 0.0;
-  for (int k = 0; k < kTruthCurveSize; ++k)
-    if (needed[k])
-      curve[k] =
-          ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kTruthCurveSize - 1), eta_e);
+    for (int k = 0; k < kTruthNodes; ++k) needed[k] = needed[k] || p.truth_weights[k] != 0.0;
+  for (int k = 0; k < kTruthNodes; ++k)
+    if (needed[k]) curve[k] = ground_truth_rgb(ctx, m.ior, mu[k], eta_e);
   std::vector<color::Rgb> out;
   for (const auto& p : points) {
     color::Rgb sum{};
-    for (int k = 0; k < kTruthCurveSize; ++k)
+    for (int k = 0; k < kTruthNodes; ++k)
       if (p.truth_weights[k] != 0.0) sum = sum + p.truth_weights[k] * curve[k];
     out.push_back(sum);
   }

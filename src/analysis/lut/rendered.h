@@ -49,18 +49,31 @@ struct EngineTables {
 };
 // The tables `lut` writes at `size` (dfg_grid, ltc_grid) in `storage`.
 EngineTables engine_tables(int size = kEngineLutSize, TexelStorage storage = TexelStorage::Float);
-// Ground truth RGB tabulated at cos θ = k/(K − 1) and interpolated linearly in cos θ per sample.
-constexpr int kTruthCurveSize = 513;
+// The truth's curve in μ = cos θ: the spectral ground truth at kTruthNodes values of μ,
+// interpolated per lobe sample by the polynomial of degree kTruthDegree through the nodes of its
+// panel. The panels narrow towards grazing, where the curve of a gas (η − 1 ~ 1e-4) turns within a
+// few hundredths of μ; each holds the kTruthDegree + 1 Chebyshev–Lobatto points of its span (its
+// ends shared with its neighbours). Against the lobe integrated with the spectral curve at every
+// sample, within 5e-5 ΔE2000 at every shading point of every database page (tests/analysis/
+// test_lobe_truth.cpp).
+inline constexpr std::array<double, 9> kTruthPanelEdges{0.0,   1.0 / 32, 1.0 / 16, 1.0 / 8, 0.25,
+                                                        0.375, 0.5,      0.75,     1.0};
+inline constexpr int kTruthDegree = 6;
+inline constexpr int kTruthNodes =
+    (static_cast<int>(kTruthPanelEdges.size()) - 1) * kTruthDegree + 1;
+// μ at each node, ascending.
+const std::array<double, kTruthNodes>& truth_nodes();
 
 // Roughness 0 is a mirror: the lobe is the reflection direction alone (v·h = n·v), so the truth is
 // the spectral curve at n·v and every model renders as itself at n·v, with no table read.
 struct ShadingPoint {
   double roughness = 0, view_deg = 0, nov = 0, alpha = 0;
   bool mirror = false;  // roughness 0
-  // The lobe's weight on each node k/(kTruthCurveSize − 1) of the tabulated truth curve: the
-  // kLutSamples visible-normal samples' weights at their v·h, split between the two nearest nodes
-  // as linear interpolation splits them, over kLutSamples (a mirror: all at v·h = n·v). The truth
-  // is linear in the curve, so Σ_k w_k·curve_k is the sampled integral.
+  // The lobe's weight on each node of the truth curve (truth_nodes()): the kLutSamples
+  // visible-normal samples' weights at their v·h, split among the nodes of the sample's panel as
+  // the interpolating polynomial splits them (its Lagrange basis at v·h), over kLutSamples (a
+  // mirror: all at v·h = n·v). The truth is linear in the curve, so Σ_k w_k·curve_k is the sampled
+  // integral.
   std::vector<double> truth_weights;
   DfgTexel dfg;    // the DFG texture read bilinearly here (a mirror: none)
   GgxMoments ltc;  // the LTC moments texture (n_D, f_D, l_D) read bilinearly here (a mirror: none)
@@ -85,7 +98,8 @@ std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
 // the point (what a table of infinite resolution and precision would give).
 enum class Integrals { Tables, Exact };
 
-// The brute-force lobe integral with the spectral ground truth per v·h, per point.
+// The lobe integral with the spectral ground truth per v·h, per point: the curve at the nodes the
+// points weigh, Σ_k w_k·curve_k.
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points);
 
