@@ -197,11 +197,8 @@ std::vector<ShadingPoint> points_at(const std::vector<double>& roughness) {
 
 // The point's lobe: its weights on the truth curve's nodes and its exact integrals.
 void integrate_point(ShadingPoint& p, const std::vector<brdf::DiskPoint>& disk) {
+  if (p.mirror) return;  // the truth is the curve at n·v
   p.truth_weights.assign(kTruthNodes, 0.0);
-  if (p.mirror) {
-    add_truth_weight(p.truth_weights, p.nov, 1.0);
-    return;
-  }
   for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) {
     if (s.weight != 0.0) add_truth_weight(p.truth_weights, s.voh, s.weight / kLutSamples);
   });
@@ -289,11 +286,16 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
   std::array<color::Rgb, kTruthNodes> curve{};
   std::array<bool, kTruthNodes> needed{};
   for (const auto& p : points)
-    for (int k = 0; k < kTruthNodes; ++k) needed[k] = needed[k] || p.truth_weights[k] != 0.0;
+    for (size_t k = 0; k < p.truth_weights.size(); ++k)
+      needed[k] = needed[k] || p.truth_weights[k] != 0.0;
   for (int k = 0; k < kTruthNodes; ++k)
     if (needed[k]) curve[k] = ground_truth_rgb(ctx, m.ior, mu[k], eta_e);
   std::vector<color::Rgb> out;
   for (const auto& p : points) {
+    if (p.mirror) {
+      out.push_back(ground_truth_rgb(ctx, m.ior, p.nov, eta_e));
+      continue;
+    }
     color::Rgb sum{};
     for (int k = 0; k < kTruthNodes; ++k)
       if (p.truth_weights[k] != 0.0) sum = sum + p.truth_weights[k] * curve[k];

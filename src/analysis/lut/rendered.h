@@ -54,11 +54,11 @@ EngineTables engine_tables(int size = kEngineLutSize, TexelStorage storage = Tex
 // panel. The panels narrow towards grazing, where the curve of a gas (η − 1 ~ 1e-4) turns within a
 // few hundredths of μ; each holds the kTruthDegree + 1 Chebyshev–Lobatto points of its span (its
 // ends shared with its neighbours). Against the lobe integrated with the spectral curve at every
-// sample, within 5e-5 ΔE2000 at every shading point of every database page (tests/analysis/
-// test_lobe_truth.cpp).
+// sample, within 5e-5 ΔE2000 at the shading points (roughness 0.02 to 1) of every database page
+// (tests/analysis/test_lobe_truth.cpp). A mirror's truth is the spectral curve at n·v itself.
 inline constexpr std::array<double, 9> kTruthPanelEdges{0.0,   1.0 / 32, 1.0 / 16, 1.0 / 8, 0.25,
                                                         0.375, 0.5,      0.75,     1.0};
-inline constexpr int kTruthDegree = 6;
+inline constexpr int kTruthDegree = 7;
 inline constexpr int kTruthNodes =
     (static_cast<int>(kTruthPanelEdges.size()) - 1) * kTruthDegree + 1;
 // μ at each node, ascending.
@@ -72,8 +72,7 @@ struct ShadingPoint {
   // The lobe's weight on each node of the truth curve (truth_nodes()): the kLutSamples
   // visible-normal samples' weights at their v·h, split among the nodes of the sample's panel as
   // the interpolating polynomial splits them (its Lagrange basis at v·h), over kLutSamples (a
-  // mirror: all at v·h = n·v). The truth is linear in the curve, so Σ_k w_k·curve_k is the sampled
-  // integral.
+  // mirror: none). The truth is linear in the curve, so Σ_k w_k·curve_k is the sampled integral.
   std::vector<double> truth_weights;
   DfgTexel dfg;    // the DFG texture read bilinearly here (a mirror: none)
   GgxMoments ltc;  // the LTC moments texture (n_D, f_D, l_D) read bilinearly here (a mirror: none)
@@ -98,8 +97,8 @@ std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
 // the point (what a table of infinite resolution and precision would give).
 enum class Integrals { Tables, Exact };
 
-// The lobe integral with the spectral ground truth per v·h, per point: the curve at the nodes the
-// points weigh, Σ_k w_k·curve_k.
+// The lobe integral with the spectral ground truth per v·h, per point: Σ_k w_k·curve_k from the
+// curve at the nodes the points weigh (a mirror: the curve at n·v).
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points);
 
