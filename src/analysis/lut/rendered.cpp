@@ -125,61 +125,6 @@ void for_texels(const Bilinear& b, Fn fn) {
 
 namespace {
 
-std::array<double, kTruthNodes> make_truth_nodes() {
-  std::array<double, kTruthNodes> mu{};
-  for (size_t p = 0; p + 1 < kTruthPanelEdges.size(); ++p) {
-    const double a = kTruthPanelEdges[p], b = kTruthPanelEdges[p + 1];
-    // The extrema of the Chebyshev polynomial T_d on [a, b], the ends exact.
-    for (int i = 0; i <= kTruthDegree; ++i)
-      mu[p * kTruthDegree + i] =
-          i == kTruthDegree
-              ? b
-              : a + (b - a) * 0.5 * (1.0 - std::cos(std::numbers::pi * i / kTruthDegree));
-  }
-  return mu;
-}
-
-constexpr size_t kTruthPanels = kTruthPanelEdges.size() - 1;
-using PanelDenominators = std::array<std::array<double, kTruthDegree + 1>, kTruthPanels>;
-
-// Per panel and node i of it, Π_{j ≠ i} (μ_i − μ_j) over the panel's other nodes: the Lagrange
-// basis's denominators (a panel's top node, shared, is the bottom node of the panel above).
-PanelDenominators truth_denominators() {
-  const auto& mu = truth_nodes();
-  PanelDenominators d{};
-  for (size_t p = 0; p < kTruthPanels; ++p)
-    for (int i = 0; i <= kTruthDegree; ++i) {
-      const size_t first = p * kTruthDegree;
-      double prod = 1.0;
-      for (int j = 0; j <= kTruthDegree; ++j)
-        if (j != i) prod *= mu[first + i] - mu[first + j];
-      d[p][i] = prod;
-    }
-  return d;
-}
-
-// The interpolated truth at cos θ, as weights on the nodes of its panel: its Lagrange basis there.
-void add_truth_weight(std::vector<double>& nodes, double cos_theta, double weight) {
-  static const auto denominators = truth_denominators();
-  const double mu = std::clamp(cos_theta, 0.0, 1.0);
-  size_t p = 0;
-  while (p + 1 < kTruthPanels && mu > kTruthPanelEdges[p + 1]) ++p;
-  const size_t first = p * kTruthDegree;
-  const auto& x = truth_nodes();
-  double diff[kTruthDegree + 1];
-  for (int j = 0; j <= kTruthDegree; ++j) diff[j] = mu - x[first + j];
-  for (int i = 0; i <= kTruthDegree; ++i) {
-    double l = weight;
-    for (int j = 0; j <= kTruthDegree; ++j)
-      if (j != i) l *= diff[j];
-    nodes[first + i] += l / denominators[p][i];
-  }
-}
-
-}  // namespace
-
-namespace {
-
 std::vector<ShadingPoint> points_at(const std::vector<double>& roughness) {
   std::vector<ShadingPoint> points;
   for (double r : roughness)
@@ -274,11 +219,6 @@ std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
   return points;
 }
 
-const std::array<double, kTruthNodes>& truth_nodes() {
-  static const auto nodes = make_truth_nodes();
-  return nodes;
-}
-
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points) {
   const double eta_e = ctx.settings().eta_outside;
@@ -342,25 +282,51 @@ color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weight
   return out;
 }
 
-color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
-                          const ShadingPoint& p, Integrals integrals) {
-  if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
-  const auto& spec = fresnel::model_spec(m);
+namespace {
+
+// What the engine computes at p for a model whose table-term weights per channel are `w` (used
+// where the lighting pre-integrates it).
+color::Rgb shade(const fresnel::ModelSpec& spec, Model m, const std::vector<double>& params,
+                 bool pre_integrated, const std::array<fresnel::TableTerms, 3>& w,
+                 Lighting lighting, const ShadingPoint& p, Integrals integrals) {
   if (p.mirror) return spec.evaluate(p.nov, params.data(), false);  // no table: F(n·v)
-  if (!lighting_support(m, lighting).fresnel_pre_integrated)
-    return shading_at_nov(m, params, lighting, p, integrals);
+  if (!pre_integrated) return shading_at_nov(m, params, lighting, p, integrals);
+  return engine_shading_terms(w, lighting, p, integrals);
+}
+
+std::array<fresnel::TableTerms, 3> model_table_terms(const fresnel::ModelSpec& spec,
+                                                     const std::vector<double>& params) {
   std::array<fresnel::TableTerms, 3> w;
   for (int c = 0; c < 3; ++c) w[c] = spec.table_terms(params.data(), c);
-  return engine_shading_terms(w, lighting, p, integrals);
+  return w;
+}
+
+}  // namespace
+
+color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
+                          const ShadingPoint& p, Integrals integrals) {
+  color::Rgb out;
+  engine_shading(m, params, lighting, std::span(&p, 1), &out, integrals);
+  return out;
+}
+
+void engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
+                    std::span<const ShadingPoint> points, color::Rgb* out, Integrals integrals) {
+  if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
+  const auto& spec = fresnel::model_spec(m);
+  const bool pre = lighting_support(m, lighting).fresnel_pre_integrated;
+  const auto w = pre ? model_table_terms(spec, params) : std::array<fresnel::TableTerms, 3>{};
+  for (const auto& p : points) *out++ = shade(spec, m, params, pre, w, lighting, p, integrals);
 }
 
 std::vector<double> table_de00(const Context& ctx, Model m, const std::vector<double>& params,
                                Lighting lighting, const std::vector<ShadingPoint>& points) {
+  std::vector<color::Rgb> exact(points.size()), tables(points.size());
+  engine_shading(m, params, lighting, points, exact.data(), Integrals::Exact);
+  engine_shading(m, params, lighting, points, tables.data());
   std::vector<double> out;
-  for (const auto& p : points)
-    out.push_back(
-        color::ciede2000(ctx.rgb_to_lab(engine_shading(m, params, lighting, p, Integrals::Exact)),
-                         ctx.rgb_to_lab(engine_shading(m, params, lighting, p))));
+  for (size_t k = 0; k < points.size(); ++k)
+    out.push_back(color::ciede2000(ctx.rgb_to_lab(exact[k]), ctx.rgb_to_lab(tables[k])));
   return out;
 }
 
@@ -414,12 +380,15 @@ std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::R
                               ? std::span<const fresnel::Term>(fresnel::kHoffmanSpan)
                               : fresnel::kBasisSpan),
         lighting, points);
+  std::vector<color::Rgb> engine(points.size());
+  if (way == EngineWay::AtNdotV)
+    for (size_t k = 0; k < points.size(); ++k)
+      engine[k] = shading_at_nov(m, params, lighting, points[k]);
+  else
+    engine_shading(m, params, lighting, points, engine.data());
   std::vector<double> out;
-  for (size_t k = 0; k < points.size(); ++k) {
-    const auto engine = way == EngineWay::AtNdotV ? shading_at_nov(m, params, lighting, points[k])
-                                                  : engine_shading(m, params, lighting, points[k]);
-    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine)));
-  }
+  for (size_t k = 0; k < points.size(); ++k)
+    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine[k])));
   return out;
 }
 

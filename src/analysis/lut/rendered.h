@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "analysis/lut/lut.h"
+#include "analysis/lut/truth_quadrature.h"
 #include "analysis/pipeline/context.h"
 #include "fresnel/model_spec.h"
 
@@ -49,21 +50,6 @@ struct EngineTables {
 };
 // The tables `lut` writes at `size` (dfg_grid, ltc_grid) in `storage`.
 EngineTables engine_tables(int size = kEngineLutSize, TexelStorage storage = TexelStorage::Float);
-// The truth's curve in μ = cos θ: the spectral ground truth at kTruthNodes values of μ,
-// interpolated per lobe sample by the polynomial of degree kTruthDegree through the nodes of its
-// panel. The panels narrow towards grazing, where the curve of a gas (η − 1 ~ 1e-4) turns within a
-// few hundredths of μ; each holds the kTruthDegree + 1 Chebyshev–Lobatto points of its span (its
-// ends shared with its neighbours). Against the lobe integrated with the spectral curve at every
-// sample, within 5e-5 ΔE2000 at the shading points (roughness 0.02 to 1) of every database page
-// (tests/analysis/test_lobe_truth.cpp). A mirror's truth is the spectral curve at n·v itself.
-inline constexpr std::array<double, 9> kTruthPanelEdges{0.0,   1.0 / 32, 1.0 / 16, 1.0 / 8, 0.25,
-                                                        0.375, 0.5,      0.75,     1.0};
-inline constexpr int kTruthDegree = 7;
-inline constexpr int kTruthNodes =
-    (static_cast<int>(kTruthPanelEdges.size()) - 1) * kTruthDegree + 1;
-// μ at each node, ascending.
-const std::array<double, kTruthNodes>& truth_nodes();
-
 // Roughness 0 is a mirror: the lobe is the reflection direction alone (v·h = n·v), so the truth is
 // the spectral curve at n·v and every model renders as itself at n·v, with no table read.
 struct ShadingPoint {
@@ -107,6 +93,10 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
 // the model at n·v.
 color::Rgb engine_shading(fresnel::Model m, const std::vector<double>& params, Lighting lighting,
                           const ShadingPoint& p, Integrals integrals = Integrals::Tables);
+// engine_shading at every point into out[0, points.size()), the model's table terms computed once.
+void engine_shading(fresnel::Model m, const std::vector<double>& params, Lighting lighting,
+                    std::span<const ShadingPoint> points, color::Rgb* out,
+                    Integrals integrals = Integrals::Tables);
 
 // What the engine computes at one point from each channel's weights on the tables' terms (a model's
 // own, or a curve projected on the terms: fresnel/projection.h): Σ_t w_t·(the lobe's integral of

@@ -12,8 +12,10 @@ fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& t
   const size_t param_count = static_cast<size_t>(fresnel::model_spec(m).param_count());
   target.colours = [&](const double* p, color::Rgb* out) {
     const std::vector<double> params(p, p + param_count);
-    for (const Lighting l : kRenderedFitLightings)
-      for (const auto& point : points) *out++ = engine_shading(m, params, l, point);
+    for (const Lighting l : kRenderedFitLightings) {
+      engine_shading(m, params, l, points, out);
+      out += points.size();
+    }
     return true;
   };
   fit::FitOptions options;
