@@ -4,7 +4,8 @@ namespace fl::analysis {
 
 fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& truth,
                             fresnel::Model m, const std::vector<ShadingPoint>& points,
-                            std::vector<std::vector<double>> starts, bool lossless) {
+                            std::vector<std::vector<double>> starts, bool lossless,
+                            double function_tolerance) {
   fit::ColourTarget target;
   target.to_lab = {ctx.space().rgb_to_xyz, ctx.space().white};
   for (size_t l = 0; l < kRenderedFitLightings.size(); ++l)
@@ -21,6 +22,7 @@ fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& t
   fit::FitOptions options;
   options.lossless = lossless;
   options.max_solves = 1;  // from the better of the two starts
+  options.function_tolerance = function_tolerance;
   return fit::fit_model_colours(m, target, std::move(starts), options);
 }
 
