@@ -108,6 +108,12 @@ color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weight
 std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<color::Rgb>& truth,
                                         const std::array<fresnel::TableTerms, 3>& weights,
                                         Lighting lighting, const std::vector<ShadingPoint>& points);
+// The same with the truth in CIELAB (lab_curve of lobe_truth): a page's truth converted once for
+// all its shaders and lightings.
+std::vector<double> rendered_de00_terms(const Context& ctx,
+                                        const std::vector<color::Lab>& truth_lab,
+                                        const std::array<fresnel::TableTerms, 3>& weights,
+                                        Lighting lighting, const std::vector<ShadingPoint>& points);
 
 // How an engine evaluates a model's Fresnel term under IBL or area lights.
 enum class EngineWay {
@@ -117,6 +123,8 @@ enum class EngineWay {
   BasisSpan,  // its curve projected on the 5-term basis, pre-integrated by the basis tables
 };
 const char* engine_way_name(EngineWay w);  // tables | F(n·v) × lobe | Hoffman span | basis span
+// The terms a projecting way (HoffmanSpan, BasisSpan) projects on; empty for the others.
+std::span<const fresnel::Term> projected_span(EngineWay w);
 
 // The model's RGB curve at the context's angles (uniform in θ, as the basis models' own
 // projection) projected on `terms`, per channel (fresnel/projection.h).
@@ -126,6 +134,10 @@ std::array<fresnel::TableTerms, 3> projected_weights(const Context& ctx, fresnel
 
 // ΔE2000 between truth and engine at every point, the engine evaluating the model `way`.
 std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth,
+                                  fresnel::Model m, const std::vector<double>& params,
+                                  Lighting lighting, const std::vector<ShadingPoint>& points,
+                                  EngineWay way = EngineWay::Native);
+std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Lab>& truth_lab,
                                   fresnel::Model m, const std::vector<double>& params,
                                   Lighting lighting, const std::vector<ShadingPoint>& points,
                                   EngineWay way = EngineWay::Native);

@@ -95,11 +95,12 @@ RenderedLibrary rendered_library(const Context& ctx, const std::vector<LoadedMat
   }
   parallel_for(studies.size(), [&](size_t i) {
     const auto lobe = lobe_truth(ctx, *studies[i].material, points);
+    const auto lobe_lab = lab_curve(ctx, lobe);
     for (const auto& s : library_shaders()) {
       const auto w = shader_weights(ctx, studies[i], s, lobe, points);
       lib.rms[i].push_back(
-          {error_stats(rendered_de00_terms(ctx, lobe, w, Lighting::Ibl, points)).rms,
-           error_stats(rendered_de00_terms(ctx, lobe, w, Lighting::Area, points)).rms});
+          {error_stats(rendered_de00_terms(ctx, lobe_lab, w, Lighting::Ibl, points)).rms,
+           error_stats(rendered_de00_terms(ctx, lobe_lab, w, Lighting::Area, points)).rms});
     }
   });
   return lib;
