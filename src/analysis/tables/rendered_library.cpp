@@ -80,6 +80,7 @@ RenderedLibrary rendered_library(const Context& ctx, const std::vector<LoadedMat
   StudyOptions options;
   options.fit = false;
   options.method_errors = false;
+  options.derived_errors = false;  // the shaders read the derived parameters alone
   for (const auto& s : library_shaders())
     if (s.model &&
         std::find(options.models.begin(), options.models.end(), *s.model) == options.models.end())
