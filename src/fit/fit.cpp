@@ -164,7 +164,7 @@ FitResult solve_cost(Model m, ceres::CostFunction* cost, std::vector<double> par
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = options.max_iterations;
-  so.function_tolerance = 1e-10;
+  so.function_tolerance = options.function_tolerance;
   so.gradient_tolerance = 1e-12;
   so.parameter_tolerance = 1e-10;
   so.logging_type = ceres::SILENT;

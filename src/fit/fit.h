@@ -40,6 +40,9 @@ struct CurveTarget {
 struct FitOptions {
   int max_iterations = 100;
   int max_solves = 2;  // starts ranked by their initial cost; only the best few are solved
+  // A solve stops once a step lowers the cost by less than this share of it (Ceres'
+  // function_tolerance).
+  double function_tolerance = 1e-10;
   // Extinction parameters (ParamKind::Extinction) held at 0: the material is lossless.
   bool lossless = false;
 };

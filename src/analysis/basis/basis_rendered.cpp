@@ -6,12 +6,6 @@
 
 namespace fl::analysis {
 
-std::vector<double> truth_nodes() {
-  std::vector<double> mu;
-  for (int k = 0; k < kTruthCurveSize; ++k) mu.push_back(double(k) / (kTruthCurveSize - 1));
-  return mu;
-}
-
 // The truth is Σ_k w_k·curve(μ_k) (lobe_truth): a function's integral is the same sum.
 RenderedSets rendered_sets(const std::vector<std::vector<std::vector<double>>>& sets_at_nodes,
                            std::vector<ShadingPoint> points) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/lut/rendered.h"
+#include "analysis/lut/truth_quadrature.h"
 
 namespace fl::analysis {
 
@@ -14,11 +15,9 @@ struct RenderedSets {
   std::vector<ShadingPoint> points;
   std::vector<std::vector<std::vector<double>>> integrals;  // [set][function][point]
 };
-// `sets_at_nodes`: each set's functions at the truth's nodes μ_k = k/(kTruthCurveSize − 1).
+// `sets_at_nodes`: each set's functions at the truth's nodes (truth_nodes(), truth_quadrature.h).
 RenderedSets rendered_sets(const std::vector<std::vector<std::vector<double>>>& sets_at_nodes,
                            std::vector<ShadingPoint> points);
-// The nodes μ_k.
-std::vector<double> truth_nodes();
 
 // RMS over the points of ΔE2000 between the lobe's truth and Σ_t c_t·(lobe integral of function t)
 // per channel.

@@ -301,7 +301,8 @@ void project_pages(const Context& ctx, const std::vector<LoadedMaterial>& pages,
     rgb_projectors.emplace_back(set);
   std::optional<RenderedSets> rendered;
   if (b.options.rendered) {
-    auto sets = projection_sets(b.terms, &b.peer, truth_nodes());
+    const auto& nodes = truth_nodes();
+    auto sets = projection_sets(b.terms, &b.peer, std::vector<double>(nodes.begin(), nodes.end()));
     sets.push_back(sets.back());  // the peer's two-point projection: its K = 4 functions
     sets.back().resize(4);
     rendered = rendered_sets(sets, lut_accuracy_points());

@@ -23,26 +23,41 @@ fit::FitResult rendered_fit(const Context& ctx, const MaterialStudy& study, cons
   return fit_rendered(ctx, truth, r.model, points, std::move(starts), study.lossless);
 }
 
+// A page's truth at the points, in RGB (what the rendered fits match) and in CIELAB.
+struct PageTruth {
+  std::vector<color::Rgb> rgb;
+  std::vector<color::Lab> lab;
+};
+
 RenderedCandidate candidate(const Context& ctx, const ModelResult& r, ParameterSet set,
-                            std::vector<double> params, double punctual_rms,
-                            const std::vector<color::Rgb>& truth,
+                            std::vector<double> params, double punctual_rms, const PageTruth& truth,
                             const std::vector<ShadingPoint>& points) {
   RenderedCandidate c;
   c.model = r.model;
   c.set = set;
   c.params = std::move(params);
   c.punctual_rms = punctual_rms;
-  c.ibl = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Ibl, points));
-  c.area = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Area, points));
+  c.ibl = error_stats(rendered_de00(ctx, truth.lab, r.model, c.params, Lighting::Ibl, points));
+  c.area = error_stats(rendered_de00(ctx, truth.lab, r.model, c.params, Lighting::Area, points));
   c.ibl_table = error_stats(table_de00(ctx, r.model, c.params, Lighting::Ibl, points));
   c.area_table = error_stats(table_de00(ctx, r.model, c.params, Lighting::Area, points));
   for (size_t w = 0; w < kProjectedWays.size(); ++w) {
-    c.ibl_ways[w] = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Ibl, points,
-                                              kProjectedWays[w]))
-                        .rms;
-    c.area_ways[w] = error_stats(rendered_de00(ctx, truth, r.model, c.params, Lighting::Area,
-                                               points, kProjectedWays[w]))
-                         .rms;
+    const EngineWay way = kProjectedWays[w];
+    if (projected_span(way).empty()) {
+      c.ibl_ways[w] =
+          error_stats(rendered_de00(ctx, truth.lab, r.model, c.params, Lighting::Ibl, points, way))
+              .rms;
+      c.area_ways[w] =
+          error_stats(rendered_de00(ctx, truth.lab, r.model, c.params, Lighting::Area, points, way))
+              .rms;
+      continue;
+    }
+    // The curve projected on the span once, shaded under both lightings.
+    const auto weights = projected_weights(ctx, r.model, c.params, projected_span(way));
+    c.ibl_ways[w] =
+        error_stats(rendered_de00_terms(ctx, truth.lab, weights, Lighting::Ibl, points)).rms;
+    c.area_ways[w] =
+        error_stats(rendered_de00_terms(ctx, truth.lab, weights, Lighting::Area, points)).rms;
   }
   return c;
 }
@@ -51,7 +66,9 @@ RenderedCandidate candidate(const Context& ctx, const ModelResult& r, ParameterS
 
 std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const MaterialStudy& study,
                                                    const std::vector<ShadingPoint>& points) {
-  const auto truth = lobe_truth(ctx, *study.material, points);
+  PageTruth truth;
+  truth.rgb = lobe_truth(ctx, *study.material, points);
+  truth.lab = lab_curve(ctx, truth.rgb);
   const auto target = curve_target(ctx, study.truth);
   std::vector<RenderedCandidate> out;
   for (const auto& r : study.models) {
@@ -60,7 +77,7 @@ std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const Mat
     if (r.fitted.usable && !r.fitted.parameters.empty())
       out.push_back(candidate(ctx, r, ParameterSet::Fitted, r.fitted.parameters, r.fitted_error.rms,
                               truth, points));
-    const auto rendered = rendered_fit(ctx, study, r, truth, points);
+    const auto rendered = rendered_fit(ctx, study, r, truth.rgb, points);
     if (!rendered.usable) continue;
     const auto curve = fresnel::evaluate_curve(r.model, rendered.parameters, ctx.cos_thetas());
     out.push_back(candidate(ctx, r, ParameterSet::Rendered, rendered.parameters,
@@ -179,9 +196,10 @@ std::vector<std::string> accuracy_notes(const Context& ctx) {
           "(height-correlated Smith) is integrated with {} visible-normal samples (Hammersley).",
           roughness_list, view_list, kLutSamples),
       fmt::format("Truth: the lobe integrated with the spectral Fresnel ground truth per v·h (RGB "
-                  "tabulated at {} "
-                  "values of cos θ, linear interpolation).",
-                  kTruthCurveSize),
+                  "at {} values of cos θ, interpolated per sample by polynomials of degree {} on "
+                  "{} panels that narrow towards grazing; within 5e-5 of the spectral curve at "
+                  "every sample).",
+                  kTruthNodes, kTruthDegree, kTruthPanelEdges.size() - 1),
       fmt::format(
           "Engine: the {0}² tables as `lut` writes them (32-bit floats), read bilinearly (DFG at "
           "(n·v, roughness), LTC moments at (roughness, √(1 − n·v)), both on endpoints: the edge "

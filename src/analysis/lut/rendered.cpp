@@ -4,15 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <numbers>
-#include <utility>
 
 #include "color/lab.h"
 #include "fresnel/projection.h"
 #include "fresnel/registered_models.h"
 #include "util/errors.h"
-#include "util/parallel.h"
 #include "util/suggest.h"
 
 namespace fl::analysis {
@@ -48,208 +44,25 @@ const fresnel::LightingSupport& lighting_support(Model m, Lighting l) {
   return l == Lighting::Ibl ? pi.ibl : l == Lighting::Area ? pi.area : pi.punctual;
 }
 
-namespace {
-
-// A bilinear read of a texture: texel coordinate x along i (n·v) and y along j (roughness), clamped
-// to the edge texels; the four texels and their weights.
-struct Bilinear {
-  int i0, i1, j0, j1;
-  double fx, fy;
-};
-void bilinear_axis(double t, int texels, int& k0, int& k1, double& f) {
-  t = std::clamp(t, 0.0, static_cast<double>(texels - 1));
-  k0 = std::min(static_cast<int>(t), texels - 2);
-  k1 = k0 + 1;
-  f = t - k0;
-}
-// The read of `grid` at axis positions (x along i, y along j) in [0, 1].
-Bilinear bilinear(const LutGrid& grid, double x, double y) {
-  const int ni = static_cast<int>(grid.nov.size()),
-            nj = static_cast<int>(grid.perceptual_roughness.size());
-  Bilinear b{};
-  bilinear_axis(texel_coordinate(grid.placement, x, ni), ni, b.i0, b.i1, b.fx);
-  bilinear_axis(texel_coordinate(grid.placement, y, nj), nj, b.j0, b.j1, b.fy);
-  return b;
-}
-
-// Texels of one table, integrated on first use and stored as the engine's textures store them.
-template <class Cell, class Integrate>
-class TexelCache {
- public:
-  TexelCache(const LutGrid& grid, Integrate integrate) : grid_(grid), integrate_(integrate) {}
-  const LutGrid& grid() const { return grid_; }
-  void request(int i, int j) { cells_.emplace(std::make_pair(i, j), Cell{}); }
-  void compute(int threads) {
-    std::vector<std::pair<const std::pair<int, int>, Cell>*> todo;
-    for (auto& kv : cells_) todo.push_back(&kv);
-    parallel_for(
-        todo.size(),
-        [&](size_t k) {
-          const auto [i, j] = todo[k]->first;
-          todo[k]->second = integrate_(grid_.nov[i], grid_.alpha[j]);
-        },
-        threads);
-  }
-  const Cell& at(int i, int j) const { return cells_.at({i, j}); }
-
- private:
-  LutGrid grid_;
-  Integrate integrate_;
-  std::map<std::pair<int, int>, Cell> cells_;
-};
-
-template <class Cell>
-Cell stored(TexelStorage s, Cell c) {
-  for (double& v : c.v) v = stored_texel(s, v);
-  return c;
-}
-
-// Texel coordinates of a point: the DFG over (n·v, roughness), the LTC moments over
-// (√(1 − n·v), roughness).
-Bilinear dfg_read(const EngineTables& t, const ShadingPoint& p) {
-  return bilinear(t.dfg, p.nov, p.roughness);
-}
-Bilinear ltc_read(const EngineTables& t, const ShadingPoint& p) {
-  return bilinear(t.ltc, std::sqrt(std::max(0.0, 1.0 - p.nov)), p.roughness);
-}
-
-template <class Fn>
-void for_texels(const Bilinear& b, Fn fn) {
-  fn(b.i0, b.j0, (1 - b.fx) * (1 - b.fy));
-  fn(b.i1, b.j0, b.fx * (1 - b.fy));
-  fn(b.i0, b.j1, (1 - b.fx) * b.fy);
-  fn(b.i1, b.j1, b.fx * b.fy);
-}
-
-}  // namespace
-
-namespace {
-
-// Linear interpolation of the tabulated truth at cos θ, as weights on its two nodes.
-void add_truth_weight(std::vector<double>& nodes, double cos_theta, double weight) {
-  const double x = std::clamp(cos_theta, 0.0, 1.0) * (kTruthCurveSize - 1);
-  const size_t k = std::min(static_cast<size_t>(x), nodes.size() - 2);
-  const double f = x - static_cast<double>(k);
-  nodes[k] += (1.0 - f) * weight;
-  nodes[k + 1] += f * weight;
-}
-
-}  // namespace
-
-namespace {
-
-std::vector<ShadingPoint> points_at(const std::vector<double>& roughness) {
-  std::vector<ShadingPoint> points;
-  for (double r : roughness)
-    for (double deg : kShadingViewDeg) {
-      ShadingPoint p;
-      p.roughness = r;
-      p.view_deg = deg;
-      p.nov = std::cos(deg * std::numbers::pi / 180.0);
-      p.alpha = ltc_alpha_at(r);
-      p.mirror = r == 0.0;
-      points.push_back(std::move(p));
-    }
-  return points;
-}
-
-// The point's lobe: its weights on the truth curve's nodes and its exact integrals.
-void integrate_point(ShadingPoint& p, const std::vector<brdf::DiskPoint>& disk) {
-  p.truth_weights.assign(kTruthCurveSize, 0.0);
-  if (p.mirror) {
-    add_truth_weight(p.truth_weights, p.nov, 1.0);
-    return;
-  }
-  for_each_lobe_sample(p.nov, p.alpha, disk, [&](const LobeSample& s) {
-    if (s.weight != 0.0) add_truth_weight(p.truth_weights, s.voh, s.weight / kLutSamples);
-  });
-  p.dfg_exact = integrate_dfg(p.nov, p.alpha, disk);
-  p.ltc_exact = integrate_moments(p.nov, p.alpha, disk);
-}
-
-}  // namespace
-
-namespace {
-
-// Fills in the truth weights, the exact integrals and the table reads of points whose angles are
-// set.
-void complete_points(std::vector<ShadingPoint>& points, int threads, const EngineTables& tables) {
-  // One point set serves every texel and point (lobe_disk_points(kLutSamples), as each would draw).
-  const auto disk = lobe_disk_points(kLutSamples);
-  const auto dfg_cell = [&](double nov, double alpha) {
-    return stored(tables.storage, integrate_dfg(nov, alpha, disk));
-  };
-  const auto ltc_cell = [&](double nov, double alpha) {
-    return stored(tables.storage, integrate_moments(nov, alpha, disk));
-  };
-  TexelCache<DfgTexel, decltype(dfg_cell)> dfg(tables.dfg, dfg_cell);
-  TexelCache<GgxMoments, decltype(ltc_cell)> ltc(tables.ltc, ltc_cell);
-  for (const auto& p : points) {
-    if (p.mirror) continue;
-    for_texels(dfg_read(tables, p), [&](int i, int j, double) { dfg.request(i, j); });
-    for_texels(ltc_read(tables, p), [&](int i, int j, double) { ltc.request(i, j); });
-  }
-  dfg.compute(threads);
-  ltc.compute(threads);
-  parallel_for(
-      points.size(),
-      [&](size_t k) {
-        auto& p = points[k];
-        integrate_point(p, disk);
-        if (p.mirror) return;
-        for_texels(dfg_read(tables, p), [&](int i, int j, double w) {
-          const auto& c = dfg.at(i, j);
-          for (size_t t = 0; t < fresnel::kTermCount; ++t) p.dfg.v[t] += w * c.v[t];
-        });
-        for_texels(ltc_read(tables, p), [&](int i, int j, double w) {
-          const auto& c = ltc.at(i, j);
-          for (size_t t = 0; t < fresnel::kTermCount; ++t) p.ltc.v[t] += w * c.v[t];
-        });
-      },
-      threads);
-}
-
-}  // namespace
-
-std::vector<ShadingPoint> shading_points(const std::vector<double>& roughness, int threads,
-                                         const EngineTables& tables) {
-  std::vector<ShadingPoint> points = points_at(roughness);
-  complete_points(points, threads, tables);
-  return points;
-}
-
-std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
-                                            bool mirror_at_zero, int threads,
-                                            const EngineTables& tables) {
-  std::vector<ShadingPoint> points;
-  for (const auto& a : at) {
-    ShadingPoint p;
-    p.roughness = a.roughness;
-    p.nov = a.nov;
-    p.view_deg = std::acos(std::clamp(a.nov, 0.0, 1.0)) * 180.0 / std::numbers::pi;
-    p.alpha = ltc_alpha_at(a.roughness);
-    p.mirror = mirror_at_zero && a.roughness == 0.0;
-    points.push_back(std::move(p));
-  }
-  complete_points(points, threads, tables);
-  return points;
-}
-
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points) {
   const double eta_e = ctx.settings().eta_outside;
-  std::vector<color::Rgb> curve(kTruthCurveSize);
-  std::vector<bool> needed(kTruthCurveSize, false);
+  const auto& mu = truth_nodes();
+  std::array<color::Rgb, kTruthNodes> curve{};
+  std::array<bool, kTruthNodes> needed{};
   for (const auto& p : points)
-    for (int k = 0; k < kTruthCurveSize; ++k) needed[k] = needed[k] || p.truth_weights[k] != 0.0;
-  for (int k = 0; k < kTruthCurveSize; ++k)
-    if (needed[k])
-      curve[k] =
-          ground_truth_rgb(ctx, m.ior, static_cast<double>(k) / (kTruthCurveSize - 1), eta_e);
+    for (size_t k = 0; k < p.truth_weights.size(); ++k)
+      needed[k] = needed[k] || p.truth_weights[k] != 0.0;
+  for (int k = 0; k < kTruthNodes; ++k)
+    if (needed[k]) curve[k] = ground_truth_rgb(ctx, m.ior, mu[k], eta_e);
   std::vector<color::Rgb> out;
   for (const auto& p : points) {
+    if (p.mirror) {
+      out.push_back(ground_truth_rgb(ctx, m.ior, p.nov, eta_e));
+      continue;
+    }
     color::Rgb sum{};
-    for (int k = 0; k < kTruthCurveSize; ++k)
+    for (int k = 0; k < kTruthNodes; ++k)
       if (p.truth_weights[k] != 0.0) sum = sum + p.truth_weights[k] * curve[k];
     out.push_back(sum);
   }
@@ -294,25 +107,63 @@ color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weight
   return out;
 }
 
-color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
-                          const ShadingPoint& p, Integrals integrals) {
-  if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
-  const auto& spec = fresnel::model_spec(m);
+namespace {
+
+// What the engine computes at p for a model whose table-term weights per channel are `w` (used
+// where the lighting pre-integrates it).
+color::Rgb shade(const fresnel::ModelSpec& spec, Model m, const std::vector<double>& params,
+                 bool pre_integrated, const std::array<fresnel::TableTerms, 3>& w,
+                 Lighting lighting, const ShadingPoint& p, Integrals integrals) {
   if (p.mirror) return spec.evaluate(p.nov, params.data(), false);  // no table: F(n·v)
-  if (!lighting_support(m, lighting).fresnel_pre_integrated)
-    return shading_at_nov(m, params, lighting, p, integrals);
+  if (!pre_integrated) return shading_at_nov(m, params, lighting, p, integrals);
+  return engine_shading_terms(w, lighting, p, integrals);
+}
+
+std::array<fresnel::TableTerms, 3> model_table_terms(const fresnel::ModelSpec& spec,
+                                                     const std::vector<double>& params) {
   std::array<fresnel::TableTerms, 3> w;
   for (int c = 0; c < 3; ++c) w[c] = spec.table_terms(params.data(), c);
-  return engine_shading_terms(w, lighting, p, integrals);
+  return w;
+}
+
+}  // namespace
+
+color::Rgb engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
+                          const ShadingPoint& p, Integrals integrals) {
+  color::Rgb out;
+  engine_shading(m, params, lighting, std::span(&p, 1), &out, integrals);
+  return out;
+}
+
+void engine_shading(Model m, const std::vector<double>& params, Lighting lighting,
+                    std::span<const ShadingPoint> points, color::Rgb* out, Integrals integrals) {
+  if (lighting == Lighting::Punctual) throw std::logic_error("punctual lights integrate no lobe");
+  const auto& spec = fresnel::model_spec(m);
+  const bool pre = lighting_support(m, lighting).fresnel_pre_integrated;
+  const auto w = pre ? model_table_terms(spec, params) : std::array<fresnel::TableTerms, 3>{};
+  for (const auto& p : points) *out++ = shade(spec, m, params, pre, w, lighting, p, integrals);
 }
 
 std::vector<double> table_de00(const Context& ctx, Model m, const std::vector<double>& params,
                                Lighting lighting, const std::vector<ShadingPoint>& points) {
+  std::vector<color::Rgb> exact(points.size()), tables(points.size());
+  engine_shading(m, params, lighting, points, exact.data(), Integrals::Exact);
+  engine_shading(m, params, lighting, points, tables.data());
   std::vector<double> out;
-  for (const auto& p : points)
-    out.push_back(
-        color::ciede2000(ctx.rgb_to_lab(engine_shading(m, params, lighting, p, Integrals::Exact)),
-                         ctx.rgb_to_lab(engine_shading(m, params, lighting, p))));
+  for (size_t k = 0; k < points.size(); ++k)
+    out.push_back(color::ciede2000(ctx.rgb_to_lab(exact[k]), ctx.rgb_to_lab(tables[k])));
+  return out;
+}
+
+std::vector<double> rendered_de00_terms(const Context& ctx,
+                                        const std::vector<color::Lab>& truth_lab,
+                                        const std::array<fresnel::TableTerms, 3>& weights,
+                                        Lighting lighting,
+                                        const std::vector<ShadingPoint>& points) {
+  std::vector<double> out;
+  for (size_t k = 0; k < points.size(); ++k)
+    out.push_back(color::ciede2000(
+        truth_lab[k], ctx.rgb_to_lab(engine_shading_terms(weights, lighting, points[k]))));
   return out;
 }
 
@@ -320,11 +171,7 @@ std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<co
                                         const std::array<fresnel::TableTerms, 3>& weights,
                                         Lighting lighting,
                                         const std::vector<ShadingPoint>& points) {
-  std::vector<double> out;
-  for (size_t k = 0; k < points.size(); ++k)
-    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine_shading_terms(
-                                                                 weights, lighting, points[k]))));
-  return out;
+  return rendered_de00_terms(ctx, lab_curve(ctx, truth), weights, lighting, points);
 }
 
 const char* engine_way_name(EngineWay w) {
@@ -341,6 +188,12 @@ const char* engine_way_name(EngineWay w) {
   return "?";
 }
 
+std::span<const fresnel::Term> projected_span(EngineWay w) {
+  if (w == EngineWay::HoffmanSpan) return fresnel::kHoffmanSpan;
+  if (w == EngineWay::BasisSpan) return fresnel::kBasisSpan;
+  return {};
+}
+
 std::array<fresnel::TableTerms, 3> projected_weights(const Context& ctx, Model m,
                                                      const std::vector<double>& params,
                                                      std::span<const fresnel::Term> terms) {
@@ -355,24 +208,28 @@ std::array<fresnel::TableTerms, 3> projected_weights(const Context& ctx, Model m
   return w;
 }
 
+std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Lab>& truth_lab,
+                                  Model m, const std::vector<double>& params, Lighting lighting,
+                                  const std::vector<ShadingPoint>& points, EngineWay way) {
+  if (!projected_span(way).empty())
+    return rendered_de00_terms(
+        ctx, truth_lab, projected_weights(ctx, m, params, projected_span(way)), lighting, points);
+  std::vector<color::Rgb> engine(points.size());
+  if (way == EngineWay::AtNdotV)
+    for (size_t k = 0; k < points.size(); ++k)
+      engine[k] = shading_at_nov(m, params, lighting, points[k]);
+  else
+    engine_shading(m, params, lighting, points, engine.data());
+  std::vector<double> out;
+  for (size_t k = 0; k < points.size(); ++k)
+    out.push_back(color::ciede2000(truth_lab[k], ctx.rgb_to_lab(engine[k])));
+  return out;
+}
+
 std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth, Model m,
                                   const std::vector<double>& params, Lighting lighting,
                                   const std::vector<ShadingPoint>& points, EngineWay way) {
-  if (way == EngineWay::HoffmanSpan || way == EngineWay::BasisSpan)
-    return rendered_de00_terms(
-        ctx, truth,
-        projected_weights(ctx, m, params,
-                          way == EngineWay::HoffmanSpan
-                              ? std::span<const fresnel::Term>(fresnel::kHoffmanSpan)
-                              : fresnel::kBasisSpan),
-        lighting, points);
-  std::vector<double> out;
-  for (size_t k = 0; k < points.size(); ++k) {
-    const auto engine = way == EngineWay::AtNdotV ? shading_at_nov(m, params, lighting, points[k])
-                                                  : engine_shading(m, params, lighting, points[k]);
-    out.push_back(color::ciede2000(ctx.rgb_to_lab(truth[k]), ctx.rgb_to_lab(engine)));
-  }
-  return out;
+  return rendered_de00(ctx, lab_curve(ctx, truth), m, params, lighting, points, way);
 }
 
 ErrorStats error_stats(const std::vector<double>& de00) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "analysis/lut/lut.h"
+#include "analysis/lut/truth_quadrature.h"
 #include "analysis/pipeline/context.h"
 #include "fresnel/model_spec.h"
 
@@ -49,18 +50,15 @@ struct EngineTables {
 };
 // The tables `lut` writes at `size` (dfg_grid, ltc_grid) in `storage`.
 EngineTables engine_tables(int size = kEngineLutSize, TexelStorage storage = TexelStorage::Float);
-// Ground truth RGB tabulated at cos θ = k/(K − 1) and interpolated linearly in cos θ per sample.
-constexpr int kTruthCurveSize = 513;
-
 // Roughness 0 is a mirror: the lobe is the reflection direction alone (v·h = n·v), so the truth is
 // the spectral curve at n·v and every model renders as itself at n·v, with no table read.
 struct ShadingPoint {
   double roughness = 0, view_deg = 0, nov = 0, alpha = 0;
   bool mirror = false;  // roughness 0
-  // The lobe's weight on each node k/(kTruthCurveSize − 1) of the tabulated truth curve: the
-  // kLutSamples visible-normal samples' weights at their v·h, split between the two nearest nodes
-  // as linear interpolation splits them, over kLutSamples (a mirror: all at v·h = n·v). The truth
-  // is linear in the curve, so Σ_k w_k·curve_k is the sampled integral.
+  // The lobe's weight on each node of the truth curve (truth_nodes()): the kLutSamples
+  // visible-normal samples' weights at their v·h, split among the nodes of the sample's panel as
+  // the interpolating polynomial splits them (its Lagrange basis at v·h), over kLutSamples (a
+  // mirror: none). The truth is linear in the curve, so Σ_k w_k·curve_k is the sampled integral.
   std::vector<double> truth_weights;
   DfgTexel dfg;    // the DFG texture read bilinearly here (a mirror: none)
   GgxMoments ltc;  // the LTC moments texture (n_D, f_D, l_D) read bilinearly here (a mirror: none)
@@ -85,7 +83,8 @@ std::vector<ShadingPoint> shading_points_at(const std::vector<NovRoughness>& at,
 // the point (what a table of infinite resolution and precision would give).
 enum class Integrals { Tables, Exact };
 
-// The brute-force lobe integral with the spectral ground truth per v·h, per point.
+// The lobe integral with the spectral ground truth per v·h, per point: Σ_k w_k·curve_k from the
+// curve at the nodes the points weigh (a mirror: the curve at n·v).
 std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
                                    const std::vector<ShadingPoint>& points);
 
@@ -94,6 +93,10 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
 // the model at n·v.
 color::Rgb engine_shading(fresnel::Model m, const std::vector<double>& params, Lighting lighting,
                           const ShadingPoint& p, Integrals integrals = Integrals::Tables);
+// engine_shading at every point into out[0, points.size()), the model's table terms computed once.
+void engine_shading(fresnel::Model m, const std::vector<double>& params, Lighting lighting,
+                    std::span<const ShadingPoint> points, color::Rgb* out,
+                    Integrals integrals = Integrals::Tables);
 
 // What the engine computes at one point from each channel's weights on the tables' terms (a model's
 // own, or a curve projected on the terms: fresnel/projection.h): Σ_t w_t·(the lobe's integral of
@@ -105,6 +108,12 @@ color::Rgb engine_shading_terms(const std::array<fresnel::TableTerms, 3>& weight
 std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<color::Rgb>& truth,
                                         const std::array<fresnel::TableTerms, 3>& weights,
                                         Lighting lighting, const std::vector<ShadingPoint>& points);
+// The same with the truth in CIELAB (lab_curve of lobe_truth): a page's truth converted once for
+// all its shaders and lightings.
+std::vector<double> rendered_de00_terms(const Context& ctx,
+                                        const std::vector<color::Lab>& truth_lab,
+                                        const std::array<fresnel::TableTerms, 3>& weights,
+                                        Lighting lighting, const std::vector<ShadingPoint>& points);
 
 // How an engine evaluates a model's Fresnel term under IBL or area lights.
 enum class EngineWay {
@@ -114,6 +123,8 @@ enum class EngineWay {
   BasisSpan,  // its curve projected on the 5-term basis, pre-integrated by the basis tables
 };
 const char* engine_way_name(EngineWay w);  // tables | F(n·v) × lobe | Hoffman span | basis span
+// The terms a projecting way (HoffmanSpan, BasisSpan) projects on; empty for the others.
+std::span<const fresnel::Term> projected_span(EngineWay w);
 
 // The model's RGB curve at the context's angles (uniform in θ, as the basis models' own
 // projection) projected on `terms`, per channel (fresnel/projection.h).
@@ -123,6 +134,10 @@ std::array<fresnel::TableTerms, 3> projected_weights(const Context& ctx, fresnel
 
 // ΔE2000 between truth and engine at every point, the engine evaluating the model `way`.
 std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth,
+                                  fresnel::Model m, const std::vector<double>& params,
+                                  Lighting lighting, const std::vector<ShadingPoint>& points,
+                                  EngineWay way = EngineWay::Native);
+std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Lab>& truth_lab,
                                   fresnel::Model m, const std::vector<double>& params,
                                   Lighting lighting, const std::vector<ShadingPoint>& points,
                                   EngineWay way = EngineWay::Native);

@@ -4,7 +4,8 @@ namespace fl::analysis {
 
 fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& truth,
                             fresnel::Model m, const std::vector<ShadingPoint>& points,
-                            std::vector<std::vector<double>> starts, bool lossless) {
+                            std::vector<std::vector<double>> starts, bool lossless,
+                            double function_tolerance) {
   fit::ColourTarget target;
   target.to_lab = {ctx.space().rgb_to_xyz, ctx.space().white};
   for (size_t l = 0; l < kRenderedFitLightings.size(); ++l)
@@ -12,13 +13,16 @@ fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& t
   const size_t param_count = static_cast<size_t>(fresnel::model_spec(m).param_count());
   target.colours = [&](const double* p, color::Rgb* out) {
     const std::vector<double> params(p, p + param_count);
-    for (const Lighting l : kRenderedFitLightings)
-      for (const auto& point : points) *out++ = engine_shading(m, params, l, point);
+    for (const Lighting l : kRenderedFitLightings) {
+      engine_shading(m, params, l, points, out);
+      out += points.size();
+    }
     return true;
   };
   fit::FitOptions options;
   options.lossless = lossless;
   options.max_solves = 1;  // from the better of the two starts
+  options.function_tolerance = function_tolerance;
   return fit::fit_model_colours(m, target, std::move(starts), options);
 }
 

@@ -13,11 +13,12 @@ namespace fl::analysis {
 inline constexpr std::array<Lighting, 2> kRenderedFitLightings{Lighting::Ibl, Lighting::Area};
 
 // Minimizes ½ Σ ΔE2000² over kRenderedFitLightings × `points` (fit::fit_model_colours) between
-// `truth`
-// (lobe_truth at the points) and engine_shading, from `starts` (the derived and curve-fitted sets),
-// within the model's fit box.
+// `truth` (lobe_truth at the points) and engine_shading, from `starts` (the derived and
+// curve-fitted sets), within the model's fit box; each solve stops once a step lowers the cost by
+// less than `function_tolerance` of it (fit::FitOptions).
 fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& truth,
                             fresnel::Model m, const std::vector<ShadingPoint>& points,
-                            std::vector<std::vector<double>> starts, bool lossless);
+                            std::vector<std::vector<double>> starts, bool lossless,
+                            double function_tolerance = fit::FitOptions{}.function_tolerance);
 
 }  // namespace fl::analysis

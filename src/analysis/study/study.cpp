@@ -83,9 +83,11 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
         ModelResult& r = st.models[k];
         r.model = spec.model;
         r.derived = fresnel::derived_model_params(spec.model, in);
-        r.derived_error =
-            curve_error(ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.derived, cos));
-        r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
+        if (o.derived_errors) {
+          r.derived_error =
+              curve_error(ctx, truth_lab, fresnel::evaluate_curve(spec.model, r.derived, cos));
+          r.derived_clamps = fresnel::output_clamped(spec.model, r.derived, cos);
+        }
         if (o.fits(spec.model)) {
           r.fitted =
               fit::fit_model(spec.model, target, fresnel::fit_starts(spec.model, in), fit_options);

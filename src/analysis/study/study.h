@@ -54,6 +54,9 @@ struct StudyOptions {
   // The models studied (empty: every model), in registry order; MaterialStudy::result throws for
   // the others.
   std::vector<fresnel::Model> models;
+  // The derived sets' curve errors and output clamps (ModelResult::derived_error,
+  // derived_clamps); off, they stay empty (a caller that reads the parameters alone).
+  bool derived_errors = true;
   // The talk's method table's extra errors (MaterialStudy::ps_eta_kappa, refl_f0_ps_eta).
   bool method_errors = true;
   int threads = 0;  // 0: hardware concurrency
