@@ -5,13 +5,15 @@
 
 #include "documents/gltf.h"
 #include "util/errors.h"
+#include "util/suggest.h"
 
 namespace fl::documents {
 namespace {
 
 constexpr std::array kFormats{
     PresetFormat{"csv", "", "csv", PresetKind::Table, Format::Csv, {}, "CSV table"},
-    PresetFormat{"md", "", "md", PresetKind::Table, Format::Markdown, {}, "Markdown table"},
+    PresetFormat{
+        "md", "", "md", PresetKind::Table, Format::Markdown, {}, "Markdown table", "markdown"},
     PresetFormat{"json", "", "json", PresetKind::Table, Format::Json, {}, "JSON table"},
     PresetFormat{"mtlx",
                  "",
@@ -19,7 +21,8 @@ constexpr std::array kFormats{
                  PresetKind::MaterialX,
                  {},
                  MaterialxShader::GeneralizedSchlick,
-                 "MaterialX, generalized_schlick_bsdf"},
+                 "MaterialX, generalized_schlick_bsdf",
+                 "materialx"},
     PresetFormat{"mtlx",
                  "_openpbr",
                  "mtlx",
@@ -36,10 +39,33 @@ constexpr std::array kFormats{
                  "MaterialX, standard_surface"},
     PresetFormat{"gltf", "", "gltf", PresetKind::Gltf, {}, {}, "glTF 2.0 materials"}};
 
+std::vector<NameChoice> format_choices() {
+  std::vector<NameChoice> choices;
+  for (const auto& f : kFormats) {
+    if (!choices.empty() && choices.back().name == f.name) continue;
+    choices.push_back({f.name, {}});
+    if (f.alias) choices.back().aliases.push_back(f.alias);
+  }
+  return choices;
+}
+
 }  // namespace
 
 std::span<const PresetFormat> preset_formats() {
   return kFormats;
+}
+
+std::string preset_format_name(const std::string& name) {
+  const auto choices = format_choices();
+  const auto match = match_name(name, choices);
+  if (!match) throw InputError(unknown_name_message("format", name, choices));
+  return *match;
+}
+
+std::vector<PresetFile> preset_file_names(const std::string& stem) {
+  std::vector<PresetFile> out;
+  for (const auto& f : kFormats) out.push_back({stem + f.suffix + "." + f.extension, f.summary});
+  return out;
 }
 
 const PresetFormat& preset_format(const std::string& name, bool openpbr,

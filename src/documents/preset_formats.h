@@ -24,11 +24,16 @@ struct PresetFormat {
   Format table_format = Format::Csv;                             // kind Table
   MaterialxShader shader = MaterialxShader::GeneralizedSchlick;  // kind MaterialX
   const char* summary = "";
+  const char* alias = nullptr;  // another --format name ("markdown", "materialx")
 };
 
 // csv, md, json (the presets table), mtlx with generalized_schlick_bsdf, open_pbr_surface and
 // standard_surface, gltf (glTF 2.0 materials), in that order.
 std::span<const PresetFormat> preset_formats();
+
+// A --format name: one of the registry's names or aliases, ignoring case; InputError otherwise,
+// listing them.
+std::string preset_format_name(const std::string& name);
 
 // The entry of `presets --format NAME [--openpbr] [--shader S]`: NAME as preset_format_name reads
 // it; --openpbr chooses open_pbr_surface with mtlx (a table's columns otherwise); --shader names
@@ -50,5 +55,13 @@ std::string preset_document(const PresetFormat& f, const PresetSource& in);
 // the files named in `written` already (a table loop's STEM.csv).
 io::Files preset_files(const std::string& stem, const PresetSource& in,
                        const std::vector<std::string>& written = {});
+
+// Every preset file of `stem` (STEM + suffix + "." + extension) with its summary, in registry
+// order: the links of a report's navigation and the file lists of its README.
+struct PresetFile {
+  std::string path;
+  const char* summary;
+};
+std::vector<PresetFile> preset_file_names(const std::string& stem);
 
 }  // namespace fl::documents

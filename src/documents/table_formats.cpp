@@ -17,23 +17,12 @@ const std::vector<NameChoice>& table_format_choices() {
   static const std::vector<NameChoice> choices{{"csv", {}}, {"md", {"markdown"}}, {"json", {}}};
   return choices;
 }
-const std::vector<NameChoice>& preset_format_choices() {
-  static const std::vector<NameChoice> choices{
-      {"csv", {}}, {"md", {"markdown"}}, {"json", {}}, {"mtlx", {"materialx"}}, {"gltf", {}}};
-  return choices;
-}
 }  // namespace
 
 Format format_from_name(const std::string& name) {
   const auto match = match_name(name, table_format_choices());
   if (!match) throw InputError(unknown_name_message("format", name, table_format_choices()));
   return *match == "csv" ? Format::Csv : *match == "md" ? Format::Markdown : Format::Json;
-}
-
-std::string preset_format_name(const std::string& name) {
-  const auto match = match_name(name, preset_format_choices());
-  if (!match) throw InputError(unknown_name_message("format", name, preset_format_choices()));
-  return *match;
 }
 
 const char* extension(Format f) {

@@ -9,9 +9,6 @@ namespace fl::documents {
 enum class Format { Csv, Markdown, Json };
 // csv, md (or markdown) or json, ignoring case; InputError otherwise.
 Format format_from_name(const std::string& name);
-// A preset document's format: csv, md, json, mtlx (a MaterialX document) or gltf (glTF 2.0
-// materials), ignoring case ("markdown" and "materialx" accepted); InputError otherwise.
-std::string preset_format_name(const std::string& name);
 const char* extension(Format f);
 
 // Numbers are printed with the column's fixed precision ("-0.000" is printed as "0.000"), so the

@@ -24,6 +24,17 @@
 namespace fl::jobs {
 namespace {
 
+// The library's preset documents, one line each (documents/preset_formats.h); the tables hold one
+// row per page (presets, every model's RMS ΔE2000, flags).
+std::string preset_files_markdown() {
+  std::string md =
+      "- The presets of every page in every preset format (the tables: one row per page with its "
+      "presets, every model's RMS ΔE2000 and flags):\n";
+  for (const auto& f : documents::preset_file_names("library"))
+    md += fmt::format("  - [{0}]({0}): {1}\n", f.path, f.summary);
+  return md;
+}
+
 // The cards index.html sets in the page (whole groups, at least this many: a first screen at
 // 1280 px, 4 columns of 2 rows, and the next); the other groups load as they near the screen.
 constexpr size_t kFirstScreenCards = 12;
@@ -140,22 +151,16 @@ std::string readme(const analysis::Context& ctx, const analysis::Library& lib, c
   md += "## Flags (pages carrying each)\n\n| flag | pages |\n|---|---|\n";
   for (const auto& [flag, n] : flag_counts(t)) md += fmt::format("| {} | {} |\n", flag, n);
   md += "\n" + documents::to_markdown(analysis::skip_reasons_table(lib.set.skipped), 2);
-  md +=
-      "\n## Files\n\n- [library.csv](library.csv), [library.md](library.md), "
-      "[library.json](library.json): one row "
-      "per page (presets, every model's RMS ΔE2000, flags)\n- [models.csv](models.csv): "
-      "every model's derived and fitted parameters and errors per page\n- "
-      "[library.mtlx](library.mtlx), [library_openpbr.mtlx](library_openpbr.mtlx), "
-      "[library_standard_surface.mtlx](library_standard_surface.mtlx): MaterialX "
-      "(generalized_schlick_bsdf; open_pbr_surface; standard_surface)\n- "
-      "[library.gltf](library.gltf): glTF 2.0 materials\n"
-      "- [skipped.csv](skipped.csv): every page left out, with its reason\n- "
-      "[spread.md](spread.md), "
-      "[spread.csv](spread.csv): the spread between pages of the same metal\n"
-      "- [consensus.md](consensus.md), [consensus_pages.md](consensus_pages.md), "
-      "[outlier_kinds.md](outlier_kinds.md) (and .csv): each metal's consensus of its bulk "
-      "pages with its uncertainty, every page's kind and distance from it, outliers per page "
-      "kind (docs/consensus.md)\n";
+  md += "\n## Files\n\n" + preset_files_markdown() +
+        "- [models.csv](models.csv): every model's derived and fitted parameters and errors per "
+        "page\n"
+        "- [skipped.csv](skipped.csv): every page left out, with its reason\n- "
+        "[spread.md](spread.md), "
+        "[spread.csv](spread.csv): the spread between pages of the same metal\n"
+        "- [consensus.md](consensus.md), [consensus_pages.md](consensus_pages.md), "
+        "[outlier_kinds.md](outlier_kinds.md) (and .csv): each metal's consensus of its bulk "
+        "pages with its uncertainty, every page's kind and distance from it, outliers per page "
+        "kind (docs/consensus.md)\n";
   if (gallery) md += "- [gallery.md](gallery.md): a colour strip per page\n";
   md +=
       "- [index.html](index.html): the library as a searchable gallery (colour strip, F0 and F82 "
@@ -311,9 +316,9 @@ io::Files library_page(const analysis::Context& ctx, const analysis::Library& li
   page.gallery_fragment = std::move(gallery.html);
   page.gallery_script = std::move(gallery.script);
   page.tables = tables;
-  page.links = {{"README.md", "README.md"},
-                {"library.json", "library.json"},
-                {"library.mtlx", "library.mtlx"}};
+  page.links = {{"README.md", "README.md"}};
+  for (const auto& f : documents::preset_file_names("library"))
+    page.links.emplace_back(f.path, f.path);
   io::Files files = documents::html_report_files(page, "tables");
   for (auto& f : gallery.files) files.push_back(std::move(f));
   return files;

@@ -88,9 +88,9 @@ std::string report_page(const analysis::Context& ctx,
         kFlipRoughness, kFlipSizePx, analysis::kReflectionOnlyNote));
   page.gallery = catalog_gallery(ctx, studies, presets, figures, flips);
   page.tables = tables;
-  page.links = {{"README.md", "README.md"},
-                {"presets.json", "presets.json"},
-                {"presets.mtlx", "presets.mtlx"}};
+  page.links = {{"README.md", "README.md"}};
+  for (const auto& f : documents::preset_file_names("presets"))
+    page.links.emplace_back(f.path, f.path);
   if (figures) {
     page.links.emplace_back("figures.md", "figures.md");
     page.figures.emplace_back(
