@@ -55,7 +55,9 @@ void add_materials(CLI::App& app, GlobalOptions& g, Runner& selected) {
 
 void add_curve(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand(
-      "curve", "per-angle ground truth RGB, model RGB and ΔE2000 per material (CSV)");
+      "curve",
+      "per material and angle: ground truth RGB, the model's RGB and ΔE2000, with the material's "
+      "coverage and the fit's flags (CSV, Markdown or JSON on stdout)");
   auto materials = std::make_shared<std::vector<std::string>>();
   auto model = std::make_shared<std::string>("schlick");
   auto format = std::make_shared<std::string>("csv");
@@ -219,8 +221,10 @@ std::vector<std::string> lookdev_sheets(const std::string& out) {
 }
 
 void add_reproduce(CLI::App& app, GlobalOptions& g, Runner& selected) {
-  auto* sub = app.add_subcommand("reproduce",
-                                 "every table as DIR/NAME.csv and DIR/NAME.md, plus DIR/README.md");
+  auto* sub = app.add_subcommand(
+      "reproduce",
+      "the report: every table as DIR/NAME.csv and .md, the presets in every preset format, "
+      "index.html, the figures and flips (unless --no-figures) and README.md");
   auto out = std::make_shared<std::string>();
   sub->add_option("--out", *out, "output folder (created if missing; its parent must exist)")
       ->required()

@@ -48,16 +48,4 @@ std::vector<Xyz> xyz_weights(const spectral::Observer& obs, const spectral::Spec
   return w;
 }
 
-Xyz reflectance_to_xyz(const std::vector<double>& r, const spectral::Observer& obs,
-                       const spectral::Spectrum& illum) {
-  const auto w = xyz_weights(obs, illum);
-  Xyz out;
-  for (size_t i = 0; i < w.size(); ++i) {
-    out.X += r[i] * w[i].X;
-    out.Y += r[i] * w[i].Y;
-    out.Z += r[i] * w[i].Z;
-  }
-  return out;
-}
-
 }  // namespace fl::color

@@ -16,10 +16,6 @@ const char* to_string(Adaptation a);
 // Bradford, CIECAM02 for CAT02; None is the identity).
 Mat3 adaptation_matrix(Adaptation method, const Xyz& src_white, const Xyz& dst_white);
 
-// X = Σ R·S·x̄ / Σ S·ȳ over the grid (a perfect white reflector has Y = 1).
-Xyz reflectance_to_xyz(const std::vector<double>& reflectance, const spectral::Observer& obs,
-                       const spectral::Spectrum& illuminant);
-
 // Per-wavelength weights w(λ) with XYZ = Σ R(λ)·w(λ), the same normalization as above.
 std::vector<Xyz> xyz_weights(const spectral::Observer& obs, const spectral::Spectrum& illuminant);
 

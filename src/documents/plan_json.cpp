@@ -24,10 +24,6 @@ template <class T>
 Json cost_json(const std::optional<T>& c) {
   return c ? Json(*c) : Json(analysis::kUnmeasured);
 }
-std::string cpu_text(const std::optional<double>& c) {
-  return c ? format_number(*c, kCostDecimals) : std::string(analysis::kUnmeasured);
-}
-
 Json params_json(const analysis::PlanChoice& m) {
   const auto names = fresnel::model_spec(m.model).param_names();
   Json params = Json::object();

@@ -1,6 +1,6 @@
 #pragma once
-// The figures as Drawings (drawing.h), from data computed in analysis/figure_data.h: colour strips,
-// reflectance / ΔE2000 curves, and the ΔE2000 heat map of a sphere render.
+// The figures as Drawings (drawing.h), from data computed in analysis/render/figure_data.h: colour
+// strips, reflectance / ΔE2000 curves, and the ΔE2000 heat map of a sphere render.
 #include <string>
 #include <vector>
 

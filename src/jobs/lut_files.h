@@ -1,5 +1,5 @@
 #pragma once
-// `lut dfg | ltc-moments | ltc`: the pre-integrated GGX tables (analysis/lut.h) computed and
+// `lut dfg | ltc-moments | ltc`: the pre-integrated GGX tables (analysis/lut/lut.h) computed and
 // written as EXR textures, CSV tables and C++ headers.
 #include <string>
 #include <vector>

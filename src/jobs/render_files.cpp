@@ -94,7 +94,8 @@ io::ExrImage exr_header(const analysis::Context& ctx, const analysis::LoadedMate
       {"fresnelLab:colorSpace",
        fmt::format("{} (linear), illuminant {}", ctx.settings().space, ctx.settings().illuminant)},
       {"fresnelLab:scene",
-       "unit sphere, orthographic camera along -z, GGX specular only (analysis/render.h); " +
+       "unit sphere, orthographic camera along -z, GGX specular only "
+       "(src/analysis/render/render.h); " +
            scene.lighting}};
   exr.float_attributes = {{"fresnelLab:roughness", static_cast<float>(r.settings.roughness)},
                           {"fresnelLab:samples", static_cast<float>(r.settings.samples)}};

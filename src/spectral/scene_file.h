@@ -1,5 +1,5 @@
 #pragma once
-// Scene files for `plan`, read as written (the defaults are analysis/plan.h's). A YAML map:
+// Scene files for `plan`, read as written (the defaults are analysis/plan/plan.h's). A YAML map:
 //   materials: [gold, main/Cu/nk/Johnson, my_glass.yml]   # catalog names, database pages, page
 //   globs
 //                                                        # or files, or {name: gold, roughness: 0.3

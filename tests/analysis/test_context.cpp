@@ -1,7 +1,7 @@
-// The run's colour pipeline (analysis/context.h): reflectance spectrum → working-space RGB, against
-// published white points and matrices, and the default illuminant of each space. Without
-// adaptation, the perfect reflector lands on the illuminant's own white expressed in the space;
-// with adaptation it lands on the space's white (von Kries maps white to white), so only the
+// The run's colour pipeline (analysis/pipeline/context.h): reflectance spectrum → working-space
+// RGB, against published white points and matrices, and the default illuminant of each space.
+// Without adaptation, the perfect reflector lands on the illuminant's own white expressed in the
+// space; with adaptation it lands on the space's white (von Kries maps white to white), so only the
 // unadapted pipeline is checked against data here.
 #include <gtest/gtest.h>
 

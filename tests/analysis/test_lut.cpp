@@ -1,7 +1,7 @@
-// GGX lookup tables (analysis/lut.h) against independent references: the DFG and moment integrals
-// against a Gauss–Legendre quadrature of the GGX lobe written from the papers (ggx_reference.h),
-// the mirror limit, energy bounds, and ltc_code's published 64 × 64 fit (its n_D and, on one
-// error metric, its lobes); the ltc_1 texture read back the way a shader reads it.
+// GGX lookup tables (analysis/lut/lut.h) against independent references: the DFG and moment
+// integrals against a Gauss–Legendre quadrature of the GGX lobe written from the papers
+// (ggx_reference.h), the mirror limit, energy bounds, and ltc_code's published 64 × 64 fit (its n_D
+// and, on one error metric, its lobes); the ltc_1 texture read back the way a shader reads it.
 #include <gtest/gtest.h>
 
 #include <algorithm>

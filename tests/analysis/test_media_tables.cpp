@@ -1,4 +1,5 @@
-// The blend, gamut, external-medium and internal-reflection tables (analysis/media_tables.h).
+// The blend, gamut, external-medium and internal-reflection tables
+// (analysis/tables/media_tables.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>

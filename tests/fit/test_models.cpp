@@ -1,5 +1,5 @@
 // Fresnel model kernels, Gulbrandsen's mapping and Ceres fits. The generic checks over every
-// model (Jacobians, batch, domains, derivation) are in fresnel/test_registry.cpp.
+// model (Jacobians, batch, domains, derivation) are in tests/fresnel/test_registry.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -8,7 +8,10 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <fstream>
+#include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "analysis/pipeline/context.h"
@@ -36,6 +39,25 @@ constexpr double kFloatBatchRelative = 1e-5;
 // Float kernels against double: float has 24 bits; the conductor equations lose a few more
 // through cancellation near grazing incidence.
 constexpr double kFloatVsDouble = 2e-5;
+
+// The README's list of models (its "**Models** (`--model`)" item) names exactly the registry's.
+TEST(Registry, ReadmeListsExactlyTheRegisteredModels) {
+  std::ifstream in(std::string(FL_SOURCE_DIR) + "/README.md");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string readme = ss.str();
+  const auto at = readme.find("- **Models** (`--model`):");
+  ASSERT_NE(at, std::string::npos);
+  const auto end = readme.find("\n- **", at + 1);
+  const std::string item = readme.substr(at, end - at);
+  std::set<std::string> listed, registered;
+  const std::regex code("`([a-z0-9_]+)`");
+  for (auto it = std::sregex_iterator(item.begin(), item.end(), code); it != std::sregex_iterator();
+       ++it)
+    if ((*it)[1] != "--model") listed.insert((*it)[1]);
+  for (const auto& m : fresnel::model_specs()) registered.insert(m.name);
+  EXPECT_EQ(listed, registered);
+}
 
 TEST(Registry, BatchMatchesScalarInDoubleAndFloat) {
   const auto cos_d = cosines(257);

@@ -174,20 +174,6 @@ std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<co
   return rendered_de00_terms(ctx, lab_curve(ctx, truth), weights, lighting, points);
 }
 
-const char* engine_way_name(EngineWay w) {
-  switch (w) {
-    case EngineWay::Native:
-      return "tables";
-    case EngineWay::AtNdotV:
-      return "F(n·v) × lobe";
-    case EngineWay::HoffmanSpan:
-      return "Hoffman span";
-    case EngineWay::BasisSpan:
-      return "basis span";
-  }
-  return "?";
-}
-
 std::span<const fresnel::Term> projected_span(EngineWay w) {
   if (w == EngineWay::HoffmanSpan) return fresnel::kHoffmanSpan;
   if (w == EngineWay::BasisSpan) return fresnel::kBasisSpan;

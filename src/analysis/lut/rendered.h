@@ -122,7 +122,6 @@ enum class EngineWay {
   HoffmanSpan,  // its curve projected on {1, (1 − μ)⁵, μ(1 − μ)⁶}, pre-integrated by those terms
   BasisSpan,  // its curve projected on the 5-term basis, pre-integrated by the basis tables
 };
-const char* engine_way_name(EngineWay w);  // tables | F(n·v) × lobe | Hoffman span | basis span
 // The terms a projecting way (HoffmanSpan, BasisSpan) projects on; empty for the others.
 std::span<const fresnel::Term> projected_span(EngineWay w);
 

@@ -51,7 +51,6 @@ class Context {
   const std::vector<color::Rgb>& rgb_weights() const { return rgb_weights_; }
   // Per grid wavelength S·ȳ / Σ S·ȳ: its share of a white surface's luminance (sums to 1).
   const std::vector<double>& luminance_weights() const { return luminance_weights_; }
-  const color::Xyz& illuminant_white() const { return illuminant_white_; }
 
   // Incidence angles θ_i = 90°·i/(N − 1); cos is exactly 0 at 90°.
   const std::vector<double>& angles_deg() const { return angles_deg_; }

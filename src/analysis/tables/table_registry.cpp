@@ -43,12 +43,13 @@ const RenderedLibrary& TableInputs::rendered_library() {
 
 void TableInputs::prepare() {
   lut_points();
-  parallel_for(4, [this](size_t i) {
+  // The three inputs the tables share, computed side by side.
+  parallel_for(3, [this](size_t i) {
     if (i == 0)
       studies();
     else if (i == 1)
       group_pages();
-    else if (i == 2)
+    else
       rendered_library();
   });
 }
