@@ -37,8 +37,8 @@ TEST(LutCli, WritesTablesDeterministically) {
   // Three comment lines (axes, channels, shader formula) per texture, the header, 16 rows.
   std::string dfg_header = "nov,perceptual_roughness,alpha", ltc_header = dfg_header;
   for (const auto& t : fresnel::kTermRegistry) {
-    dfg_header += std::string(",") + t.dfg_channel;
-    ltc_header += std::string(",") + t.ltc_channel;
+    dfg_header += std::string(",") + t.dfg.channel;
+    ltc_header += std::string(",") + t.ltc.channel;
   }
   const auto header = csv.find("\nnov,");
   ASSERT_NE(header, std::string::npos);
@@ -83,7 +83,7 @@ TEST(LutCli, WritesTablesDeterministically) {
       const std::string name = c.channel;
       const auto term =
           std::find_if(fresnel::kTermRegistry.begin(), fresnel::kTermRegistry.end(),
-                       [&](const fresnel::TermSpec& t) { return name == t.dfg_channel; });
+                       [&](const fresnel::TermSpec& t) { return name == t.dfg.channel; });
       ASSERT_NE(term, fresnel::kTermRegistry.end()) << name;
       EXPECT_EQ(dfg.pixels[k], static_cast<float>(texel[term->term])) << name;
     }

@@ -130,13 +130,13 @@ TEST(ShippingCli, TableHeadersCompileTogetherAsCAndCxx) {
     v[k] = std::stod(value);
   };
   for (const auto& t : fresnel::kTermRegistry) {
-    const std::string dfg_suffix = std::string(t.dfg_texture) == "dfg" ? "" : "_2";
-    put("fresnel_lab_dfg" + dfg_suffix, component(t.dfg_component), dfg.at(t.dfg_channel));
-    put("my_dfg" + dfg_suffix, component(t.dfg_component), dfg.at(t.dfg_channel));
-    const std::string ltc_texture = t.ltc_texture;
+    const std::string dfg_suffix = std::string(t.dfg.texture) == "dfg" ? "" : "_2";
+    put("fresnel_lab_dfg" + dfg_suffix, component(t.dfg.component), dfg.at(t.dfg.channel));
+    put("my_dfg" + dfg_suffix, component(t.dfg.component), dfg.at(t.dfg.channel));
+    const std::string ltc_texture = t.ltc.texture;
     put(ltc_texture == "ltc_2" ? "fresnel_lab_ltc_moments" : "fresnel_lab_ltc_moments_3",
-        component(t.ltc_component), moments.at(t.ltc_channel));
-    put("fresnel_lab_" + ltc_texture, component(t.ltc_component), ltc.at(t.ltc_channel));
+        component(t.ltc.component), moments.at(t.ltc.channel));
+    put("fresnel_lab_" + ltc_texture, component(t.ltc.component), ltc.at(t.ltc.channel));
   }
   put("fresnel_lab_ltc_2", 3, ltc.at("sphere_form_factor"));
   const char* matrix[] = {"inv_m00", "inv_m20", "inv_m02", "inv_m22"};

@@ -257,7 +257,7 @@ TEST(Registry, PreIntegrationDeclarationsAreTrue) {
   // not use come out at rounding level, below 1e-10).
   constexpr double kUsedWeight = 1e-7;
   std::set<std::string> known{ch::kLtcMatrix};
-  for (const auto& t : fresnel::kTermRegistry) known.insert({t.dfg_channel, t.ltc_channel});
+  for (const auto& t : fresnel::kTermRegistry) known.insert({t.dfg.channel, t.ltc.channel});
   for (const auto& spec : fresnel::model_specs()) {
     const auto& pi = spec.pre_integration;
     for (const auto* s : {&pi.ibl, &pi.area}) {
@@ -291,13 +291,18 @@ TEST(Registry, PreIntegrationDeclarationsAreTrue) {
                              << ": declared not pre-integrable, but the tables' span holds it";
       continue;
     }
-    // Each term's channels are listed exactly when the model uses the term (the term 1's and
-    // (1 − μ)⁵'s always: the lobe's integral).
+    // Each term's channels are listed exactly when the model uses the term (the term 1's always:
+    // the lobe's integral); under IBL also the channel of the term it is stored less of.
+    fresnel::TermValues needed;
+    for (const auto& t : fresnel::kTermRegistry)
+      if (used[t.term] > kUsedWeight || t.term == fresnel::Term::One) needed[t.term] = 1;
     for (const auto& t : fresnel::kTermRegistry) {
-      const bool needed = used[t.term] > kUsedWeight || t.term == fresnel::Term::One ||
-                          t.term == fresnel::Term::Schlick;
-      EXPECT_EQ(lists(pi.ibl, t.dfg_channel), needed) << spec.name << " " << t.dfg_channel;
-      EXPECT_EQ(lists(pi.area, t.ltc_channel), needed) << spec.name << " " << t.ltc_channel;
+      bool dfg = needed[t.term] != 0;
+      for (const auto& u : fresnel::kTermRegistry)
+        dfg = dfg || (needed[u.term] != 0 && u.dfg.less == t.term);
+      EXPECT_EQ(lists(pi.ibl, t.dfg.channel), dfg) << spec.name << " " << t.dfg.channel;
+      EXPECT_EQ(lists(pi.area, t.ltc.channel), needed[t.term] != 0)
+          << spec.name << " " << t.ltc.channel;
     }
   }
 }
@@ -344,7 +349,7 @@ TEST(Registry, TableTermKernelsAreTheirFormulas) {
       EXPECT_NEAR(fresnel::term_kernel(t.term, mu, m, m5), term_formula(t.term, mu),
                   kTermFormulaTolerance)
           << t.formula;
-      const double less = t.dfg_less == t.term ? 0.0 : term_formula(t.dfg_less, mu);
+      const double less = t.dfg.less == t.term ? 0.0 : term_formula(t.dfg.less, mu);
       EXPECT_NEAR(fresnel::dfg_kernel(t.term, mu, m, m5), term_formula(t.term, mu) - less,
                   kTermFormulaTolerance)
           << t.formula;
@@ -367,9 +372,9 @@ TEST(Registry, PreIntegratedModelsDeclareTheChannelsOfTheirTerms) {
         const auto w = spec.table_terms(p.data(), c);
         for (const auto& t : fresnel::kTermRegistry) {
           if (w[t.term] == 0.0) continue;
-          EXPECT_TRUE(declares(pi.ibl, t.dfg_channel)) << spec.name << " " << t.dfg_channel;
-          EXPECT_TRUE(declares(pi.ibl, fresnel::term_spec(t.dfg_less).dfg_channel)) << spec.name;
-          EXPECT_TRUE(declares(pi.area, t.ltc_channel)) << spec.name << " " << t.ltc_channel;
+          EXPECT_TRUE(declares(pi.ibl, t.dfg.channel)) << spec.name << " " << t.dfg.channel;
+          EXPECT_TRUE(declares(pi.ibl, fresnel::term_spec(t.dfg.less).dfg.channel)) << spec.name;
+          EXPECT_TRUE(declares(pi.area, t.ltc.channel)) << spec.name << " " << t.ltc.channel;
         }
       }
   }
@@ -385,12 +390,22 @@ TEST(Registry, TableTermsReproduceTheKernelAndShaderCodeMatchesTheDeclarations) 
     EXPECT_TRUE(pi.punctual.channels.empty()) << spec.name;
     EXPECT_EQ(std::string(pi.punctual.evaluated_at), "v·h") << spec.name;
     const bool pre = pi.ibl.fresnel_pre_integrated;
-    const bool weights = !spec.shader.term_weights.empty();  // the emitter writes the bodies
-    EXPECT_TRUE(weights ? pre : !std::string(spec.shader.body).empty()) << spec.name;
+    // The emitter writes the table functions (and the punctual one where the unit gives none)
+    // from the GLSL weights.
+    EXPECT_EQ(!spec.term_weights.empty(), pre) << spec.name;
+    EXPECT_TRUE(pre || !std::string(spec.shader.body).empty()) << spec.name;
     EXPECT_EQ(spec.table_terms != nullptr, pre) << spec.name;
-    EXPECT_EQ(spec.shader.dfg_body != nullptr, pre && !weights) << spec.name;
-    EXPECT_EQ(spec.shader.ltc_body != nullptr, pre && !weights) << spec.name;
     if (!pre) continue;
+    // The GLSL weights name exactly the terms the C++ weights use (their values: the Vulkan tests).
+    for (const auto& p : probe_params(spec))
+      for (int c = 0; c < 3; ++c) {
+        const auto w = spec.table_terms(p.data(), c);
+        for (const auto& t : fresnel::kTermRegistry) {
+          const bool glsl = std::any_of(spec.term_weights.begin(), spec.term_weights.end(),
+                                        [&](const auto& tw) { return tw.term == t.term; });
+          if (w[t.term] != 0.0) EXPECT_TRUE(glsl) << spec.name << " " << t.formula;
+        }
+      }
     for (const auto& p : probe_params(spec)) {
       for (double mu : cosines(65)) {
         const auto f = fresnel::evaluate_curve_unclamped(spec.model, p, {mu})[0];
