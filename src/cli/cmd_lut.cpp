@@ -80,7 +80,7 @@ CLI::App* add_lut_subcommand(CLI::App& lut, GlobalOptions& g, Runner& selected, 
 std::string term_channels(bool dfg) {
   std::string s;
   for (const auto& t : fresnel::kTermRegistry)
-    s += fmt::format("{}{} (∫{} ρ cos)", s.empty() ? "" : ", ", dfg ? t.dfg_channel : t.ltc_channel,
+    s += fmt::format("{}{} (∫{} ρ cos)", s.empty() ? "" : ", ", dfg ? t.dfg.channel : t.ltc.channel,
                      t.formula);
   return s;
 }

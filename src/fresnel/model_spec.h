@@ -6,6 +6,7 @@
 //
 // Parameter layout, shared by evaluation, derivation, fitting and reports: the per-channel
 // parameters first (R block, G block, B block), then the parameters shared by the channels.
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -66,13 +67,13 @@ struct PreIntegration {
 // F82 moment (Hill's n_D, f_D and their F82 analogue).
 // The term channels are named in the term registry (table_terms.h).
 namespace lut_channel {
-inline constexpr const char* kDfgScale = term_spec(Term::One).dfg_channel;
-inline constexpr const char* kDfgBias = term_spec(Term::Schlick).dfg_channel;
-inline constexpr const char* kDfgF82 = term_spec(Term::F82).dfg_channel;
+inline constexpr const char* kDfgScale = term_spec(Term::One).dfg.channel;
+inline constexpr const char* kDfgBias = term_spec(Term::Schlick).dfg.channel;
+inline constexpr const char* kDfgF82 = term_spec(Term::F82).dfg.channel;
 inline constexpr const char* kLtcMatrix = "ltc_matrix";
-inline constexpr const char* kLtcNorm = term_spec(Term::One).ltc_channel;
-inline constexpr const char* kLtcSchlick = term_spec(Term::Schlick).ltc_channel;
-inline constexpr const char* kLtcF82 = term_spec(Term::F82).ltc_channel;
+inline constexpr const char* kLtcNorm = term_spec(Term::One).ltc.channel;
+inline constexpr const char* kLtcSchlick = term_spec(Term::Schlick).ltc.channel;
+inline constexpr const char* kLtcF82 = term_spec(Term::F82).ltc.channel;
 // The lobe's Fresnel-free integral: dfg1 + dfg2 under IBL, n_d (with the matrix) under LTC.
 inline constexpr const char* kLobeIbl[] = {kDfgScale, kDfgBias};
 inline constexpr const char* kLobeArea[] = {kLtcMatrix, kLtcNorm};
@@ -88,6 +89,36 @@ inline constexpr PreIntegration kEvaluatedAtNdotV{kPunctualAtVdotH,
 
 // A pre-integrable model's Fresnel term per channel is TableTerms (table_terms.h): weights on the
 // tables' terms, F(μ) = Σ_t w_t·term_t(μ), so that the lobe integrates to Σ_t w_t·∫term_t ρ cos.
+// Its unit declares the terms it weighs once, each with its weight as a GLSL vec3 expression of
+// the parameters (TermWeight); the channels an engine reads and every table shader follow from the
+// term registry.
+struct TermWeight {
+  Term term;
+  const char* glsl;
+};
+
+// The channels an engine reads to shade a combination of table terms, in the registry's order:
+// under IBL each weighed term's DFG channel and the one it is stored less of, under area lights
+// the LTC matrix and each weighed term's moment; the term 1 (the lobe's Fresnel-free integral)
+// always.
+struct TableChannels {
+  std::array<const char*, kTermCount + 1> names{};
+  std::size_t size = 0;
+  constexpr std::span<const char* const> span() const { return {names.data(), size}; }
+};
+constexpr TableChannels table_channels(std::span<const TermWeight> weights, bool ibl) {
+  TermValues used;  // 1 where weighed or needed
+  used[Term::One] = 1;
+  for (const auto& w : weights) used[w.term] = 1;
+  if (ibl)
+    for (const auto& t : kTermRegistry)
+      if (used[t.term] != 0) used[t.dfg.less] = 1;
+  TableChannels out;
+  if (!ibl) out.names[out.size++] = lut_channel::kLtcMatrix;
+  for (const auto& t : kTermRegistry)
+    if (used[t.term] != 0) out.names[out.size++] = ibl ? t.dfg.channel : t.ltc.channel;
+  return out;
+}
 
 // A model's shader code, written in GLSL; the emitter (analysis/shader) translates it to HLSL
 // by renaming types and intrinsics (vecN → floatN, mix → lerp), so it keeps to the subset both
@@ -96,27 +127,14 @@ struct ShaderHelper {
   const char* name;    // the function it defines, emitted once per program
   const char* source;  // the complete GLSL function
 };
-// A pre-integrated model's weight on one table term, as a GLSL vec3 expression of its parameters.
-struct TermWeight {
-  Term term;
-  const char* glsl;
-};
 struct ShaderCode {
-  // Functions the bodies call (fresnel/exact_shader.h, or the unit's own).
+  // Functions the body calls (fresnel/exact_shader.h, or the unit's own).
   std::span<const ShaderHelper* const> helpers;
   // Body of vec3 fresnel_<name>(float cos_theta, <each per-channel parameter as vec3>,
-  // <each shared parameter as float>).
+  // <each shared parameter as float>). Empty for a pre-integrable model whose punctual function
+  // the emitter writes from its table terms (Σ_t w_t·term_t at v·h). The IBL and area functions
+  // of a pre-integrable model are always written from its table terms.
   const char* body = "";
-  // Pre-integrated models only: bodies that combine the tables' channels, given as floats named
-  // like the channels (dfg1, dfg2, dfg_f82; n_d, f_d, l_d), into the lobe's Fresnel-weighted
-  // integral, with the same parameters in scope.
-  const char* dfg_body = nullptr;
-  const char* ltc_body = nullptr;
-  // Pre-integrated models may instead give their weights on the table terms: the emitter then
-  // writes the three bodies from the terms' registry entries (table_terms.h), F = Σ_t w_t·term_t
-  // at v·h and Σ_t w_t·(the term's channel) from the tables; body, dfg_body and ltc_body are
-  // left empty.
-  std::span<const TermWeight> term_weights = {};
 };
 
 // A model's handle: its position in the registry. Compare, copy, and look up its spec.
@@ -140,6 +158,8 @@ struct ModelSpec {
   std::vector<ParamSpec> shared_params;
   PreIntegration pre_integration;
   ShaderCode shader;
+  // Pre-integrable models: the table terms and their weights in GLSL (empty for the others).
+  std::span<const TermWeight> term_weights;
   bool can_leave_unit_range;  // the curve can leave [0, 1] for some parameters (reported, not
                               // clamped)
   bool has_output_clamp;      // the kernel clamps its output; evaluate(..., unclamped) skips that

@@ -59,6 +59,29 @@ constexpr double (*average_of())(const double*, int) {
     return nullptr;
 }
 
+// The table terms' GLSL weights of a pre-integrable unit (none for the others), and the channels
+// they read under IBL and area lights (table_channels), kept for the program's lifetime.
+template <class Unit>
+constexpr std::span<const TermWeight> term_weights_of() {
+  if constexpr (Unit::kFeatures.table_terms)
+    return Unit::kTableTerms;
+  else
+    return {};
+}
+template <class Unit>
+inline constexpr TableChannels kIblChannels = table_channels(term_weights_of<Unit>(), true);
+template <class Unit>
+inline constexpr TableChannels kAreaChannels = table_channels(term_weights_of<Unit>(), false);
+template <class Unit>
+constexpr PreIntegration pre_integration_of() {
+  if constexpr (Unit::kFeatures.table_terms)
+    return {kPunctualAtVdotH,
+            {kIblChannels<Unit>.span(), true, ""},
+            {kAreaChannels<Unit>.span(), true, ""}};
+  else
+    return kEvaluatedAtNdotV;
+}
+
 template <class Unit>
 color::Rgb evaluate_flat(double cos_theta, const double* params, bool unclamped) {
   if (unclamped) return evaluate_unit<Unclamped<Unit>>(cos_theta, params);
@@ -72,8 +95,9 @@ ModelSpec make_spec() {
           Unit::kLabel,
           {Unit::kChannelParams.begin(), Unit::kChannelParams.end()},
           {Unit::kSharedParams.begin(), Unit::kSharedParams.end()},
-          Unit::kPreIntegration,
+          pre_integration_of<Unit>(),
           Unit::kShader,
+          term_weights_of<Unit>(),
           Unit::kCanLeaveUnitRange,
           kHasOutputClamp<Unit>,
           Unit::kFeatures.identifiable,

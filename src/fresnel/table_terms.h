@@ -18,36 +18,44 @@ inline constexpr std::size_t kTermCount = 6;
 // A term's value at μ, given m = 1 − μ and m⁵ (the integrators compute both once per sample).
 using TermKernel = double (*)(double mu, double m, double m5);
 
+// How a shader evaluates the term: the GLSL function float NAME(float mu) (nullptr: the term 1),
+// with its body, or else the term's polynomial in x = 2μ − 1 (kBasisPolyDegree + 1 coefficients,
+// evaluated by Horner's rule).
+struct TermGlsl {
+  const char* name = nullptr;
+  const char* body = nullptr;
+  const double* polynomial = nullptr;
+};
+// The split-sum DFG channel holding the term, its texture ("dfg", "dfg_2", ...: `lut dfg --out
+// F.exr` writes F.exr, F_2.exr, ...), its component there, and the term it is stored less of
+// (itself: none). The split sum stores 1 as the scale ∫(1 − (1 − μ)⁵) ρ cos beside the bias
+// ∫(1 − μ)⁵ ρ cos (Karis 2013), so its integral is the sum of the two channels. `integrand`: as
+// the DFG files describe it ("integral <integrand>rho cos"), with Fc = (1 - mu)^5 and mu = v.h.
+struct TermDfg {
+  const char* channel;
+  const char* texture;
+  const char* component;
+  Term less;
+  const char* integrand;
+};
+// The LTC moment holding ∫term ρ cos (Hill's n_D, f_D and the F82 analogue), its texture beside
+// the LTC matrix ("ltc_2", "ltc_3", ...), its component there, its symbol and integrand in the LTC
+// files, and a note for the ltc_2 file's description.
+struct TermLtc {
+  const char* channel;
+  const char* texture;
+  const char* component;
+  const char* symbol;
+  const char* integrand;
+  const char* note = "";
+};
 struct TermSpec {
   Term term;
   const char* formula;  // for people
   TermKernel kernel;
-  // The GLSL function float NAME(float mu) a shader evaluates the term with (nullptr: the term 1),
-  // and its body, or else the term's polynomial in x = 2μ − 1 (kBasisPolyDegree + 1 coefficients,
-  // evaluated by Horner's rule).
-  const char* glsl_name;
-  const char* glsl_body;
-  const double* polynomial;
-  // The split-sum DFG channel holding the term, its texture ("dfg", "dfg_2", ...: `lut dfg
-  // --out F.exr` writes F.exr, F_2.exr, ...), its component there, and the term it is stored less
-  // of (itself: none). The split sum stores 1 as the scale ∫(1 − (1 − μ)⁵) ρ cos beside the bias
-  // ∫(1 − μ)⁵ ρ cos (Karis 2013), so its integral is the sum of the two channels.
-  const char* dfg_channel;
-  const char* dfg_texture;
-  const char* dfg_component;
-  Term dfg_less;
-  // The integrand as the DFG files describe it ("integral <dfg_integrand>rho cos"), with
-  // Fc = (1 - mu)^5 and mu = v.h.
-  const char* dfg_integrand;
-  // The LTC moment holding ∫term ρ cos (Hill's n_D, f_D and the F82 analogue), its texture beside
-  // the LTC matrix ("ltc_2", "ltc_3", ...), its component there, its symbol and integrand in the
-  // LTC files, and a note for the ltc_2 file's description.
-  const char* ltc_channel;
-  const char* ltc_texture;
-  const char* ltc_component;
-  const char* ltc_symbol;
-  const char* ltc_integrand;
-  const char* ltc_note;
+  TermGlsl glsl;
+  TermDfg dfg;
+  TermLtc ltc;
 };
 
 namespace term_kernels {
@@ -78,19 +86,91 @@ inline constexpr const char* kF82Glsl = R"(  float m = 1.0 - mu;
 )";
 
 inline constexpr std::array<TermSpec, kTermCount> kTermRegistry{{
-    {Term::One, "1", term_kernels::one, nullptr, nullptr, nullptr, "dfg1", "dfg", "r",
-     Term::Schlick, "(1 - Fc) ", "n_d", "ltc_2", "r", "n_D", "", ""},
-    {Term::Schlick, "(1 − μ)⁵", term_kernels::schlick, "fl_term_schlick", kSchlickGlsl, nullptr,
-     "dfg2", "dfg", "g", Term::Schlick, "Fc ", "f_d", "ltc_2", "g", "f_D", "(1 - <v,h>)^5 ", ""},
-    {Term::F82, "μ(1 − μ)⁶", term_kernels::f82, "fl_term_f82", kF82Glsl, nullptr, "dfg_f82", "dfg",
-     "b", Term::F82, "mu (1 - mu)^6 ", "l_d", "ltc_2", "b", "l_D", "<v,h> (1 - <v,h>)^6 ",
-     " (the F82 moment)"},
-    {Term::B2, "b2(μ)", term_kernels::basis<2>, "fl_term_b2", nullptr, kBasisPolyCentred[0],
-     "dfg_b2", "dfg_2", "r", Term::B2, "b2(mu) ", "b2_d", "ltc_3", "r", "b2_D", "b2(<v,h>) ", ""},
-    {Term::B3, "b3(μ)", term_kernels::basis<3>, "fl_term_b3", nullptr, kBasisPolyCentred[1],
-     "dfg_b3", "dfg_2", "g", Term::B3, "b3(mu) ", "b3_d", "ltc_3", "g", "b3_D", "b3(<v,h>) ", ""},
-    {Term::B4, "b4(μ)", term_kernels::basis<4>, "fl_term_b4", nullptr, kBasisPolyCentred[2],
-     "dfg_b4", "dfg_2", "b", Term::B4, "b4(mu) ", "b4_d", "ltc_3", "b", "b4_D", "b4(<v,h>) ", ""},
+    {.term = Term::One,
+     .formula = "1",
+     .kernel = term_kernels::one,
+     .glsl = {},
+     .dfg = {.channel = "dfg1",
+             .texture = "dfg",
+             .component = "r",
+             .less = Term::Schlick,
+             .integrand = "(1 - Fc) "},
+     .ltc = {.channel = "n_d",
+             .texture = "ltc_2",
+             .component = "r",
+             .symbol = "n_D",
+             .integrand = ""}},
+    {.term = Term::Schlick,
+     .formula = "(1 − μ)⁵",
+     .kernel = term_kernels::schlick,
+     .glsl = {.name = "fl_term_schlick", .body = kSchlickGlsl},
+     .dfg = {.channel = "dfg2",
+             .texture = "dfg",
+             .component = "g",
+             .less = Term::Schlick,
+             .integrand = "Fc "},
+     .ltc = {.channel = "f_d",
+             .texture = "ltc_2",
+             .component = "g",
+             .symbol = "f_D",
+             .integrand = "(1 - <v,h>)^5 "}},
+    {.term = Term::F82,
+     .formula = "μ(1 − μ)⁶",
+     .kernel = term_kernels::f82,
+     .glsl = {.name = "fl_term_f82", .body = kF82Glsl},
+     .dfg = {.channel = "dfg_f82",
+             .texture = "dfg",
+             .component = "b",
+             .less = Term::F82,
+             .integrand = "mu (1 - mu)^6 "},
+     .ltc = {.channel = "l_d",
+             .texture = "ltc_2",
+             .component = "b",
+             .symbol = "l_D",
+             .integrand = "<v,h> (1 - <v,h>)^6 ",
+             .note = " (the F82 moment)"}},
+    {.term = Term::B2,
+     .formula = "b2(μ)",
+     .kernel = term_kernels::basis<2>,
+     .glsl = {.name = "fl_term_b2", .polynomial = kBasisPolyCentred[0]},
+     .dfg = {.channel = "dfg_b2",
+             .texture = "dfg_2",
+             .component = "r",
+             .less = Term::B2,
+             .integrand = "b2(mu) "},
+     .ltc = {.channel = "b2_d",
+             .texture = "ltc_3",
+             .component = "r",
+             .symbol = "b2_D",
+             .integrand = "b2(<v,h>) "}},
+    {.term = Term::B3,
+     .formula = "b3(μ)",
+     .kernel = term_kernels::basis<3>,
+     .glsl = {.name = "fl_term_b3", .polynomial = kBasisPolyCentred[1]},
+     .dfg = {.channel = "dfg_b3",
+             .texture = "dfg_2",
+             .component = "g",
+             .less = Term::B3,
+             .integrand = "b3(mu) "},
+     .ltc = {.channel = "b3_d",
+             .texture = "ltc_3",
+             .component = "g",
+             .symbol = "b3_D",
+             .integrand = "b3(<v,h>) "}},
+    {.term = Term::B4,
+     .formula = "b4(μ)",
+     .kernel = term_kernels::basis<4>,
+     .glsl = {.name = "fl_term_b4", .polynomial = kBasisPolyCentred[2]},
+     .dfg = {.channel = "dfg_b4",
+             .texture = "dfg_2",
+             .component = "b",
+             .less = Term::B4,
+             .integrand = "b4(mu) "},
+     .ltc = {.channel = "b4_d",
+             .texture = "ltc_3",
+             .component = "b",
+             .symbol = "b4_D",
+             .integrand = "b4(<v,h>) "}},
 }};
 
 constexpr std::size_t term_index(Term t) {
@@ -106,7 +186,7 @@ inline double term_kernel(Term t, double mu, double m, double m5) {
 }
 // What the term's DFG channel integrates: the term, less its dfg_less term.
 inline double dfg_kernel(Term t, double mu, double m, double m5) {
-  const Term less = term_spec(t).dfg_less;
+  const Term less = term_spec(t).dfg.less;
   if (less == t) return term_kernel(t, mu, m, m5);
   return term_kernel(t, mu, m, m5) - term_kernel(less, mu, m, m5);
 }
@@ -114,8 +194,8 @@ inline double dfg_kernel(Term t, double mu, double m, double m5) {
 // Per-term values: a model's weights, a table cell's channels or integrals.
 struct TermValues {
   std::array<double, kTermCount> v{};
-  double& operator[](Term t) { return v[term_index(t)]; }
-  double operator[](Term t) const { return v[term_index(t)]; }
+  constexpr double& operator[](Term t) { return v[term_index(t)]; }
+  constexpr double operator[](Term t) const { return v[term_index(t)]; }
 };
 
 // A channel's Fresnel term as weights on the tables' terms (0 for a term it does not use).
@@ -126,7 +206,7 @@ using TableTerms = TermValues;
 inline TermValues dfg_term_integrals(const TermValues& dfg) {
   TermValues out;
   for (const auto& t : kTermRegistry)
-    out[t.term] = t.dfg_less == t.term ? dfg[t.term] : dfg[t.term] + dfg[t.dfg_less];
+    out[t.term] = t.dfg.less == t.term ? dfg[t.term] : dfg[t.term] + dfg[t.dfg.less];
   return out;
 }
 

@@ -4,12 +4,14 @@
 //   kName, kLabel                      const char*: command-line name, label for people
 //   kChannelParams, kSharedParams      std::array<ParamSpec, N> (model_spec.h's parameter layout)
 //   kCanLeaveUnitRange                 bool
-//   kPreIntegration                    PreIntegration: how an engine shades it per lighting
 //   kShader                            ShaderCode
 //   kFeatures                          UnitFeatures: the optional members it has
 //   channel<T>(cos_theta, p, shared)   the kernel, for double and float (and autodiff scalars)
 //   derive(DeriveInput), extra_starts(DeriveInput), example()
-// and, exactly when kFeatures declares them, the optional members below. A missing or misspelled
+// and, exactly when kFeatures declares them, the optional members below. How an engine shades the
+// model per lighting (PreIntegration) follows: a unit with table terms is pre-integrated under IBL
+// and area lights, reading the channels of its terms (table_channels); one without is evaluated at
+// n·v (kEvaluatedAtNdotV). A missing or misspelled
 // member, or a feature declared without its member (or a member without its feature), is a
 // compile error naming it: the registry (registry.h) static_asserts every entry.
 #include <concepts>
@@ -28,8 +30,10 @@ struct UnitFeatures {
   bool output_clamp = false;
   // average(p, shared) -> double: the closed form of channel p's hemispherical average 2∫F μ dμ.
   bool closed_form_average = false;
-  // table_terms(p, shared) -> TableTerms: channel p as coefficients on the tables' terms; required
-  // when kPreIntegration pre-integrates the Fresnel term under a lighting.
+  // kTableTerms: the table terms the model weighs, once, each with its weight as a GLSL vec3
+  // expression of the parameters (TermWeight; the emitter writes the IBL and area functions from
+  // them), and table_terms(p, shared) -> TableTerms: the same weights in C++ for channel p (the
+  // Vulkan tests run the generated GLSL against them).
   bool table_terms = false;
   // prepare<T>(p, shared) and channel_at<T>(cos_theta, prepared): channel() split at the angle.
   bool prepared_channel = false;
@@ -55,7 +59,6 @@ concept Parameters = requires {
 
 template <class U>
 concept Declarations = requires {
-  { U::kPreIntegration } -> std::convertible_to<PreIntegration>;
   { U::kShader } -> std::convertible_to<ShaderCode>;
   { U::kFeatures } -> std::convertible_to<UnitFeatures>;
 };
@@ -84,6 +87,7 @@ concept HasAverage = requires(const double* p) {
 template <class U>
 concept HasTableTerms = requires(const double* p) {
   { U::table_terms(p, p) } -> std::same_as<TableTerms>;
+  {std::span<const TermWeight>(U::kTableTerms)};
 };
 template <class U>
 concept HasPrepared = requires(double c, const double* p) {
@@ -91,18 +95,10 @@ concept HasPrepared = requires(double c, const double* p) {
 };
 
 template <class U>
-constexpr bool pre_integrates() {
-  const PreIntegration& p = U::kPreIntegration;
-  return p.punctual.fresnel_pre_integrated || p.ibl.fresnel_pre_integrated ||
-         p.area.fresnel_pre_integrated;
-}
-
-template <class U>
-concept FeaturesMatchMembers = U::kFeatures.output_clamp ==
-                               HasUnclamped<U>&& U::kFeatures.closed_form_average ==
-                               HasAverage<U>&& U::kFeatures.table_terms ==
-                               HasTableTerms<U>&& U::kFeatures.prepared_channel ==
-                               HasPrepared<U>&& U::kFeatures.table_terms == pre_integrates<U>();
+concept FeaturesMatchMembers =
+    U::kFeatures.output_clamp == HasUnclamped<U>&& U::kFeatures.closed_form_average ==
+    HasAverage<U>&& U::kFeatures.table_terms == HasTableTerms<U>&& U::kFeatures.prepared_channel ==
+    HasPrepared<U>;
 
 }  // namespace unit_check
 
@@ -119,7 +115,7 @@ constexpr bool check_unit() {
   static_assert(Parameters<U>,
                 "a model unit needs kChannelParams and kSharedParams (std::array<ParamSpec, N>) "
                 "and kCanLeaveUnitRange");
-  static_assert(Declarations<U>, "a model unit needs kPreIntegration, kShader and kFeatures");
+  static_assert(Declarations<U>, "a model unit needs kShader and kFeatures");
   static_assert(Kernel<U>,
                 "a model unit needs template <class T> T channel(T, const T*, const T*)");
   static_assert(Derivation<U>,
@@ -133,11 +129,8 @@ constexpr bool check_unit() {
                   "kFeatures.closed_form_average must be declared exactly when the unit has "
                   "average(p, shared)");
     static_assert(U::kFeatures.table_terms == HasTableTerms<U>,
-                  "kFeatures.table_terms must be declared exactly when the unit has "
-                  "table_terms(p, shared)");
-    static_assert(U::kFeatures.table_terms == pre_integrates<U>(),
-                  "a unit whose kPreIntegration pre-integrates the Fresnel term must declare "
-                  "kFeatures.table_terms (and the other way round)");
+                  "kFeatures.table_terms must be declared exactly when the unit has kTableTerms "
+                  "(std::span<const TermWeight>) and table_terms(p, shared)");
     static_assert(U::kFeatures.prepared_channel == HasPrepared<U>,
                   "kFeatures.prepared_channel must be declared exactly when the unit has "
                   "prepare(p, shared) and channel_at(cos_theta, prepared)");

@@ -95,7 +95,7 @@ io::Output one_file(const std::string& what, const std::string& path, std::strin
 std::vector<const fresnel::TermSpec*> texture_terms(bool dfg, const std::string& texture) {
   std::vector<const fresnel::TermSpec*> out;
   for (const auto& t : fresnel::kTermRegistry)
-    if (texture == (dfg ? t.dfg_texture : t.ltc_texture)) out.push_back(&t);
+    if (texture == (dfg ? t.dfg.texture : t.ltc.texture)) out.push_back(&t);
   return out;
 }
 
@@ -108,7 +108,7 @@ std::string upper(std::string s) {
 std::vector<std::string> exr_channels(bool dfg, const std::string& texture) {
   std::vector<std::string> out;
   for (const auto* t : texture_terms(dfg, texture))
-    out.push_back(upper(dfg ? t->dfg_component : t->ltc_component));
+    out.push_back(upper(dfg ? t->dfg.component : t->ltc.component));
   return out;
 }
 
@@ -167,7 +167,7 @@ std::string dfg_channel_text(const std::string& texture) {
   std::string s;
   for (const auto* t : texture_terms(true, texture))
     s += fmt::format("{}{} = {} = integral {}rho cos", s.empty() ? "" : ", ",
-                     upper(t->dfg_component), t->dfg_channel, t->dfg_integrand);
+                     upper(t->dfg.component), t->dfg.channel, t->dfg.integrand);
   return s +
          ", with Fc = (1 - mu)^5, mu = v.h, rho cos the GGX lobe with height-correlated Smith "
          "masking";
@@ -240,7 +240,7 @@ std::string split_sum_csv(const analysis::DfgTable& t) {
   Table tab;
   tab.name = "dfg";
   tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha")};
-  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.dfg_channel));
+  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.dfg.channel));
   for (int j = 0; j < g.size; ++j)
     for (int i = 0; i < g.size; ++i) {
       const auto& c = t.cells[g.index(i, j)];

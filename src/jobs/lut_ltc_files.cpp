@@ -26,7 +26,7 @@ std::string moments_csv(const analysis::MomentsTable& t) {
   Table tab;
   tab.name = "ltc-moments";
   tab.columns = {col("nov"), col("perceptual_roughness"), col("alpha")};
-  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.ltc_channel));
+  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.ltc.channel));
   for (int j = 0; j < g.size; ++j)
     for (int i = 0; i < g.size; ++i) {
       const auto& c = t.cells[g.index(i, j)];
@@ -41,7 +41,7 @@ std::string moments_channel_text(const std::string& texture) {
   std::string s;
   for (const auto* t : texture_terms(false, texture))
     s += fmt::format("{}{} = {} = integral {}rho cos", s.empty() ? "" : ", ",
-                     upper(t->ltc_component), t->ltc_symbol, t->ltc_integrand);
+                     upper(t->ltc.component), t->ltc.symbol, t->ltc.integrand);
   return s;
 }
 
@@ -76,7 +76,7 @@ std::string ltc_csv(const analysis::LtcTable& t) {
                  col("inv_m22"), col("m11"),
                  col("m22"),     col("m13"),
                  col("m31")};
-  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.ltc_channel));
+  for (const auto& term : fresnel::kTermRegistry) tab.columns.push_back(col(term.ltc.channel));
   tab.columns.insert(tab.columns.end(), {col("sphere_z"),
                                          col("sphere_len"),
                                          col("sphere_form_factor"),
@@ -104,8 +104,8 @@ std::string ltc_csv(const analysis::LtcTable& t) {
 std::string ltc_2_text() {
   std::string s;
   for (const auto* t : texture_terms(false, "ltc_2"))
-    s += fmt::format("{}{} = {}{}", s.empty() ? "" : ", ", upper(t->ltc_component), t->ltc_symbol,
-                     t->ltc_note);
+    s += fmt::format("{}{} = {}{}", s.empty() ? "" : ", ", upper(t->ltc.component), t->ltc.symbol,
+                     t->ltc.note);
   return s +
          ", A = horizon-clipped sphere form factor (its own axes: x → z = 2x - 1, y → length of "
          "the vector form factor)";

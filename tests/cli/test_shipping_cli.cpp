@@ -6,6 +6,7 @@
 // size of the table `lut` writes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/lut/lut_layout.h"
 #include "csv_reader.h"
 #include "fresnel/table_terms.h"
 #include "test_util.h"
@@ -67,6 +69,16 @@ test::CsvRecord first_row(const std::string& path) {
   return rows.empty() ? test::CsvRecord{} : rows[0];
 }
 
+// A table's texture number k's suffix in the names of its files and symbols: none for the first
+// (the --out path), else the texture's (dfg_2 → _2), as `lut` writes them.
+std::string texture_suffix(const std::string& texture, size_t k) {
+  return k == 0 ? "" : texture.substr(texture.find('_'));
+}
+std::string texture_suffix(const std::string& texture, const std::vector<std::string>& textures) {
+  const size_t k = std::find(textures.begin(), textures.end(), texture) - textures.begin();
+  return texture_suffix(texture, k);
+}
+
 // The component index of "r", "g", "b", "a".
 size_t component(const char* c) {
   return std::string("rgba").find(c[0]);
@@ -87,17 +99,24 @@ TEST(ShippingCli, TableHeadersCompileTogetherAsCAndCxx) {
     const auto r = test::run_command(lut(args));
     ASSERT_EQ(r.status, 0) << args << ": " << r.err;
   }
-  const std::vector<Header> headers{{"fresnel_lab_dfg", "dfg.h"},
-                                    {"fresnel_lab_dfg_2", "dfg_2.h"},
-                                    {"my_dfg", "mine.h"},
-                                    {"my_dfg_2", "mine_2.h"},
-                                    {"fresnel_lab_ltc_moments", "moments.h"},
-                                    {"fresnel_lab_ltc_moments_3", "moments_3.h"},
-                                    {"fresnel_lab_ltc_1", "ltc_1.h"},
-                                    {"fresnel_lab_ltc_2", "ltc_2.h"},
-                                    {"fresnel_lab_ltc_3", "ltc_3.h"},
-                                    {"fresnel_lab_energy", "energy.h"},
-                                    {"fresnel_lab_energy_dielectric", "dielectric.h"}};
+  // The table terms' textures (from the term registry): the DFG ones under two symbols, the LTC
+  // moments alone and beside the matrix; then the energy tables.
+  const auto dfg_textures = analysis::term_texture_names(true),
+             ltc_textures = analysis::term_texture_names(false);
+  std::vector<Header> headers;
+  for (size_t k = 0; k < dfg_textures.size(); ++k) {
+    const std::string s = texture_suffix(dfg_textures[k], k);
+    headers.push_back({"fresnel_lab_dfg" + s, "dfg" + s + ".h"});
+    headers.push_back({"my_dfg" + s, "mine" + s + ".h"});
+  }
+  for (size_t k = 0; k < ltc_textures.size(); ++k) {
+    const std::string s = texture_suffix(ltc_textures[k], k);
+    headers.push_back({"fresnel_lab_ltc_moments" + s, "moments" + s + ".h"});
+  }
+  headers.push_back({"fresnel_lab_ltc_1", "ltc_1.h"});
+  for (const auto& name : ltc_textures) headers.push_back({"fresnel_lab_" + name, name + ".h"});
+  headers.push_back({"fresnel_lab_energy", "energy.h"});
+  headers.push_back({"fresnel_lab_energy_dielectric", "dielectric.h"});
   const Header half{"fresnel_lab_dfg_filament", "filament.h"};
   const std::string src = dir.file("tables.c", program(headers, half));
   // Two headers and nothing using them: no unused-variable warning either.
@@ -129,16 +148,19 @@ TEST(ShippingCli, TableHeadersCompileTogetherAsCAndCxx) {
     if (v.size() <= k) v.resize(k + 1, NAN);
     v[k] = std::stod(value);
   };
+  size_t ltc_2_terms = 0;  // the sphere form factor follows them in ltc_2
   for (const auto& t : fresnel::kTermRegistry) {
-    const std::string dfg_suffix = std::string(t.dfg_texture) == "dfg" ? "" : "_2";
-    put("fresnel_lab_dfg" + dfg_suffix, component(t.dfg_component), dfg.at(t.dfg_channel));
-    put("my_dfg" + dfg_suffix, component(t.dfg_component), dfg.at(t.dfg_channel));
-    const std::string ltc_texture = t.ltc_texture;
-    put(ltc_texture == "ltc_2" ? "fresnel_lab_ltc_moments" : "fresnel_lab_ltc_moments_3",
-        component(t.ltc_component), moments.at(t.ltc_channel));
-    put("fresnel_lab_" + ltc_texture, component(t.ltc_component), ltc.at(t.ltc_channel));
+    const std::string dfg_suffix = texture_suffix(t.dfg.texture, dfg_textures),
+                      ltc_suffix = texture_suffix(t.ltc.texture, ltc_textures),
+                      ltc_texture = t.ltc.texture;
+    put("fresnel_lab_dfg" + dfg_suffix, component(t.dfg.component), dfg.at(t.dfg.channel));
+    put("my_dfg" + dfg_suffix, component(t.dfg.component), dfg.at(t.dfg.channel));
+    put("fresnel_lab_ltc_moments" + ltc_suffix, component(t.ltc.component),
+        moments.at(t.ltc.channel));
+    put("fresnel_lab_" + ltc_texture, component(t.ltc.component), ltc.at(t.ltc.channel));
+    ltc_2_terms += ltc_texture == "ltc_2";
   }
-  put("fresnel_lab_ltc_2", 3, ltc.at("sphere_form_factor"));
+  put("fresnel_lab_ltc_2", ltc_2_terms, ltc.at("sphere_form_factor"));
   const char* matrix[] = {"inv_m00", "inv_m20", "inv_m02", "inv_m22"};
   for (size_t k = 0; k < 4; ++k) put("fresnel_lab_ltc_1", k, ltc.at(matrix[k]));
   put("fresnel_lab_energy", 0, energy.at("e"));

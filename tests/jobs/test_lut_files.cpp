@@ -185,7 +185,7 @@ TEST(LutFiles, SplitSumCsvCarriesItsFormulaAndReproducesTheIntegral) {
   const auto table = test::csv_rows(text, {.skip_comments = true});
   ASSERT_FALSE(table.empty());
   test::CsvRow header{"nov", "perceptual_roughness", "alpha"};
-  for (const auto& t : fresnel::kTermRegistry) header.push_back(t.dfg_channel);
+  for (const auto& t : fresnel::kTermRegistry) header.push_back(t.dfg.channel);
   EXPECT_EQ(table[0], header);
   for (size_t i = 1; i < table.size(); ++i) {
     const auto c = test::csv_numbers(table[i]);

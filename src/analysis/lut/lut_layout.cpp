@@ -13,7 +13,7 @@ namespace {
 std::vector<const char*> term_textures(bool dfg) {
   std::vector<const char*> out;
   for (const auto& t : fresnel::kTermRegistry) {
-    const char* name = dfg ? t.dfg_texture : t.ltc_texture;
+    const char* name = dfg ? t.dfg.texture : t.ltc.texture;
     bool seen = false;
     for (const char* n : out) seen = seen || std::string(n) == name;
     if (!seen) out.push_back(name);
@@ -25,9 +25,9 @@ std::vector<const char*> term_textures(bool dfg) {
 std::vector<LutChannelLocation> term_channels(bool dfg, const std::string& texture) {
   std::vector<LutChannelLocation> out;
   for (const auto& t : fresnel::kTermRegistry)
-    if (texture == (dfg ? t.dfg_texture : t.ltc_texture))
-      out.push_back(dfg ? LutChannelLocation{t.dfg_channel, t.dfg_component}
-                        : LutChannelLocation{t.ltc_channel, t.ltc_component});
+    if (texture == (dfg ? t.dfg.texture : t.ltc.texture))
+      out.push_back(dfg ? LutChannelLocation{t.dfg.channel, t.dfg.component}
+                        : LutChannelLocation{t.ltc.channel, t.ltc.component});
   return out;
 }
 

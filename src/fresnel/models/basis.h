@@ -61,14 +61,6 @@ inline constexpr ParamSpec kBasisParams[kBasisTerms] = {
 };
 inline constexpr TermWeight kBasisWeights[kBasisTerms] = {
     {Term::One, "c0"}, {Term::Schlick, "c1"}, {Term::B2, "c2"}, {Term::B3, "c3"}, {Term::B4, "c4"}};
-// The channels of the basis terms: dfg1 and dfg2 hold 1 and (1 − μ)⁵, then one per data term.
-inline constexpr const char* kBasisIbl[] = {
-    lut_channel::kDfgScale, lut_channel::kDfgBias, term_spec(Term::B2).dfg_channel,
-    term_spec(Term::B3).dfg_channel, term_spec(Term::B4).dfg_channel};
-inline constexpr const char* kBasisArea[] = {
-    lut_channel::kLtcMatrix,         lut_channel::kLtcNorm,
-    lut_channel::kLtcSchlick,        term_spec(Term::B2).ltc_channel,
-    term_spec(Term::B3).ltc_channel, term_spec(Term::B4).ltc_channel};
 inline constexpr const char* kBasisNames[] = {"", "", "basis2", "basis3", "basis4", "basis5"};
 inline constexpr const char* kBasisLabels[] = {"",
                                                "",
@@ -99,15 +91,10 @@ struct Basis {
   static constexpr UnitFeatures kFeatures{
       .closed_form_average = true, .table_terms = true, .identifiable = true};
 
-  // Every term is a table term: F = c0·(dfg1 + dfg2) + c1·dfg2 + Σ c_k·dfg_bk under IBL, and
-  // c0·n_d + c1·f_d + Σ c_k·bk_d under area lights; the emitter writes the shader bodies from
-  // the weights.
-  static constexpr PreIntegration kPreIntegration{
-      kPunctualAtVdotH,
-      {std::span<const char* const>(kBasisIbl).first(K), true, ""},
-      {std::span<const char* const>(kBasisArea).first(K + 1), true, ""}};
-  static constexpr ShaderCode kShader{
-      {}, "", nullptr, nullptr, std::span<const TermWeight>(kBasisWeights).first(K)};
+  // Every term is a table term, c_k its weight: the emitter writes the shader functions.
+  static constexpr std::span<const TermWeight> kTableTerms =
+      std::span<const TermWeight>(kBasisWeights).first(K);
+  static constexpr ShaderCode kShader{};
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {

@@ -51,9 +51,8 @@ struct CookTorrance {
   }};
   static constexpr bool kCanLeaveUnitRange = false;
   static constexpr UnitFeatures kFeatures{.prepared_channel = true};
-  // The shape comes from the exact equations of a per-material index: no shared table holds it.
-  static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
   // The representative index in all three lanes of the vector helper.
+  // No table terms: the shape comes from the exact equations of a per-material index.
   static constexpr ShaderCode kShader{kConductorHelpers,
                                       R"(  vec3 eta = vec3(eta_rep, eta_rep, eta_rep);
   vec3 kappa = vec3(kappa_rep, kappa_rep, kappa_rep);

@@ -45,14 +45,9 @@ struct F82 {
   static constexpr UnitFeatures kFeatures{
       .output_clamp = true, .closed_form_average = true, .table_terms = true, .identifiable = true};
 
-  // Schlick's channels plus the F82 term's: F = F0·dfg1 + dfg2 − a·dfg_f82 under IBL,
-  // and n_d, f_d, l_d under LTC.
-  static constexpr const char* kIbl[] = {lut_channel::kDfgScale, lut_channel::kDfgBias,
-                                         lut_channel::kDfgF82};
-  static constexpr const char* kArea[] = {lut_channel::kLtcMatrix, lut_channel::kLtcNorm,
-                                          lut_channel::kLtcSchlick, lut_channel::kLtcF82};
-  static constexpr PreIntegration kPreIntegration{
-      kPunctualAtVdotH, {kIbl, true, ""}, {kArea, true, ""}};
+  // Schlick's terms plus the F82 term μ(1 − μ)⁶ weighed by −a (f82_coefficient).
+  static constexpr TermWeight kTableTerms[] = {
+      {Term::One, "f0"}, {Term::Schlick, "1.0 - f0"}, {Term::F82, "-fl_f82_coefficient(f0, f82)"}};
   static constexpr ShaderHelper kCoefficientShader{"fl_f82_coefficient",
                                                    R"(vec3 fl_f82_coefficient(vec3 f0, vec3 f82) {
   return (823543.0 / 46656.0) * (f0 - f82) + (49.0 / 6.0) * (1.0 - f0);
@@ -60,14 +55,11 @@ struct F82 {
 )"};
   static constexpr const ShaderHelper* kShaderHelpers[] = {&kCoefficientShader};
   // Pre-integrated, the output clamp cannot be applied: the tables integrate the formula itself.
-  static constexpr ShaderCode kShader{
-      kShaderHelpers, R"(  float m = 1.0 - cos_theta;
+  static constexpr ShaderCode kShader{kShaderHelpers, R"(  float m = 1.0 - cos_theta;
   float m2 = m * m;
   vec3 a = fl_f82_coefficient(f0, f82);
   return clamp(f0 + (1.0 - f0) * (m2 * m2 * m) - a * (cos_theta * m2 * m2 * m2), 0.0, 1.0);
-)",
-      "  return f0 * dfg1 + dfg2 - fl_f82_coefficient(f0, f82) * dfg_f82;\n",
-      "  return f0 * n_d + (1.0 - f0) * f_d - fl_f82_coefficient(f0, f82) * l_d;\n"};
+)"};
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {

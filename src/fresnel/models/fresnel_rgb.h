@@ -25,7 +25,7 @@ struct FresnelRgb {
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
   static constexpr UnitFeatures kFeatures{.identifiable = true};
-  static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  // No table terms: exact conductor equations of a per-channel index.
   static constexpr ShaderCode kShader{kConductorHelpers,
                                       "  return fl_fresnel_conductor(cos_theta, eta, kappa);\n"};
 

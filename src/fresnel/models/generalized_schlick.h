@@ -36,8 +36,7 @@ struct GeneralizedSchlick {
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = true;
   static constexpr UnitFeatures kFeatures{.closed_form_average = true};
-  // A per-material exponent: no shared table holds it.
-  static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  // No table terms: a per-material exponent.
   static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
   if (m <= 0.0) return f0;
   return f0 + (f90 - f0) * pow(vec3(m, m, m), p);

@@ -100,8 +100,7 @@ struct Gulbrandsen {
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = false;
   static constexpr UnitFeatures kFeatures{.prepared_channel = true, .identifiable = true};
-  // Exact conductor equations of a per-channel index: no shared table holds them.
-  static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  // No table terms: exact conductor equations of a per-channel index.
   static constexpr ShaderCode kShader{kConductorHelpers, R"(  vec3 r = clamp(f0, 1e-9, 0.99999);
   vec3 s = sqrt(r);
   vec3 eta = g * (1.0 - r) / (1.0 + r) + (1.0 - g) * (1.0 + s) / (1.0 - s);

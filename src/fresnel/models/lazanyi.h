@@ -35,8 +35,7 @@ struct Lazanyi {
   static constexpr std::array<ParamSpec, 0> kSharedParams{};
   static constexpr bool kCanLeaveUnitRange = true;
   static constexpr UnitFeatures kFeatures{.closed_form_average = true};
-  // A per-channel exponent α: only α = 6 (the F82 model) has a shared table.
-  static constexpr PreIntegration kPreIntegration = kEvaluatedAtNdotV;
+  // No table terms: a per-channel exponent α (only α = 6, the F82 model, has one).
   static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
   if (m <= 0.0) return f0;
   float m2 = m * m;

@@ -29,19 +29,13 @@ struct Schlick {
   static constexpr UnitFeatures kFeatures{
       .closed_form_average = true, .table_terms = true, .identifiable = true};
 
-  // The split-sum DFG scale and bias and the LTC Schlick moment integrate it exactly.
-  static constexpr const char* kIbl[] = {lut_channel::kDfgScale, lut_channel::kDfgBias};
-  static constexpr const char* kArea[] = {lut_channel::kLtcMatrix, lut_channel::kLtcNorm,
-                                          lut_channel::kLtcSchlick};
-  static constexpr PreIntegration kPreIntegration{
-      kPunctualAtVdotH, {kIbl, true, ""}, {kArea, true, ""}};
-  static constexpr ShaderCode kShader{{},
-                                      R"(  float m = 1.0 - cos_theta;
+  // F0·1 + (1 − F0)·(1 − μ)⁵: the split-sum DFG scale and bias and the LTC Schlick moment
+  // integrate it exactly.
+  static constexpr TermWeight kTableTerms[] = {{Term::One, "f0"}, {Term::Schlick, "1.0 - f0"}};
+  static constexpr ShaderCode kShader{{}, R"(  float m = 1.0 - cos_theta;
   float m2 = m * m;
   return f0 + (1.0 - f0) * (m2 * m2 * m);
-)",
-                                      "  return f0 * dfg1 + dfg2;\n",
-                                      "  return f0 * n_d + (1.0 - f0) * f_d;\n"};
+)"};
 
   template <class T>
   static T channel(T cos_theta, const T* p, const T*) {
