@@ -23,6 +23,7 @@ fit::FitResult fit_rendered(const Context& ctx, const std::vector<color::Rgb>& t
   options.lossless = lossless;
   options.max_solves = 1;  // from the better of the two starts
   options.function_tolerance = function_tolerance;
+  options.max_iterations = kRenderedFitMaxIterations;
   return fit::fit_model_colours(m, target, std::move(starts), options);
 }
 
