@@ -7,7 +7,6 @@
 #include "color/values.h"
 #include "fresnel/derive.h"
 #include "fresnel/model_spec.h"
-#include "fresnel/registry.h"
 
 namespace fl::fresnel {
 

@@ -17,6 +17,7 @@
 #include "analysis/plan/plan.h"
 #include "analysis/speed/speed.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 #include "test_util.h"
 #include "util/errors.h"
 

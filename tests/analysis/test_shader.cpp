@@ -20,6 +20,7 @@
 #include "analysis/shader/shader.h"
 #include "csv_reader.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 #include "test_util.h"
 #include "util/errors.h"
 

@@ -14,6 +14,7 @@
 #include "draw/figures.h"
 #include "draw/png.h"
 #include "draw/speed_plot.h"
+#include "fresnel/registry.h"
 #include "io/exr.h"
 #include "test_util.h"
 #include "util/errors.h"

@@ -11,6 +11,7 @@
 #include "fit/fit.h"
 #include "fresnel/derive.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 
 namespace fl {
 namespace {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fresnel/model_spec.h"
+#include "fresnel/registry.h"
 #include "fresnel/unit.h"
 
 namespace fl::fresnel::models::seeded {

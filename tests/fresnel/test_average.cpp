@@ -9,6 +9,7 @@
 
 #include "fresnel/average.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 #include "quadrature.h"
 
 namespace fl {

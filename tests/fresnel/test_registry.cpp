@@ -21,6 +21,7 @@
 #include "fresnel/derive.h"
 #include "fresnel/exact.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 
 namespace fl {
 namespace {

@@ -10,6 +10,7 @@
 #include "analysis/study/table_notes.h"
 #include "color/lab.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 #include "util/quantile.h"
 
 namespace fl::analysis {

@@ -6,6 +6,7 @@
 
 #include "analysis/lut/rendered_fit.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 #include "util/parallel.h"
 #include "util/quantile.h"
 

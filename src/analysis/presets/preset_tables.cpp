@@ -6,6 +6,7 @@
 #include "analysis/study/table_notes.h"
 #include "fresnel/average.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 
 namespace fl::analysis {
 

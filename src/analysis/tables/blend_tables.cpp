@@ -10,6 +10,7 @@
 #include "fresnel/exact.h"
 #include "fresnel/media.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 #include "util/errors.h"
 
 namespace fl::analysis {

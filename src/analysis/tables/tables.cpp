@@ -9,6 +9,7 @@
 #include "analysis/study/table_notes.h"
 #include "fresnel/average.h"
 #include "fresnel/registered_models.h"
+#include "fresnel/registry.h"
 #include "util/errors.h"
 #include "util/quantile.h"
 
