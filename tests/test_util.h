@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace fl::test {
 
@@ -56,6 +57,13 @@ inline CommandResult run_command(const std::string& cmdline) {
 inline std::string cli() {
   return std::string("'") + FL_CLI + "' --db '" + FL_DEFAULT_DB + "' --materials '" + FL_MATERIALS +
          "'";
+}
+
+// n cosines evenly spaced over [0, 1], both ends included.
+inline std::vector<double> cosines(int n) {
+  std::vector<double> c;
+  for (int i = 0; i < n; ++i) c.push_back(static_cast<double>(i) / (n - 1));
+  return c;
 }
 
 }  // namespace fl::test

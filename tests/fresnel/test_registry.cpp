@@ -22,17 +22,14 @@
 #include "fresnel/exact.h"
 #include "fresnel/registered_models.h"
 #include "fresnel/registry.h"
+#include "test_util.h"
 
 namespace fl {
 namespace {
 
 using fresnel::ModelSpec;
 
-std::vector<double> cosines(int n) {
-  std::vector<double> c;
-  for (int i = 0; i < n; ++i) c.push_back(static_cast<double>(i) / (n - 1));
-  return c;
-}
+using test::cosines;
 
 // The batched kernel runs the same scalar code per element: bit-identical in double. In float the
 // vectorized pow/sqrt of the batch may round differently from the scalar call by a few ulps.

@@ -11,17 +11,14 @@
 #include <string>
 
 #include "fresnel/registered_models.h"
+#include "test_util.h"
 
 namespace fl {
 namespace {
 
 using fresnel::ModelSpec;
 
-std::vector<double> cosines(int n) {
-  std::vector<double> c;
-  for (int i = 0; i < n; ++i) c.push_back(static_cast<double>(i) / (n - 1));
-  return c;
-}
+using test::cosines;
 
 // Parameter sets a generic check runs on: the unit's example and the middle of its fit box.
 std::vector<std::vector<double>> probe_params(const ModelSpec& spec) {
