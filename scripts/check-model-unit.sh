@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Acceptance check of the closed model unit, in two builds of a scratch copy of the tree.
+# Acceptance check of the closed model unit, in one build of a scratch copy of the tree.
 #
-# Clean: renamed copies of a rotating model file and of the hardest one (models/basis.h, a template
+# Copies: renamed copies of a rotating model file and of the hardest one (models/basis.h, a template
 # over its number of terms) plus their entries in the registry build, and `reproduce`, `table
-# speed`, `plan`, `shader`, `lut` and the whole test suite pass and show the new models (their CPU
-# and GPU costs unmeasured). `git status` in the copy lists the files the new models touched: the
-# new units, src/fresnel/registry.h and README.md's list of models, nothing else.
+# speed`, `plan`, `shader`, `lut` and the whole test suite show the new models (their CPU and GPU
+# costs unmeasured) and never fail on them. `git status` in the copy lists the files the new models
+# touched: the new units, src/fresnel/registry.h and README.md's list of models, nothing else.
 #
-# Faults: five faulty units, each a copy with one thing wrong, registered together in one more
-# build (incremental on the clean one); the test suite must fail naming each of them:
+# Faults: five faulty units, each a copy with one thing wrong, registered in the same build; the
+# test suite must fail naming each of them:
 #   kernel    the kernel 3 % low at every angle, in C++ and GLSL alike
 #   glsl      the GLSL kernel 3 % low, the C++ kernel right
 #   tables    the first table term's GLSL weight 3 % low (the generated IBL and area code)
@@ -16,7 +16,8 @@
 #   derive    derive() 10 % low on each channel's first parameter (F0 for most models)
 # each seeded into the rotating model's copy, or into the basis copy where the rotating model has
 # no table terms or no closed-form average. A fault is caught when a failing test's failure
-# message (or its trace) names the faulty model.
+# message (or its trace) names the faulty model. The one suite run passes the check when every
+# failing test names a fault, no failure names a clean copy and no sanitizer reported.
 #
 # Works under /tmp on the tracked files' working-tree content, never in the repository: the copy
 # is a git repository of its own. Builds fresnel-lab, fl_tests and fl_vulkan_tests (Release,
@@ -25,11 +26,10 @@
 #                                         chosen by the commit, rotating over models/*.h but basis)
 # Environment: FL_CHECK_DIR (scratch folder, default /tmp/fresnel-lab-check-model-unit; a fixed
 # path, so that ccache hits on the next run; kept when a step fails), FL_CHECK_KEEP=1 keeps it
-# always, FL_CHECK_JOBS (default 2), FL_CHECK_SANITIZE=1 builds the clean copy with ASan + UBSan
-# and runs its whole suite through the copy's scripts/test-sanitize.sh (every target), then the
-# commands with the sanitized binary: CI's sanitizer pass and this check in one build (the faulty
-# build is then a sanitized one too). Exit status: 0 when every step passes and every fault is
-# caught, 1 otherwise.
+# always, FL_CHECK_JOBS (default 2), FL_CHECK_SANITIZE=1 builds the copy with ASan + UBSan and runs
+# its whole suite through the copy's scripts/test-sanitize.sh (every target), then the commands
+# with the sanitized binary: CI's sanitizer pass and this check in one build. Exit status: 0 when
+# every step passes and every fault is caught, 1 otherwise.
 set -euo pipefail
 src="$(cd "$(dirname "$0")/.." && pwd)"
 scratch="${FL_CHECK_DIR:-/tmp/fresnel-lab-check-model-unit}"
@@ -137,7 +137,7 @@ echo "files touched:"
 git status --porcelain | sed 's/^/  /'
 touched=$(git status --porcelain | wc -l)
 
-failures=0
+failures=0 failed=()
 step() {  # step NAME COMMAND... : runs it, logs to $scratch/NAME.log, prints pass or FAIL
   local name="$1" t0 rc=0
   shift
@@ -162,24 +162,59 @@ shows_copies() {  # shows_copies FILE [SUFFIX]: every copy's name (followed by S
   for m in "${copied[@]}"; do shows "$1" "${m}_copy${2:-}" || return 1; done
 }
 
+expected=$((${#copied[@]} + 2))  # the new units, the registry and the README
+[ "$touched" = "$expected" ] ||
+  { echo "files touched: $touched, expected $expected"; failures=$((failures + 1)); }
+
+# The faults, each a unit deriving from a copy with one member replaced (the templates of
+# tests/fresnel/seeded_faults.h), in models/faults.h, registered in the same build as the copies.
+has() { grep -q "\.$2 = true" "$units/$1.h"; }
+declare -A fault_model
+for f in kernel glsl derive; do fault_model[$f]="$model"; done
+fault_model[tables]=$(has "$model" table_terms && echo "$model" || echo basis)
+fault_model[average]=$(has "$model" closed_form_average && echo "$model" || echo basis)
+faults=(kernel glsl tables average derive)
+fault_names=()
+for f in "${faults[@]}"; do fault_names+=("${fault_model[$f]}_copy_$f"); done
+{
+  cat tests/fresnel/seeded_faults.h
+  for m in "${copied[@]}"; do echo "#include \"fresnel/models/${m}_copy.h\""; done
+  echo "namespace fl::fresnel::models {"
+  for f in "${faults[@]}"; do
+    m="${fault_model[$f]}"
+    echo "struct Seeded_${f} : seeded::$(tr a-z A-Z <<< "${f:0:1}")${f:1}Fault<${entry[$m]#models::}> {"
+    echo "  static constexpr const char* kName = \"${m}_copy_${f}\";"
+    echo "  static constexpr const char* kLabel = \"Seeded ${f} fault, a copy of ${m}\";"
+    echo "};"
+  done
+  echo "}  // namespace fl::fresnel::models"
+} > "$units/faults.h"
+register fresnel/models/faults.h $(for f in "${faults[@]}"; do echo "models::Seeded_$f"; done)
+document "${fault_names[@]}"
+
 build() {
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
     -DCMAKE_C_COMPILER_LAUNCHER=ccache
   CCACHE_BASEDIR="$repo" nice -n 5 cmake --build build -j"$jobs" --target fresnel-lab fl_tests \
     fl_vulkan_tests
 }
+# The whole suite, once (through the copy's scripts/test-sanitize.sh, which builds first, with the
+# sanitizer pass): it passes when CTest ran to its summary; its failures are judged below.
+suite() {
+  if [ "$sanitize" = 1 ]; then
+    env CCACHE_BASEDIR="$repo" scripts/test-sanitize.sh build || true
+  else
+    ctest --test-dir build -j"$jobs" --output-on-failure --timeout 1200 || true
+  fi
+  grep -qE "tests passed|tests failed" "$scratch/suite.log"
+}
 cli=build/src/fresnel-lab
 out="$scratch/out"
 mkdir -p "$out"
-# With the sanitizer pass, the suite's browser.reproduce has just run the sanitized `reproduce` on
-# this copy (with figures): its report is checked rather than made a second time.
+# The suite's browser.reproduce has just run `reproduce` (with figures) on this copy: its report is
+# checked rather than made a second time.
 reproduce() {
-  local reports="$out/reports"
-  if [ "$sanitize" = 1 ]; then
-    reports=build/tests/browser/report
-  else
-    "$cli" -q reproduce --out "$reports" --no-figures || return 1
-  fi
+  local reports=build/tests/browser/report
   shows_copies "$reports/models.csv" && shows_copies "$reports/speed.csv" ",derived,unmeasured" &&
     shows_copies "$reports/index.html"
 }
@@ -210,7 +245,6 @@ lut() {
     "$cli" -q table lut-accuracy gold > "$out/lut-accuracy.md" &&
     shows_copies "$out/lut-accuracy.md"
 }
-suite() { ctest --test-dir build -j"$jobs" --output-on-failure; }
 if [ "$sanitize" = 1 ]; then
   # The commands below run the sanitized binary: leaks in system libraries as test-sanitize.sh
   # suppresses them.
@@ -219,89 +253,53 @@ if [ "$sanitize" = 1 ]; then
   export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 fi
 
-echo "clean copies (logs in $scratch/NAME.log):"
-if [ "$sanitize" = 1 ]; then
-  step asan-suite env CCACHE_BASEDIR="$repo" scripts/test-sanitize.sh build
-  grep -E "tests passed|tests failed" "$scratch/asan-suite.log" | sed 's/^/  ctest: /' || true
-else
-  step build build
-fi
+echo "copies and faults in one build (logs in $scratch/NAME.log):"
+[ "$sanitize" = 1 ] || step build build
+[ "$failures" != 0 ] || step suite suite
+grep -E "tests passed|tests failed" "$scratch/suite.log" 2>/dev/null | sed 's/^/  ctest: /' || true
 if [ "$failures" = 0 ]; then
   step reproduce reproduce
   step table-speed speed
   step plan plan
   step shader shader
   step lut lut
-  if [ "$sanitize" != 1 ]; then
-    step ctest suite
-    grep -E "tests passed|tests failed" "$scratch/ctest.log" | sed 's/^/  ctest: /' || true
-  fi
 fi
-expected=$((${#copied[@]} + 2))  # the new units, the registry and the README
-[ "$touched" = "$expected" ] ||
-  { echo "files touched: $touched, expected $expected"; failures=$((failures + 1)); }
-clean_seconds=$(($(date +%s) - start))
 
-# The faults, each a unit deriving from a copy with one member replaced (the templates of
-# tests/fresnel/seeded_faults.h), in models/faults.h.
-has() { grep -q "\.$2 = true" "$units/$1.h"; }
-declare -A fault_model
-for f in kernel glsl derive; do fault_model[$f]="$model"; done
-fault_model[tables]=$(has "$model" table_terms && echo "$model" || echo basis)
-fault_model[average]=$(has "$model" closed_form_average && echo "$model" || echo basis)
-faults=(kernel glsl tables average derive)
-{
-  cat tests/fresnel/seeded_faults.h
-  for m in "${copied[@]}"; do echo "#include \"fresnel/models/${m}_copy.h\""; done
-  echo "namespace fl::fresnel::models {"
-  for f in "${faults[@]}"; do
-    m="${fault_model[$f]}"
-    echo "struct Seeded_${f} : seeded::$(tr a-z A-Z <<< "${f:0:1}")${f:1}Fault<${entry[$m]#models::}> {"
-    echo "  static constexpr const char* kName = \"${m}_copy_${f}\";"
-    echo "  static constexpr const char* kLabel = \"Seeded fault ${f} in ${m}_copy\";"
-    echo "};"
-  done
-  echo "}  // namespace fl::fresnel::models"
-} > "$units/faults.h"
-register fresnel/models/faults.h $(for f in "${faults[@]}"; do echo "models::Seeded_$f"; done)
-document $(for f in "${faults[@]}"; do echo "${fault_model[$f]}_copy_$f"; done)
-
-# The suite but its end-to-end runs of the CLI (browser, validators, README, install, basis
-# regeneration), which check documents rather than name a model; its failures are what is looked at.
-fault_suite() {
-  ctest --test-dir build -j"$jobs" --output-on-failure --timeout 1200 \
-    -E "^(browser|Validators|Readme|Install)\\.|^Basis\\.regenerates" || true
-}
-echo "faulty copies, registered together (logs in $scratch/NAME.log):"
-if [ "$failures" = 0 ]; then
-  if [ "$sanitize" = 1 ]; then
-    step faults-build env CCACHE_BASEDIR="$repo" nice -n 5 cmake --build build -j"$jobs"
-  else
-    step faults-build build
-  fi
-fi
+# Each failure message with its trace, attributed to the test it belongs to; the tests CTest lists
+# as failed.
 caught=0
-if [ "$failures" = 0 ]; then
-  step faults-suite fault_suite
-  # Each failure message with its trace, attributed to the test it belongs to.
+if [ -f "$scratch/suite.log" ]; then
   awk '/Test +#[0-9]+: / { for (i = 1; i <= NF; ++i) if ($i ~ /^#[0-9]+:$/) test = $(i + 1) }
        /: Failure$/ { on = 1 }
        /^\[ +(OK|FAILED|RUN) / || /^[0-9]+\/[0-9]+ Test/ { on = 0 }
-       on { print test "\t" $0 }' "$scratch/faults-suite.log" > "$scratch/failures.txt"
-  for f in "${faults[@]}"; do
-    name="${fault_model[$f]}_copy_$f"
-    by=$(grep -P "\\b${name}\\b" "$scratch/failures.txt" | cut -f1 | sort -u | tr '\n' ' ' || true)
+       on { print test "\t" $0 }' "$scratch/suite.log" > "$scratch/failures.txt"
+  mapfile -t failed < <(sed -n '/The following tests FAILED:/,$p' "$scratch/suite.log" |
+    sed -nE 's/^[[:space:]]*[0-9]+ - ([^ ]+) .*/\1/p')
+  any_fault=$(IFS='|'; echo "${fault_names[*]}")
+  for f in "${fault_names[@]}"; do
+    by=$(grep -P "\\b${f}\\b" "$scratch/failures.txt" | cut -f1 | sort -u | tr '\n' ' ' || true)
     if [ -n "$by" ]; then
       caught=$((caught + 1))
-      printf '  %-24s caught by %s\n' "$name" "$by"
+      printf '  %-24s caught by %s\n' "$f" "$by"
     else
-      printf '  %-24s NOT CAUGHT\n' "$name"
+      printf '  %-24s NOT CAUGHT\n' "$f"
     fi
   done
+  # Every failing test names a fault; no failure names a clean copy; no sanitizer report.
+  for t in "${failed[@]}"; do
+    grep -qP "^\\Q${t}\\E\t.*\\b(${any_fault})\\b" "$scratch/failures.txt" ||
+      { echo "  $t failed naming no fault"; failures=$((failures + 1)); }
+  done
+  for m in "${copied[@]}"; do
+    ! grep -qP "\\b${m}_copy\\b" "$scratch/failures.txt" ||
+      { echo "  a failure names the clean copy ${m}_copy"; failures=$((failures + 1)); }
+  done
+  ! grep -qE "ERROR: (Address|Leak)Sanitizer|runtime error:" "$scratch/suite.log" ||
+    { echo "  a sanitizer report in $scratch/suite.log"; failures=$((failures + 1)); }
 fi
 [ "$caught" = "${#faults[@]}" ] || failures=$((failures + 1))
 echo "check-model-unit: models copied: ${copied[*]}; faults seeded: ${#faults[@]}; faults caught:" \
-  "$caught; clean copies ${clean_seconds} s, faults $(($(date +%s) - start - clean_seconds)) s"
+  "$caught; failing tests: ${#failed[@]}"
 echo "check-model-unit: $([ "$failures" = 0 ] && echo PASS || echo "FAIL ($failures)"), $(($(date +%s) - start)) s"
 # Kept when a step failed (its logs) or when asked.
 [ "$failures" != 0 ] || [ "${FL_CHECK_KEEP:-0}" = 1 ] || { cd /; rm -rf "$scratch"; }
