@@ -15,9 +15,9 @@ namespace {
 using analysis::Lighting;
 using analysis::RenderedLibraryRow;
 
-constexpr int kWidth = 1040, kHeight = 560;
+constexpr int kWidth = 1520, kHeight = 560;
 constexpr double kTop = 60, kPanelHeight = 380, kPanelWidth = 380;
-constexpr double kLeftPanel = 80, kRightPanel = 600;
+constexpr double kLeftPanel = 80, kMetalsPanel = 580, kDielectricsPanel = 1080;
 constexpr double kFloorDe = 5e-3, kCeilingDe = 20;  // the error axis: log10 of these ends
 const io::Rgb8 kGrid{225, 225, 225}, kFrame{60, 60, 60};
 
@@ -98,17 +98,17 @@ void add_against_k(Drawing& d, const std::vector<RenderedLibraryRow>& rows) {
   d.add(Text{a.left, legend_y + 20, "solid: median over the pages; dashed: p99", 12, kGreyInk});
 }
 
-// Every shader's IBL (filled) and area (hollow) marker in its qualitative colour, named beside its
-// IBL marker (its area marker when it has no IBL cost).
+// Every shader's IBL (filled) and area (hollow) marker over the pages of `cls` in its qualitative
+// colour, named beside its IBL marker (its area marker when it has no IBL cost).
 void add_cost_points(Drawing& d, const Axes& a, const std::vector<RenderedLibraryRow>& rows,
-                     const LabelFont& font) {
+                     const char* cls, const LabelFont& font) {
   const auto& shaders = analysis::library_shaders();
   std::vector<Box> markers;
   std::vector<PointLabel> labels;
   std::vector<bool> named(shaders.size(), false);
   for (const bool ibl_pass : {true, false})
     for (const auto& r : rows) {
-      if (r.page_class != "all" || !r.gpu || (r.lighting == Lighting::Ibl) != ibl_pass) continue;
+      if (r.page_class != cls || !r.gpu || (r.lighting == Lighting::Ibl) != ibl_pass) continue;
       const auto k = static_cast<size_t>(r.shader - shaders.data());
       const Point p = at(a, r.gpu->instructions, r.median);
       d.add(Circle{p.x, p.y, 6, qualitative_colour(k), ibl_pass ? 0.0 : 2.0});
@@ -121,18 +121,17 @@ void add_cost_points(Drawing& d, const Axes& a, const std::vector<RenderedLibrar
     d.shapes.push_back(std::move(shape));
 }
 
-void add_against_cost(Drawing& d, const std::vector<RenderedLibraryRow>& rows,
-                      const LabelFont& font) {
-  const Axes a = panel(kRightPanel, 0, 25);
-  add_panel(d, a, {0, 5, 10, 15, 20, 25}, "Every shader against its GPU cost, all pages",
-            "SPIR-V instructions (bench/gpu_costs.csv)");
-  add_cost_points(d, a, rows, font);
+void add_against_cost(Drawing& d, const std::vector<RenderedLibraryRow>& rows, const char* cls,
+                      double left, const std::string& title, const LabelFont& font) {
+  const Axes a = panel(left, 0, 25);
+  add_panel(d, a, {0, 5, 10, 15, 20, 25}, title, "SPIR-V instructions (bench/gpu_costs.csv)");
+  add_cost_points(d, a, rows, cls, font);
   const double y = a.top + a.height + 62;
   d.add(Circle{a.left + 6, y - 4, 6, kGreyInk, 0});
   d.add(Text{a.left + 18, y, "IBL (split-sum DFG)", 12, kInk});
   d.add(Circle{a.left + 186, y - 4, 6, kGreyInk, 2.0});
   d.add(Text{a.left + 198, y, "area lights (LTC moments)", 12, kInk});
-  d.add(Text{a.left, y + 20, "median over the pages", 12, kGreyInk});
+  d.add(Text{a.left, y + 20, fmt::format("median over the {} pages", cls), 12, kGreyInk});
 }
 
 }  // namespace
@@ -142,7 +141,10 @@ Drawing rendered_library_plot(const std::vector<RenderedLibraryRow>& rows, const
   d.width = kWidth;
   d.height = kHeight;
   add_against_k(d, rows);
-  add_against_cost(d, rows, font);
+  add_against_cost(d, rows, "metal", kMetalsPanel, "Every shader against its GPU cost: metals",
+                   font);
+  add_against_cost(d, rows, "dielectric", kDielectricsPanel,
+                   "Every shader against its GPU cost: dielectrics", font);
   return d;
 }
 
