@@ -91,8 +91,10 @@ Library build_library(const Context& ctx, const LibraryOptions& options,
   policy.strict = options.strict;
   Library lib;
   lib.set = load_materials(ctx, options.globs, policy, load_progress);
-  lib.studies = study_materials(ctx, lib.set.materials, StudyOptions{}, fit_progress);
-  lib.consensus = build_consensus(ctx, page_groups(lib.studies), StudyOptions{});
+  StudyOptions study;
+  study.fit_tolerance = kLibraryFitTolerance;
+  lib.studies = study_materials(ctx, lib.set.materials, study, fit_progress);
+  lib.consensus = build_consensus(ctx, page_groups(lib.studies), study);
   std::map<std::string, const MaterialStudy*> by_group;
   for (size_t i = 0; i < lib.consensus.groups.size(); ++i)
     by_group[lib.consensus.groups[i].name] = &lib.consensus.studies[i];

@@ -71,6 +71,7 @@ MaterialStudy study_one(const Context& ctx, const LoadedMaterial& m, const Study
   const auto& truth_lab = target.truth_lab;
   fit::FitOptions fit_options;
   fit_options.lossless = st.lossless = is_lossless(m.ior);
+  fit_options.function_tolerance = o.fit_tolerance;
   // One slot per model, in registry order: the fits of a material run in parallel.
   std::vector<const fresnel::ModelSpec*> specs;
   for (const auto& spec : fresnel::model_specs())

@@ -59,6 +59,9 @@ struct StudyOptions {
   bool derived_errors = true;
   // The talk's method table's extra errors (MaterialStudy::ps_eta_kappa, refl_f0_ps_eta).
   bool method_errors = true;
+  // The curve fits stop once a step lowers the cost by less than this share of it
+  // (fit::FitOptions::function_tolerance).
+  double fit_tolerance = fit::FitOptions{}.function_tolerance;
   int threads = 0;  // 0: hardware concurrency
 
   bool studies(fresnel::Model m) const {
