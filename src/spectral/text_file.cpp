@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cfloat>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -182,15 +183,22 @@ std::string_view trim(std::string_view s) {
 }
 
 bool parse_finite(std::string_view field, double& value) {
-  const std::string s(trim(field));
+  std::string_view s = trim(field);
+  // A leading '+' is a sign, as for strtod; from_chars takes '-' alone.
+  if (s.size() > 1 && s.front() == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
   if (s.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(s.c_str(), &end);
-  if (end != s.c_str() + s.size() || !std::isfinite(v)) return false;
-  // strtod reports underflow (a denormal such as 5.04e-317, or a result rounded to 0) with ERANGE
-  // too: that is still a number. Overflow gives ±HUGE_VAL, which is not finite.
-  if (errno == ERANGE && std::fabs(v) >= DBL_MIN) return false;
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (end != s.data() + s.size()) return false;
+  if (ec == std::errc::result_out_of_range) {
+    // Out of range: overflow (not a number) or underflow below the smallest denormal, which
+    // rounds to a signed zero and is still a number. The exponent's sign tells them apart.
+    const size_t e = s.find_first_of("eE");
+    if (e == std::string_view::npos || e + 1 >= s.size() || s[e + 1] != '-') return false;
+    v = s.front() == '-' ? -0.0 : 0.0;
+  } else if (ec != std::errc{} || !std::isfinite(v)) {
+    return false;
+  }
   value = v;
   return true;
 }

@@ -37,8 +37,9 @@ std::vector<std::string_view> split_lines(std::string_view text);
 // Splits on any run of the given delimiter characters, dropping empty fields.
 std::vector<std::string_view> split_fields(std::string_view line, std::string_view delimiters);
 
-// strtod over the whole field; false when the field is not a finite number. Denormals (strtod's
-// underflow) are numbers.
+// The whole field (trimmed) as a decimal number, correctly rounded (std::from_chars; an optional
+// leading '+'); false when it is not a finite number. Denormals, and values below them that round
+// to zero, are numbers; overflow is not. Not locale-dependent: the decimal mark is '.'.
 bool parse_finite(std::string_view field, double& value);
 
 std::string_view trim(std::string_view s);

@@ -217,5 +217,31 @@ TEST(ReaderRules, DenormalsAreNumbers) {
   EXPECT_NEAR(sample_at(p, 600.0).ior.ior[0].real(), 1.775, kExact);
 }
 
+// Decimal numbers are read correctly rounded (against the compiler's reading of the same literals,
+// hard cases included), with an optional sign; anything else in the field is not a number.
+TEST(ReaderRules, NumbersAreDecimalCorrectlyRoundedAndSigned) {
+  double v = 0;
+  const std::pair<const char*, double> numbers[] = {
+      {"0.1", 0.1},
+      {"+1.5", 1.5},
+      {"-.5", -0.5},
+      {"5.", 5.0},
+      {" 2.5e3\t", 2.5e3},
+      {"2.2250738585072011e-308", 2.2250738585072011e-308},
+      {"1.7976931348623157e308", 1.7976931348623157e308},
+      {"9007199254740993", 9007199254740993.0},
+      {"0.30000000000000004", 0.30000000000000004}};
+  for (const auto& [text, expected] : numbers) {
+    ASSERT_TRUE(parse_finite(text, v)) << text;
+    EXPECT_EQ(v, expected) << text;
+  }
+  EXPECT_TRUE(parse_finite("-1e-400", v));
+  EXPECT_EQ(v, 0.0);
+  EXPECT_TRUE(std::signbit(v));
+  for (const char* text : {"", "+", "-", "1,5", "1.5e", "0x10", "nan", "inf", "-inf", "+-1", "1 2",
+                           "1.7976931348623159e308", "e5"})
+    EXPECT_FALSE(parse_finite(text, v)) << text;
+}
+
 }  // namespace
 }  // namespace fl::spectral
