@@ -192,6 +192,7 @@ Table library_table(const Context& ctx, const std::vector<MaterialStudy>& studie
     const auto& s = studies[i];
     const auto& m = s.material->material;
     auto& row = t.rows[i];
+    row.reserve(t.columns.size());
     row.insert(
         row.end(),
         {m.origin == spectral::Material::Origin::Page ? spectral::book_of(m.source) : std::string(),

@@ -17,6 +17,7 @@ std::string setting_note(const Context& ctx);
 // coverage, coverage_n, coverage_k (empty without k data) and extrapolated (yes / no).
 void add_coverage_columns(Table& t);
 void add_coverage_cells(std::vector<Cell>& row, const LoadedMaterial& m);
+inline constexpr size_t kCoverageColumns = 4;  // the cells add_coverage_cells adds
 // The note that explains them, with how many of the table's materials are extrapolated.
 std::string coverage_note(const std::vector<const LoadedMaterial*>& materials);
 std::vector<const LoadedMaterial*> materials_of(const std::vector<MaterialStudy>& studies);

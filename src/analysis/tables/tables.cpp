@@ -197,6 +197,7 @@ std::vector<Cell> models_row(const MaterialStudy& s, const ModelResult& r, int f
                         fitted ? static_cast<long long>(r.fitted.iterations) : 0LL,
                         std::string(fitted ? r.fitted.termination : "-"),
                         params_text(r.model, fitted ? r.fitted.parameters : r.derived)};
+  row.reserve(row.size() + kCoverageColumns + 1);
   add_coverage_cells(row, *s.material);
   row.push_back(fitted ? fit::fit_flags(r.fitted) : std::string());
   return row;
