@@ -77,9 +77,9 @@ const PresetFormat& preset_format(const std::string& name, bool openpbr,
         "metallic-roughness; use mtlx, csv, md or json)");
   if (!shader.empty() && format != "mtlx")
     throw InputError("presets: --shader applies to --format mtlx only, not " + format);
-  const auto wanted = materialx_shader_from_name(!shader.empty() ? shader
-                                                 : openpbr       ? "open_pbr_surface"
-                                                                 : "generalized_schlick");
+  const auto wanted = !shader.empty() ? materialx_shader_from_name(shader)
+                      : openpbr       ? MaterialxShader::OpenPbrSurface
+                                      : MaterialxShader::GeneralizedSchlick;
   for (const auto& f : kFormats)
     if (f.name == format && (f.kind != PresetKind::MaterialX || f.shader == wanted)) return f;
   throw InputError("no preset format " + format);  // unreachable: preset_format_name checked it

@@ -22,21 +22,9 @@ int count(const std::string& text, const std::string& what) {
   return n;
 }
 
-const char* shader_name(MaterialxShader s) {
-  switch (s) {
-    case MaterialxShader::GeneralizedSchlick:
-      return "generalized_schlick";
-    case MaterialxShader::OpenPbrSurface:
-      return "open_pbr_surface";
-    case MaterialxShader::StandardSurface:
-      return "standard_surface";
-  }
-  return "";
-}
-
 TEST(PresetRegistry, EveryEntryIsSelectedByItsName) {
   for (const auto& f : preset_formats()) {
-    const std::string shader = f.kind == PresetKind::MaterialX ? shader_name(f.shader) : "";
+    const std::string shader = f.kind == PresetKind::MaterialX ? to_string(f.shader) : "";
     EXPECT_EQ(&preset_format(f.name, false, shader), &f) << f.name << f.suffix;
     if (f.alias) EXPECT_EQ(preset_format_name(f.alias), f.name);
   }
