@@ -23,6 +23,8 @@ std::string basis_command_line(const GlobalOptions& g, const std::vector<std::st
   if (g.min_coverage >= 0) command += fmt::format(" --min-coverage {:g}", g.min_coverage);
   command += " basis";
   for (const auto& glob : globs) command += " '" + glob + "'";
+  if (o.construction != defaults.construction)
+    command += fmt::format(" --construction {}", analysis::basis_construction_name(o.construction));
   if (o.data_terms != defaults.data_terms) command += fmt::format(" --terms {}", o.data_terms);
   if (o.poly_degree != defaults.poly_degree) command += fmt::format(" --degree {}", o.poly_degree);
   if (o.weighting != defaults.weighting)
@@ -33,8 +35,16 @@ std::string basis_command_line(const GlobalOptions& g, const std::vector<std::st
   return command;
 }
 
-// --weighting (returned, read in the callback), --metal-share and --rendered.
-std::shared_ptr<std::string> add_weighting_options(CLI::App* sub, analysis::BasisOptions& o) {
+// --construction, --weighting (returned, read in the callback), --metal-share and --rendered.
+std::pair<std::shared_ptr<std::string>, std::shared_ptr<std::string>> add_construction_options(
+    CLI::App* sub, analysis::BasisOptions& o) {
+  auto construction = std::make_shared<std::string>(
+      analysis::basis_construction_name(analysis::BasisOptions{}.construction));
+  sub->add_option("--construction", *construction,
+                  "optimized: b1..b4 chosen for each page's ΔE2000, starting from svd: b1 = "
+                  "(1 - mu)^5 and b2.. the leading singular vectors of the residuals")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"svd", "optimized"}));
   auto weighting = std::make_shared<std::string>(
       analysis::basis_weighting_name(analysis::BasisOptions{}.weighting));
   sub->add_option("--weighting", *weighting,
@@ -48,7 +58,7 @@ std::shared_ptr<std::string> add_weighting_options(CLI::App* sub, analysis::Basi
       ->check(CLI::Range(0.0, 1.0));
   sub->add_flag("--rendered", o.rendered,
                 "also measure every projection as rendered (basis_rendered.csv)");
-  return weighting;
+  return {construction, weighting};
 }
 
 }  // namespace
@@ -56,9 +66,9 @@ std::shared_ptr<std::string> add_weighting_options(CLI::App* sub, analysis::Basi
 void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   auto* sub = app.add_subcommand(
       "basis",
-      "the data-driven Fresnel basis {1, (1 − μ)⁵, b2, ...}: SVD of the spectral Fresnel curves "
-      "of every page covering the visible range, polynomials in μ, a C++ header, projection "
-      "errors per K (docs/basis.md)");
+      "the data-driven Fresnel basis {1, b1, b2, ...}: from the spectral Fresnel curves of every "
+      "page covering the visible range (SVD, then optimized for ΔE2000), polynomials in μ, a C++ "
+      "header, projection errors per K (docs/basis.md)");
   struct Args {
     std::vector<std::string> globs;
     std::string out;
@@ -76,9 +86,15 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--degree", a->options.poly_degree, "degree of each term's polynomial in μ")
       ->capture_default_str()
       ->check(CLI::Range(1, 16));
-  auto weighting = add_weighting_options(sub, a->options);
-  sub->callback([&g, &selected, a, weighting] {
+  auto [construction, weighting] = add_construction_options(sub, a->options);
+  sub->callback([&g, &selected, a, construction, weighting] {
+    a->options.construction = analysis::basis_construction_from_name(*construction);
     a->options.weighting = analysis::basis_weighting_from_name(*weighting);
+    if (a->options.construction == analysis::BasisConstruction::Optimized &&
+        a->options.data_terms != 3)
+      throw InputError(
+          "basis: --construction optimized needs --terms 3 (its b2, b3, b4 start "
+          "the optimization); use --construction svd for other counts");
     selected = [&g, a] {
       const auto t0 = std::chrono::steady_clock::now();
       analysis::LoadPolicy policy;

@@ -10,9 +10,9 @@
 
 namespace fl::fresnel {
 
-// Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶} and the 5-term Fresnel basis {1, (1 − μ)⁵, b2, b3, b4}.
+// Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶} and the 5-term Fresnel basis {1, b1, b2, b3, b4}.
 inline constexpr Term kHoffmanSpan[] = {Term::One, Term::Schlick, Term::F82};
-inline constexpr Term kBasisSpan[] = {Term::One, Term::Schlick, Term::B2, Term::B3, Term::B4};
+inline constexpr Term kBasisSpan[] = {Term::One, Term::B1, Term::B2, Term::B3, Term::B4};
 
 // Least-squares weights of f(μ_j) on `terms` (every other term 0): the normal equations solved by
 // Cholesky. The terms must be linearly independent over the μ_j.

@@ -14,7 +14,7 @@ namespace fl::jobs {
 
 // The layouts of `lut dfg`. split-sum: one channel per table term (fresnel::kTermRegistry) in its
 // texture: dfg (R = dfg1 (scale), G = dfg2 (bias), B = dfg_f82, read as E = F0·R + G (Schlick),
-// E = F0·R + G − a·B (Hoffman's F82)) and dfg_2 (the basis terms b2..b4). filament: Filament's
+// E = F0·R + G − a·B (Hoffman's F82)) and dfg_2 (the basis terms b1..b4). filament: Filament's
 // multiscatter table as its shaders read it, R = dfg2 = ∫ Fc ρ cos, G = dfg1 + dfg2 = ∫ ρ cos, B =
 // the sheen albedo; E = mix(dfg.xxx, dfg.yyy, F0), energy compensation 1 + F0 (1/dfg.y − 1).
 enum class DfgLayout { SplitSum, Filament };

@@ -191,33 +191,33 @@ TEST(Lut, DfgF82ChannelAgreesWithQuadratureOnTheFull64Grid) {
   EXPECT_LT(m.dfg_f82, kDfgF82Tolerance);
 }
 
-// The basis term b_k(μ), k = 2..4, summed term by term in long double from the polynomial's
+// The basis term b_k(μ), k = 1..4, summed term by term in long double from the polynomial's
 // coefficients (fresnel::basis_term evaluates it by Horner's rule in the centred variable).
 double basis_reference(int k, double mu) {
   long double x = 2.0L * mu - 1.0L, sum = 0, power = 1;
   for (int i = 0; i <= fresnel::kBasisPolyDegree; ++i, power *= x)
-    sum += static_cast<long double>(fresnel::kBasisPolyCentred[k - 2][i]) * power;
+    sum += static_cast<long double>(fresnel::kBasisPolyCentred[k - 1][i]) * power;
   return static_cast<double>(sum);
 }
 
-// The basis channels (dfg_b2..dfg_b4 in the DFG table, b2_d..b4_d in the LTC moments) over the
+// The basis channels (dfg_b1..dfg_b4 in the DFG table, b1_d..b4_d in the LTC moments) over the
 // full 64² tables `lut` writes by default, as `lut` computes them (kLutSamples per texel), against
 // the quadrature: the tables are checked at the accuracy a renderer reads them with.
 TEST(Lut, BasisChannelsAgreeWithQuadratureOnTheFull64Grids) {
   // Measured ≤ 2.0e-4 (the basis terms are of order 1, like 1 and (1 − μ)⁵).
   constexpr double kBasisChannelTolerance = 5e-4;
-  constexpr Term kTerms[] = {Term::B2, Term::B3, Term::B4};
+  constexpr Term kTerms[] = {Term::B1, Term::B2, Term::B3, Term::B4};
   const auto dfg = dfg_table(dfg_grid(64), options(kLutSamples));
   const auto mom = moments_table(ltc_grid(64), options(kLutSamples));
-  double dfg_max[3] = {}, ltc_max[3] = {};
+  double dfg_max[4] = {}, ltc_max[4] = {};
   auto compare = [&](const LutGrid& g, auto cell, double* max) {
     for (int j = 0; j < g.size; ++j)
       for (int i = 0; i < g.size; ++i) {
         const auto ref = test::reference_lobe_integrals(g.nov[i], g.alpha[j], [](double voh) {
-          return Values{basis_reference(2, voh), basis_reference(3, voh), basis_reference(4, voh),
-                        0.0};
+          return Values{basis_reference(1, voh), basis_reference(2, voh), basis_reference(3, voh),
+                        basis_reference(4, voh)};
         });
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < 4; ++k)
           max[k] = std::max(max[k], std::abs(cell(g.index(i, j), kTerms[k]) - ref[k]));
       }
   };
@@ -226,12 +226,13 @@ TEST(Lut, BasisChannelsAgreeWithQuadratureOnTheFull64Grids) {
   compare(
       mom.grid, [&](int c, Term t) { return mom.cells[c][t]; }, ltc_max);
   std::printf(
-      "max |table - quadrature| at 64x64: dfg_b2 %.3g, dfg_b3 %.3g, dfg_b4 %.3g, b2_d %.3g, b3_d "
-      "%.3g, b4_d %.3g\n",
-      dfg_max[0], dfg_max[1], dfg_max[2], ltc_max[0], ltc_max[1], ltc_max[2]);
-  for (int k = 0; k < 3; ++k) {
-    EXPECT_LT(dfg_max[k], kBasisChannelTolerance) << k + 2;
-    EXPECT_LT(ltc_max[k], kBasisChannelTolerance) << k + 2;
+      "max |table - quadrature| at 64x64: dfg_b1..b4 %.3g %.3g %.3g %.3g, b1_d..b4_d %.3g %.3g "
+      "%.3g %.3g\n",
+      dfg_max[0], dfg_max[1], dfg_max[2], dfg_max[3], ltc_max[0], ltc_max[1], ltc_max[2],
+      ltc_max[3]);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_LT(dfg_max[k], kBasisChannelTolerance) << k + 1;
+    EXPECT_LT(ltc_max[k], kBasisChannelTolerance) << k + 1;
   }
 }
 

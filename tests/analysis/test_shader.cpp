@@ -172,17 +172,24 @@ std::string literal(double x) {
   return s.str();
 }
 
-// The texels the table function of model m reads under IBL or area lights, as vec3 literals
-// holding the table terms' values at their components: "vec3(0.61, 0.12, 0.037), ".
+// The texels the table function of model m reads under IBL or area lights, as vec3 literals (vec4
+// for a texture with a channel in A) holding the table terms' values at their components:
+// "vec3(0.61, 0.12, 0.037), ".
 std::string texel_literals(fresnel::Model m, Lighting l, const fresnel::TermValues& v) {
   std::string out;
   for (const auto& name : shader_textures(m, l)) {
-    double rgb[3] = {};
+    double rgba[4] = {};
+    size_t width = 3;
     for (const auto& t : fresnel::kTermRegistry)
-      if (name == (l == Lighting::Ibl ? t.dfg.texture : t.ltc.texture))
-        rgb[std::string("rgb").find((l == Lighting::Ibl ? t.dfg.component : t.ltc.component)[0])] =
-            v[t.term];
-    out += "vec3(" + literal(rgb[0]) + ", " + literal(rgb[1]) + ", " + literal(rgb[2]) + "), ";
+      if (name == (l == Lighting::Ibl ? t.dfg.texture : t.ltc.texture)) {
+        const size_t c =
+            std::string("rgba").find((l == Lighting::Ibl ? t.dfg.component : t.ltc.component)[0]);
+        rgba[c] = v[t.term];
+        width = std::max(width, c + 1);
+      }
+    out += "vec" + std::to_string(width) + "(" + literal(rgba[0]);
+    for (size_t c = 1; c < width; ++c) out += ", " + literal(rgba[c]);
+    out += "), ";
   }
   return out;
 }
@@ -193,8 +200,8 @@ TEST(Shader, GlslComputesWhatTheKernelsCompute) {
   ASSERT_TRUE(have_tools());
   ShadingPoint point;
   point.nov = 0.35;
-  point.dfg.v = {0.61, 0.12, 0.037, 0.05, -0.03, 0.02};
-  point.ltc.v = {0.73, 0.12, 0.037, 0.06, -0.025, 0.015};
+  point.dfg.v = {0.61, 0.12, 0.037, 0.05, -0.03, 0.02, 0.01};
+  point.ltc.v = {0.73, 0.12, 0.037, 0.06, -0.025, 0.015, 0.012};
   double worst = 0;
   for (const auto& spec : fresnel::model_specs()) {
     const auto p = fresnel::example_params(spec.model);

@@ -34,7 +34,7 @@ TEST(BasisCli, WritesTheBasisOfTheMatchedPages) {
        {"basis.md", "basis_functions.csv", "basis_polynomials.csv", "basis_energy.csv",
         "basis_projection.csv", "basis_pages.csv", "basis_polynomials.h"})
     EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
-  EXPECT_NE(slurp(out + "/basis_polynomials.h").find("kBasisDataTerms = 3;"), std::string::npos);
+  EXPECT_NE(slurp(out + "/basis_polynomials.h").find("kBasisPolyTerms = 4;"), std::string::npos);
   // Each page's least-squares residual over nested spans never grows with K (5 decimals printed).
   const auto pages = test::csv_records(slurp(out + "/basis_pages.csv"));
   ASSERT_FALSE(pages.empty());
@@ -55,20 +55,21 @@ std::map<std::string, double> class_energy(const std::string& pages_csv) {
   return e;
 }
 
-// One data term is the weighted stack's leading singular vector: it minimizes the weighted
-// residual energy w_m·E_metal + w_d·E_dielectric over all choices. Weighing the classes alike
-// raises the metals' weight relative to the pages-alike construction (2 metal pages against
-// some 25 dielectric pages here), so adding the two optimality inequalities, the metals' residual
-// energy cannot grow and the dielectrics' cannot shrink.
+// With the SVD construction, one data term is the weighted stack's leading singular vector: it
+// minimizes the weighted residual energy w_m·E_metal + w_d·E_dielectric over all choices. Weighing
+// the classes alike raises the metals' weight relative to the pages-alike construction (2 metal
+// pages against some 25 dielectric pages here), so adding the two optimality inequalities, the
+// metals' residual energy cannot grow and the dielectrics' cannot shrink.
 TEST(BasisCli, WeighingTheClassesShiftsTheResidualToTheMajority) {
   test::TempDir tmp;
   std::map<std::string, std::map<std::string, double>> energy;
   for (const char* weighting : {"pages", "classes"}) {
     const std::string out = tmp.path() + "/" + weighting;
-    const auto r = run_command(cli() +
-                               " -q basis 'main/Au/nk/Johnson' 'main/Cu/nk/Johnson' "
-                               "'main/SiO2/nk/*' 'main/TiO2/nk/*' --terms 1 --weighting " +
-                               weighting + " --out " + out);
+    const auto r =
+        run_command(cli() +
+                    " -q basis 'main/Au/nk/Johnson' 'main/Cu/nk/Johnson' "
+                    "'main/SiO2/nk/*' 'main/TiO2/nk/*' --construction svd --terms 1 --weighting " +
+                    weighting + " --out " + out);
     ASSERT_EQ(r.status, 0) << r.err;
     energy[weighting] = class_energy(slurp(out + "/basis_pages.csv"));
   }
@@ -84,7 +85,8 @@ TEST(BasisCli, RefusesBadInputWritingNothing) {
   const std::string out = tmp.path() + "/basis";
   for (const std::string& args :
        {" basis --terms 0 --out " + out, " basis 'main/NoSuchBook/*' --out " + out,
-        " basis --weighting heavy --out " + out, " basis --metal-share 1.5 --out " + out}) {
+        " basis --weighting heavy --out " + out, " basis --metal-share 1.5 --out " + out,
+        " basis --construction magic --out " + out, " basis --terms 2 --out " + out}) {
     const auto r = run_command(cli() + args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << args;
@@ -94,6 +96,7 @@ TEST(BasisCli, RefusesBadInputWritingNothing) {
   EXPECT_NE(help.out.find("--out"), std::string::npos);
   EXPECT_NE(help.out.find("--degree"), std::string::npos);
   EXPECT_NE(help.out.find("--weighting"), std::string::npos);
+  EXPECT_NE(help.out.find("--construction"), std::string::npos);
 }
 
 }  // namespace

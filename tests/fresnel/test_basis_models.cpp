@@ -112,7 +112,7 @@ TEST(BasisModels, MoreTermsFitNoWorse) {
   EXPECT_LT(previous, 5e-3);
 }
 
-// The closed-form average c0 + c1/21 + Σ c_k·kBasisAverage against 2∫F μ dμ by quadrature.
+// The closed-form average c0 + Σ c_k·kBasisAverage against 2∫F μ dμ by quadrature.
 TEST(BasisModels, ClosedFormAverageMatchesQuadrature) {
   const auto rule = test::gauss_legendre(24);
   for (Model m : kBasisModels) {

@@ -35,11 +35,11 @@ double term_formula(fresnel::Term t, double mu) {
   if (f == "1") return 1.0;
   if (f == "(1 − μ)⁵") return std::pow(1 - mu, 5);
   if (f == "μ(1 − μ)⁶") return mu * std::pow(1 - mu, 6);
-  for (int k = 2; k < fresnel::kBasisTerms; ++k) {
+  for (int k = 1; k < fresnel::kBasisTerms; ++k) {
     if (f != "b" + std::to_string(k) + "(μ)") continue;
     long double sum = 0;
     for (int i = fresnel::kBasisPolyDegree; i >= 0; --i)
-      sum = sum * mu + static_cast<long double>(fresnel::kBasisPolyMu[k - 2][i]);
+      sum = sum * mu + static_cast<long double>(fresnel::kBasisPolyMu[k - 1][i]);
     return static_cast<double>(sum);
   }
   ADD_FAILURE() << "no reference for the table term " << f;

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <utility>
 
+#include "util/errors.h"
+
 namespace fl::analysis {
 
 std::vector<double> basis_mu_samples(int m) {
@@ -15,6 +17,34 @@ std::vector<double> basis_mu_samples(int m) {
     mu[j] = j == m - 1 ? 0.0 : std::cos(theta);
   }
   return mu;
+}
+
+const char* basis_weighting_name(BasisWeighting w) {
+  switch (w) {
+    case BasisWeighting::Pages:
+      return "pages";
+    case BasisWeighting::Classes:
+      return "classes";
+    case BasisWeighting::Perceptual:
+      return "perceptual";
+  }
+  return "?";
+}
+
+BasisWeighting basis_weighting_from_name(const std::string& name) {
+  for (const auto w : {BasisWeighting::Pages, BasisWeighting::Classes, BasisWeighting::Perceptual})
+    if (name == basis_weighting_name(w)) return w;
+  throw InputError("basis: --weighting '" + name + "': expected pages, classes or perceptual");
+}
+
+const char* basis_construction_name(BasisConstruction c) {
+  return c == BasisConstruction::Svd ? "svd" : "optimized";
+}
+
+BasisConstruction basis_construction_from_name(const std::string& name) {
+  for (const auto c : {BasisConstruction::Svd, BasisConstruction::Optimized})
+    if (name == basis_construction_name(c)) return c;
+  throw InputError("basis: --construction '" + name + "': expected svd or optimized");
 }
 
 double basis_fixed_term(int k, double mu) {

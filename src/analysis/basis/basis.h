@@ -28,9 +28,16 @@ enum class BasisWeighting { Pages, Classes, Perceptual };
 const char* basis_weighting_name(BasisWeighting w);                 // pages | classes | perceptual
 BasisWeighting basis_weighting_from_name(const std::string& name);  // InputError otherwise
 
+// How b1, b2, ... are chosen (docs/basis.md): b1 = (1 − μ)⁵ and b2.. the leading singular vectors
+// of the residuals (Svd), or, from there, b1..b4 by L-BFGS on each page's ΔE2000 (Optimized).
+enum class BasisConstruction { Svd, Optimized };
+const char* basis_construction_name(BasisConstruction c);                 // svd | optimized
+BasisConstruction basis_construction_from_name(const std::string& name);  // InputError otherwise
+
 // The construction's choices (docs/basis.md says why).
 struct BasisOptions {
-  int data_terms = 3;          // data-driven functions kept: K = 2..2 + data_terms
+  BasisConstruction construction = BasisConstruction::Optimized;
+  int data_terms = 3;          // singular vectors after b1: K = 2..2 + data_terms
   int poly_degree = 10;        // of each data-driven function's polynomial in μ
   int mu_samples = 91;         // μ_j = cos(90°·j/(M − 1)): uniform in θ, as the error metric
   double lambda_step_nm = 10;  // wavelengths 360, 370, ..., 830 nm, weighted by x̄ + ȳ + z̄
@@ -167,7 +174,7 @@ struct FresnelBasis {
   std::vector<double> mu;
   std::vector<double> lambda_nm, lambda_weights;  // the construction's wavelengths
   ResidualSvd svd;
-  std::vector<BasisTerm> terms;  // the data-driven terms
+  std::vector<BasisTerm> terms;  // b1, b2, ...: every term after b0 = 1
   PeerBasis peer;                // Belcour et al.'s, K = 2 + kBelcourDataTerms
   std::vector<PageProjection> pages;
   std::vector<SkippedMaterial> skipped;

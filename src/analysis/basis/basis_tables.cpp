@@ -20,7 +20,7 @@ Column full(const std::string& name) {
   return {name, kFullDigits, true, true};
 }
 
-// b0, b1 fixed; b2.. the data-driven terms.
+// b0 = 1; b1.. the terms.
 std::string term_name(size_t k) {
   return fmt::format("b{}", k);
 }
@@ -28,7 +28,7 @@ std::string term_name(size_t k) {
 // The projection sets' labels, in projection_sets' order.
 std::vector<std::string> set_labels(const FresnelBasis& b) {
   std::vector<std::string> labels;
-  for (size_t k = 2; k <= 2 + b.terms.size(); ++k) labels.push_back(fmt::format("k{}", k));
+  for (size_t k = 2; k <= 1 + b.terms.size(); ++k) labels.push_back(fmt::format("k{}", k));
   labels.push_back("hoffman3");
   for (size_t k = 3; k <= b.peer.functions.size(); ++k)
     labels.push_back(fmt::format("belcour{}", k));
@@ -51,23 +51,26 @@ std::string worst_pages(const std::vector<double>& values,
 Table basis_functions_table(const FresnelBasis& b) {
   Table t;
   t.name = "basis_functions";
-  t.title = "The basis sampled: fixed terms, data-driven singular vectors and their polynomials";
-  t.columns = {full("theta_deg"), full("mu"), full("b0"), full("b1")};
-  for (size_t k = 0; k < b.terms.size(); ++k) t.columns.push_back(full(term_name(k + 2)));
-  for (size_t k = 0; k < b.terms.size(); ++k) t.columns.push_back(full(term_name(k + 2) + "_poly"));
+  t.title = "The basis sampled: b0 = 1, the terms' sampled functions and their polynomials";
+  t.columns = {full("theta_deg"), full("mu"), full("b0")};
+  for (size_t k = 0; k < b.terms.size(); ++k) t.columns.push_back(full(term_name(k + 1)));
+  for (size_t k = 0; k < b.terms.size(); ++k) t.columns.push_back(full(term_name(k + 1) + "_poly"));
   const int m = static_cast<int>(b.mu.size());
   for (int j = 0; j < m; ++j) {
-    std::vector<Cell> row = {90.0 * j / (m - 1), b.mu[j], basis_fixed_term(0, b.mu[j]),
-                             basis_fixed_term(1, b.mu[j])};
+    std::vector<Cell> row = {90.0 * j / (m - 1), b.mu[j], basis_fixed_term(0, b.mu[j])};
     for (const auto& term : b.terms) row.push_back(term.sampled[j]);
     for (const auto& term : b.terms) row.push_back(term(b.mu[j]));
     t.rows.push_back(std::move(row));
   }
   t.reading = fmt::format(
-      "{} samples uniform in θ (μ = cos θ). b0 = 1 and b1 = (1 − μ)⁵ are fixed; b2.. are the "
-      "leading singular vectors of the residuals, orthogonal to b0, b1 and to each other under "
-      "Σ_j f(μ_j)g(μ_j), scaled to max |b| = 1 over the samples with that sample positive.",
-      m);
+      "{} samples uniform in θ (μ = cos θ). b0 = 1; b1.. are {}, each scaled to max |b| = 1 over "
+      "the samples with that sample positive.",
+      m,
+      b.options.construction == BasisConstruction::Svd
+          ? "(1 − μ)⁵ and the leading singular vectors of the residuals, orthogonal to b0, b1 and "
+            "to each other under Σ_j f(μ_j)g(μ_j)"
+          : "the functions optimized for the pages' ΔE2000, orthogonal to b0 under "
+            "Σ_j f(μ_j)g(μ_j) (docs/basis.md)");
   return t;
 }
 
@@ -88,28 +91,28 @@ Table basis_polynomials_table(const FresnelBasis& b) {
   for (size_t k = 0; k < b.terms.size(); ++k) {
     const auto& term = b.terms[k];
     for (const bool centred : {true, false}) {
-      std::vector<Cell> row = {term_name(k + 2), std::string(centred ? "2mu-1" : "mu"),
+      std::vector<Cell> row = {term_name(k + 1), std::string(centred ? "2mu-1" : "mu"),
                                static_cast<long long>(degree)};
       for (double c : centred ? term.poly : term.poly_mu) row.push_back(c);
       row.insert(row.end(),
                  {term.fit_max, term.fit_rms, centred ? term.float_max : term.float_max_mu,
-                  term.dense_max, term(0.0), term(1.0)});
+                  term.dense_max, term.average, term(0.0), term(1.0)});
       t.rows.push_back(std::move(row));
     }
   }
   t.reading =
       "Least squares in x = 2μ − 1 on the samples of basis_functions; the same polynomial "
-      "expanded in x = μ. fit_max_abs and fit_rms are its difference from the sampled singular "
-      "vector there (whose max |b| is 1); float32_horner_max the largest difference between "
+      "expanded in x = μ. fit_max_abs and fit_rms are its difference from the sampled function "
+      "there (whose max |b| is 1); float32_horner_max the largest difference between "
       "Horner's rule in float and in double over 10001 points of [0, 1]; hemispherical_average "
-      "2∫₀¹ b(μ) μ dμ (b0's is 1, b1's 1/21).";
+      "2∫₀¹ b(μ) μ dμ (b0's is 1).";
   return t;
 }
 
 Table basis_energy_table(const FresnelBasis& b) {
   Table t;
   t.name = "basis_energy";
-  t.title = "Energy per data-driven term (singular values of the stacked residuals)";
+  t.title = "Energy per singular vector of the stacked residuals (the SVD construction)";
   t.columns = {{"term"},
                full("singular_value"),
                {"residual_share", 6},
@@ -122,13 +125,14 @@ Table basis_energy_table(const FresnelBasis& b) {
   for (int k = 0; k < n; ++k) {
     const double s = b.svd.singular_values[k];
     cumulative += s * s;
-    t.rows.push_back({term_name(k + 2), s, s * s / sum2, cumulative / sum2,
+    t.rows.push_back({fmt::format("v{}", k + 1), s, s * s / sum2, cumulative / sum2,
                       (sum2 - cumulative) / b.svd.total_energy});
   }
   t.reading = fmt::format(
-      "The curves' energy Σ w‖R‖² is {:.6g}; b0 and b1 leave {:.6g} of it ({:.3g}), which the "
-      "data-driven terms take in turn: residual_share is σ²/Σσ², residual_left_of_total what "
-      "remains after the term as a share of the curves' energy.",
+      "The curves' energy Σ w‖R‖² is {:.6g}; 1 and (1 − μ)⁵ leave {:.6g} of it ({:.3g}), which "
+      "the singular vectors v1, v2, ... take in turn (the SVD construction's b2, b3, ...; they "
+      "also start the optimized one): residual_share is σ²/Σσ², residual_left_of_total what "
+      "remains after the vector as a share of the curves' energy.",
       b.svd.total_energy, b.svd.residual_energy, b.svd.residual_energy / b.svd.total_energy);
   return t;
 }
@@ -162,7 +166,7 @@ Table basis_projection_table(const Context& ctx, const FresnelBasis& b) {
     }
   }
   t.reading =
-      "kK: the first K terms (b0, b1 and the data-driven polynomials); hoffman3: 1, (1 − μ)⁵, "
+      "kK: the first K terms (b0 = 1, b1, ...); hoffman3: 1, (1 − μ)⁵, "
       "μ(1 − μ)⁶; belcourK: the first K functions of Belcour, Bati & Barla 2020's basis "
       "(rebuilt from their construction; K = 5 adds the next singular vector), least squares; "
       "belcour4_two_point: their K = 4 with their projection (R(0°), 1 − R(0°), two angles). "

@@ -7,6 +7,7 @@
 
 #include "analysis/basis/basis.h"
 #include "analysis/basis/basis_rendered.h"
+#include "analysis/basis/optimize.h"
 #include "analysis/lut/lut_accuracy.h"
 #include "fresnel/exact.h"
 #include "spectral/cie.h"
@@ -58,8 +59,16 @@ void add_page_rows(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w
   }
 }
 
-// The function sets projected on: K = 2..2 + terms (b0, b1, then the data-driven polynomials),
-// then Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, then the peer's first 3, 4, 5 functions (as many
+// {1, (1 − μ)⁵} sampled at `points`.
+std::vector<std::vector<double>> schlick_span(const std::vector<double>& points) {
+  std::vector<std::vector<double>> span(2);
+  for (double m : points)
+    for (int k = 0; k < 2; ++k) span[k].push_back(basis_fixed_term(k, m));
+  return span;
+}
+
+// The function sets projected on: K = 2..1 + terms (b0 = 1, then the terms' polynomials), then
+// Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, then the peer's first 3, 4, 5 functions (as many
 // as it has), each sampled at `points`.
 std::vector<std::vector<std::vector<double>>> projection_sets(const std::vector<BasisTerm>& terms,
                                                               const PeerBasis* peer,
@@ -70,15 +79,14 @@ std::vector<std::vector<std::vector<double>>> projection_sets(const std::vector<
     return v;
   };
   std::vector<std::vector<double>> functions = {
-      sample([](double m) { return basis_fixed_term(0, m); }),
-      sample([](double m) { return basis_fixed_term(1, m); })};
-  std::vector<std::vector<std::vector<double>>> sets = {functions};
+      sample([](double m) { return basis_fixed_term(0, m); })};
+  std::vector<std::vector<std::vector<double>>> sets;
   for (const auto& t : terms) {
     functions.push_back(sample([&](double m) { return t(m); }));
-    sets.push_back(functions);
+    if (functions.size() >= 2) sets.push_back(functions);
   }
-  sets.push_back(
-      {functions[0], functions[1], sample([](double m) { return m * std::pow(1.0 - m, 6); })});
+  sets.push_back({functions[0], sample([](double m) { return basis_fixed_term(1, m); }),
+                  sample([](double m) { return m * std::pow(1.0 - m, 6); })});
   if (!peer) return sets;
   std::vector<std::vector<double>> theirs;
   for (size_t k = 0; k < peer->functions.size(); ++k) {
@@ -146,11 +154,13 @@ double float_error(const std::vector<double>& c, double scale, double shift) {
   return worst;
 }
 
-// A singular vector scaled to max |b| = 1 over the samples, and its polynomial.
+// A function scaled to max |b| = 1 over the samples with that sample positive, and its
+// polynomial.
 BasisTerm make_term(const std::vector<double>& mu, const std::vector<double>& vector, int degree) {
   BasisTerm t;
   double peak = 0;
-  for (double v : vector) peak = std::max(peak, std::abs(v));
+  for (double v : vector)
+    if (std::abs(v) > std::abs(peak)) peak = v;
   for (double v : vector) t.sampled.push_back(v / peak);
   std::vector<double> x;
   for (double m : mu) x.push_back(2 * m - 1);
@@ -268,9 +278,8 @@ std::vector<double> page_weights(const Context& ctx,
                                  const BasisOptions& options) {
   std::vector<double> weight(pages.size(), 1.0);
   if (options.weighting == BasisWeighting::Perceptual) {
-    const std::vector<Projector> spectral = {Projector(projection_sets({}, nullptr, mu).front())};
-    const std::vector<Projector> rgb = {
-        Projector(projection_sets({}, nullptr, ctx.cos_thetas()).front())};
+    const std::vector<Projector> spectral = {Projector(schlick_span(mu))};
+    const std::vector<Projector> rgb = {Projector(schlick_span(ctx.cos_thetas()))};
     parallel_for(pages.size(), [&](size_t i) {
       const auto p = project_page(ctx, *pages[i], w, mu, spectral, rgb);
       weight[i] = std::pow(p.rms_de2000[0] / p.rms_reflectance[0], 2);
@@ -287,6 +296,33 @@ std::vector<double> page_weights(const Context& ctx,
     weight[i] = n * (metal(i) ? options.metal_share : 1.0 - options.metal_share) /
                 static_cast<double>(count[metal(i)]);
   return weight;
+}
+
+// b1, b2, ...: (1 − μ)⁵ and the SVD's functions, or those optimized from them.
+std::vector<BasisTerm> basis_terms(const Context& ctx,
+                                   const std::vector<const LoadedMaterial*>& pages,
+                                   const FresnelBasis& b, ProgressCounter& counter) {
+  const int degree = b.options.poly_degree;
+  std::vector<BasisTerm> terms;
+  if (b.options.construction == BasisConstruction::Svd) {
+    terms.push_back(make_term(b.mu, schlick_span(b.mu)[1], degree));
+    for (const auto& v : b.svd.functions) terms.push_back(make_term(b.mu, v, degree));
+    return terms;
+  }
+  if (b.svd.functions.size() != 3)
+    throw InputError("basis: --construction optimized starts from 3 singular vectors (--terms 3)");
+  std::vector<std::vector<double>> initial;
+  for (const auto& v : b.svd.functions) {
+    const auto t = make_term(b.mu, v, degree);
+    initial.emplace_back();
+    for (double m : ctx.cos_thetas()) initial.back().push_back(t(m));
+  }
+  for (const auto& c : optimize_terms(ctx, pages, initial, degree, [&] { counter.add(1); })) {
+    std::vector<double> v;
+    for (double m : b.mu) v.push_back(eval_polynomial(c, 2 * m - 1));
+    terms.push_back(make_term(b.mu, v, degree));
+  }
+  return terms;
 }
 
 }  // namespace
@@ -315,24 +351,6 @@ void project_pages(const Context& ctx, const std::vector<LoadedMaterial>& pages,
   });
 }
 
-const char* basis_weighting_name(BasisWeighting w) {
-  switch (w) {
-    case BasisWeighting::Pages:
-      return "pages";
-    case BasisWeighting::Classes:
-      return "classes";
-    case BasisWeighting::Perceptual:
-      return "perceptual";
-  }
-  return "?";
-}
-
-BasisWeighting basis_weighting_from_name(const std::string& name) {
-  for (const auto w : {BasisWeighting::Pages, BasisWeighting::Classes, BasisWeighting::Perceptual})
-    if (name == basis_weighting_name(w)) return w;
-  throw InputError("basis: --weighting '" + name + "': expected pages, classes or perceptual");
-}
-
 FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const BasisOptions& options,
                          const std::function<void(int, int)>& progress) {
   const auto& pages = set.materials;
@@ -347,15 +365,17 @@ FresnelBasis build_basis(const Context& ctx, const MaterialSet& set, const Basis
   std::vector<const LoadedMaterial*> stacked;
   for (const auto& p : pages)
     if (weighted_f0(p.ior, w, ctx.settings().eta_outside) >= kBasisMinF0) stacked.push_back(&p);
-  const int total = static_cast<int>(stacked.size() + pages.size());
+  // Progress units: the pages stacked, the L-BFGS runs, the pages projected.
+  const int rounds =
+      options.construction == BasisConstruction::Optimized ? kOptimizeRoundsTotal : 0;
+  const int total = static_cast<int>(stacked.size() + pages.size()) + rounds;
   b.svd = stack_residuals(stacked, page_weights(ctx, stacked, w, b.mu, options), w, b.mu,
                           ctx.settings().eta_outside, options.data_terms, [&](int done, int) {
                             if (progress) progress(done, total);
                           });
-  for (const auto& v : b.svd.functions) b.terms.push_back(make_term(b.mu, v, options.poly_degree));
-
-  b.peer = belcour_basis(kBelcourDataTerms);
   ProgressCounter counter(progress, total, static_cast<int>(stacked.size()));
+  b.terms = basis_terms(ctx, stacked, b, counter);
+  b.peer = belcour_basis(kBelcourDataTerms);
   project_pages(ctx, pages, w, b, counter);
   return b;
 }

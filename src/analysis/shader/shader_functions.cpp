@@ -64,6 +64,14 @@ std::vector<const LutTexture*> sampled_textures(const ModelSpec& s, Lighting l) 
   return out;
 }
 
+// A texel of the texture as the table function takes it: vec4 when a channel lives in A, else
+// vec3 (its swizzle "rgba" or "rgb").
+bool texel_has_alpha(const LutTexture& t) {
+  for (const auto& c : t.channels)
+    if (std::string(c.components) == "a") return true;
+  return false;
+}
+
 std::string sampler_name(const LutTexture& t, bool ibl) {
   return ibl ? std::string(t.name) + "_lut" : t.name;
 }
@@ -187,7 +195,8 @@ std::string table_function(const ModelSpec& s, Lighting l) {
                         where.components);
   }
   for (size_t k = 0; k < textures.size(); ++k)
-    texels += fmt::format("vec3 {}, ", texel_name(*textures[k], k, ibl));
+    texels += fmt::format("{} {}, ", texel_has_alpha(*textures[k]) ? "vec4" : "vec3",
+                          texel_name(*textures[k], k, ibl));
   if (!support.fresnel_pre_integrated)
     body += fmt::format("  return fresnel_{}(nov, {}) * {};\n", s.name, param_list(s, false),
                         lobe_integral(ibl));
@@ -241,10 +250,13 @@ std::string lookup_function(const ModelSpec& s, Lighting l, ShaderLanguage lang,
   for (size_t k = 0; k < textures.size(); ++k) {
     const std::string tex = sampler_name(*textures[k], ibl),
                       texel = k ? fmt::format("texel_{}", k + 1) : "texel";
-    reads += fmt::format(fmt::runtime(glsl ? "  vec3 {} = textureLod({}, {}, 0.0).rgb;\n"
-                                           : "  float3 {} = {}.SampleLevel(lut_sampler, {}, "
-                                             "0.0).rgb;\n"),
-                         texel, tex, translate(lookup_uv(l), lang));
+    const bool alpha = texel_has_alpha(*textures[k]);
+    const std::string type = std::string(glsl ? "vec" : "float") + (alpha ? "4" : "3"),
+                      uv = translate(lookup_uv(l), lang), swizzle = alpha ? "rgba" : "rgb";
+    reads +=
+        glsl ? fmt::format("  {} {} = textureLod({}, {}, 0.0).{};\n", type, texel, tex, uv, swizzle)
+             : fmt::format("  {} {} = {}.SampleLevel(lut_sampler, {}, 0.0).{};\n", type, texel, tex,
+                           uv, swizzle);
     texels += texel + ", ";
   }
   return fmt::format("{}{} {{\n{}  return fresnel_{}_{}({}nov, {});\n}}\n", comment,

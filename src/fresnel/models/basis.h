@@ -1,6 +1,6 @@
 #pragma once
 // The basis models basis3, basis4, basis5: per channel, the coefficients of the first K terms of
-// the Fresnel basis {1, (1 − μ)⁵, b2, b3, b4} (fresnel/basis.h, docs/basis.md), every term a
+// the Fresnel basis {1, b1, b2, b3, b4} (fresnel/basis.h, docs/basis.md), every term a
 // table term, so that IBL and area lights pre-integrate them exactly.
 #include <array>
 #include <span>
@@ -15,7 +15,7 @@
 namespace fl::fresnel {
 
 // Term k of the basis as a table term.
-inline constexpr Term kBasisTableTerm[kBasisTerms] = {Term::One, Term::Schlick, Term::B2, Term::B3,
+inline constexpr Term kBasisTableTerm[kBasisTerms] = {Term::One, Term::B1, Term::B2, Term::B3,
                                                       Term::B4};
 
 // F = Σ_k c_k·b_k(μ), the formula itself (no clamp: the tables integrate it as it is).
@@ -51,16 +51,16 @@ inline std::vector<double> basis_projection(const DeriveInput& in, int terms) {
 
 namespace models {
 
-// The coefficients c0..c4 (c0 of 1, c1 of (1 − μ)⁵, c2.. of b2..).
+// The coefficients c0..c4 (c0 of 1, c1.. of b1..).
 inline constexpr ParamSpec kBasisParams[kBasisTerms] = {
     {"c0", "weight of 1", ParamKind::Coefficient, {-0.5, 1.5}, {-kUnbounded, kUnbounded}},
-    {"c1", "weight of (1 - mu)^5", ParamKind::Coefficient, {-0.5, 1.5}, {-kUnbounded, kUnbounded}},
+    {"c1", "weight of b1", ParamKind::Coefficient, {-0.5, 1.5}, {-kUnbounded, kUnbounded}},
     {"c2", "weight of b2", ParamKind::Coefficient, {-1.0, 1.0}, {-kUnbounded, kUnbounded}},
     {"c3", "weight of b3", ParamKind::Coefficient, {-1.0, 1.0}, {-kUnbounded, kUnbounded}},
     {"c4", "weight of b4", ParamKind::Coefficient, {-1.0, 1.0}, {-kUnbounded, kUnbounded}},
 };
 inline constexpr TermWeight kBasisWeights[kBasisTerms] = {
-    {Term::One, "c0"}, {Term::Schlick, "c1"}, {Term::B2, "c2"}, {Term::B3, "c3"}, {Term::B4, "c4"}};
+    {Term::One, "c0"}, {Term::B1, "c1"}, {Term::B2, "c2"}, {Term::B3, "c3"}, {Term::B4, "c4"}};
 inline constexpr const char* kBasisNames[] = {"", "", "basis2", "basis3", "basis4", "basis5"};
 inline constexpr const char* kBasisLabels[] = {"",
                                                "",
@@ -105,10 +105,10 @@ struct Basis {
     for (int k = 0; k < K; ++k) w[kBasisTableTerm[k]] = p[k];
     return w;
   }
-  // Each term's hemispherical average 2∫b μ dμ: 1, 1/21 and kBasisAverage.
+  // Each term's hemispherical average 2∫b μ dμ: 1 and kBasisAverage.
   static double average(const double* p, const double*) {
-    double a = p[0] + p[1] / 21.0;
-    for (int k = 2; k < K; ++k) a += p[k] * kBasisAverage[k - 2];
+    double a = p[0];
+    for (int k = 1; k < K; ++k) a += p[k] * kBasisAverage[k - 1];
     return a;
   }
   // The projection of the ground-truth curve on the first K terms, per channel.
