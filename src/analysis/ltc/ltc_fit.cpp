@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -259,11 +260,12 @@ struct LtcColumns {
 };
 LtcColumns ltc_columns(const LtcProblem& pr) {
   LtcColumns c;
+  const size_t n = pr.samples.size();
+  for (auto* col : {&c.x, &c.y, &c.z, &c.target, &c.weight}) col->reserve(n);
   for (const auto& s : pr.samples) {
     c.x.push_back(s.x), c.y.push_back(s.y), c.z.push_back(s.z);
     c.target.push_back(s.target), c.weight.push_back(s.weight);
   }
-  const size_t n = pr.samples.size();
   for (auto* col : {&c.ox, &c.oy, &c.oz, &c.inv_len2, &c.dens, &c.root, &c.residual})
     col->resize(n);
   return c;
@@ -329,12 +331,16 @@ double sum_squared_residuals(const LtcProblem& pr, const LtcParams& p) {
 
 // ½ Σ r² estimates ½ ∫ |ρ cos − n_D D_LTC|³ dω / B₃; the Jacobian is analytic (ltc_jacobian).
 // A step that would make A singular or flip it (β ≤ 0) is rejected as invalid.
-// The Jacobian reuses the residual pass's terms in columns_, computed just before at the same
-// point.
+// Ceres evaluates an accepted step's point up to three times (its line search, the step's cost,
+// then the Jacobian there), so the cost keeps the terms of the last point it evaluated (columns_)
+// and that point's Jacobian once computed, and evaluates a point again only when its parameters
+// differ in a bit.
 class LtcCost final : public ceres::CostFunction {
  public:
   explicit LtcCost(const LtcProblem& problem)
-      : magnitude_(problem.magnitude), columns_(ltc_columns(problem)) {
+      : magnitude_(problem.magnitude),
+        columns_(ltc_columns(problem)),
+        jacobian_(4 * problem.samples.size()) {
     set_num_residuals(static_cast<int>(problem.samples.size()));
     mutable_parameter_block_sizes()->push_back(4);
   }
@@ -342,15 +348,26 @@ class LtcCost final : public ceres::CostFunction {
                 double** jacobians) const override {
     const double* p = parameters[0];
     if (!(p[0] - p[2] * p[3] > kLtcMinScale * p[0])) return false;
-    ltc_residuals(magnitude_, p, columns_);
+    if (!evaluated_ || std::memcmp(p, at_, sizeof(at_)) != 0) {
+      ltc_residuals(magnitude_, p, columns_);
+      std::copy(p, p + 4, at_);
+      evaluated_ = true, has_jacobian_ = false;
+    }
     std::copy(columns_.residual.begin(), columns_.residual.end(), residuals);
-    if (jacobians && jacobians[0]) ltc_jacobian(magnitude_, p, columns_, jacobians[0]);
+    if (jacobians && jacobians[0]) {
+      if (!has_jacobian_) ltc_jacobian(magnitude_, p, columns_, jacobian_.data());
+      has_jacobian_ = true;
+      std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
+    }
     return true;
   }
 
  private:
   double magnitude_;
-  mutable LtcColumns columns_;
+  mutable LtcColumns columns_;            // the terms of the residuals at at_
+  mutable std::vector<double> jacobian_;  // the Jacobian at at_ when has_jacobian_
+  mutable double at_[4] = {0, 0, 0, 0};
+  mutable bool evaluated_ = false, has_jacobian_ = false;
 };
 
 LtcParams clamp_to_bounds(const LtcParams& p) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "brdf/sheen.h"
 #include "color/lab.h"
@@ -168,37 +169,48 @@ namespace {
 // The terms of integrate_moments' sums for a block of samples, as columns; 0 for a direction below
 // the horizon, which adds nothing to a sum.
 struct MomentTerms {
+  double m1[kLobeBlock], m5[kLobeBlock];  // 1 − v·h and its fifth power, shared by the terms
   double term[fresnel::kTermCount][kLobeBlock], dir_x[kLobeBlock], dir_z[kLobeBlock];
 };
-FL_FLATTEN void moment_terms(const LobeSampleBlock& b, size_t count, MomentTerms& t) {
+// Term I of the registry over a block: its kernel is known at compile time, so it is inlined and
+// the loop computes several samples per instruction.
+template <size_t I>
+void moment_term(const LobeSampleBlock& b, size_t count, MomentTerms& t) {
+  constexpr fresnel::TermKernel kernel = fresnel::kTermRegistry[I].kernel;
   for (size_t k = 0; k < count; ++k) {
-    const double w = b.weight[k], voh = b.voh[k];
-    const double m1 = 1.0 - voh;
-    const double m5 = pow5(m1);
-    const bool above = !(w <= 0.0);
-    for (size_t i = 0; i < fresnel::kTermCount; ++i)
-      t.term[i][k] =
-          above ? fresnel::term_kernel(fresnel::kTermRegistry[i].term, voh, m1, m5) * w : 0.0;
-    t.dir_x[k] = above ? b.lx[k] * w : 0.0;
-    t.dir_z[k] = above ? b.lz[k] * w : 0.0;
+    const double value = kernel(b.voh[k], t.m1[k], t.m5[k]) * b.weight[k];
+    t.term[I][k] = b.weight[k] <= 0.0 ? 0.0 : value;
   }
+}
+template <size_t... I>
+FL_FLATTEN void moment_terms(const LobeSampleBlock& b, size_t count, MomentTerms& t,
+                             std::index_sequence<I...>) {
+  for (size_t k = 0; k < count; ++k) {
+    const double w = b.weight[k];
+    t.m1[k] = 1.0 - b.voh[k];
+    t.m5[k] = pow5(t.m1[k]);
+    t.dir_x[k] = w <= 0.0 ? 0.0 : b.lx[k] * w;
+    t.dir_z[k] = w <= 0.0 ? 0.0 : b.lz[k] * w;
+  }
+  (moment_term<I>(b, count, t), ...);
 }
 
 }  // namespace
 
 GgxMoments integrate_moments(double nov, double alpha, const std::vector<brdf::DiskPoint>& points) {
   GgxMoments m;
+  double sum[fresnel::kTermCount] = {};
   brdf::Vec3 dir{0, 0, 0};
   MomentTerms t;
   for_each_lobe_block(nov, alpha, points, [&](const LobeSampleBlock& b, size_t count) {
-    moment_terms(b, count, t);
+    moment_terms(b, count, t, std::make_index_sequence<fresnel::kTermCount>());
     for (size_t k = 0; k < count; ++k) {
-      for (size_t i = 0; i < fresnel::kTermCount; ++i) m.v[i] += t.term[i][k];
+      for (size_t i = 0; i < fresnel::kTermCount; ++i) sum[i] += t.term[i][k];
       dir.x += t.dir_x[k], dir.z += t.dir_z[k];
     }
   });
   const double samples = static_cast<double>(points.size());
-  for (double& x : m.v) x /= samples;
+  for (size_t i = 0; i < fresnel::kTermCount; ++i) m.v[i] = sum[i] / samples;
   // The lobe of an isotropic BRDF is symmetric about the xz-plane: the mean direction has y = 0.
   m.average_dir =
       (dir.x * dir.x + dir.z * dir.z > 0.0) ? brdf::normalize(dir) : brdf::Vec3{0, 0, 1};
