@@ -107,7 +107,8 @@ void add_library_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
           g,
           fmt::format(
               "library: {} of {} pages in the library, {} skipped; wrote {} files to {} ({:.1f} s)",
-              lib.studies.size(), lib.set.requested, lib.set.skipped.size(), files.size(), a->out,
+              lib.set.materials.size(), lib.set.requested, lib.set.skipped.size(), files.size(),
+              a->out,
               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
       return 0;
     };

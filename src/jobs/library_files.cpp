@@ -335,7 +335,7 @@ io::Files library_files(const analysis::Context& ctx, const analysis::Library& l
   // The models table (every page × model × set: the largest) freed once written.
   files.emplace_back("models.csv", documents::to_csv(analysis::models_table(ctx, lib.rows)));
   files.emplace_back("skipped.csv", documents::to_csv(analysis::skipped_table(lib.set.skipped)));
-  const auto spread = analysis::spread_table(ctx, lib.studies);
+  const auto spread = analysis::spread_table(ctx, lib.rows);  // the consensus rows are in no group
   files.emplace_back("spread.csv", documents::to_csv(spread));
   files.emplace_back("spread.md", documents::to_markdown(spread));
   const auto consensus = analysis::consensus_table(ctx, lib.consensus);

@@ -93,17 +93,26 @@ Library build_library(const Context& ctx, const LibraryOptions& options,
   lib.set = load_materials(ctx, options.globs, policy, load_progress);
   StudyOptions study;
   study.fit_tolerance = kLibraryFitTolerance;
-  lib.studies = study_materials(ctx, lib.set.materials, study, fit_progress);
-  lib.consensus = build_consensus(ctx, page_groups(lib.studies), study);
+  auto studies = study_materials(ctx, lib.set.materials, study, fit_progress);
+  lib.consensus = build_consensus(ctx, page_groups(studies), study);
   std::map<std::string, const MaterialStudy*> by_group;
   for (size_t i = 0; i < lib.consensus.groups.size(); ++i)
     by_group[lib.consensus.groups[i].name] = &lib.consensus.studies[i];
-  for (const auto& s : lib.studies) {
-    const auto* d = find_distance(lib.consensus, s);
-    const auto it = d ? by_group.find(spread_group(s.material->material.source)) : by_group.end();
+  // The pages' studies move into the rows (one copy of each, not two), and the consensus's
+  // pointers to them follow.
+  std::vector<size_t> row_of(studies.size());
+  lib.rows.reserve(studies.size() + by_group.size());
+  for (size_t i = 0; i < studies.size(); ++i) {
+    const auto* d = find_distance(lib.consensus, studies[i]);
+    const auto it =
+        d ? by_group.find(spread_group(studies[i].material->material.source)) : by_group.end();
     if (it != by_group.end()) lib.rows.push_back(*it->second), by_group.erase(it);
-    lib.rows.push_back(s);
+    row_of[i] = lib.rows.size();
+    lib.rows.push_back(std::move(studies[i]));
   }
+  for (auto& g : lib.consensus.groups)
+    for (auto& p : g.pages)
+      p.page = &lib.rows[row_of[static_cast<size_t>(p.page - studies.data())]];
   return lib;
 }
 

@@ -39,10 +39,10 @@ struct LibraryOptions {
 };
 
 struct Library {
-  MaterialSet set;  // the pages in the library and the skipped ones with their reasons
-  std::vector<MaterialStudy> studies;
+  MaterialSet set;         // the pages in the library and the skipped ones with their reasons
   ConsensusSet consensus;  // per group of metal pages with a bulk measurement (every model)
-  // The library's rows: the pages, each group's consensus just before its first page.
+  // The library's rows: the pages' studies (every model), each group's consensus just before its
+  // first page. The consensus's page distances point here.
   std::vector<MaterialStudy> rows;
 };
 
