@@ -4,6 +4,7 @@
 // table term, so that IBL and area lights pre-integrate them exactly.
 #include <array>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "fresnel/basis.h"
@@ -18,11 +19,24 @@ namespace fl::fresnel {
 inline constexpr Term kBasisTableTerm[kBasisTerms] = {Term::One, Term::B1, Term::B2, Term::B3,
                                                       Term::B4};
 
-// F = Σ_k c_k·b_k(μ), the formula itself (no clamp: the tables integrate it as it is).
+// The value of a number that may carry derivatives (double, color::Dual, a Ceres Jet).
+template <class T>
+double primal(const T& x) {
+  if constexpr (std::is_arithmetic_v<T>)
+    return x;
+  else if constexpr (requires { x.v; })
+    return x.v;
+  else
+    return x.a;
+}
+
+// F = Σ_k c_k·b_k(μ), the formula itself (no clamp: the tables integrate it as it is). The angle
+// is data, never a variable: the terms are evaluated in double, whatever T carries.
 template <class T>
 T basis_curve(T cos_theta, const T* c, int terms) {
+  const double mu = primal(cos_theta);
   T f = c[0];
-  for (int k = 1; k < terms; ++k) f = f + c[k] * basis_term(k, cos_theta);
+  for (int k = 1; k < terms; ++k) f = f + c[k] * basis_term(k, mu);
   return f;
 }
 
