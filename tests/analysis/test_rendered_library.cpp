@@ -1,6 +1,8 @@
 // Rendered error over the library (analysis/library/rendered_library.h).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "analysis/library/rendered_library.h"
 #include "analysis/lut/lut_accuracy.h"
 #include "analysis/pipeline/materials.h"
@@ -76,8 +78,10 @@ TEST(RenderedLibrary, GoldMatchesLutAccuracy) {
                 error_stats(rendered_de00(ctx, truth, m, p, Lighting::Area, points)).rms, 1e-12)
         << name;
   }
-  // basis2 has free weights on Schlick's two terms: no worse a fit of the curve than Schlick's
-  // F0, and on gold it renders better too.
+  // basis2, gold's curve projected on the basis's first two functions {1, b1}, renders it better
+  // than Schlick's F0 (measured 0.231 against 0.567 under IBL).
+  std::printf("gold under IBL: basis2 %.3f, schlick %.3f\n", lib.rms[0][shader_index("basis2")][0],
+              lib.rms[0][shader_index("schlick")][0]);
   EXPECT_LT(lib.rms[0][shader_index("basis2")][0], lib.rms[0][shader_index("schlick")][0]);
   // Fitted to the render, F82 renders no worse than its derived start.
   EXPECT_LE(

@@ -1,7 +1,8 @@
 #pragma once
 // The data-driven Fresnel basis (docs/basis.md): spectral Fresnel curves R(λ, μ) of the database's
-// pages, the fixed terms 1 and (1 − μ)⁵ projected out, the leading left singular vectors of the
-// stacked residuals, each written as a polynomial in μ. Eigen stays inside basis.cpp.
+// pages, 1 and (1 − μ)⁵ projected out, the leading left singular vectors of the stacked residuals
+// (the SVD construction), then b1..b4 optimized for the pages' ΔE2000 (optimize.h), each written
+// as a polynomial in μ. Eigen and Ceres stay inside analysis/basis.
 #include <array>
 #include <functional>
 #include <memory>
@@ -51,7 +52,7 @@ struct BasisOptions {
 // μ_j = cos(θ_j), θ_j = 90°·j/(m − 1), j = 0..m − 1 (μ = 1 first, exactly 0 last).
 std::vector<double> basis_mu_samples(int m);
 
-// The fixed terms: b0(μ) = 1, b1(μ) = (1 − μ)⁵ (Schlick's).
+// The SVD construction's fixed terms: b0(μ) = 1, b1(μ) = (1 − μ)⁵ (Schlick's).
 double basis_fixed_term(int k, double mu);
 
 // Weighted curves sampled at the same μ values, one row each: r_c(μ_j), weight w_c ≥ 0.
@@ -117,7 +118,7 @@ class Projector {
 // A data-driven term. Its polynomial is fitted in x = 2μ − 1 (on [−1, 1] the monomials are far
 // better conditioned than on [0, 1]: coefficients stay small and float evaluation accurate).
 struct BasisTerm {
-  std::vector<double> sampled;  // the normalized singular vector at the μ samples (max |b| = 1)
+  std::vector<double> sampled;  // the normalized function at the μ samples (max |b| = 1)
   std::vector<double> poly;     // its polynomial in x = 2μ − 1, c_0..c_degree
   std::vector<double> poly_mu;  // the same polynomial in μ
   double fit_max = 0, fit_rms = 0;  // polynomial − sampled at the samples

@@ -311,6 +311,14 @@ std::vector<BasisTerm> basis_terms(const Context& ctx,
   }
   if (b.svd.functions.size() != 3)
     throw InputError("basis: --construction optimized starts from 3 singular vectors (--terms 3)");
+  // The optimization samples the context's angles; the construction's samples must be the same.
+  const auto& angles = ctx.cos_thetas();
+  bool same = angles.size() == b.mu.size();
+  for (size_t j = 0; same && j < angles.size(); ++j) same = std::abs(angles[j] - b.mu[j]) < 1e-12;
+  if (!same)
+    throw InputError(
+        "basis: --construction optimized samples 91 angles uniform in θ; drop --angles or use "
+        "--construction svd");
   std::vector<std::vector<double>> initial;
   for (const auto& v : b.svd.functions) {
     const auto t = make_term(b.mu, v, degree);

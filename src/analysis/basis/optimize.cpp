@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <stdexcept>
 
 #include "analysis/basis/basis.h"
 #include "analysis/basis/optimize_surrogate.h"
@@ -92,6 +93,8 @@ MatrixXd solve(const Surrogate& s, const MatrixXd& fixed, const MatrixXd& space,
     ceres::GradientProblemSolver::Summary summary;
     ceres::GradientProblem problem(new Objective(s, fixed, space, free));
     ceres::Solve(options, problem, x.data(), &summary);
+    if (!summary.IsSolutionUsable())
+      throw std::runtime_error("basis: L-BFGS failed: " + summary.message);
     if (round_done) round_done();
   }
   return orthonormal_columns(x);

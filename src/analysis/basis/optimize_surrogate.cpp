@@ -100,10 +100,11 @@ double Surrogate::weigh(const std::vector<double>& s, std::vector<double>& d) co
   const BasisObjective& o = objective_;
   d.assign(s.size(), 0.0);
   double total = 0;
-  // a(e) with da/de: add a, and ∂a/∂s = da/de / (2e).
+  // a(e) with da/de: add a, and ∂a/∂s = da/de / (2e) (a page the basis fits exactly, e = 0,
+  // contributes no gradient).
   auto add = [&](size_t p, double a, double da_de) {
     total += a;
-    d[p] += da_de / (2 * std::sqrt(s[p]));
+    if (s[p] > 0) d[p] += da_de / (2 * std::sqrt(s[p]));
   };
   auto e = [&](size_t p) { return std::sqrt(s[p]); };
   for (const auto* cls : {&metals_, &others_})

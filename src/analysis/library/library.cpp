@@ -98,15 +98,18 @@ Library build_library(const Context& ctx, const LibraryOptions& options,
   std::map<std::string, const MaterialStudy*> by_group;
   for (size_t i = 0; i < lib.consensus.groups.size(); ++i)
     by_group[lib.consensus.groups[i].name] = &lib.consensus.studies[i];
-  // The pages' studies move into the rows (one copy of each, not two), and the consensus's
-  // pointers to them follow.
-  std::vector<size_t> row_of(studies.size());
-  lib.rows.reserve(studies.size() + by_group.size());
+  // Each page's group consensus, if it comes first before the page; then the pages' studies move
+  // into the rows, and the consensus's pointers to them follow.
+  std::vector<const MaterialStudy*> before(studies.size(), nullptr);
   for (size_t i = 0; i < studies.size(); ++i) {
-    const auto* d = find_distance(lib.consensus, studies[i]);
-    const auto it =
-        d ? by_group.find(spread_group(studies[i].material->material.source)) : by_group.end();
-    if (it != by_group.end()) lib.rows.push_back(*it->second), by_group.erase(it);
+    if (!find_distance(lib.consensus, studies[i])) continue;
+    const auto it = by_group.find(spread_group(studies[i].material->material.source));
+    if (it != by_group.end()) before[i] = it->second, by_group.erase(it);
+  }
+  std::vector<size_t> row_of(studies.size());
+  lib.rows.reserve(studies.size() + lib.consensus.studies.size());
+  for (size_t i = 0; i < studies.size(); ++i) {
+    if (before[i]) lib.rows.push_back(*before[i]);
     row_of[i] = lib.rows.size();
     lib.rows.push_back(std::move(studies[i]));
   }

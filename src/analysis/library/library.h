@@ -42,8 +42,14 @@ struct Library {
   MaterialSet set;         // the pages in the library and the skipped ones with their reasons
   ConsensusSet consensus;  // per group of metal pages with a bulk measurement (every model)
   // The library's rows: the pages' studies (every model), each group's consensus just before its
-  // first page. The consensus's page distances point here.
+  // first page. The consensus's page distances point here, so a library moves, never copies.
   std::vector<MaterialStudy> rows;
+
+  Library() = default;
+  Library(const Library&) = delete;
+  Library& operator=(const Library&) = delete;
+  Library(Library&&) = default;
+  Library& operator=(Library&&) = default;
 };
 
 // Loads the pages and studies them (every model, derived and fitted). `load_progress` and

@@ -246,8 +246,8 @@ Table rendered_library_table(const Context& ctx, const RenderedLibrary& lib,
       "dielectrics, then every page (whose figures are mostly the dielectrics').",
       "Shaders: schlick and f82 with derived parameters (spectral F0, F82); f82 rendered: F82 "
       "fitted to the render from the derived set; basis2: the ground-truth curve projected on "
-      "{1, (1 − μ)⁵} (Schlick's two channels with free weights, no shader of its own); basis3 to "
-      "basis5: the basis models' projections. terms: K, the table terms the shader weighs.",
+      "the basis's first two functions {1, b1} (no shader of its own); basis3 to basis5: the "
+      "basis models' projections. terms: K, the table terms the shader weighs.",
       "gpu_instructions, texture_fetches: the shader's SPIR-V cost under that lighting "
       "(bench/gpu_costs.csv); unmeasured where no row exists. worse_than_f82: pages where the "
       "shader renders worse than F82 derived; worst_pages: the class's five worst pages, worst "

@@ -222,8 +222,8 @@ std::vector<std::string> accuracy_notes(const Context& ctx) {
       "ibl_nv, ibl_hoffman, ibl_basis (and area_…): every model rendered three ways whatever "
       "its own shader does: F(n·v) × lobe; its RGB curve projected (least squares per channel "
       "over the angles) on Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, pre-integrated by those "
-      "tables; and projected on the 5-term basis {1, (1 − μ)⁵, b2, b3, b4}, pre-integrated by "
-      "its tables.",
+      "tables; and projected on the 5-term basis {1, b1, b2, b3, b4}, pre-integrated by its "
+      "tables.",
       "rendered: parameters fitted to these errors (½ Σ ΔE2000² over both lightings and every "
       "shading point, from the derived and fitted sets), not to the curve; its curve_rms_de00 is "
       "the curve of those parameters."};

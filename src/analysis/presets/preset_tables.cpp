@@ -51,8 +51,8 @@ void add_basis(std::vector<Cell>& row, const MaterialStudy& s, fresnel::Model ba
   for (double c : s.result(basis).derived) row.push_back(c);
 }
 std::string basis_note(int terms) {
-  std::string span = "1, (1 − μ)⁵", sum = "c0 + c1·(1 − μ)⁵";
-  for (int k = 2; k < terms; ++k) {
+  std::string span = "1", sum = "c0";
+  for (int k = 1; k < terms; ++k) {
     span += fmt::format(", b{}", k);
     sum += fmt::format(" + c{}·b{}(μ)", k, k);
   }

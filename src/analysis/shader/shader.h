@@ -5,12 +5,12 @@
 //
 // Functions, per model NAME, with its per-channel parameters as vec3 and shared ones as float:
 //   punctual  vec3 fresnel_NAME(float cos_theta, ...)      the model at a light's v·h
-//   ibl       vec3 fresnel_NAME_dfg(vec3 dfg, [vec3 dfg_2,] float nov, ...) from a DFG texel
-//             (r, g, b) and, for a model using the basis terms, a dfg_2 texel
+//   ibl       vec3 fresnel_NAME_dfg(vec3 dfg, [vec4 dfg_2,] float nov, ...) from a DFG texel
+//             (r, g, b) and, for a model using the basis terms, a dfg_2 texel (r, g, b, a)
 //             vec3 fresnel_NAME_ibl(DFG texture(s), float nov, float perceptual_roughness, ...)
 //                 the split-sum factor that multiplies the prefiltered environment
-//   area      vec3 fresnel_NAME_ltc(vec3 moments, [vec3 ltc_3,] float nov, ...) from an ltc_2
-//             texel (r, g, b) and, for the basis terms, an ltc_3 texel
+//   area      vec3 fresnel_NAME_ltc(vec3 moments, [vec4 ltc_3,] float nov, ...) from an ltc_2
+//             texel (r, g, b) and, for the basis terms, an ltc_3 texel (r, g, b, a)
 //             vec3 fresnel_NAME_area(ltc_2 [, ltc_3] texture, float nov, float
 //             perceptual_roughness, ...) the Fresnel-weighted norm that multiplies the LTC
 //             polygon integral
