@@ -80,7 +80,9 @@ void add_basis_command(CLI::App& app, GlobalOptions& g, Runner& selected) {
   sub->add_option("--out", a->out, "output folder (created if missing; its parent must exist)")
       ->required()
       ->check(output_location());
-  sub->add_option("--terms", a->options.data_terms, "data-driven terms (K = 2 + terms)")
+  sub->add_option(
+         "--terms", a->options.data_terms,
+         "singular vectors after b1 (K = 2 to 2 + terms); the optimized construction needs 3")
       ->capture_default_str()
       ->check(CLI::Range(1, 8));
   sub->add_option("--degree", a->options.poly_degree, "degree of each term's polynomial in μ")
