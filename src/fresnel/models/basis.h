@@ -19,9 +19,10 @@ namespace fl::fresnel {
 inline constexpr Term kBasisTableTerm[kBasisTerms] = {Term::One, Term::B1, Term::B2, Term::B3,
                                                       Term::B4};
 
-// The value of a number that may carry derivatives (double, color::Dual, a Ceres Jet).
+// The value of a number that may carry derivatives (float or double as it is, color::Dual, a Ceres
+// Jet).
 template <class T>
-double primal(const T& x) {
+auto primal(const T& x) {
   if constexpr (std::is_arithmetic_v<T>)
     return x;
   else if constexpr (requires { x.v; })
@@ -34,7 +35,7 @@ double primal(const T& x) {
 // is data, never a variable: the terms are evaluated in double, whatever T carries.
 template <class T>
 T basis_curve(T cos_theta, const T* c, int terms) {
-  const double mu = primal(cos_theta);
+  const auto mu = primal(cos_theta);
   T f = c[0];
   for (int k = 1; k < terms; ++k) f = f + c[k] * basis_term(k, mu);
   return f;
