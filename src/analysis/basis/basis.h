@@ -118,9 +118,9 @@ class Projector {
 // A data-driven term. Its polynomial is fitted in x = 2μ − 1 (on [−1, 1] the monomials are far
 // better conditioned than on [0, 1]: coefficients stay small and float evaluation accurate).
 struct BasisTerm {
-  std::vector<double> sampled;  // the normalized function at the μ samples (max |b| = 1)
-  std::vector<double> poly;     // its polynomial in x = 2μ − 1, c_0..c_degree
-  std::vector<double> poly_mu;  // the same polynomial in μ
+  std::vector<double> sampled;      // the normalized function at the μ samples (max |b| = 1)
+  std::vector<double> poly;         // its polynomial in x = 2μ − 1, c_0..c_degree
+  std::vector<double> poly_mu;      // the same polynomial in μ
   double fit_max = 0, fit_rms = 0;  // polynomial − sampled at the samples
   double dense_max = 0;             // max |polynomial| on 10001 points of [0, 1]
   // Largest |float Horner − double| on those points, of poly (in x) and of poly_mu (in μ).
