@@ -52,6 +52,13 @@ double basis_fixed_term(int k, double mu) {
   return k == 0 ? 1.0 : s * s * s * s * s;
 }
 
+std::vector<std::vector<double>> basis_fixed_span(const std::vector<double>& mu) {
+  std::vector<std::vector<double>> span(2, std::vector<double>(mu.size()));
+  for (size_t j = 0; j < mu.size(); ++j)
+    for (int k = 0; k < 2; ++k) span[k][j] = basis_fixed_term(k, mu[j]);
+  return span;
+}
+
 namespace {
 
 using Eigen::MatrixXd;
@@ -95,10 +102,7 @@ struct ResidualStack::Impl {
 };
 
 ResidualStack::ResidualStack(const std::vector<double>& mu) : impl_(std::make_unique<Impl>()) {
-  std::vector<std::vector<double>> fixed(2, std::vector<double>(mu.size()));
-  for (size_t j = 0; j < mu.size(); ++j)
-    for (int k = 0; k < 2; ++k) fixed[k][j] = basis_fixed_term(k, mu[j]);
-  Eigen::HouseholderQR<MatrixXd> qr(sampled_matrix(fixed));
+  Eigen::HouseholderQR<MatrixXd> qr(sampled_matrix(basis_fixed_span(mu)));
   impl_->fixed_q = qr.householderQ() * MatrixXd::Identity(mu.size(), 2);
   impl_->r = MatrixXd::Zero(mu.size(), mu.size());
 }

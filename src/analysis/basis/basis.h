@@ -54,6 +54,8 @@ std::vector<double> basis_mu_samples(int m);
 
 // The SVD construction's fixed terms: b0(μ) = 1, b1(μ) = (1 − μ)⁵ (Schlick's).
 double basis_fixed_term(int k, double mu);
+// Both sampled at `mu`: {b0(μ_j)}, {b1(μ_j)}.
+std::vector<std::vector<double>> basis_fixed_span(const std::vector<double>& mu);
 
 // Weighted curves sampled at the same μ values, one row each: r_c(μ_j), weight w_c ≥ 0.
 struct CurveRows {

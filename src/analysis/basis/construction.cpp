@@ -59,14 +59,6 @@ void add_page_rows(const spectral::ComplexIorSpectrum& ior, const Wavelengths& w
   }
 }
 
-// {1, (1 − μ)⁵} sampled at `points`.
-std::vector<std::vector<double>> schlick_span(const std::vector<double>& points) {
-  std::vector<std::vector<double>> span(2);
-  for (double m : points)
-    for (int k = 0; k < 2; ++k) span[k].push_back(basis_fixed_term(k, m));
-  return span;
-}
-
 // The function sets projected on: K = 2..1 + terms (b0 = 1, then the terms' polynomials), then
 // Hoffman's span {1, (1 − μ)⁵, μ(1 − μ)⁶}, then the peer's first 3, 4, 5 functions (as many
 // as it has), each sampled at `points`.
@@ -278,8 +270,8 @@ std::vector<double> page_weights(const Context& ctx,
                                  const BasisOptions& options) {
   std::vector<double> weight(pages.size(), 1.0);
   if (options.weighting == BasisWeighting::Perceptual) {
-    const std::vector<Projector> spectral = {Projector(schlick_span(mu))};
-    const std::vector<Projector> rgb = {Projector(schlick_span(ctx.cos_thetas()))};
+    const std::vector<Projector> spectral = {Projector(basis_fixed_span(mu))};
+    const std::vector<Projector> rgb = {Projector(basis_fixed_span(ctx.cos_thetas()))};
     parallel_for(pages.size(), [&](size_t i) {
       const auto p = project_page(ctx, *pages[i], w, mu, spectral, rgb);
       weight[i] = std::pow(p.rms_de2000[0] / p.rms_reflectance[0], 2);
@@ -305,7 +297,7 @@ std::vector<BasisTerm> basis_terms(const Context& ctx,
   const int degree = b.options.poly_degree;
   std::vector<BasisTerm> terms;
   if (b.options.construction == BasisConstruction::Svd) {
-    terms.push_back(make_term(b.mu, schlick_span(b.mu)[1], degree));
+    terms.push_back(make_term(b.mu, basis_fixed_span(b.mu)[1], degree));
     for (const auto& v : b.svd.functions) terms.push_back(make_term(b.mu, v, degree));
     return terms;
   }

@@ -100,10 +100,9 @@ MatrixXd solve(const Surrogate& s, const MatrixXd& fixed, const MatrixXd& space,
   return orthonormal_columns(x);
 }
 
-MatrixXd sampled(const std::vector<double>& mu, double (*f)(double)) {
-  MatrixXd v(static_cast<Eigen::Index>(mu.size()), 1);
-  for (size_t j = 0; j < mu.size(); ++j) v(static_cast<Eigen::Index>(j), 0) = f(mu[j]);
-  return v;
+// A sampled function as a column.
+MatrixXd as_column(const std::vector<double>& f) {
+  return Eigen::Map<const MatrixXd>(f.data(), static_cast<Eigen::Index>(f.size()), 1);
 }
 
 std::vector<double> column(const MatrixXd& m, Eigen::Index c) {
@@ -121,12 +120,13 @@ std::vector<std::vector<double>> optimize_terms(const Context& ctx,
   const auto data = surrogate_pages(ctx, pages);
   const Surrogate surrogate(data, BasisObjective{});
   const Surrogate nested(data, nested_objective());
-  const MatrixXd one = sampled(mu, [](double m) { return basis_fixed_term(0, m); });
+  const auto fixed = basis_fixed_span(mu);
+  const MatrixXd one = as_column(fixed[0]);
   const FreeSpace fs = free_space(mu, one, degree);
 
   // K = 4: span{b1, b2, b3} from {(1 − μ)⁵, b2, b3}.
   MatrixXd start(one.rows(), 3);
-  start.col(0) = sampled(mu, [](double m) { return basis_fixed_term(1, m); });
+  start.col(0) = as_column(fixed[1]);
   for (Eigen::Index k = 1; k < 3; ++k)
     for (Eigen::Index j = 0; j < start.rows(); ++j)
       start(j, k) = initial[static_cast<size_t>(k - 1)][static_cast<size_t>(j)];
