@@ -189,45 +189,70 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
 
 // ½ Σ ΔE2000² between a ColourTarget's truth and its colours: the residuals and their derivatives
 // over RGB from one batch (color::ciede2000_residuals_batch), the colours' derivatives over the
-// parameters by central differences (ColourTarget's contract), joined by the chain rule.
+// parameters by central differences (ColourTarget's contract), joined by the chain rule. With
+// bounds, Ceres asks for the same point more than once (the step's cost, the projected line
+// search's trial with its gradient, the accepted point's Jacobian), so the last point's residuals
+// and Jacobian are kept and each point is computed once: the same bits, fewer colour evaluations.
 class ColourCost : public ceres::CostFunction {
  public:
-  ColourCost(const ColourTarget* target, int params) : t_(target), n_(target->truth_lab.size()) {
+  ColourCost(const ColourTarget* target, int params)
+      : t_(target), n_(target->truth_lab.size()), np_(params) {
     mutable_parameter_block_sizes()->push_back(params);
     set_num_residuals(static_cast<int>(3 * n_));
+    rgb_.resize(n_), up_.resize(n_), down_.resize(n_);
+    residuals_.resize(3 * n_), d_rgb_.resize(9 * n_), jacobian_.resize(3 * n_ * np_);
   }
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    const int np = parameter_block_sizes()[0];
-    std::vector<double> p(parameters[0], parameters[0] + np);
-    std::vector<color::Rgb> rgb(n_), up(n_), down(n_);
-    if (!t_->colours(p.data(), rgb.data())) return false;
-    std::vector<double> d_rgb(9 * n_);
-    color::ciede2000_residuals_batch(t_->to_lab, t_->truth_lab, rgb, std::span(residuals, 3 * n_),
-                                     d_rgb);
-    if (!jacobians || !jacobians[0]) return true;
-    for (int j = 0; j < np; ++j) {
+    const bool want_jacobian = jacobians && jacobians[0];
+    if (!std::equal(p_.begin(), p_.end(), parameters[0]) || p_.empty()) {
+      p_.assign(parameters[0], parameters[0] + np_);
+      have_jacobian_ = false;
+      valid_ = t_->colours(p_.data(), rgb_.data());
+      if (valid_)
+        color::ciede2000_residuals_batch(t_->to_lab, t_->truth_lab, rgb_, residuals_, d_rgb_);
+    }
+    if (!valid_) return false;
+    std::copy(residuals_.begin(), residuals_.end(), residuals);
+    if (!want_jacobian) return true;
+    if (!have_jacobian_ && !evaluate_jacobian()) return false;
+    std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
+    return true;
+  }
+
+ private:
+  // The Jacobian at p_, from rgb_'s batch derivatives d_rgb_.
+  bool evaluate_jacobian() const {
+    std::vector<double> p = p_;
+    for (int j = 0; j < np_; ++j) {
       // Step of 1e-6 relative (at least 1e-6): central differences' error is O(h²).
       const double h = 1e-6 * std::max(1.0, std::abs(p[j])), pj = p[j];
       p[j] = pj + h;
-      if (!t_->colours(p.data(), up.data())) return false;
+      if (!t_->colours(p.data(), up_.data())) return false;
       p[j] = pj - h;
-      if (!t_->colours(p.data(), down.data())) return false;
+      if (!t_->colours(p.data(), down_.data())) return false;
       p[j] = pj;
       for (size_t i = 0; i < n_; ++i)
         for (int q = 0; q < 3; ++q) {
           double d = 0;
           for (int c = 0; c < 3; ++c)
-            d += d_rgb[(3 * q + c) * n_ + i] * (up[i][c] - down[i][c]) / (2 * h);
-          jacobians[0][(3 * i + q) * np + j] = d;
+            d += d_rgb_[(3 * q + c) * n_ + i] * (up_[i][c] - down_[i][c]) / (2 * h);
+          jacobian_[(3 * i + q) * np_ + j] = d;
         }
     }
+    have_jacobian_ = true;
     return true;
   }
 
- private:
   const ColourTarget* t_;
   size_t n_;
+  int np_;
+  // The last point asked for and what was computed there (a cost function serves one
+  // single-threaded solve).
+  mutable std::vector<double> p_;
+  mutable bool valid_ = false, have_jacobian_ = false;
+  mutable std::vector<color::Rgb> rgb_, up_, down_;
+  mutable std::vector<double> residuals_, d_rgb_, jacobian_;
 };
 
 // ½ Σ ΔE2000² of a ColourTarget at `params` (infinity where it fails or is not finite).
