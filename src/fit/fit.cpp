@@ -141,6 +141,46 @@ std::vector<int> extinction_indices(Model m) {
   return out;
 }
 
+// A cost function that keeps the last point it was asked for, with its residuals and (once asked
+// for) its Jacobian. With bounds, Ceres asks for a point more than once: the step's cost, the
+// projected line search's trial with its gradient, then the accepted point's Jacobian. Each point is
+// computed once; the answers are the same bits.
+class LastPointCost : public ceres::CostFunction {
+ public:
+  explicit LastPointCost(ceres::CostFunction* cost) : cost_(cost) {
+    *mutable_parameter_block_sizes() = cost->parameter_block_sizes();
+    set_num_residuals(cost->num_residuals());
+    const size_t params = static_cast<size_t>(cost->parameter_block_sizes()[0]);
+    residuals_.resize(static_cast<size_t>(num_residuals()));
+    jacobian_.resize(residuals_.size() * params);
+  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const bool want_jacobian = jacobians && jacobians[0];
+    const size_t params = static_cast<size_t>(parameter_block_sizes()[0]);
+    if (p_.empty() || !std::equal(p_.begin(), p_.end(), parameters[0])) {
+      p_.assign(parameters[0], parameters[0] + params);
+      double* jacobian = jacobian_.data();
+      valid_ = cost_->Evaluate(parameters, residuals_.data(), want_jacobian ? &jacobian : nullptr);
+      have_jacobian_ = want_jacobian;
+    } else if (want_jacobian && !have_jacobian_ && valid_) {
+      double* jacobian = jacobian_.data();
+      valid_ = cost_->Evaluate(parameters, residuals_.data(), &jacobian);
+      have_jacobian_ = true;
+    }
+    if (!valid_) return false;
+    std::copy(residuals_.begin(), residuals_.end(), residuals);
+    if (want_jacobian) std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
+    return true;
+  }
+
+ private:
+  std::unique_ptr<ceres::CostFunction> cost_;
+  // The last point and what was computed there (a cost function serves one single-threaded solve).
+  mutable std::vector<double> p_, residuals_, jacobian_;
+  mutable bool valid_ = false, have_jacobian_ = false;
+};
+
 // One bounded solve of `cost` (owned by the problem from here) from `params`.
 FitResult solve_cost(Model m, ceres::CostFunction* cost, std::vector<double> params,
                      const FitOptions& options) {
@@ -153,7 +193,7 @@ FitResult solve_cost(Model m, ceres::CostFunction* cost, std::vector<double> par
   const auto held = options.lossless ? extinction_indices(m) : std::vector<int>{};
   for (int i : held) params[i] = 0.0;
   ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, params.data());
+  problem.AddResidualBlock(new LastPointCost(cost), nullptr, params.data());
   if (!held.empty())
     problem.SetManifold(params.data(),
                         new ceres::SubsetManifold(static_cast<int>(params.size()), held));
@@ -189,70 +229,45 @@ FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> par
 
 // ½ Σ ΔE2000² between a ColourTarget's truth and its colours: the residuals and their derivatives
 // over RGB from one batch (color::ciede2000_residuals_batch), the colours' derivatives over the
-// parameters by central differences (ColourTarget's contract), joined by the chain rule. With
-// bounds, Ceres asks for the same point more than once (the step's cost, the projected line
-// search's trial with its gradient, the accepted point's Jacobian), so the last point's residuals
-// and Jacobian are kept and each point is computed once: the same bits, fewer colour evaluations.
+// parameters by central differences (ColourTarget's contract), joined by the chain rule.
 class ColourCost : public ceres::CostFunction {
  public:
-  ColourCost(const ColourTarget* target, int params)
-      : t_(target), n_(target->truth_lab.size()), np_(params) {
+  ColourCost(const ColourTarget* target, int params) : t_(target), n_(target->truth_lab.size()) {
     mutable_parameter_block_sizes()->push_back(params);
     set_num_residuals(static_cast<int>(3 * n_));
-    rgb_.resize(n_), up_.resize(n_), down_.resize(n_);
-    residuals_.resize(3 * n_), d_rgb_.resize(9 * n_), jacobian_.resize(3 * n_ * np_);
   }
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    const bool want_jacobian = jacobians && jacobians[0];
-    if (!std::equal(p_.begin(), p_.end(), parameters[0]) || p_.empty()) {
-      p_.assign(parameters[0], parameters[0] + np_);
-      have_jacobian_ = false;
-      valid_ = t_->colours(p_.data(), rgb_.data());
-      if (valid_)
-        color::ciede2000_residuals_batch(t_->to_lab, t_->truth_lab, rgb_, residuals_, d_rgb_);
-    }
-    if (!valid_) return false;
-    std::copy(residuals_.begin(), residuals_.end(), residuals);
-    if (!want_jacobian) return true;
-    if (!have_jacobian_ && !evaluate_jacobian()) return false;
-    std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
-    return true;
-  }
-
- private:
-  // The Jacobian at p_, from rgb_'s batch derivatives d_rgb_.
-  bool evaluate_jacobian() const {
-    std::vector<double> p = p_;
-    for (int j = 0; j < np_; ++j) {
+    const int np = parameter_block_sizes()[0];
+    std::vector<double> p(parameters[0], parameters[0] + np);
+    std::vector<color::Rgb> rgb(n_), up(n_), down(n_);
+    if (!t_->colours(p.data(), rgb.data())) return false;
+    std::vector<double> d_rgb(9 * n_);
+    color::ciede2000_residuals_batch(t_->to_lab, t_->truth_lab, rgb, std::span(residuals, 3 * n_),
+                                     d_rgb);
+    if (!jacobians || !jacobians[0]) return true;
+    for (int j = 0; j < np; ++j) {
       // Step of 1e-6 relative (at least 1e-6): central differences' error is O(h²).
       const double h = 1e-6 * std::max(1.0, std::abs(p[j])), pj = p[j];
       p[j] = pj + h;
-      if (!t_->colours(p.data(), up_.data())) return false;
+      if (!t_->colours(p.data(), up.data())) return false;
       p[j] = pj - h;
-      if (!t_->colours(p.data(), down_.data())) return false;
+      if (!t_->colours(p.data(), down.data())) return false;
       p[j] = pj;
       for (size_t i = 0; i < n_; ++i)
         for (int q = 0; q < 3; ++q) {
           double d = 0;
           for (int c = 0; c < 3; ++c)
-            d += d_rgb_[(3 * q + c) * n_ + i] * (up_[i][c] - down_[i][c]) / (2 * h);
-          jacobian_[(3 * i + q) * np_ + j] = d;
+            d += d_rgb[(3 * q + c) * n_ + i] * (up[i][c] - down[i][c]) / (2 * h);
+          jacobians[0][(3 * i + q) * np + j] = d;
         }
     }
-    have_jacobian_ = true;
     return true;
   }
 
+ private:
   const ColourTarget* t_;
   size_t n_;
-  int np_;
-  // The last point asked for and what was computed there (a cost function serves one
-  // single-threaded solve).
-  mutable std::vector<double> p_;
-  mutable bool valid_ = false, have_jacobian_ = false;
-  mutable std::vector<color::Rgb> rgb_, up_, down_;
-  mutable std::vector<double> residuals_, d_rgb_, jacobian_;
 };
 
 // ½ Σ ΔE2000² of a ColourTarget at `params` (infinity where it fails or is not finite).
