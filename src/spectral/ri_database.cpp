@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "spectral/tabulated.h"
@@ -49,14 +50,15 @@ std::vector<double> parse_numbers(const std::string& file, int line, std::string
 // defect of the row, judged where its wavelength lies.
 void add_data_line(TabulatedRows& rows, const std::string& file, int line, std::string_view raw,
                    size_t columns) {
-  const auto fields = split_fields(raw, " \t,");
+  std::array<std::string_view, 3> fields;
+  const size_t count = split_fields(raw, " \t,", fields);
   double lambda_um = 0;
   if (!parse_finite(fields.front(), lambda_um))
     throw InputError(file, line, fmt::format("data: '{}' is not a finite number", fields.front()));
   const double lambda_nm = lambda_um * kNmPerUm;
-  if (fields.size() != columns)
+  if (count != columns)
     return rows.add_defect(line, lambda_nm,
-                           fmt::format("expected {} columns, found {}", columns, fields.size()));
+                           fmt::format("expected {} columns, found {}", columns, count));
   double v[3] = {lambda_um, 0, 0};
   for (size_t c = 1; c < columns; ++c)
     if (!parse_finite(fields[c], v[c]))

@@ -160,18 +160,40 @@ std::vector<std::string_view> split_lines(std::string_view text) {
   return lines;
 }
 
+namespace {
+
+bool is_delimiter(char c, std::string_view delimiters) {
+  for (const char d : delimiters)
+    if (c == d) return true;
+  return false;
+}
+
+// The next field of `line` at or after `i` (empty at the end); `i` moves past it.
+std::string_view next_field(std::string_view line, std::string_view delimiters, size_t& i) {
+  while (i < line.size() && is_delimiter(line[i], delimiters)) ++i;
+  const size_t start = i;
+  while (i < line.size() && !is_delimiter(line[i], delimiters)) ++i;
+  return line.substr(start, i - start);
+}
+
+}  // namespace
+
 std::vector<std::string_view> split_fields(std::string_view line, std::string_view delimiters) {
   std::vector<std::string_view> out;
   size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && delimiters.find(line[i]) != std::string_view::npos) ++i;
-    if (i >= line.size()) break;
-    size_t j = i;
-    while (j < line.size() && delimiters.find(line[j]) == std::string_view::npos) ++j;
-    out.push_back(line.substr(i, j - i));
-    i = j;
-  }
+  for (auto f = next_field(line, delimiters, i); !f.empty(); f = next_field(line, delimiters, i))
+    out.push_back(f);
   return out;
+}
+
+size_t split_fields(std::string_view line, std::string_view delimiters,
+                    std::span<std::string_view> out) {
+  size_t count = 0, i = 0;
+  for (auto f = next_field(line, delimiters, i); !f.empty(); f = next_field(line, delimiters, i)) {
+    if (count < out.size()) out[count] = f;
+    ++count;
+  }
+  return count;
 }
 
 std::string_view trim(std::string_view s) {

@@ -2,6 +2,7 @@
 // Reading inputs safely: only regular files of bounded size; missing files, directories, devices,
 // FIFOs, binary data, BOM and CRLF.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,6 +37,10 @@ std::vector<std::string_view> split_lines(std::string_view text);
 
 // Splits on any run of the given delimiter characters, dropping empty fields.
 std::vector<std::string_view> split_fields(std::string_view line, std::string_view delimiters);
+// The same fields, the first out.size() of them into `out` (a data row's, without a vector per
+// row); returns how many fields the line has.
+size_t split_fields(std::string_view line, std::string_view delimiters,
+                    std::span<std::string_view> out);
 
 // The whole field (trimmed) as a decimal number, correctly rounded (std::from_chars; an optional
 // leading '+'); false when it is not a finite number. Denormals, and values below them that round
