@@ -149,10 +149,7 @@ std::vector<double> table_de00(const Context& ctx, Model m, const std::vector<do
   std::vector<color::Rgb> exact(points.size()), tables(points.size());
   engine_shading(m, params, lighting, points, exact.data(), Integrals::Exact);
   engine_shading(m, params, lighting, points, tables.data());
-  std::vector<double> out;
-  for (size_t k = 0; k < points.size(); ++k)
-    out.push_back(color::ciede2000(ctx.rgb_to_lab(exact[k]), ctx.rgb_to_lab(tables[k])));
-  return out;
+  return de2000_per_angle(ctx, exact, tables);
 }
 
 std::vector<double> rendered_de00_terms(const Context& ctx,
@@ -160,11 +157,10 @@ std::vector<double> rendered_de00_terms(const Context& ctx,
                                         const std::array<fresnel::TableTerms, 3>& weights,
                                         Lighting lighting,
                                         const std::vector<ShadingPoint>& points) {
-  std::vector<double> out;
+  std::vector<color::Rgb> engine(points.size());
   for (size_t k = 0; k < points.size(); ++k)
-    out.push_back(color::ciede2000(
-        truth_lab[k], ctx.rgb_to_lab(engine_shading_terms(weights, lighting, points[k]))));
-  return out;
+    engine[k] = engine_shading_terms(weights, lighting, points[k]);
+  return de2000_per_angle(ctx, truth_lab, engine);
 }
 
 std::vector<double> rendered_de00_terms(const Context& ctx, const std::vector<color::Rgb>& truth,
@@ -206,10 +202,7 @@ std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::L
       engine[k] = shading_at_nov(m, params, lighting, points[k]);
   else
     engine_shading(m, params, lighting, points, engine.data());
-  std::vector<double> out;
-  for (size_t k = 0; k < points.size(); ++k)
-    out.push_back(color::ciede2000(truth_lab[k], ctx.rgb_to_lab(engine[k])));
-  return out;
+  return de2000_per_angle(ctx, truth_lab, engine);
 }
 
 std::vector<double> rendered_de00(const Context& ctx, const std::vector<color::Rgb>& truth, Model m,

@@ -171,8 +171,6 @@ std::vector<color::Lab> lab_curve(const Context& ctx, const std::vector<color::R
   return out;
 }
 
-namespace {
-
 std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Lab>& lab_a,
                                      const std::vector<color::Rgb>& b) {
   const auto lab_b = lab_curve(ctx, b);
@@ -180,8 +178,6 @@ std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color
   color::ciede2000_batch(lab_a, lab_b, out);
   return out;
 }
-
-}  // namespace
 
 std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,
                                      const std::vector<color::Rgb>& b) {
