@@ -15,7 +15,7 @@ PACKAGES=(
   libopenexr-dev libimath-dev
   libyaml-dev libcli11-dev libfmt-dev libtbb-dev nlohmann-json3-dev libhwy-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev libxml2-utils
-  liblcms2-dev libcairo2-dev fonts-dejavu-core libgif-dev libwebp-dev
+  liblcms2-dev libcairo2-dev libpng-dev fonts-dejavu-core libgif-dev libwebp-dev
   clang libclang-rt-14-dev clang-format python3
   glslang-tools spirv-tools
   mesa-vulkan-drivers libvulkan-dev vulkan-tools

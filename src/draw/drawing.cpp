@@ -16,6 +16,7 @@
 #include <regex>
 #include <stdexcept>
 
+#include "draw/png.h"
 #include "io/writer.h"
 #include "util/errors.h"
 
@@ -223,6 +224,23 @@ std::string renumber_svg_ids(const std::string& svg) {
   return out;
 }
 
+// An RGB24 image surface's pixels as packed RGB bytes.
+std::vector<std::uint8_t> rgb_bytes(cairo_surface_t* s) {
+  cairo_surface_flush(s);
+  const int width = cairo_image_surface_get_width(s), height = cairo_image_surface_get_height(s);
+  const int stride = cairo_image_surface_get_stride(s);
+  const unsigned char* data = cairo_image_surface_get_data(s);
+  std::vector<std::uint8_t> rgb;
+  rgb.reserve(static_cast<size_t>(width) * height * 3);
+  for (int y = 0; y < height; ++y) {
+    const auto* row =
+        reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
+    for (int x = 0; x < width; ++x)
+      for (const int shift : {16, 8, 0}) rgb.push_back(static_cast<std::uint8_t>(row[x] >> shift));
+  }
+  return rgb;
+}
+
 cairo_surface_t* vector_surface(FileType type, const Drawing& d, std::string& out) {
   if (type == FileType::Svg) {
     cairo_surface_t* s = cairo_svg_surface_create_for_stream(append_bytes, &out, d.width, d.height);
@@ -244,7 +262,7 @@ std::string encode_with(const Drawing& d, FileType type, const LabelFont* font) 
                          : vector_surface(type, d, out),
                      cairo_surface_destroy);
   paint_drawing(s.get(), d, type, font);
-  if (type == FileType::Png) check(cairo_surface_write_to_png_stream(s.get(), append_bytes, &out));
+  if (type == FileType::Png) out = encode_png_rgb(d.width, d.height, rgb_bytes(s.get()));
   cairo_surface_finish(s.get());
   check(cairo_surface_status(s.get()));
   return type == FileType::Svg ? renumber_svg_ids(out) : out;

@@ -1,7 +1,9 @@
 #include "draw/png.h"
 
 #include <cairo.h>
+#include <png.h>
 
+#include <csetjmp>
 #include <memory>
 #include <stdexcept>
 
@@ -11,15 +13,52 @@
 
 namespace fl::draw {
 
-std::string encode_png(const io::Image8& image) {
-  if (image.width <= 0 || image.height <= 0 ||
-      image.pixels.size() != static_cast<size_t>(image.width) * image.height * 3)
+namespace {
+
+void append_bytes(png_structp png, png_bytep data, png_size_t length) {
+  try {
+    static_cast<std::string*>(png_get_io_ptr(png))
+        ->append(reinterpret_cast<const char*>(data), length);
+  } catch (...) {
+    png_error(png, "out of memory");
+  }
+}
+void no_flush(png_structp) {}
+// libpng's errors return to encode_png_rgb's setjmp, silently (it throws); it has no warnings to
+// give for images it is handed whole.
+[[noreturn]] void on_error(png_structp png, png_const_charp) {
+  png_longjmp(png, 1);
+}
+void on_warning(png_structp, png_const_charp) {}
+
+}  // namespace
+
+std::string encode_png_rgb(int width, int height, std::span<const std::uint8_t> rgb) {
+  if (width <= 0 || height <= 0 || rgb.size() != static_cast<size_t>(width) * height * 3)
     throw std::logic_error("encode_png: image size and pixel count disagree");
-  Drawing d;
-  d.width = image.width;
-  d.height = image.height;
-  d.add(Picture{0, 0, image});
-  return encode_without_text(d, FileType::Png);
+  std::string out;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, on_error, on_warning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error("PNG encoding failed");
+  }
+  png_set_write_fn(png, &out, append_bytes, no_flush);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+  png_write_info(png, info);
+  const size_t row_bytes = static_cast<size_t>(width) * 3;
+  for (int y = 0; y < height; ++y)
+    png_write_row(png, rgb.data() + static_cast<size_t>(y) * row_bytes);
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return out;
+}
+
+std::string encode_png(const io::Image8& image) {
+  return encode_png_rgb(image.width, image.height, image.pixels);
 }
 
 void write_png_atomic(const std::string& path, const io::Image8& image) {
