@@ -74,8 +74,14 @@ std::string to_csv(const Table& t) {
     first = false;
   }
   out += '\n';
+  out += to_csv_rows(t);
+  return out;
+}
+
+std::string to_csv_rows(const Table& t) {
+  std::string out;
   for (const auto& row : t.rows) {
-    first = true;
+    bool first = true;
     for (size_t c = 0; c < row.size(); ++c) {
       if (!t.columns[c].in_csv) continue;
       out += (first ? "" : ",") + csv_quote(cell_text(row[c], t.columns[c], ""));

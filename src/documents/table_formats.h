@@ -15,6 +15,8 @@ const char* extension(Format f);
 // same results give byte-identical files. Non-finite numbers are written as empty cells (CSV),
 // "n/a" (Markdown) or null (JSON).
 std::string to_csv(const Table& t);
+// The rows alone, without the header line (a table written in parts).
+std::string to_csv_rows(const Table& t);
 std::string to_markdown(const Table& t, int heading_level = 1);
 std::string to_json(const Table& t);
 std::string render(const Table& t, Format f);

@@ -41,19 +41,22 @@ fs::path common_folder(const Files& files) {
   return common;
 }
 
-// Writes `files` (absolute paths under `root`) into the staging folder `stage` at the same
-// relative paths; every file's error names its user path.
-void stage_files(const fs::path& root, const fs::path& stage, const Files& files) {
+// Writes the file at `path` (under `root`) into the staging folder `stage` at the same relative
+// path; its error names the user path.
+void stage_file(const fs::path& root, const fs::path& stage, const std::string& path,
+                const std::string& bytes) {
   std::error_code ec;
-  for (const auto& [path, bytes] : files) {
-    const fs::path rel = fs::absolute(path).lexically_normal().lexically_relative(root);
-    if (rel.empty() || *rel.begin() == "..")
-      throw std::runtime_error(fmt::format("{}: outside the output folder", path));
-    if (fs::is_directory(path, ec))
-      throw InputError(path, 0, "is a directory, cannot write a file there");
-    fs::create_directories((stage / rel).parent_path(), ec);
-    staging::write_checked(stage / rel, bytes, path);
-  }
+  const fs::path rel = fs::absolute(path).lexically_normal().lexically_relative(root);
+  if (rel.empty() || *rel.begin() == "..")
+    throw std::runtime_error(fmt::format("{}: outside the output folder", path));
+  if (fs::is_directory(path, ec))
+    throw InputError(path, 0, "is a directory, cannot write a file there");
+  fs::create_directories((stage / rel).parent_path(), ec);
+  staging::write_checked(stage / rel, bytes, path);
+}
+
+void stage_files(const fs::path& root, const fs::path& stage, const Files& files) {
+  for (const auto& [path, bytes] : files) stage_file(root, stage, path, bytes);
 }
 
 }  // namespace
@@ -140,10 +143,9 @@ void replace_folder_atomic(const std::string& folder, const Files& files,
   std::error_code ec;
   try {
     fs::create_directory(fresh);
-    Files inside{{(fs::path(folder) / marker).string(), ""}};
+    stage_file(target, fresh, (fs::path(folder) / marker).string(), "");
     for (const auto& [path, bytes] : files)
-      inside.emplace_back((fs::path(folder) / path).string(), bytes);
-    stage_files(target, fresh, inside);
+      stage_file(target, fresh, (fs::path(folder) / path).string(), bytes);
   } catch (...) {
     fs::remove_all(fresh, ec);
     throw;

@@ -14,6 +14,7 @@
 #include "spectral/pages.h"
 #include "spectral/text_file.h"
 #include "util/errors.h"
+#include "util/parallel.h"
 #include "util/quantile.h"
 #include "util/suggest.h"
 
@@ -301,7 +302,9 @@ ConsensusSet build_consensus(const Context& ctx, const std::vector<GroupPages>& 
     if (std::any_of(g.pages.begin(), g.pages.end(),
                     [](const MaterialStudy* s) { return used_for_consensus(*s); }))
       kept.push_back(&g);
-  for (const auto* g : kept) set.materials.push_back(consensus_material(ctx, *g));
+  set.materials.resize(kept.size());
+  parallel_for(kept.size(),
+               [&](size_t i) { set.materials[i] = consensus_material(ctx, *kept[i]); });
   set.studies = study_materials(ctx, set.materials, options, progress);
   for (size_t i = 0; i < kept.size(); ++i) {
     set.groups.push_back(summarize(ctx, *kept[i], set.studies[i]));

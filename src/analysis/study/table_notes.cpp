@@ -40,7 +40,7 @@ std::string coverage_note(const std::vector<const LoadedMaterial*>& materials) {
       held, materials.size());
 }
 
-std::vector<const LoadedMaterial*> materials_of(const std::vector<MaterialStudy>& studies) {
+std::vector<const LoadedMaterial*> materials_of(std::span<const MaterialStudy> studies) {
   std::vector<const LoadedMaterial*> out;
   for (const auto& s : studies) out.push_back(s.material);
   return out;

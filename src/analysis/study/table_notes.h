@@ -1,6 +1,7 @@
 #pragma once
 // The notes and columns every per-material table shares: the colorimetric setting, the
 // out-of-range policy and the materials' coverage.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,6 @@ void add_coverage_cells(std::vector<Cell>& row, const LoadedMaterial& m);
 inline constexpr size_t kCoverageColumns = 4;  // the cells add_coverage_cells adds
 // The note that explains them, with how many of the table's materials are extrapolated.
 std::string coverage_note(const std::vector<const LoadedMaterial*>& materials);
-std::vector<const LoadedMaterial*> materials_of(const std::vector<MaterialStudy>& studies);
+std::vector<const LoadedMaterial*> materials_of(std::span<const MaterialStudy> studies);
 
 }  // namespace fl::analysis

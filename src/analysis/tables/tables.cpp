@@ -108,7 +108,7 @@ std::string params_text(fresnel::Model m, const std::vector<double>& p) {
   return out;
 }
 
-std::string fit_flags_note(const std::vector<MaterialStudy>& studies) {
+std::string fit_flags_note(std::span<const MaterialStudy> studies) {
   int flagged = 0, fits = 0;
   for (const auto& s : studies)
     for (const auto& r : s.models) {
@@ -205,7 +205,7 @@ std::vector<Cell> models_row(const MaterialStudy& s, const ModelResult& r, int f
 
 }  // namespace
 
-Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies) {
+Table models_table(const Context& ctx, std::span<const MaterialStudy> studies) {
   Table t;
   t.name = "models";
   t.title = "Every Fresnel model, derived and fitted parameters (ΔE2000)";

@@ -1,5 +1,7 @@
 #pragma once
 // The report tables, and the helpers of the one-material commands.
+#include <span>
+
 #include "analysis/pipeline/context.h"
 #include "analysis/study/study.h"
 #include "util/table.h"
@@ -17,7 +19,7 @@ Table schlick_table(const Context& ctx, const std::vector<LoadedMaterial>& mater
 Table methods_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
 
 // Every material × every model × {derived, fitted}: RMS, mean, max and render-weighted RMS.
-Table models_table(const Context& ctx, const std::vector<MaterialStudy>& studies);
+Table models_table(const Context& ctx, std::span<const MaterialStudy> studies);
 
 // `curve`: per material and angle, ground truth, model and ΔE2000, then the material, its
 // coverage and the fit's flags (fit::fit_flags; empty for derived parameters). `parameters` is
