@@ -65,25 +65,43 @@ RenderedCandidate candidate(const Context& ctx, const ModelResult& r, ParameterS
 
 }  // namespace
 
+namespace {
+
+// One model's candidates: its derived and fitted sets, and its set fitted to the render.
+std::vector<RenderedCandidate> model_candidates(const Context& ctx, const MaterialStudy& study,
+                                                const ModelResult& r, const PageTruth& truth,
+                                                const fit::CurveTarget& target,
+                                                const std::vector<ShadingPoint>& points) {
+  std::vector<RenderedCandidate> out;
+  out.push_back(
+      candidate(ctx, r, ParameterSet::Derived, r.derived, r.derived_error.rms, truth, points));
+  if (r.fitted.usable && !r.fitted.parameters.empty())
+    out.push_back(candidate(ctx, r, ParameterSet::Fitted, r.fitted.parameters, r.fitted_error.rms,
+                            truth, points));
+  const auto rendered = rendered_fit(ctx, study, r, truth.rgb, points);
+  if (!rendered.usable) return out;
+  const auto curve = fresnel::evaluate_curve(r.model, rendered.parameters, ctx.cos_thetas());
+  out.push_back(candidate(ctx, r, ParameterSet::Rendered, rendered.parameters,
+                          curve_error(ctx, target.truth_lab, curve).rms, truth, points));
+  return out;
+}
+
+}  // namespace
+
 std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const MaterialStudy& study,
                                                    const std::vector<ShadingPoint>& points) {
   PageTruth truth;
   truth.rgb = lobe_truth(ctx, *study.material, points);
   truth.lab = lab_curve(ctx, truth.rgb);
   const auto target = curve_target(ctx, study.truth);
+  // The models side by side: a material's rendered fits differ in cost by 100× (flat valleys).
+  std::vector<std::vector<RenderedCandidate>> per_model(study.models.size());
+  parallel_for(per_model.size(), [&](size_t k) {
+    per_model[k] = model_candidates(ctx, study, study.models[k], truth, target, points);
+  });
   std::vector<RenderedCandidate> out;
-  for (const auto& r : study.models) {
-    out.push_back(
-        candidate(ctx, r, ParameterSet::Derived, r.derived, r.derived_error.rms, truth, points));
-    if (r.fitted.usable && !r.fitted.parameters.empty())
-      out.push_back(candidate(ctx, r, ParameterSet::Fitted, r.fitted.parameters, r.fitted_error.rms,
-                              truth, points));
-    const auto rendered = rendered_fit(ctx, study, r, truth.rgb, points);
-    if (!rendered.usable) continue;
-    const auto curve = fresnel::evaluate_curve(r.model, rendered.parameters, ctx.cos_thetas());
-    out.push_back(candidate(ctx, r, ParameterSet::Rendered, rendered.parameters,
-                            curve_error(ctx, target.truth_lab, curve).rms, truth, points));
-  }
+  for (auto& cs : per_model)
+    for (auto& c : cs) out.push_back(std::move(c));
   return out;
 }
 
