@@ -10,6 +10,7 @@
 
 #include "color/ciede2000_batch.h"
 #include "color/dual.h"
+#include "fit/solve.h"
 #include "fresnel/registry.h"
 #include "util/codegen.h"
 
@@ -127,159 +128,9 @@ ceres::CostFunction* create_cost(Model m, const CurveTarget* target) {
   return cost;
 }
 
-// The flat indices of the model's extinction parameters (ParamKind::Extinction).
-std::vector<int> extinction_indices(Model m) {
-  const auto& spec = fresnel::model_spec(m);
-  std::vector<int> out;
-  for (int c = 0; c < 3; ++c)
-    for (int j = 0; j < spec.per_channel(); ++j)
-      if (spec.channel_params[j].kind == fresnel::ParamKind::Extinction)
-        out.push_back(c * spec.per_channel() + j);
-  for (size_t j = 0; j < spec.shared_params.size(); ++j)
-    if (spec.shared_params[j].kind == fresnel::ParamKind::Extinction)
-      out.push_back(3 * spec.per_channel() + int(j));
-  return out;
-}
-
-// A cost function that keeps the last point it was asked for, with its residuals and (once asked
-// for) its Jacobian. With bounds, Ceres asks for a point more than once: the step's cost, the
-// projected line search's trial with its gradient, then the accepted point's Jacobian. Each point is
-// computed once; the answers are the same bits.
-class LastPointCost : public ceres::CostFunction {
- public:
-  explicit LastPointCost(ceres::CostFunction* cost) : cost_(cost) {
-    *mutable_parameter_block_sizes() = cost->parameter_block_sizes();
-    set_num_residuals(cost->num_residuals());
-    const size_t params = static_cast<size_t>(cost->parameter_block_sizes()[0]);
-    residuals_.resize(static_cast<size_t>(num_residuals()));
-    jacobian_.resize(residuals_.size() * params);
-  }
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override {
-    const bool want_jacobian = jacobians && jacobians[0];
-    const size_t params = static_cast<size_t>(parameter_block_sizes()[0]);
-    if (p_.empty() || !std::equal(p_.begin(), p_.end(), parameters[0])) {
-      p_.assign(parameters[0], parameters[0] + params);
-      double* jacobian = jacobian_.data();
-      valid_ = cost_->Evaluate(parameters, residuals_.data(), want_jacobian ? &jacobian : nullptr);
-      have_jacobian_ = want_jacobian;
-    } else if (want_jacobian && !have_jacobian_ && valid_) {
-      double* jacobian = jacobian_.data();
-      valid_ = cost_->Evaluate(parameters, residuals_.data(), &jacobian);
-      have_jacobian_ = true;
-    }
-    if (!valid_) return false;
-    std::copy(residuals_.begin(), residuals_.end(), residuals);
-    if (want_jacobian) std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
-    return true;
-  }
-
- private:
-  std::unique_ptr<ceres::CostFunction> cost_;
-  // The last point and what was computed there (a cost function serves one single-threaded solve).
-  mutable std::vector<double> p_, residuals_, jacobian_;
-  mutable bool valid_ = false, have_jacobian_ = false;
-};
-
-// One bounded solve of `cost` (owned by the problem from here) from `params`.
-FitResult solve_cost(Model m, ceres::CostFunction* cost, std::vector<double> params,
-                     const FitOptions& options) {
-  const auto bounds = fresnel::model_spec(m).bounds();
-  for (size_t i = 0; i < params.size(); ++i) {
-    // Strictly inside the bounds: some kernels have kinks exactly at the ends (g = 0, F0 = 0).
-    const double margin = 1e-9 * (bounds[i].hi - bounds[i].lo);
-    params[i] = std::clamp(params[i], bounds[i].lo + margin, bounds[i].hi - margin);
-  }
-  const auto held = options.lossless ? extinction_indices(m) : std::vector<int>{};
-  for (int i : held) params[i] = 0.0;
-  ceres::Problem problem;
-  problem.AddResidualBlock(new LastPointCost(cost), nullptr, params.data());
-  if (!held.empty())
-    problem.SetManifold(params.data(),
-                        new ceres::SubsetManifold(static_cast<int>(params.size()), held));
-  for (size_t i = 0; i < params.size(); ++i) {
-    problem.SetParameterLowerBound(params.data(), static_cast<int>(i), bounds[i].lo);
-    problem.SetParameterUpperBound(params.data(), static_cast<int>(i), bounds[i].hi);
-  }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = options.max_iterations;
-  so.function_tolerance = options.function_tolerance;
-  so.gradient_tolerance = 1e-12;
-  so.parameter_tolerance = 1e-10;
-  so.logging_type = ceres::SILENT;
-  so.num_threads = 1;
-  ceres::Solver::Summary summary;
-  ceres::Solve(so, &problem, &summary);
-  FitResult r;
-  r.parameters = params;
-  r.cost = summary.final_cost;
-  r.initial_cost = summary.initial_cost;
-  r.iterations = static_cast<int>(summary.iterations.size()) - 1;
-  r.termination = ceres::TerminationTypeToString(summary.termination_type);
-  r.usable = summary.IsSolutionUsable() && std::isfinite(summary.final_cost);
-  r.iteration_limit = summary.termination_type == ceres::NO_CONVERGENCE;
-  return r;
-}
-
 FitResult solve_once(Model m, const CurveTarget& target, std::vector<double> params,
                      const FitOptions& options) {
   return solve_cost(m, create_cost(m, &target), std::move(params), options);
-}
-
-// ½ Σ ΔE2000² between a ColourTarget's truth and its colours: the residuals and their derivatives
-// over RGB from one batch (color::ciede2000_residuals_batch), the colours' derivatives over the
-// parameters by central differences (ColourTarget's contract), joined by the chain rule.
-class ColourCost : public ceres::CostFunction {
- public:
-  ColourCost(const ColourTarget* target, int params) : t_(target), n_(target->truth_lab.size()) {
-    mutable_parameter_block_sizes()->push_back(params);
-    set_num_residuals(static_cast<int>(3 * n_));
-  }
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override {
-    const int np = parameter_block_sizes()[0];
-    std::vector<double> p(parameters[0], parameters[0] + np);
-    std::vector<color::Rgb> rgb(n_), up(n_), down(n_);
-    if (!t_->colours(p.data(), rgb.data())) return false;
-    std::vector<double> d_rgb(9 * n_);
-    color::ciede2000_residuals_batch(t_->to_lab, t_->truth_lab, rgb, std::span(residuals, 3 * n_),
-                                     d_rgb);
-    if (!jacobians || !jacobians[0]) return true;
-    for (int j = 0; j < np; ++j) {
-      // Step of 1e-6 relative (at least 1e-6): central differences' error is O(h²).
-      const double h = 1e-6 * std::max(1.0, std::abs(p[j])), pj = p[j];
-      p[j] = pj + h;
-      if (!t_->colours(p.data(), up.data())) return false;
-      p[j] = pj - h;
-      if (!t_->colours(p.data(), down.data())) return false;
-      p[j] = pj;
-      for (size_t i = 0; i < n_; ++i)
-        for (int q = 0; q < 3; ++q) {
-          double d = 0;
-          for (int c = 0; c < 3; ++c)
-            d += d_rgb[(3 * q + c) * n_ + i] * (up[i][c] - down[i][c]) / (2 * h);
-          jacobians[0][(3 * i + q) * np + j] = d;
-        }
-    }
-    return true;
-  }
-
- private:
-  const ColourTarget* t_;
-  size_t n_;
-};
-
-// ½ Σ ΔE2000² of a ColourTarget at `params` (infinity where it fails or is not finite).
-double colour_cost(const ColourTarget& t, const std::vector<double>& params) {
-  const size_t n = t.truth_lab.size();
-  std::vector<color::Rgb> rgb(n);
-  if (!t.colours(params.data(), rgb.data())) return std::numeric_limits<double>::infinity();
-  std::vector<double> r(3 * n), d_rgb(9 * n);
-  color::ciede2000_residuals_batch(t.to_lab, t.truth_lab, rgb, r, d_rgb);
-  double cost = 0;
-  for (double x : r) cost += 0.5 * x * x;
-  return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
 }
 
 // ½ Σ ΔE2000² at `params`, from the residuals the solves minimize (ciede2000_residuals_batch).
@@ -324,50 +175,6 @@ std::vector<std::string> pinned_parameters(Model m, const CurveTarget& target,
 }
 }  // namespace
 
-namespace {
-
-// Ranks the starts by cost(start) (cheap), solves from the best few with solve(start) and keeps the
-// lowest final cost; never worse than the best start.
-template <class Cost, class Solve>
-FitResult best_of_starts(Model m, std::vector<std::vector<double>> starts,
-                         const FitOptions& options, Cost cost, Solve solve) {
-  std::vector<std::pair<double, size_t>> ranked;
-  const auto held = options.lossless ? extinction_indices(m) : std::vector<int>{};
-  for (size_t i = 0; i < starts.size(); ++i) {
-    if (static_cast<int>(starts[i].size()) != fresnel::model_spec(m).param_count())
-      throw std::invalid_argument("fit_model: wrong parameter count");
-    for (int h : held) starts[i][h] = 0.0;
-    ranked.emplace_back(cost(starts[i]), i);
-  }
-  std::stable_sort(ranked.begin(), ranked.end());
-  if (static_cast<int>(ranked.size()) > options.max_solves) ranked.resize(options.max_solves);
-  FitResult best;
-  bool have = false;
-  for (const auto& [cost0, index] : ranked) {
-    FitResult r = solve(starts[index]);
-    if (r.usable && (!have || r.cost < best.cost)) {
-      best = std::move(r);
-      have = true;
-    }
-  }
-  // Worse than the best start beyond rounding between the two cost evaluations (1e-9 relative,
-  // and 1e-12 absolute: an RMS ΔE2000 near 1e-7 over 91 angles), e.g. a start outside the fit box,
-  // or no usable solve: the start itself is returned.
-  if (!have || best.cost > ranked.front().first * (1.0 + 1e-9) + 1e-12) {
-    best.parameters = starts[ranked.front().second];
-    best.cost = best.initial_cost = ranked.front().first;
-    best.iterations = 0;
-    best.termination = have ? "START_KEPT" : "NO_USABLE_SOLUTION";
-    best.usable = have;
-    best.kept_start = have;
-    best.iteration_limit = false;
-  }
-  best.starts = static_cast<int>(ranked.size());
-  return best;
-}
-
-}  // namespace
-
 FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<double>> starts,
                     const FitOptions& options) {
   FitResult best = best_of_starts(
@@ -376,17 +183,6 @@ FitResult fit_model(Model m, const CurveTarget& target, std::vector<std::vector<
       [&](const std::vector<double>& p) { return solve_once(m, target, p, options); });
   best.at_bound = pinned_parameters(m, target, best.parameters);
   return best;
-}
-
-FitResult fit_model_colours(Model m, const ColourTarget& target,
-                            std::vector<std::vector<double>> starts, const FitOptions& options) {
-  const int n = fresnel::model_spec(m).param_count();
-  return best_of_starts(
-      m, std::move(starts), options,
-      [&](const std::vector<double>& p) { return colour_cost(target, p); },
-      [&](const std::vector<double>& p) {
-        return solve_cost(m, new ColourCost(&target, n), p, options);
-      });
 }
 
 std::string fit_flags(const FitResult& r) {
