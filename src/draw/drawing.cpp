@@ -120,7 +120,7 @@ void paint(cairo_t* cr, const Circle& c, const LabelFont*) {
 
 // Text needs a font; the other shapes ignore it.
 void paint(cairo_t* cr, const Text& t, const LabelFont* font) {
-  if (!font) throw std::logic_error("encode_without_text: the drawing holds text");
+  if (!font) throw std::logic_error("a drawing's text needs a font");
   cairo_set_font_face(cr, font->face().cairo);
   set_colour(cr, t.colour);
   cairo_set_font_size(cr, t.size_px);
@@ -224,21 +224,27 @@ std::string renumber_svg_ids(const std::string& svg) {
   return out;
 }
 
-// An RGB24 image surface's pixels as packed RGB bytes.
-std::vector<std::uint8_t> rgb_bytes(cairo_surface_t* s) {
-  cairo_surface_flush(s);
-  const int width = cairo_image_surface_get_width(s), height = cairo_image_surface_get_height(s);
-  const int stride = cairo_image_surface_get_stride(s);
-  const unsigned char* data = cairo_image_surface_get_data(s);
-  std::vector<std::uint8_t> rgb;
-  rgb.reserve(static_cast<size_t>(width) * height * 3);
-  for (int y = 0; y < height; ++y) {
+// The drawing's pixels, painted on Cairo's RGB24 image surface.
+io::Image8 raster(const Drawing& d, const LabelFont* font) {
+  if (d.width <= 0 || d.height <= 0)
+    throw std::logic_error("rasterize: a drawing needs a positive size");
+  const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height),
+                     cairo_surface_destroy);
+  paint_drawing(s.get(), d, FileType::Png, font);
+  cairo_surface_flush(s.get());
+  check(cairo_surface_status(s.get()));
+  io::Image8 img(d.width, d.height);
+  const unsigned char* data = cairo_image_surface_get_data(s.get());
+  const int stride = cairo_image_surface_get_stride(s.get());
+  for (int y = 0; y < d.height; ++y) {
     const auto* row =
         reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
-    for (int x = 0; x < width; ++x)
-      for (const int shift : {16, 8, 0}) rgb.push_back(static_cast<std::uint8_t>(row[x] >> shift));
+    for (int x = 0; x < d.width; ++x)
+      img.set(x, y,
+              {static_cast<std::uint8_t>(row[x] >> 16), static_cast<std::uint8_t>(row[x] >> 8),
+               static_cast<std::uint8_t>(row[x])});
   }
-  return rgb;
+  return img;
 }
 
 cairo_surface_t* vector_surface(FileType type, const Drawing& d, std::string& out) {
@@ -256,13 +262,10 @@ cairo_surface_t* vector_surface(FileType type, const Drawing& d, std::string& ou
 std::string encode_with(const Drawing& d, FileType type, const LabelFont* font) {
   if (d.width <= 0 || d.height <= 0)
     throw std::logic_error("encode: a drawing needs a positive size");
+  if (type == FileType::Png) return encode_png(raster(d, font));
   std::string out;
-  const SurfacePtr s(type == FileType::Png
-                         ? cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height)
-                         : vector_surface(type, d, out),
-                     cairo_surface_destroy);
+  const SurfacePtr s(vector_surface(type, d, out), cairo_surface_destroy);
   paint_drawing(s.get(), d, type, font);
-  if (type == FileType::Png) out = encode_png_rgb(d.width, d.height, rgb_bytes(s.get()));
   cairo_surface_finish(s.get());
   check(cairo_surface_status(s.get()));
   return type == FileType::Svg ? renumber_svg_ids(out) : out;
@@ -289,30 +292,8 @@ std::string encode(const Drawing& d, FileType type, const LabelFont& font) {
   return encode_with(d, type, &font);
 }
 
-std::string encode_without_text(const Drawing& d, FileType type) {
-  return encode_with(d, type, nullptr);
-}
-
 io::Image8 rasterize(const Drawing& d, const LabelFont& font) {
-  if (d.width <= 0 || d.height <= 0)
-    throw std::logic_error("rasterize: a drawing needs a positive size");
-  const SurfacePtr s(cairo_image_surface_create(CAIRO_FORMAT_RGB24, d.width, d.height),
-                     cairo_surface_destroy);
-  paint_drawing(s.get(), d, FileType::Png, &font);
-  cairo_surface_flush(s.get());
-  check(cairo_surface_status(s.get()));
-  io::Image8 img(d.width, d.height);
-  const unsigned char* data = cairo_image_surface_get_data(s.get());
-  const int stride = cairo_image_surface_get_stride(s.get());
-  for (int y = 0; y < d.height; ++y) {
-    const auto* row =
-        reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
-    for (int x = 0; x < d.width; ++x)
-      img.set(x, y,
-              {static_cast<std::uint8_t>(row[x] >> 16), static_cast<std::uint8_t>(row[x] >> 8),
-               static_cast<std::uint8_t>(row[x])});
-  }
-  return img;
+  return raster(d, &font);
 }
 
 double text_width_px(const std::string& utf8, double size_px, const LabelFont& font) {

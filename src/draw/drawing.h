@@ -1,8 +1,9 @@
 #pragma once
 // Every figure is a Drawing: a list of shapes painted in order, in pixel coordinates (origin at the
-// top-left, y down). One renderer, Cairo, turns the same Drawing into PNG, SVG or PDF (Cairo stays
-// inside drawing.cpp and png.cpp). Text is set in a LabelFont the caller owns: DejaVu Sans, found
-// through fontconfig (fonts-dejavu-core), or the TrueType file the command line names.
+// top-left, y down). One renderer, Cairo, turns the same Drawing into pixels (encoded as PNG by
+// png.h), SVG or PDF (Cairo stays inside drawing.cpp and png.cpp). Text is set in a LabelFont the
+// caller owns: DejaVu Sans, found through fontconfig (fonts-dejavu-core), or the TrueType file the
+// command line names.
 #include <memory>
 #include <string>
 #include <variant>
@@ -96,10 +97,6 @@ FileType file_type(const std::string& path);
 // SVG and PDF: vector shapes, text as outlines (SVG) or an embedded font subset (PDF), no creation
 // date. Text is set in `font`. The same Drawing and font give the same bytes.
 std::string encode(const Drawing& d, FileType type, const LabelFont& font);
-
-// encode() of a drawing without Text, which needs no font (the PNG files of plain images, png.h);
-// std::logic_error when it holds Text.
-std::string encode_without_text(const Drawing& d, FileType type);
 
 // The drawing's pixels as PNG output paints them (for frames of an animation, or a picture inside
 // another drawing).

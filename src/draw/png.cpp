@@ -7,7 +7,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include "draw/drawing.h"
 #include "io/writer.h"
 #include "util/errors.h"
 
@@ -16,15 +15,17 @@ namespace fl::draw {
 namespace {
 
 void append_bytes(png_structp png, png_bytep data, png_size_t length) {
+  bool failed = false;
   try {
     static_cast<std::string*>(png_get_io_ptr(png))
         ->append(reinterpret_cast<const char*>(data), length);
   } catch (...) {
-    png_error(png, "out of memory");
+    failed = true;  // png_error jumps: never from inside the handler
   }
+  if (failed) png_error(png, "out of memory");
 }
 void no_flush(png_structp) {}
-// libpng's errors return to encode_png_rgb's setjmp, silently (it throws); it has no warnings to
+// libpng's errors return to encode_png's setjmp, silently (it throws); it has no warnings to
 // give for images it is handed whole.
 [[noreturn]] void on_error(png_structp png, png_const_charp) {
   png_longjmp(png, 1);
@@ -33,13 +34,20 @@ void on_warning(png_structp, png_const_charp) {}
 
 }  // namespace
 
-std::string encode_png_rgb(int width, int height, std::span<const std::uint8_t> rgb) {
+std::string encode_png(const io::Image8& image) {
+  const int width = image.width, height = image.height;
+  const auto& rgb = image.pixels;
   if (width <= 0 || height <= 0 || rgb.size() != static_cast<size_t>(width) * height * 3)
     throw std::logic_error("encode_png: image size and pixel count disagree");
   std::string out;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, on_error, on_warning);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info || setjmp(png_jmpbuf(png))) {
+  if (!png) throw std::bad_alloc();
+  png_infop info = png_create_info_struct(png);
+  if (!info) {
+    png_destroy_write_struct(&png, nullptr);
+    throw std::bad_alloc();
+  }
+  if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
     throw std::runtime_error("PNG encoding failed");
   }
@@ -55,10 +63,6 @@ std::string encode_png_rgb(int width, int height, std::span<const std::uint8_t> 
   png_write_end(png, info);
   png_destroy_write_struct(&png, &info);
   return out;
-}
-
-std::string encode_png(const io::Image8& image) {
-  return encode_png_rgb(image.width, image.height, image.pixels);
 }
 
 void write_png_atomic(const std::string& path, const io::Image8& image) {

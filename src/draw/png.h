@@ -2,9 +2,7 @@
 // PNG files: 8-bit RGB rows encoded by libpng, every row unfiltered and compressed at zlib's
 // default level, with no time or text chunks, so the same pixels give the same bytes. (libpng's
 // default, each row's filter chosen adaptively, which Cairo's PNG writer keeps, takes twice the
-// time for files about 5 % smaller.) Drawings are rasterized by Cairo (drawing.h) and encoded here.
-#include <cstdint>
-#include <span>
+// time for files about 4 % smaller.) Drawings are rasterized by Cairo (drawing.h) and encoded here.
 #include <string>
 
 #include "io/image.h"
@@ -13,8 +11,6 @@ namespace fl::draw {
 
 // The PNG file as bytes.
 std::string encode_png(const io::Image8& image);
-// The PNG file of `height` rows of `width` RGB pixels (3 bytes each, rows packed).
-std::string encode_png_rgb(int width, int height, std::span<const std::uint8_t> rgb);
 
 // encode_png, then written to a temporary file beside `path` that is renamed into place.
 void write_png_atomic(const std::string& path, const io::Image8& image);

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
+#include <stdexcept>
 
 #include "fresnel/registry.h"
 
@@ -27,44 +29,51 @@ std::vector<int> extinction_indices(Model m) {
   return out;
 }
 
-// A cost function that keeps the last point it was asked for, with its residuals and (once asked
-// for) its Jacobian. With bounds, Ceres asks for a point more than once: the step's cost, the
-// projected line search's trial with its gradient, then the accepted point's Jacobian. Each point
-// is computed once; the answers are the same bits.
+// A cost function that keeps the last point it was asked for (its bits), with its residuals and,
+// once asked for, its Jacobian. With bounds, Ceres asks for a point more than once: the step's
+// cost, the projected line search's trial with its gradient, then the accepted point's Jacobian.
+// The wrapped cost is asked at most twice per point (the residuals, then the Jacobian with them),
+// and its answers are passed on unchanged.
 class LastPointCost : public ceres::CostFunction {
  public:
   explicit LastPointCost(ceres::CostFunction* cost) : cost_(cost) {
     *mutable_parameter_block_sizes() = cost->parameter_block_sizes();
     set_num_residuals(cost->num_residuals());
-    const size_t params = static_cast<size_t>(cost->parameter_block_sizes()[0]);
+    if (parameter_block_sizes().size() != 1)
+      throw std::logic_error("LastPointCost: one parameter block");
     residuals_.resize(static_cast<size_t>(num_residuals()));
-    jacobian_.resize(residuals_.size() * params);
+    jacobian_.resize(residuals_.size() * static_cast<size_t>(parameter_block_sizes()[0]));
   }
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    const bool want_jacobian = jacobians && jacobians[0];
     const size_t params = static_cast<size_t>(parameter_block_sizes()[0]);
-    if (p_.empty() || !std::equal(p_.begin(), p_.end(), parameters[0])) {
+    if (p_.empty() || std::memcmp(p_.data(), parameters[0], params * sizeof(double)) != 0) {
       p_.assign(parameters[0], parameters[0] + params);
-      double* jacobian = jacobian_.data();
-      valid_ = cost_->Evaluate(parameters, residuals_.data(), want_jacobian ? &jacobian : nullptr);
-      have_jacobian_ = want_jacobian;
-    } else if (want_jacobian && !have_jacobian_ && valid_) {
-      double* jacobian = jacobian_.data();
-      valid_ = cost_->Evaluate(parameters, residuals_.data(), &jacobian);
-      have_jacobian_ = true;
+      residuals_state_ = jacobian_state_ = State::Unknown;
     }
-    if (!valid_) return false;
+    const bool want_jacobian = jacobians && jacobians[0];
+    if (want_jacobian && jacobian_state_ == State::Unknown) {
+      double* jacobian = jacobian_.data();
+      const bool ok = cost_->Evaluate(parameters, residuals_.data(), &jacobian);
+      jacobian_state_ = residuals_state_ = ok ? State::Ok : State::Unknown;
+      if (!ok) jacobian_state_ = State::Failed;
+    }
+    if (want_jacobian && jacobian_state_ == State::Failed) return false;
+    if (residuals_state_ == State::Unknown)
+      residuals_state_ =
+          cost_->Evaluate(parameters, residuals_.data(), nullptr) ? State::Ok : State::Failed;
+    if (residuals_state_ == State::Failed) return false;
     std::copy(residuals_.begin(), residuals_.end(), residuals);
     if (want_jacobian) std::copy(jacobian_.begin(), jacobian_.end(), jacobians[0]);
     return true;
   }
 
  private:
+  enum class State { Unknown, Ok, Failed };
   std::unique_ptr<ceres::CostFunction> cost_;
   // The last point and what was computed there (a cost function serves one single-threaded solve).
   mutable std::vector<double> p_, residuals_, jacobian_;
-  mutable bool valid_ = false, have_jacobian_ = false;
+  mutable State residuals_state_ = State::Unknown, jacobian_state_ = State::Unknown;
 };
 
 }  // namespace

@@ -59,8 +59,9 @@ std::string strip_png(const analysis::Context& ctx, const analysis::MaterialStud
   return draw::encode_png(img);
 }
 
-// The models table (every page × model × set: the largest, 65,860 rows over the whole database)
-// made and written kModelsPart pages at a time, so only one part's cells are held.
+// The models table (every page × model × parameter set: the library's largest, 20 rows and 17 cells
+// per page) made and written kModelsPart pages at a time, so only one part's cells are held beside
+// the CSV text; a part of 64 pages (about 1,300 rows) costs nothing measurable against the whole.
 constexpr size_t kModelsPart = 64;
 std::string models_csv(const analysis::Context& ctx,
                        const std::vector<analysis::MaterialStudy>& rows) {
@@ -347,13 +348,13 @@ io::Files library_page(const analysis::Context& ctx, const analysis::Library& li
 io::Files library_files(const analysis::Context& ctx, const analysis::Library& lib,
                         bool with_gallery, const std::string& command) {
   auto t = analysis::library_table(ctx, lib.rows, &lib.consensus);
-  const auto spread = analysis::spread_table(ctx, lib.rows);  // the consensus rows are in no group
-  const auto consensus = analysis::consensus_table(ctx, lib.consensus);
-  const auto consensus_pages = analysis::consensus_pages_table(lib.consensus);
-  const auto kinds = analysis::outlier_kinds_table(lib.consensus);
+  auto spread = analysis::spread_table(ctx, lib.rows);  // the consensus rows are in no group
+  auto consensus = analysis::consensus_table(ctx, lib.consensus);
+  auto consensus_pages = analysis::consensus_pages_table(lib.consensus);
+  auto kinds = analysis::outlier_kinds_table(lib.consensus);
   // The documents made side by side, each part's files in a fixed order.
   std::array<io::Files, 4> parts;
-  parallel_for(parts.size(), [&](size_t i) {
+  parallel_for_all(parts.size(), [&](size_t i) {
     auto& files = parts[i];
     if (i == 0) files = documents::preset_files("library", {ctx, lib.rows, t});
     if (i == 1) files.emplace_back("models.csv", models_csv(ctx, lib.rows));
@@ -373,13 +374,12 @@ io::Files library_files(const analysis::Context& ctx, const analysis::Library& l
   for (auto& part : parts)
     for (auto& f : part) files.push_back(std::move(f));
   std::string about = readme(ctx, lib, t, command, with_gallery);
-  // The page last: it takes the library table (the largest) rather than a copy.
-  for (auto& f : library_page(
-           ctx, lib,
-           {std::move(t), consensus, kinds, spread, analysis::skip_reasons_table(lib.set.skipped),
-            analysis::skipped_table(lib.set.skipped)},
-           command))
-    files.push_back(std::move(f));
+  // The page last: it takes the tables (the library table the largest) rather than copies.
+  std::vector<Table> tables;
+  for (auto* table : {&t, &consensus, &kinds, &spread}) tables.push_back(std::move(*table));
+  tables.push_back(analysis::skip_reasons_table(lib.set.skipped));
+  tables.push_back(analysis::skipped_table(lib.set.skipped));
+  for (auto& f : library_page(ctx, lib, std::move(tables), command)) files.push_back(std::move(f));
   files.emplace_back("README.md", std::move(about));
   return files;
 }

@@ -331,8 +331,6 @@ TEST(Draw, SvgIsWellFormedXmlAndPdfHasOnePage) {
   EXPECT_NE(pdf.find("%%EOF"), std::string::npos);
   EXPECT_EQ(pdf.find("/CreationDate"), std::string::npos);  // nothing that changes between runs
   EXPECT_EQ(pdf, draw::encode(d, draw::FileType::Pdf, font));
-  // Text needs a font: only a drawing without it may be encoded without one.
-  EXPECT_THROW(draw::encode_without_text(d, draw::FileType::Png), std::logic_error);
   EXPECT_EQ(draw::file_type("A.PDF"), draw::FileType::Pdf);
   EXPECT_THROW(draw::file_type("a.jpg"), InputError);
 }

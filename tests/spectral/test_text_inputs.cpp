@@ -3,10 +3,12 @@
 // 400, 500 and 700 nm), so each must read back the values written in it.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 #include "spectral/nk_text.h"
 #include "spectral/ri_database.h"
+#include "spectral/text_file.h"
 #include "test_util.h"
 #include "util/errors.h"
 
@@ -298,3 +300,20 @@ TEST(TextInputs, SopraCountOfIntervalsIsExplained) {
 
 }  // namespace
 }  // namespace fl::spectral
+
+namespace fl {
+namespace {
+
+TEST(TextInputs, FieldsSplitIntoASpanAreCountedBeyondIt) {
+  std::array<std::string_view, 3> fields;
+  EXPECT_EQ(spectral::split_fields(" 0.5,\t1.25  3 ,4", " \t,", fields), 4u);
+  EXPECT_EQ(fields[0], "0.5");
+  EXPECT_EQ(fields[1], "1.25");
+  EXPECT_EQ(fields[2], "3");
+  EXPECT_EQ(spectral::split_fields(" ,\t", " \t,", fields), 0u);
+  EXPECT_EQ(spectral::split_fields("7", " \t,", fields), 1u);
+  EXPECT_EQ(fields[0], "7");
+}
+
+}  // namespace
+}  // namespace fl

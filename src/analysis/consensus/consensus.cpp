@@ -303,8 +303,8 @@ ConsensusSet build_consensus(const Context& ctx, const std::vector<GroupPages>& 
                     [](const MaterialStudy* s) { return used_for_consensus(*s); }))
       kept.push_back(&g);
   set.materials.resize(kept.size());
-  parallel_for(kept.size(),
-               [&](size_t i) { set.materials[i] = consensus_material(ctx, *kept[i]); });
+  parallel_for_all(kept.size(),
+                   [&](size_t i) { set.materials[i] = consensus_material(ctx, *kept[i]); });
   set.studies = study_materials(ctx, set.materials, options, progress);
   for (size_t i = 0; i < kept.size(); ++i) {
     set.groups.push_back(summarize(ctx, *kept[i], set.studies[i]));

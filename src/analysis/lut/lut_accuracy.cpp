@@ -63,10 +63,6 @@ RenderedCandidate candidate(const Context& ctx, const ModelResult& r, ParameterS
   return c;
 }
 
-}  // namespace
-
-namespace {
-
 // One model's candidates: its derived and fitted sets, and its set fitted to the render.
 std::vector<RenderedCandidate> model_candidates(const Context& ctx, const MaterialStudy& study,
                                                 const ModelResult& r, const PageTruth& truth,
@@ -96,7 +92,7 @@ std::vector<RenderedCandidate> rendered_candidates(const Context& ctx, const Mat
   const auto target = curve_target(ctx, study.truth);
   // The models side by side: a material's rendered fits differ in cost by 100× (flat valleys).
   std::vector<std::vector<RenderedCandidate>> per_model(study.models.size());
-  parallel_for(per_model.size(), [&](size_t k) {
+  parallel_for_all(per_model.size(), [&](size_t k) {
     per_model[k] = model_candidates(ctx, study, study.models[k], truth, target, points);
   });
   std::vector<RenderedCandidate> out;

@@ -122,7 +122,8 @@ struct CurveError {
 // ΔE2000 per angle between two RGB curves in the working space.
 std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Rgb>& a,
                                      const std::vector<color::Rgb>& b);
-// The same with `a` already in CIELAB (in SIMD lanes: color::ciede2000_batch).
+// The same with `a` already in CIELAB: ΔE2000 per pair (an angle's, a shading point's) in SIMD
+// lanes (color::ciede2000_batch).
 std::vector<double> de2000_per_angle(const Context& ctx, const std::vector<color::Lab>& lab_a,
                                      const std::vector<color::Rgb>& b);
 CurveError curve_error(const Context& ctx, const std::vector<color::Rgb>& truth,
