@@ -298,11 +298,11 @@ ExrImage read_exr(const std::string& path) {
     Imf::FrameBuffer fb;
     const size_t x_stride = sizeof(float) * nc;
     const size_t y_stride = x_stride * image.width;
-    for (size_t c = 0; c < nc; ++c) {
-      char* base = reinterpret_cast<char*>(image.pixels.data() + c) -
-                   static_cast<std::ptrdiff_t>(dw.min.x * x_stride + dw.min.y * y_stride);
-      fb.insert(image.channels[c], Imf::Slice(Imf::FLOAT, base, x_stride, y_stride));
-    }
+    // The slice's origin is the data window's: Slice::Make offsets the buffer by it in integer
+    // arithmetic (a window far from the origin would overflow a pointer computed here).
+    for (size_t c = 0; c < nc; ++c)
+      fb.insert(image.channels[c],
+                Imf::Slice::Make(Imf::FLOAT, image.pixels.data() + c, dw, x_stride, y_stride));
     in.setFrameBuffer(fb);
     in.readPixels(dw.min.y, dw.max.y);
     return image;

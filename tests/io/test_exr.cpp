@@ -1,4 +1,9 @@
-// OpenEXR output (io/exr.h): round trip of pixels and attributes, atomic write.
+// OpenEXR output (io/exr.h): round trip of pixels and attributes, atomic write; a file OpenEXR
+// writes with its data window far from the origin read back.
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,6 +78,32 @@ TEST(Exr, NanChromaticitiesAreRefused) {
       std::array<float, 8>{0.64f, 0.33f, 0.3f, 0.6f, 0.15f, 0.06f, 0.3127f, 0.329f};
   write_exr_atomic(tmp.path() + "/ok.exr", img);
   EXPECT_EQ(read_exr(tmp.path() + "/ok.exr").chromaticities, img.chromaticities);
+}
+
+// A data window 2·10⁹ rows below the origin, 10,000 pixels wide: the reader's slice is addressed
+// from the window's corner, and a base pointer offset by it (2·10⁹ rows of 120,000 bytes) would
+// leave the address space (the sanitized suite reports such an offset).
+TEST(Exr, ADataWindowFarFromTheOriginIsRead) {
+  test::TempDir tmp;
+  const int width = 60000, top = 1000000000;
+  const Imath::Box2i window({0, top}, {width - 1, top});
+  Imf::Header header(Imath::Box2i({0, 0}, {width - 1, 0}), window);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  std::vector<float> pixels(width);
+  for (int x = 0; x < width; ++x) pixels[x] = 0.25f + 0.5f * static_cast<float>(x % 3);
+  header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+  Imf::FrameBuffer fb;
+  fb.insert("R", Imf::Slice::Make(Imf::FLOAT, pixels.data(), window, sizeof(float), 0));
+  const auto path = tmp.path() + "/far.exr";
+  {
+    Imf::OutputFile out(path.c_str(), header);
+    out.setFrameBuffer(fb);
+    out.writePixels(1);
+  }
+  const auto back = read_exr(path);
+  ASSERT_EQ(back.width, width);
+  ASSERT_EQ(back.height, 1);
+  EXPECT_EQ(back.pixels, pixels);
 }
 
 }  // namespace
