@@ -16,6 +16,7 @@
 #include <regex>
 #include <stdexcept>
 
+#include "draw/cairo_pixels.h"
 #include "draw/png.h"
 #include "io/writer.h"
 #include "util/errors.h"
@@ -233,18 +234,7 @@ io::Image8 raster(const Drawing& d, const LabelFont* font) {
   paint_drawing(s.get(), d, FileType::Png, font);
   cairo_surface_flush(s.get());
   check(cairo_surface_status(s.get()));
-  io::Image8 img(d.width, d.height);
-  const unsigned char* data = cairo_image_surface_get_data(s.get());
-  const int stride = cairo_image_surface_get_stride(s.get());
-  for (int y = 0; y < d.height; ++y) {
-    const auto* row =
-        reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
-    for (int x = 0; x < d.width; ++x)
-      img.set(x, y,
-              {static_cast<std::uint8_t>(row[x] >> 16), static_cast<std::uint8_t>(row[x] >> 8),
-               static_cast<std::uint8_t>(row[x])});
-  }
-  return img;
+  return surface_pixels(s.get());
 }
 
 cairo_surface_t* vector_surface(FileType type, const Drawing& d, std::string& out) {
@@ -272,6 +262,21 @@ std::string encode_with(const Drawing& d, FileType type, const LabelFont* font) 
 }
 
 }  // namespace
+
+io::Image8 surface_pixels(cairo_surface_t* s) {
+  io::Image8 img(cairo_image_surface_get_width(s), cairo_image_surface_get_height(s));
+  const unsigned char* data = cairo_image_surface_get_data(s);
+  const int stride = cairo_image_surface_get_stride(s);
+  for (int y = 0; y < img.height; ++y) {
+    const auto* row =
+        reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
+    for (int x = 0; x < img.width; ++x)
+      img.set(x, y,
+              {static_cast<std::uint8_t>(row[x] >> 16), static_cast<std::uint8_t>(row[x] >> 8),
+               static_cast<std::uint8_t>(row[x])});
+  }
+  return img;
+}
 
 LabelFont::LabelFont(const std::string& file)
     : file_(file.empty() ? dejavu_file() : file),

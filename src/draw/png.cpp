@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "draw/cairo_pixels.h"
 #include "io/writer.h"
 #include "util/errors.h"
 
@@ -78,18 +79,7 @@ io::Image8 read_png(const std::string& path) {
   const cairo_format_t format = cairo_image_surface_get_format(s.get());
   if (format != CAIRO_FORMAT_RGB24 && format != CAIRO_FORMAT_ARGB32)
     throw InputError(path, 0, "not an RGB PNG");
-  io::Image8 img(cairo_image_surface_get_width(s.get()), cairo_image_surface_get_height(s.get()));
-  const unsigned char* data = cairo_image_surface_get_data(s.get());
-  const int stride = cairo_image_surface_get_stride(s.get());
-  for (int y = 0; y < img.height; ++y) {
-    const auto* row =
-        reinterpret_cast<const std::uint32_t*>(data + static_cast<size_t>(y) * stride);
-    for (int x = 0; x < img.width; ++x)
-      img.set(x, y,
-              {static_cast<std::uint8_t>(row[x] >> 16), static_cast<std::uint8_t>(row[x] >> 8),
-               static_cast<std::uint8_t>(row[x])});
-  }
-  return img;
+  return surface_pixels(s.get());
 }
 
 }  // namespace fl::draw
