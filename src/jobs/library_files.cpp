@@ -352,6 +352,7 @@ io::Files library_files(const analysis::Context& ctx, const analysis::Library& l
   auto consensus = analysis::consensus_table(ctx, lib.consensus);
   auto consensus_pages = analysis::consensus_pages_table(lib.consensus);
   auto kinds = analysis::outlier_kinds_table(lib.consensus);
+  auto skipped = analysis::skipped_table(lib.set.skipped);
   // The documents made side by side, each part's files in a fixed order.
   std::array<io::Files, 4> parts;
   parallel_for_all(parts.size(), [&](size_t i) {
@@ -359,8 +360,7 @@ io::Files library_files(const analysis::Context& ctx, const analysis::Library& l
     if (i == 0) files = documents::preset_files("library", {ctx, lib.rows, t});
     if (i == 1) files.emplace_back("models.csv", models_csv(ctx, lib.rows));
     if (i == 2) {
-      files.emplace_back("skipped.csv",
-                         documents::to_csv(analysis::skipped_table(lib.set.skipped)));
+      files.emplace_back("skipped.csv", documents::to_csv(skipped));
       files.emplace_back("spread.csv", documents::to_csv(spread));
       files.emplace_back("spread.md", documents::to_markdown(spread));
       for (const auto* c : {&consensus, &consensus_pages, &kinds}) {
@@ -378,7 +378,7 @@ io::Files library_files(const analysis::Context& ctx, const analysis::Library& l
   std::vector<Table> tables;
   for (auto* table : {&t, &consensus, &kinds, &spread}) tables.push_back(std::move(*table));
   tables.push_back(analysis::skip_reasons_table(lib.set.skipped));
-  tables.push_back(analysis::skipped_table(lib.set.skipped));
+  tables.push_back(std::move(skipped));
   for (auto& f : library_page(ctx, lib, std::move(tables), command)) files.push_back(std::move(f));
   files.emplace_back("README.md", std::move(about));
   return files;
