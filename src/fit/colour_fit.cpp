@@ -16,45 +16,81 @@ using fresnel::Model;
 
 // ½ Σ ΔE2000² between a ColourTarget's truth and its colours: the residuals and their derivatives
 // over RGB from one batch (color::ciede2000_residuals_batch), the colours' derivatives over the
-// parameters by central differences (ColourTarget's contract), joined by the chain rule.
+// parameters by central differences (ColourTarget's contract), joined by the chain rule. Channel c
+// reads only its own parameter block and the shared parameters, so parameter k of the three blocks
+// is stepped in one pair of evaluations: each channel's difference is its own parameter's.
 class ColourCost : public ceres::CostFunction {
  public:
-  ColourCost(const ColourTarget* target, int params) : t_(target), n_(target->truth_lab.size()) {
-    mutable_parameter_block_sizes()->push_back(params);
+  ColourCost(const ColourTarget* target, Model m)
+      : t_(target), n_(target->truth_lab.size()), per_(fresnel::model_spec(m).per_channel()) {
+    mutable_parameter_block_sizes()->push_back(fresnel::model_spec(m).param_count());
     set_num_residuals(static_cast<int>(3 * n_));
   }
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
     const int np = parameter_block_sizes()[0];
     std::vector<double> p(parameters[0], parameters[0] + np);
-    std::vector<color::Rgb> rgb(n_), up(n_), down(n_);
+    std::vector<color::Rgb> rgb(n_);
     if (!t_->colours(p.data(), rgb.data())) return false;
     std::vector<double> d_rgb(9 * n_);
     color::ciede2000_residuals_batch(t_->to_lab, t_->truth_lab, rgb, std::span(residuals, 3 * n_),
                                      d_rgb);
     if (!jacobians || !jacobians[0]) return true;
-    for (int j = 0; j < np; ++j) {
-      // Step of 1e-6 relative (at least 1e-6): central differences' error is O(h²).
-      const double h = 1e-6 * std::max(1.0, std::abs(p[j])), pj = p[j];
-      p[j] = pj + h;
-      if (!t_->colours(p.data(), up.data())) return false;
-      p[j] = pj - h;
-      if (!t_->colours(p.data(), down.data())) return false;
-      p[j] = pj;
-      for (size_t i = 0; i < n_; ++i)
-        for (int q = 0; q < 3; ++q) {
-          double d = 0;
-          for (int c = 0; c < 3; ++c)
-            d += d_rgb[(3 * q + c) * n_ + i] * (up[i][c] - down[i][c]) / (2 * h);
-          jacobians[0][(3 * i + q) * np + j] = d;
-        }
-    }
+    const Differences d{rgb, d_rgb, jacobians[0], np};
+    for (int k = 0; k < per_; ++k)
+      if (!step_columns(p, {k, per_ + k, 2 * per_ + k}, d)) return false;
+    for (int s = 3 * per_; s < np; ++s)
+      if (!step_columns(p, {s}, d)) return false;
     return true;
   }
 
  private:
+  struct Differences {
+    const std::vector<color::Rgb>& rgb;
+    const std::vector<double>& d_rgb;
+    double* jacobian;
+    int np;
+  };
+
+  // The Jacobian's columns `cols` from one pair of evaluations with each of them stepped by ±h
+  // (1e-6 relative, at least 1e-6: central differences' error is O(h²)). A column of a channel's
+  // block takes that channel's difference; the others' are zero, as they would be were the column
+  // stepped alone (rgb − rgb keeps the bits of up − down then).
+  bool step_columns(std::vector<double>& p, std::initializer_list<int> cols,
+                    const Differences& d) const {
+    std::vector<color::Rgb> up(n_), down(n_);
+    double h[3], pj[3];
+    int m = 0;
+    for (int j : cols) pj[m] = p[j], h[m] = 1e-6 * std::max(1.0, std::abs(p[j])), ++m;
+    m = 0;
+    for (int j : cols) p[j] = pj[m] + h[m], ++m;
+    if (!t_->colours(p.data(), up.data())) return false;
+    m = 0;
+    for (int j : cols) p[j] = pj[m] - h[m], ++m;
+    if (!t_->colours(p.data(), down.data())) return false;
+    m = 0;
+    for (int j : cols) p[j] = pj[m], ++m;
+    m = 0;
+    for (int j : cols) {
+      const int own = j < 3 * per_ ? j / per_ : -1;  // the channel whose block holds j, or shared
+      for (size_t i = 0; i < n_; ++i)
+        for (int q = 0; q < 3; ++q) {
+          double v = 0;
+          for (int c = 0; c < 3; ++c) {
+            const double diff =
+                own < 0 || c == own ? up[i][c] - down[i][c] : d.rgb[i][c] - d.rgb[i][c];
+            v += d.d_rgb[(3 * q + c) * n_ + i] * diff / (2 * h[m]);
+          }
+          d.jacobian[(3 * i + q) * d.np + j] = v;
+        }
+      ++m;
+    }
+    return true;
+  }
+
   const ColourTarget* t_;
   size_t n_;
+  int per_;
 };
 
 // ½ Σ ΔE2000² of a ColourTarget at `params` (infinity where it fails or is not finite).
@@ -73,12 +109,11 @@ double colour_cost(const ColourTarget& t, const std::vector<double>& params) {
 
 FitResult fit_model_colours(Model m, const ColourTarget& target,
                             std::vector<std::vector<double>> starts, const FitOptions& options) {
-  const int n = fresnel::model_spec(m).param_count();
   return best_of_starts(
       m, std::move(starts), options,
       [&](const std::vector<double>& p) { return colour_cost(target, p); },
       [&](const std::vector<double>& p) {
-        return solve_cost(m, new ColourCost(&target, n), p, options);
+        return solve_cost(m, new ColourCost(&target, m), p, options);
       });
 }
 

@@ -57,7 +57,10 @@ FitResult fit_model(fresnel::Model model, const CurveTarget& target,
 // Colours that depend on a model's parameters (rendered shading, say) and the truth they should
 // match: `colours(params, out)` fills truth_lab.size() RGB values and returns true, or false where
 // it cannot be evaluated. Differentiated by central differences, so it must be smooth in the
-// parameters and pure; the ΔE2000 residuals' derivatives over RGB are exact.
+// parameters and pure, and, as a model's channels do, channel c of every colour must read only
+// channel c's parameter block and the shared parameters (model_spec.h's layout): parameter k of
+// the three blocks is stepped in one pair of evaluations. The ΔE2000 residuals' derivatives over
+// RGB are exact.
 struct ColourTarget {
   std::vector<color::Lab> truth_lab;
   color::LabConverter to_lab;

@@ -13,30 +13,48 @@ namespace {
 // Wavelengths per column pass: a few kilobytes on the stack; the 1 nm grid takes four passes.
 constexpr size_t kColumn = 128;
 
-// R(λ) at cosθ for n relative indices, eta_kappa interleaved (η₀, κ₀, η₁, κ₁, ...), each divided
-// by eta_outside: a column loop (FL_FLATTEN), each lane rounding as the scalar kernel does.
-FL_FLATTEN void reflectance_column(double cos_theta, const double* eta_kappa, double eta_outside,
-                                   size_t n, double* __restrict out) {
+// R(λ) at cosθ for n relative indices, interleaved (η₀, κ₀, η₁, κ₁, ...): a column loop
+// (FL_FLATTEN), each lane rounding as the scalar kernel does.
+FL_FLATTEN void reflectance_column(double cos_theta, const double* eta_kappa, size_t n,
+                                   double* __restrict out) {
   for (size_t i = 0; i < n; ++i)
-    out[i] = fresnel_conductor<double>(cos_theta, eta_kappa[2 * i] / eta_outside,
-                                       eta_kappa[2 * i + 1] / eta_outside);
+    out[i] = fresnel_conductor<double>(cos_theta, eta_kappa[2 * i], eta_kappa[2 * i + 1]);
 }
 
 }  // namespace
 
+void spectral_reflectance_rgb(const std::vector<color::Rgb>& w,
+                              const spectral::ComplexIorSpectrum& ior,
+                              std::span<const double> cos_theta, double eta_outside,
+                              color::Rgb* out) {
+  // std::complex<double> is laid out as two doubles (real, imaginary).
+  const double* eta_kappa = reinterpret_cast<const double*>(ior.ior.data());
+  // The index relative to the outside medium, divided once for every angle (in vacuum or air,
+  // eta_outside = 1, it is the index itself).
+  std::vector<double> relative;
+  if (eta_outside != 1.0) {
+    relative.assign(eta_kappa, eta_kappa + 2 * w.size());
+    for (double& x : relative) x /= eta_outside;
+    eta_kappa = relative.data();
+  }
+  double r[kColumn];
+  for (size_t a = 0; a < cos_theta.size(); ++a) {
+    color::Rgb sum;
+    // The sum runs in wavelength order, one term at a time, as R(λ)·w(λ).
+    for (size_t start = 0; start < w.size(); start += kColumn) {
+      const size_t n = std::min(kColumn, w.size() - start);
+      reflectance_column(cos_theta[a], eta_kappa + 2 * start, n, r);
+      for (size_t i = 0; i < n; ++i) sum = sum + r[i] * w[start + i];
+    }
+    out[a] = sum;
+  }
+}
+
 color::Rgb spectral_reflectance_rgb(const std::vector<color::Rgb>& w,
                                     const spectral::ComplexIorSpectrum& ior, double cos_theta,
                                     double eta_outside) {
-  // std::complex<double> is laid out as two doubles (real, imaginary).
-  const double* eta_kappa = reinterpret_cast<const double*>(ior.ior.data());
-  double r[kColumn];
   color::Rgb out;
-  // The sum runs in wavelength order, one term at a time, as R(λ)·w(λ).
-  for (size_t start = 0; start < w.size(); start += kColumn) {
-    const size_t n = std::min(kColumn, w.size() - start);
-    reflectance_column(cos_theta, eta_kappa + 2 * start, eta_outside, n, r);
-    for (size_t i = 0; i < n; ++i) out = out + r[i] * w[start + i];
-  }
+  spectral_reflectance_rgb(w, ior, std::span(&cos_theta, 1), eta_outside, &out);
   return out;
 }
 

@@ -2,6 +2,7 @@
 // Spectral ground truth and the spectral procedures that derive RGB parameters
 // (docs/conventions.md, "Fresnel definitions" and "Deriving RGB parameters").
 #include <array>
+#include <span>
 #include <vector>
 
 #include "color/values.h"
@@ -14,6 +15,11 @@ namespace fl::fresnel {
 color::Rgb spectral_reflectance_rgb(const std::vector<color::Rgb>& rgb_weights,
                                     const spectral::ComplexIorSpectrum& ior, double cos_theta,
                                     double eta_outside);
+// The same at every cos_theta[a] into out[a].
+void spectral_reflectance_rgb(const std::vector<color::Rgb>& rgb_weights,
+                              const spectral::ComplexIorSpectrum& ior,
+                              std::span<const double> cos_theta, double eta_outside,
+                              color::Rgb* out);
 
 // η(λ) or κ(λ) pushed through the colour pipeline as if it were a reflectance ("Refl. η,κ").
 color::Rgb process_as_reflectance(const std::vector<color::Rgb>& rgb_weights,

@@ -5,11 +5,13 @@
 // the centre of the central differences.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <vector>
 
 #include "fit/fit.h"
+#include "fresnel/models/cook_torrance.h"
 #include "fresnel/registered_models.h"
 
 namespace fl {
@@ -42,6 +44,54 @@ TEST(ColourFit, FindsTheParametersAndComputesEachPointAtMostTwice) {
   int most = 0;
   for (const auto& [point, n] : calls) most = std::max(most, n);
   EXPECT_LE(most, 2);
+}
+
+// Cook–Torrance: F0 per channel (parameters 0, 1, 2), the representative η and κ shared (3, 4).
+TEST(ColourFit, StepsTheChannelsTogetherAndTheSharedParametersAlone) {
+  const fresnel::Model model = fresnel::model_from_name("cook_torrance").model;
+  const std::vector<double> truth_params{0.95, 0.64, 0.54, 0.2, 3.0};
+  const std::vector<double> mu{1.0, 0.8, 0.6, 0.4, 0.2, 0.1, 0.05};
+  std::vector<std::vector<double>> calls;
+  fit::ColourTarget target;
+  target.to_lab = {color::Mat3{}, color::Xyz{1.0, 1.0, 1.0}};
+  target.colours = [&](const double* p, color::Rgb* out) {
+    calls.emplace_back(p, p + 5);
+    for (size_t i = 0; i < mu.size(); ++i)
+      for (int c = 0; c < 3; ++c) out[i][c] = fresnel::cook_torrance(mu[i], p[c], p[3], p[4]);
+    return true;
+  };
+  std::vector<color::Rgb> truth(mu.size());
+  target.colours(truth_params.data(), truth.data());
+  for (const auto& t : truth) target.truth_lab.push_back(target.to_lab(t));
+  calls.clear();
+  fit::FitOptions options;
+  options.max_solves = 1;
+  const auto r = fit::fit_model_colours(model, target, {{0.9, 0.7, 0.5, 0.25, 2.8}}, options);
+  ASSERT_TRUE(r.usable) << r.termination;
+  for (int k = 0; k < 5; ++k) EXPECT_NEAR(r.parameters[k], truth_params[k], 1e-5) << k;
+  // A call within a difference step (2e-6 of a parameter, at least 2e-6) of the centre (the last
+  // call that was not) that moves some of its parameters but not all is a central difference: it
+  // moves the three F0s or one shared parameter.
+  const std::vector<std::vector<int>> groups{{0, 1, 2}, {3}, {4}};
+  int channel_steps = 0;
+  size_t centre = 0;
+  for (size_t n = 1; n < calls.size(); ++n) {
+    std::vector<int> moved;
+    bool near = true;
+    for (int k = 0; k < 5; ++k) {
+      const double d = std::abs(calls[n][k] - calls[centre][k]);
+      if (d > 0) moved.push_back(k);
+      near = near && d <= 2.5e-6 * std::max(1.0, std::abs(calls[n][k]));
+    }
+    if (!near || moved.size() == 5) {
+      centre = n;
+      continue;
+    }
+    if (moved.empty()) continue;
+    EXPECT_NE(std::find(groups.begin(), groups.end(), moved), groups.end()) << moved.size();
+    channel_steps += moved.size() == 3;
+  }
+  EXPECT_GT(channel_steps, 0);
 }
 
 }  // namespace

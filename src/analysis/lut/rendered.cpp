@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "color/lab.h"
+#include "fresnel/ground_truth.h"
 #include "fresnel/projection.h"
 #include "fresnel/registered_models.h"
 #include "util/errors.h"
@@ -53,8 +54,15 @@ std::vector<color::Rgb> lobe_truth(const Context& ctx, const LoadedMaterial& m,
   for (const auto& p : points)
     for (size_t k = 0; k < p.truth_weights.size(); ++k)
       needed[k] = needed[k] || p.truth_weights[k] != 0.0;
+  std::array<double, kTruthNodes> at{};
+  std::array<int, kTruthNodes> node{};
+  size_t count = 0;
   for (int k = 0; k < kTruthNodes; ++k)
-    if (needed[k]) curve[k] = ground_truth_rgb(ctx, m.ior, mu[k], eta_e);
+    if (needed[k]) at[count] = mu[k], node[count++] = k;
+  std::array<color::Rgb, kTruthNodes> at_curve;
+  fresnel::spectral_reflectance_rgb(ctx.rgb_weights(), m.ior, std::span(at.data(), count), eta_e,
+                                    at_curve.data());
+  for (size_t j = 0; j < count; ++j) curve[node[j]] = at_curve[j];
   std::vector<color::Rgb> out;
   for (const auto& p : points) {
     if (p.mirror) {

@@ -158,9 +158,9 @@ color::Rgb ground_truth_rgb(const Context& ctx, const spectral::ComplexIorSpectr
 std::vector<color::Rgb> ground_truth_curve(const Context& ctx,
                                            const spectral::ComplexIorSpectrum& ior,
                                            double eta_outside) {
-  std::vector<color::Rgb> out;
-  out.reserve(ctx.cos_thetas().size());
-  for (double c : ctx.cos_thetas()) out.push_back(ground_truth_rgb(ctx, ior, c, eta_outside));
+  std::vector<color::Rgb> out(ctx.cos_thetas().size());
+  fresnel::spectral_reflectance_rgb(ctx.rgb_weights(), ior, ctx.cos_thetas(), eta_outside,
+                                    out.data());
   return out;
 }
 
