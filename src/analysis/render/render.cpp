@@ -37,6 +37,14 @@ Vec3 to_world(const Vec3& l, const Vec3& t, const Vec3& b, const Vec3& n) {
           l.x * t.z + l.y * b.z + l.z * n.z};
 }
 
+// environment_radiance with the cosine of the key light's half-angle given.
+color::Rgb radiance_with_key(const Environment& env, const Vec3& dir, double cos_key) {
+  if (brdf::dot(dir, env.key_direction) >= cos_key) return env.key_radiance;
+  if (dir.y >= 0.0) return color::lerp(env.horizon, env.zenith, std::sqrt(std::min(1.0, dir.y)));
+  const double t = std::min(1.0, -dir.y / std::sin(7.0 * kDegToRad));
+  return color::lerp(0.5 * env.horizon, env.ground, t);
+}
+
 // The analytic environment as a light-sampling strategy: directions uniform in the key light's
 // cone, pdf 1 / (2π(1 − cos δ)).
 struct KeyLightStrategy {
@@ -46,7 +54,7 @@ struct KeyLightStrategy {
         cone_pdf(1.0 / (2.0 * std::numbers::pi * (1.0 - cos_delta))) {
     basis(env.key_direction, kt, kb);
   }
-  color::Rgb radiance(const Vec3& d) const { return environment_radiance(env, d); }
+  color::Rgb radiance(const Vec3& d) const { return radiance_with_key(env, d, cos_delta); }
   bool can_sample() const { return env.key_half_angle_deg > 0.0; }
   Vec3 sample(double u1, double u2, double& pdf) const {
     const double cos_l = 1.0 - u1 * (1.0 - cos_delta);
@@ -76,22 +84,25 @@ void accumulate(const std::vector<const FresnelTable*>& tables, double weight,
     out[i] = out[i] + weight * color::mul(tables[i]->at(voh), radiance);
 }
 
-// The lighting strategy's directions for Hammersley point i of `samples`: the same world directions
-// serve every shading point, so they are drawn once per render. pdf 0: no direction.
+// What Hammersley point i of `samples` gives every shading point, drawn once per render: the
+// lighting strategy's direction (pdf 0: none) and the point of the unit disk the visible-normal
+// sampler warps (brdf::GgxVndfSampler).
 struct LightSample {
   Vec3 dir;
   double pdf = 0;
   color::Rgb radiance;
+  brdf::DiskPoint disk;
 };
 
 template <class S>
 std::vector<LightSample> light_samples(const S& light, int samples) {
   std::vector<LightSample> out(static_cast<size_t>(samples));
-  if (!light.can_sample()) return out;
   const auto n = static_cast<std::uint32_t>(samples);
   for (std::uint32_t i = 0; i < n; ++i) {
     const auto p = brdf::hammersley(i, n);
     auto& ls = out[i];
+    ls.disk = brdf::disk_point(p.u1, p.u2);
+    if (!light.can_sample()) continue;
     ls.dir = light.sample(p.u1, p.u2, ls.pdf);
     if (ls.pdf > 0.0) ls.radiance = light.radiance(ls.dir);
   }
@@ -112,11 +123,11 @@ void shade_with(const S& light, const std::vector<LightSample>& drawn,
   Vec3 t, b;
   basis(n, t, b);
   const Vec3 v_local = brdf::normalize(Vec3{brdf::dot(v, t), brdf::dot(v, b), nov});
+  const brdf::GgxVndfSampler vndf(v_local, alpha);
   const auto n_samples = static_cast<std::uint32_t>(drawn.size());
   for (std::uint32_t i = 0; i < n_samples; ++i) {
-    const auto p = brdf::hammersley(i, n_samples);
     // Strategy A: the GGX visible normals; f·cos/pdf_A = F(v·h) · G₂/G₁ (brdf::ggx_vndf_weight).
-    const Vec3 h = brdf::sample_ggx_vndf(v_local, alpha, p.u1, p.u2);
+    const Vec3 h = vndf(drawn[i].disk);
     const Vec3 l = brdf::reflect(v_local, h);
     if (l.z > 0.0) {
       const Vec3 lw = to_world(l, t, b, n);
@@ -242,11 +253,7 @@ Environment default_environment() {
 }
 
 color::Rgb environment_radiance(const Environment& env, const Vec3& dir) {
-  if (brdf::dot(dir, env.key_direction) >= std::cos(env.key_half_angle_deg * kDegToRad))
-    return env.key_radiance;
-  if (dir.y >= 0.0) return color::lerp(env.horizon, env.zenith, std::sqrt(std::min(1.0, dir.y)));
-  const double t = std::min(1.0, -dir.y / std::sin(7.0 * kDegToRad));
-  return color::lerp(0.5 * env.horizon, env.ground, t);
+  return radiance_with_key(env, dir, std::cos(env.key_half_angle_deg * kDegToRad));
 }
 
 color::Rgb FresnelTable::at(double cos_theta) const {
