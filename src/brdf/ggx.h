@@ -149,19 +149,31 @@ inline double ggx_vndf_weight(double nov, double nol, double alpha) {
          smith_ggx_g1(nov, alpha);
 }
 
-// ggx_vndf_weight at one view, with the view's factors (its Smith term √((n·v)²(1 − α²) + α²) and
-// G₁(v)) computed once; the same operations in the same order, so the same values.
+// ggx_vndf_weight, ggx_vndf_reflection_pdf and ggx_lobe_cos at one view, with the view's factors
+// (its Smith term √((n·v)²(1 − α²) + α²) and G₁(v)) computed once; the same operations in the same
+// order, so the same values.
 struct GgxVndfWeight {
-  double nov = 1, a2 = 1, view_root = 1, g1 = 1;
-  GgxVndfWeight(double nov_, double alpha)
+  double nov = 1, alpha = 1, a2 = 1, view_root = 1, g1 = 1;
+  GgxVndfWeight(double nov_, double alpha_)
       : nov(nov_),
+        alpha(alpha_),
         a2(alpha * alpha),
         view_root(std::sqrt(nov * nov * (1.0 - a2) + a2)),
         g1(smith_ggx_g1(nov, alpha)) {}
+  // smith_ggx_correlated_visibility(nov, nol, alpha)
+  double visibility(double nol) const {
+    return 0.5 / (nol * view_root + nov * std::sqrt(nol * nol * (1.0 - a2) + a2));
+  }
+  // ggx_vndf_weight(nov, nol, alpha)
   double operator()(double nol) const {
-    const double visibility =
-        0.5 / (nol * view_root + nov * std::sqrt(nol * nol * (1.0 - a2) + a2));
-    return nol <= 0.0 ? 0.0 : 4.0 * visibility * nov * nol / g1;
+    return nol <= 0.0 ? 0.0 : 4.0 * visibility(nol) * nov * nol / g1;
+  }
+  // ggx_vndf_reflection_pdf(nov, noh, alpha)
+  double reflection_pdf(double noh) const { return g1 * ggx_ndf(noh, alpha) / (4.0 * nov); }
+  // ggx_lobe_cos(v, l, alpha) for l at n·l = nol whose half vector with v is at n·h = noh
+  double lobe_cos(double nol, double noh) const {
+    const double value = ggx_ndf(noh, alpha) * visibility(nol) * nol;
+    return nol > 0.0 && nov > 0.0 ? value : 0.0;
   }
 };
 

@@ -115,5 +115,26 @@ TEST(GgxKernels, VisibleNormalSamplesLieInTheViewHemisphere) {
   }
 }
 
+// The view's factors computed once (GgxVndfWeight, the renderer's and the tables' inner loops) give
+// every per-sample kernel's value to the bit: the same operations in the same order.
+TEST(GgxKernels, AViewsFactorsGiveThePerSampleKernelsBitForBit) {
+  for (const double nov : {1e-4, 0.05, 0.3, 0.7, 1.0})
+    for (const double alpha : {0.002, 0.04, 0.25, 0.64, 1.0}) {
+      const GgxVndfWeight view(nov, alpha);
+      const Vec3 v = view_from_nov(nov);
+      for (int k = 0; k < 64; ++k) {
+        const auto u = hammersley(static_cast<std::uint32_t>(k), 64u);
+        const Vec3 h = sample_ggx_vndf(v, alpha, u.u1, u.u2);
+        const Vec3 l = reflect(v, h);
+        EXPECT_EQ(view(l.z), ggx_vndf_weight(nov, l.z, alpha));
+        EXPECT_EQ(view.reflection_pdf(h.z), ggx_vndf_reflection_pdf(nov, h.z, alpha));
+        // A direction of its own (not the mirror of h), as the lights draw them, above or below.
+        const Vec3 d = normalize(Vec3{u.u1 - 0.5, u.u2 - 0.5, 0.4 - u.u1});
+        const Vec3 hd = normalize(Vec3{v.x + d.x, v.y + d.y, v.z + d.z});
+        EXPECT_EQ(view.lobe_cos(d.z, hd.z), ggx_lobe_cos(v, d, alpha));
+      }
+    }
+}
+
 }  // namespace
 }  // namespace fl::brdf

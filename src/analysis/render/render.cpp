@@ -124,6 +124,7 @@ void shade_with(const S& light, const std::vector<LightSample>& drawn,
   basis(n, t, b);
   const Vec3 v_local = brdf::normalize(Vec3{brdf::dot(v, t), brdf::dot(v, b), nov});
   const brdf::GgxVndfSampler vndf(v_local, alpha);
+  const brdf::GgxVndfWeight view(v_local.z, alpha);
   const auto n_samples = static_cast<std::uint32_t>(drawn.size());
   for (std::uint32_t i = 0; i < n_samples; ++i) {
     // Strategy A: the GGX visible normals; f·cos/pdf_A = F(v·h) · G₂/G₁ (brdf::ggx_vndf_weight).
@@ -131,13 +132,12 @@ void shade_with(const S& light, const std::vector<LightSample>& drawn,
     const Vec3 l = brdf::reflect(v_local, h);
     if (l.z > 0.0) {
       const Vec3 lw = to_world(l, t, b, n);
-      const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, h.z, alpha);
+      const double pdf_a = view.reflection_pdf(h.z);
       color::Rgb radiance;
       double pdf_b = 0;
       light.lookup(lw, radiance, pdf_b);
       const double w = pdf_a / (pdf_a + pdf_b);
-      accumulate(tables, w * brdf::ggx_vndf_weight(v_local.z, l.z, alpha), radiance,
-                 brdf::dot(v_local, h), out);
+      accumulate(tables, w * view(l.z), radiance, brdf::dot(v_local, h), out);
     }
     // Strategy B: the lighting's own directions; f·cos/pdf_B = D V F (n·l) / pdf_B.
     const LightSample& ls = drawn[i];
@@ -145,10 +145,10 @@ void shade_with(const S& light, const std::vector<LightSample>& drawn,
     const Vec3 lb{brdf::dot(ls.dir, t), brdf::dot(ls.dir, b), brdf::dot(ls.dir, n)};
     if (lb.z <= 0.0) continue;
     const Vec3 hb = brdf::normalize(Vec3{v_local.x + lb.x, v_local.y + lb.y, v_local.z + lb.z});
-    const double pdf_a = brdf::ggx_vndf_reflection_pdf(v_local.z, hb.z, alpha);
+    const double pdf_a = view.reflection_pdf(hb.z);
     const double w = ls.pdf / (pdf_a + ls.pdf);
-    accumulate(tables, w * brdf::ggx_lobe_cos(v_local, lb, alpha) / ls.pdf, ls.radiance,
-               brdf::dot(v_local, hb), out);
+    accumulate(tables, w * view.lobe_cos(lb.z, hb.z) / ls.pdf, ls.radiance, brdf::dot(v_local, hb),
+               out);
   }
   for (size_t k = 0; k < tables.size(); ++k)
     out[k] = (1.0 / static_cast<double>(n_samples)) * out[k];
