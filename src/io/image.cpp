@@ -19,17 +19,4 @@ Image8::Image8(int w, int h, std::vector<std::uint8_t> codes)
     throw std::invalid_argument("Image8: the code count is not 3 × width × height");
 }
 
-Rgb8 Image8::at(int x, int y) const {
-  const size_t i = 3 * (static_cast<size_t>(y) * width + x);
-  return {pixels[i], pixels[i + 1], pixels[i + 2]};
-}
-
-void Image8::set(int x, int y, Rgb8 c) {
-  if (!contains(x, y)) return;
-  const size_t i = 3 * (static_cast<size_t>(y) * width + x);
-  pixels[i] = c.r;
-  pixels[i + 1] = c.g;
-  pixels[i + 2] = c.b;
-}
-
 }  // namespace fl::io

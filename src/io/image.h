@@ -1,5 +1,6 @@
 #pragma once
 // 8-bit sRGB-encoded RGB images (what PNGs hold and figures paint). No I/O here; see png.h.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -20,8 +21,17 @@ struct Image8 {
   // Takes 3·w·h codes (std::invalid_argument otherwise).
   Image8(int w, int h, std::vector<std::uint8_t> codes);
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
-  Rgb8 at(int x, int y) const;
-  void set(int x, int y, Rgb8 c);  // ignored outside the image
+  Rgb8 at(int x, int y) const {
+    const size_t i = 3 * (static_cast<size_t>(y) * width + x);
+    return {pixels[i], pixels[i + 1], pixels[i + 2]};
+  }
+  void set(int x, int y, Rgb8 c) {  // ignored outside the image
+    if (!contains(x, y)) return;
+    const size_t i = 3 * (static_cast<size_t>(y) * width + x);
+    pixels[i] = c.r;
+    pixels[i + 1] = c.g;
+    pixels[i + 2] = c.b;
+  }
 };
 
 }  // namespace fl::io
