@@ -25,5 +25,11 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRESNEL_LAB_SANITIZE=ON -DFRESNEL_LAB_BENCH=OFF "${launcher[@]}" \
   -DCMAKE_CXX_FLAGS="-DEIGEN_MALLOC_ALREADY_ALIGNED=1" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" >/dev/null
 cmake --build "$build" -j"$(nproc)"
-ctest --test-dir "$build" --output-on-failure -j"$(nproc)" --timeout 900
+# Two tests check that a regeneration gives the same bytes (the basis from the whole database
+# against the committed one, `reproduce` run twice): properties of the results, which the Release
+# suite (scripts/test.sh) checks. Under the sanitizers they would repeat the whole-database basis
+# fit and two reproduces, about 260 s of the two cores' time, for code the other tests run too
+# (BasisCli.*, Belcour.*, browser.reproduce); they are left to the Release suite.
+ctest --test-dir "$build" --output-on-failure -j"$(nproc)" --timeout 900 \
+  -E '^(Basis\.regenerates_identically|Cli\.ReproduceIsDeterministic)$'
 echo "test-sanitize: ASan + UBSan suite passed in $(( $(date +%s) - start )) s" >&2
