@@ -188,6 +188,7 @@ TEST(PlanCli, SplitVariantsCompileAndValidate) {
 // replaces it.
 TEST(PlanCli, OutFolderForEveryExampleScene) {
   test::TempDir dir;
+  bool checked_slash = false;
   for (const auto& e : std::filesystem::directory_iterator(FL_EXAMPLES_DIR)) {
     if (e.path().extension() != ".yaml") continue;
     const std::string out = dir.path() + "/" + e.path().stem().string();
@@ -209,11 +210,15 @@ TEST(PlanCli, OutFolderForEveryExampleScene) {
       expect_compiles(slurp(f.path().string()), ext == ".hlsl", f.path().string());
     }
     EXPECT_GE(includes, 2) << e.path();
+    if (checked_slash) continue;
+    // "DIR/" is DIR, an existing plan folder is written again: the path, once.
+    checked_slash = true;
     const auto again = test::run_command(test::cli() + " -q plan '" + e.path().string() +
-                                         "' --out '" + out + "/'");  // "DIR/" is DIR
+                                         "' --out '" + out + "/'");
     EXPECT_EQ(again.status, 0) << again.err;
     EXPECT_TRUE(std::filesystem::exists(out + "/README.md"));
   }
+  EXPECT_TRUE(checked_slash);
 }
 
 }  // namespace
