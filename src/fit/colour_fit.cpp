@@ -1,8 +1,10 @@
 #include <ceres/ceres.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "color/ciede2000_batch.h"
 #include "fit/fit.h"
@@ -37,10 +39,12 @@ class ColourCost : public ceres::CostFunction {
                                      d_rgb);
     if (!jacobians || !jacobians[0]) return true;
     const Differences d{rgb, d_rgb, jacobians[0], np};
-    for (int k = 0; k < per_; ++k)
-      if (!step_columns(p, {k, per_ + k, 2 * per_ + k}, d)) return false;
+    for (int k = 0; k < per_; ++k) {
+      const std::array<int, 3> blocks{k, per_ + k, 2 * per_ + k};
+      if (!step_columns(p, blocks, d)) return false;
+    }
     for (int s = 3 * per_; s < np; ++s)
-      if (!step_columns(p, {s}, d)) return false;
+      if (!step_columns(p, std::span(&s, 1), d)) return false;
     return true;
   }
 
@@ -56,22 +60,18 @@ class ColourCost : public ceres::CostFunction {
   // (1e-6 relative, at least 1e-6: central differences' error is O(h²)). A column of a channel's
   // block takes that channel's difference; the others' are zero, as they would be were the column
   // stepped alone (rgb − rgb keeps the bits of up − down then).
-  bool step_columns(std::vector<double>& p, std::initializer_list<int> cols,
-                    const Differences& d) const {
+  bool step_columns(std::vector<double>& p, std::span<const int> cols, const Differences& d) const {
     std::vector<color::Rgb> up(n_), down(n_);
-    double h[3], pj[3];
-    int m = 0;
-    for (int j : cols) pj[m] = p[j], h[m] = 1e-6 * std::max(1.0, std::abs(p[j])), ++m;
-    m = 0;
-    for (int j : cols) p[j] = pj[m] + h[m], ++m;
+    std::array<double, 3> h{}, pj{};
+    for (size_t m = 0; m < cols.size(); ++m)
+      pj[m] = p[cols[m]], h[m] = 1e-6 * std::max(1.0, std::abs(pj[m]));
+    for (size_t m = 0; m < cols.size(); ++m) p[cols[m]] = pj[m] + h[m];
     if (!t_->colours(p.data(), up.data())) return false;
-    m = 0;
-    for (int j : cols) p[j] = pj[m] - h[m], ++m;
+    for (size_t m = 0; m < cols.size(); ++m) p[cols[m]] = pj[m] - h[m];
     if (!t_->colours(p.data(), down.data())) return false;
-    m = 0;
-    for (int j : cols) p[j] = pj[m], ++m;
-    m = 0;
-    for (int j : cols) {
+    for (size_t m = 0; m < cols.size(); ++m) p[cols[m]] = pj[m];
+    for (size_t m = 0; m < cols.size(); ++m) {
+      const int j = cols[m];
       const int own = j < 3 * per_ ? j / per_ : -1;  // the channel whose block holds j, or shared
       for (size_t i = 0; i < n_; ++i)
         for (int q = 0; q < 3; ++q) {
@@ -83,7 +83,6 @@ class ColourCost : public ceres::CostFunction {
           }
           d.jacobian[(3 * i + q) * d.np + j] = v;
         }
-      ++m;
     }
     return true;
   }
